@@ -1,0 +1,20 @@
+// The extension module poinsot._core. Each layer's bindings live in bind_<layer>.cpp.
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/version.hpp"
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "poinsot compiled core (see the poinsot package)";
+  m.attr("__version__") = poinsot::kVersion;
+  // Every poinsot::Error becomes ValueError with the same message.
+  pybind11::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const poinsot::Error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  poinsot::python::bind_so3(m);
+}

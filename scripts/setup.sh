@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package poinsot needs to build, test, benchmark and plot.
+# Idempotent: packages already present are skipped, and apt-get runs only when something is missing.
+# Run as root (or with sudo available). Nothing is downloaded from outside Debian's archive.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  build-essential cmake ninja-build g++ clang-format git pkg-config
+  # C++ libraries
+  libeigen3-dev libboost-math-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libassimp-dev libgtest-dev libgmock-dev libbenchmark-dev
+  # Python module, its tests and the plots
+  python3 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} Debian packages present"
+  exit 0
+fi
+
+echo "setup: installing ${#missing[@]} missing Debian packages: ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1; then SUDO="sudo"; else
+    echo "setup: must run as root (or with sudo) to install: ${missing[*]}" >&2
+    exit 2
+  fi
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"
