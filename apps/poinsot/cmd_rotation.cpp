@@ -1,5 +1,5 @@
-// `poinsot rotation`: converts one rotation between the forms of the so3 layer (matrix, quaternion, axis-angle,
-// rotation vector, Euler angles in a named sequence). Exactly one input form is given.
+// `poinsot rotation`: converts one rotation between the forms of the so3 layer (matrix, quaternion,
+// axis-angle, rotation vector, Euler angles in a named sequence). Exactly one input form is given.
 #include <array>
 #include <numbers>
 #include <string>
@@ -20,16 +20,18 @@ namespace poinsot::cli {
 namespace {
 
 struct RotationOptions {
-  std::vector<double> quaternion;    // w x y z
-  std::vector<double> matrix;        // 9, row-major
-  std::vector<double> axis_angle;    // x y z angle
-  std::vector<double> rotvec;        // x y z
-  std::vector<std::string> euler;    // SEQ a1 a2 a3
+  std::vector<double> quaternion;  // w x y z
+  std::vector<double> matrix;      // 9, row-major
+  std::vector<double> axis_angle;  // x y z angle
+  std::vector<double> rotvec;      // x y z
+  std::vector<std::string> euler;  // SEQ a1 a2 a3
   bool degrees = false;
   std::string out_sequence = "ZYX";
 };
 
-Vec3 vec3(const std::vector<double>& v, std::size_t offset = 0) { return Vec3(v[offset], v[offset + 1], v[offset + 2]); }
+Vec3 vec3(const std::vector<double>& v, std::size_t offset = 0) {
+  return Vec3(v[offset], v[offset + 1], v[offset + 2]);
+}
 
 double parse_number(const std::string& field, const std::string& text) {
   try {
@@ -46,16 +48,19 @@ void run(const RotationOptions& o) {
   const int given = !o.quaternion.empty() + !o.matrix.empty() + !o.axis_angle.empty() + !o.rotvec.empty() +
                     !o.euler.empty();
   if (given != 1) {
-    throw InvalidInput(fmt::format("rotation: got {} input forms, expected exactly one of --quaternion, --matrix, "
-                                   "--axis-angle, --rotvec, --euler",
-                                   given));
+    throw InvalidInput(
+        fmt::format("rotation: got {} input forms, expected exactly one of --quaternion, --matrix, "
+                    "--axis-angle, --rotvec, --euler",
+                    given));
   }
   Mat3 R;
   if (!o.quaternion.empty()) {
-    R = so3::rotation_from_quaternion(Quat(o.quaternion[0], o.quaternion[1], o.quaternion[2], o.quaternion[3]));
+    R = so3::rotation_from_quaternion(
+        Quat(o.quaternion[0], o.quaternion[1], o.quaternion[2], o.quaternion[3]));
   } else if (!o.matrix.empty()) {
     Mat3 m;
-    for (int i = 0; i < 9; ++i) m(i / 3, i % 3) = o.matrix[static_cast<std::size_t>(i)];
+    for (int i = 0; i < 9; ++i)
+      m(i / 3, i % 3) = o.matrix[static_cast<std::size_t>(i)];
     R = so3::project_to_so3(m);
   } else if (!o.axis_angle.empty()) {
     R = so3::rotation_from_axis_angle(vec3(o.axis_angle), o.axis_angle[3] * to_rad);
@@ -64,7 +69,8 @@ void run(const RotationOptions& o) {
   } else {
     const auto seq = so3::EulerSequence::parse(o.euler[0]);
     Vec3 a;
-    for (int i = 0; i < 3; ++i) a[i] = parse_number("--euler angle", o.euler[static_cast<std::size_t>(i) + 1]) * to_rad;
+    for (int i = 0; i < 3; ++i)
+      a[i] = parse_number("--euler angle", o.euler[static_cast<std::size_t>(i) + 1]) * to_rad;
     R = so3::rotation_from_euler(seq, a);
   }
   const Quat q = so3::quaternion_from_rotation(R);
@@ -73,7 +79,8 @@ void run(const RotationOptions& o) {
   const Vec3 e = so3::euler_from_rotation(seq, R) / to_rad;
   const char* unit = o.degrees ? "deg" : "rad";
   fmt::print("rotation matrix R (body to space):\n");
-  for (int i = 0; i < 3; ++i) fmt::print("  [{:>22.17g} {:>22.17g} {:>22.17g}]\n", R(i, 0), R(i, 1), R(i, 2));
+  for (int i = 0; i < 3; ++i)
+    fmt::print("  [{:>22.17g} {:>22.17g} {:>22.17g}]\n", R(i, 0), R(i, 1), R(i, 2));
   fmt::print("quaternion (w, x, y, z):   {}\n", format_quaternion(q));
   fmt::print("axis, angle:               {}, {} {}\n", format_vector(aa.axis), aa.angle / to_rad, unit);
   fmt::print("rotation vector:           {} {}\n", format_vector(so3::log(R) / to_rad), unit);
@@ -84,8 +91,9 @@ void run(const RotationOptions& o) {
 
 void register_rotation(CLI::App& app) {
   auto opts = std::make_shared<RotationOptions>();
-  auto* cmd = app.add_subcommand("rotation", "Convert a rotation between matrix, quaternion, axis-angle, rotation "
-                                             "vector and Euler angles");
+  auto* cmd = app.add_subcommand("rotation",
+                                 "Convert a rotation between matrix, quaternion, axis-angle, rotation "
+                                 "vector and Euler angles");
   cmd->add_option("--quaternion", opts->quaternion, "w x y z (normalised for you)")->expected(4);
   cmd->add_option("--matrix", opts->matrix, "9 entries row by row (projected onto SO(3) if slightly off)")
       ->expected(9);

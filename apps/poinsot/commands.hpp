@@ -9,4 +9,11 @@ namespace poinsot::cli {
 void register_version(CLI::App& app);
 void register_rotation(CLI::App& app);
 
+// inertia (issue 3)
+
+// run (issue 6)
+
+// lambda (issue 5)
+
+
 }  // namespace poinsot::cli

@@ -3,17 +3,25 @@
 #include <cstdio>
 #include <exception>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "commands.hpp"
 #include "poinsot/core/error.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"poinsot: rotation of rigid bodies (inertia, Euler's equations, Lagrange multipliers)", "poinsot"};
+  CLI::App app{"poinsot: rotation of rigid bodies (inertia, Euler's equations, Lagrange multipliers)",
+               "poinsot"};
   app.require_subcommand(1);
   poinsot::cli::register_version(app);
   poinsot::cli::register_rotation(app);
+
+  // inertia (issue 3)
+
+  // run (issue 6)
+
+  // lambda (issue 5)
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -16,7 +16,8 @@ std::string with_unit(double value, std::string_view unit) {
 }  // namespace
 
 void require_finite(std::string_view what, double value) {
-  if (!std::isfinite(value)) throw InvalidInput(fmt::format("{}: got {}, expected a finite number", what, value));
+  if (!std::isfinite(value))
+    throw InvalidInput(fmt::format("{}: got {}, expected a finite number", what, value));
 }
 
 void require_finite(std::string_view what, const Vec3& v) {
@@ -45,7 +46,8 @@ void require_positive(std::string_view what, double value, std::string_view unit
 
 void require_non_negative(std::string_view what, double value, std::string_view unit) {
   if (!(std::isfinite(value) && value >= 0.0)) {
-    throw InvalidInput(fmt::format("{}: got {}, expected a finite number >= 0", what, with_unit(value, unit)));
+    throw InvalidInput(
+        fmt::format("{}: got {}, expected a finite number >= 0", what, with_unit(value, unit)));
   }
 }
 

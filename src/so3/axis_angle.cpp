@@ -14,8 +14,8 @@ Mat3 rotation_from_axis_angle(const Vec3& axis, double angle) {
   require_finite("axis_angle: angle (rad)", angle);
   const double n = axis.norm();
   if (!(n > 0.0)) {
-    throw InvalidInput(fmt::format("axis_angle: axis {} has zero length; expected a non-zero vector",
-                                   format_vector(axis)));
+    throw InvalidInput(
+        fmt::format("axis_angle: axis {} has zero length; expected a non-zero vector", format_vector(axis)));
   }
   return exp((angle / n) * axis);
 }

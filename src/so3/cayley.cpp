@@ -17,9 +17,10 @@ Vec3 cayley_inverse(const Mat3& R) {
   require_finite("cayley_inverse: matrix", R);
   const double denom = 1.0 + R.trace();
   if (!(denom > 1e-12)) {
-    throw InvalidInput(fmt::format("cayley_inverse: rotation has 1 + tr R = {:.3g}; a half-turn (angle pi) has no "
-                                   "Cayley vector, expected an angle < pi",
-                                   denom));
+    throw InvalidInput(
+        fmt::format("cayley_inverse: rotation has 1 + tr R = {:.3g}; a half-turn (angle pi) has no "
+                    "Cayley vector, expected an angle < pi",
+                    denom));
   }
   return 2.0 * vee(R) / denom;  // vee(R) is half of vee(R − Rᵀ)
 }

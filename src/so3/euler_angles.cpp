@@ -26,9 +26,10 @@ double wrap(double a) {
 
 EulerSequence EulerSequence::parse(std::string_view name) {
   const auto fail = [&] {
-    return InvalidInput(fmt::format("euler: sequence \"{}\" is not valid; expected three letters of X, Y, Z with no "
-                                    "two consecutive equal, e.g. \"ZYX\" or \"ZXZ\"",
-                                    name));
+    return InvalidInput(
+        fmt::format("euler: sequence \"{}\" is not valid; expected three letters of X, Y, Z with no "
+                    "two consecutive equal, e.g. \"ZYX\" or \"ZXZ\"",
+                    name));
   };
   if (name.size() != 3) throw fail();
   std::array<int, 3> axes{};
@@ -43,14 +44,16 @@ EulerSequence EulerSequence::parse(std::string_view name) {
 
 std::string EulerSequence::name() const {
   std::string s(3, ' ');
-  for (std::size_t i = 0; i < 3; ++i) s[i] = static_cast<char>('X' + axes_[i]);
+  for (std::size_t i = 0; i < 3; ++i)
+    s[i] = static_cast<char>('X' + axes_[i]);
   return s;
 }
 
 Mat3 rotation_from_euler(const EulerSequence& sequence, const Vec3& angles) {
   require_finite(fmt::format("euler {}: angles (rad)", sequence.name()), angles);
   Mat3 R = Mat3::Identity();
-  for (int i = 0; i < 3; ++i) R = R * exp(angles[i] * Vec3::Unit(sequence.axes()[i]));
+  for (int i = 0; i < 3; ++i)
+    R = R * exp(angles[i] * Vec3::Unit(sequence.axes()[i]));
   return R;
 }
 

@@ -1,7 +1,7 @@
 #include "poinsot/so3/projection.hpp"
 
-#include <Eigen/SVD>
 #include <fmt/format.h>
+#include <Eigen/SVD>
 
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
@@ -9,21 +9,25 @@
 
 namespace poinsot::so3 {
 
-double orthogonality_error(const Mat3& R) { return (R.transpose() * R - Mat3::Identity()).norm(); }
+double orthogonality_error(const Mat3& R) {
+  return (R.transpose() * R - Mat3::Identity()).norm();
+}
 
 Mat3 project_to_so3(const Mat3& M, double max_orthogonality_error) {
   require_finite("project_to_so3: matrix", M);
   const double det = M.determinant();
   if (!(det > 0.0)) {
-    throw InvalidInput(fmt::format("project_to_so3: matrix {} has determinant {:.6g}; expected det > 0 (a "
-                                   "reflection or a singular matrix is not a perturbed rotation)",
-                                   format_matrix(M), det));
+    throw InvalidInput(
+        fmt::format("project_to_so3: matrix {} has determinant {:.6g}; expected det > 0 (a "
+                    "reflection or a singular matrix is not a perturbed rotation)",
+                    format_matrix(M), det));
   }
   const double err = orthogonality_error(M);
   if (!(err <= max_orthogonality_error)) {
-    throw InvalidInput(fmt::format("project_to_so3: matrix {} is too far from orthogonal (|M^T M - I| = {:.3g}); "
-                                   "expected at most {:.3g}",
-                                   format_matrix(M), err, max_orthogonality_error));
+    throw InvalidInput(
+        fmt::format("project_to_so3: matrix {} is too far from orthogonal (|M^T M - I| = {:.3g}); "
+                    "expected at most {:.3g}",
+                    format_matrix(M), err, max_orthogonality_error));
   }
   const Eigen::JacobiSVD<Mat3> svd(M, Eigen::ComputeFullU | Eigen::ComputeFullV);
   Mat3 u = svd.matrixU();

@@ -20,7 +20,8 @@ TEST(Check, MessagesNameTheFieldTheValueAndWhatWasExpected) {
             "box: mass: got -2 kg, expected a finite number > 0");
   EXPECT_EQ(message_of([] { require_finite("omega_body", Vec3(1, NAN, 0)); }),
             "omega_body: got (1, nan, 0), expected finite numbers");
-  EXPECT_EQ(message_of([] { require_non_negative("t", -1e-3); }), "t: got -0.001, expected a finite number >= 0");
+  EXPECT_EQ(message_of([] { require_non_negative("t", -1e-3); }),
+            "t: got -0.001, expected a finite number >= 0");
 }
 
 TEST(Check, AcceptsValidValues) {

@@ -22,7 +22,8 @@ std::vector<EulerSequence> all_sequences() {
 /// Independent oracle: the product of three elementary rotations by Eigen's AngleAxis.
 Mat3 oracle(const EulerSequence& s, const Vec3& a) {
   Mat3 R = Mat3::Identity();
-  for (int i = 0; i < 3; ++i) R = R * Eigen::AngleAxisd(a[i], Vec3::Unit(s.axes()[i])).toRotationMatrix();
+  for (int i = 0; i < 3; ++i)
+    R = R * Eigen::AngleAxisd(a[i], Vec3::Unit(s.axes()[i])).toRotationMatrix();
   return R;
 }
 
@@ -83,7 +84,8 @@ TEST(EulerAngles, AnglesRoundTripInsideTheirRanges) {
 
 TEST(EulerAngles, GimbalLockStillReproducesTheMatrix) {
   for (const auto& s : all_sequences()) {
-    const std::vector<double> locks = s.is_proper() ? std::vector<double>{0.0, kPi} : std::vector<double>{-kPi / 2, kPi / 2};
+    const std::vector<double> locks =
+        s.is_proper() ? std::vector<double>{0.0, kPi} : std::vector<double>{-kPi / 2, kPi / 2};
     for (double lock : locks) {
       const Vec3 a(0.4, lock, -1.1);
       const Mat3 R = rotation_from_euler(s, a);

@@ -103,8 +103,8 @@ TEST(Log, NoLossOfAccuracyNearPi) {
 }
 
 TEST(Log, AtExactlyPiReturnsAValidHalfTurn) {
-  for (const Vec3& n : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ()), Vec3(1, 1, 0).normalized(),
-                        Vec3(-1, 2, 2).normalized()}) {
+  for (const Vec3& n : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ()),
+                        Vec3(1, 1, 0).normalized(), Vec3(-1, 2, 2).normalized()}) {
     const Mat3 R = oracle_exp(kPi * n);
     const Vec3 v = log(R);
     EXPECT_NEAR(v.norm(), kPi, 8 * kEps);

@@ -11,7 +11,8 @@ using test::kEps;
 Mat3 random_spd_near_identity(double delta) {
   Mat3 a = Mat3::Zero();
   for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j) a(i, j) = a(j, i) = test::uniform(-1, 1);
+    for (int j = i; j < 3; ++j)
+      a(i, j) = a(j, i) = test::uniform(-1, 1);
   return Mat3::Identity() + delta * a;
 }
 
@@ -33,7 +34,8 @@ TEST(Projection, ResultIsARotationToRoundOff) {
     EXPECT_LE(orthogonality_error(Q), 16 * kEps);
     EXPECT_NEAR(Q.determinant(), 1.0, 16 * kEps);
     // Nearest: no other rotation we try is closer.
-    const Mat3 other = project_to_so3(Q * Eigen::AngleAxisd(1e-4, test::random_unit_vector()).toRotationMatrix());
+    const Mat3 other =
+        project_to_so3(Q * Eigen::AngleAxisd(1e-4, test::random_unit_vector()).toRotationMatrix());
     EXPECT_LT((Q - M).norm(), (other - M).norm());
   }
 }

@@ -40,7 +40,8 @@ TEST(Quaternion, MatrixRoundTripOnRandomRotations) {
 
 TEST(Quaternion, HalfTurnsAreConvertedAccurately) {
   // The naive w = sqrt(1 + tr R)/2 formula fails here (tr R = −1); Shepperd's branch does not.
-  for (const Vec3& n : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ()), Vec3(1, -1, 1).normalized()}) {
+  for (const Vec3& n :
+       {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ()), Vec3(1, -1, 1).normalized()}) {
     const Mat3 R = exp(std::numbers::pi * n);
     const Quat q = quaternion_from_rotation(R);
     EXPECT_NEAR(std::abs(q.w()), 0.0, 4 * kEps);
@@ -70,7 +71,8 @@ TEST(Quaternion, BadInputIsRejectedWithAClearMessage) {
     rotation_from_quaternion(Quat(0, 0, 0, 0));
     FAIL();
   } catch (const InvalidInput& e) {
-    EXPECT_EQ(std::string(e.what()), "quaternion: got (0, 0, 0, 0), expected a non-zero quaternion (w, x, y, z)");
+    EXPECT_EQ(std::string(e.what()),
+              "quaternion: got (0, 0, 0, 0), expected a non-zero quaternion (w, x, y, z)");
   }
 }
 

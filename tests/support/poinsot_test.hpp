@@ -19,7 +19,9 @@ inline std::mt19937_64& rng() {
   return engine;
 }
 
-inline double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng()); }
+inline double uniform(double lo, double hi) {
+  return std::uniform_real_distribution<double>(lo, hi)(rng());
+}
 
 inline Vec3 random_vector(double scale = 1.0) {
   return Vec3(uniform(-scale, scale), uniform(-scale, scale), uniform(-scale, scale));
@@ -40,7 +42,9 @@ inline Quat random_quaternion() {
   return q;
 }
 
-inline Mat3 random_rotation() { return random_quaternion().toRotationMatrix(); }
+inline Mat3 random_rotation() {
+  return random_quaternion().toRotationMatrix();
+}
 
 /// Max-norm of a difference of matrices or vectors.
 template <class A, class B>
@@ -52,4 +56,5 @@ double max_abs_diff(const A& a, const B& b) {
 
 /// EXPECT that |a − b| ≤ tol · max(1, |scale|): an absolute tolerance for quantities of order one, a relative
 /// one for larger ones.
-#define POINSOT_EXPECT_SCALED_NEAR(a, b, tol, scale) EXPECT_LE(std::abs((a) - (b)), (tol) * std::max(1.0, std::abs(scale)))
+#define POINSOT_EXPECT_SCALED_NEAR(a, b, tol, scale) \
+  EXPECT_LE(std::abs((a) - (b)), (tol)*std::max(1.0, std::abs(scale)))

@@ -1,7 +1,8 @@
 #pragma once
 /// @file axis_angle.hpp
-/// Axis–angle form of a rotation: the rotation by `angle` radians about the unit vector `axis`, counter-clockwise
-/// seen from the tip of the axis (right-hand rule). `rotation vector = angle · axis` is the form of exp_log.hpp.
+/// Axis–angle form of a rotation: the rotation by `angle` radians about the unit vector `axis`,
+/// counter-clockwise seen from the tip of the axis (right-hand rule). `rotation vector = angle · axis` is the
+/// form of exp_log.hpp.
 
 #include "poinsot/core/types.hpp"
 

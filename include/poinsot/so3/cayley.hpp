@@ -5,8 +5,9 @@
 ///
 ///     cay(c) = (I − j(c))⁻¹ (I + j(c)) = I + 2/(1 + |c|²) · (j(c) + j(c)²),
 ///
-/// the rotation by the angle 2·atan|c| about c/|c| (so |c| = tan(θ/2), the Gibbs–Rodrigues vector). Its inverse is
-/// `c = vee(R − Rᵀ) / (1 + tr R)`, defined for every rotation except the half-turns (θ = π, tr R = −1).
+/// the rotation by the angle 2·atan|c| about c/|c| (so |c| = tan(θ/2), the Gibbs–Rodrigues vector). Its
+/// inverse is `c = vee(R − Rᵀ) / (1 + tr R)`, defined for every rotation except the half-turns (θ = π, tr R =
+/// −1).
 
 #include "poinsot/core/types.hpp"
 

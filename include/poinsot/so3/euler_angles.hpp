@@ -9,11 +9,11 @@
 /// (Goldstein §4.4) is `R = R_z(φ) R_x(θ) R_z(ψ)` with precession φ, nutation θ and spin ψ. An extrinsic
 /// sequence (about fixed space axes) equals the reversed intrinsic one with the angles reversed.
 ///
-/// Ranges of the angles returned: a1, a3 ∈ (−π, π]; a2 ∈ [0, π] for the six proper Euler sequences (first axis
-/// = last axis) and a2 ∈ [−π/2, π/2] for the six Tait–Bryan ones. At gimbal lock (a2 = 0 or π for proper,
-/// ±π/2 for Tait–Bryan) only a combination of a1 and a3 is defined; a3 = 0 is returned. The extraction uses the
-/// quaternion method of Bernardes & Viollet (2022, PLoS ONE 17(11) e0276302), uniform over the twelve sequences
-/// and free of the loss of accuracy of asin near ±π/2.
+/// Ranges of the angles returned: a1, a3 ∈ (−π, π]; a2 ∈ [0, π] for the six proper Euler sequences (first
+/// axis = last axis) and a2 ∈ [−π/2, π/2] for the six Tait–Bryan ones. At gimbal lock (a2 = 0 or π for
+/// proper, ±π/2 for Tait–Bryan) only a combination of a1 and a3 is defined; a3 = 0 is returned. The
+/// extraction uses the quaternion method of Bernardes & Viollet (2022, PLoS ONE 17(11) e0276302), uniform
+/// over the twelve sequences and free of the loss of accuracy of asin near ±π/2.
 
 #include <array>
 #include <string>

@@ -6,9 +6,9 @@
 ///
 ///     exp(v) = I + (sin θ / θ) j(v) + ((1 − cos θ) / θ²) j(v)²,
 ///
-/// the rotation by θ about n, counter-clockwise seen from the tip of n (right-hand rule). Both coefficients are
-/// evaluated without cancellation: `(1 − cos θ)/θ² = 2 sin²(θ/2)/θ²`, and below θ = 1e-4 by their Taylor series,
-/// so exp is accurate to a few ulps at every angle, 1e-12 and 0 included.
+/// the rotation by θ about n, counter-clockwise seen from the tip of n (right-hand rule). Both coefficients
+/// are evaluated without cancellation: `(1 − cos θ)/θ² = 2 sin²(θ/2)/θ²`, and below θ = 1e-4 by their Taylor
+/// series, so exp is accurate to a few ulps at every angle, 1e-12 and 0 included.
 ///
 /// log returns the rotation vector of angle θ ∈ [0, π]. The angle comes from `2 atan2(|q_v|, |q_w|)` of the
 /// rotation's quaternion (obtained by Shepperd's method), which keeps full relative accuracy near 0 and
@@ -26,8 +26,8 @@ namespace poinsot::so3 {
 /// non-finite input gives a non-finite result (use exp_checked for input from users).
 inline Mat3 exp(const Vec3& v) {
   const double theta2 = v.squaredNorm();
-  double a;  // sin θ / θ
-  double b;  // (1 − cos θ) / θ²
+  double a;             // sin θ / θ
+  double b;             // (1 − cos θ) / θ²
   if (theta2 < 1e-8) {  // θ < 1e-4: Taylor series, truncation error below θ⁶/5040 < 1e-27
     a = 1.0 - theta2 / 6.0 * (1.0 - theta2 / 20.0);
     b = 0.5 - theta2 / 24.0 * (1.0 - theta2 / 30.0);

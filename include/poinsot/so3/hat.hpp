@@ -1,14 +1,14 @@
 #pragma once
 /// @file hat.hpp
-/// The skew-symmetric map of the seeds, `j(u)` (Vallée & Dumitriu 2002, §1), called `hat` here, and its inverse
-/// `vee`. Convention (ERRATA.md): `j(u) v = u × v`, so
+/// The skew-symmetric map of the seeds, `j(u)` (Vallée & Dumitriu 2002, §1), called `hat` here, and its
+/// inverse `vee`. Convention (ERRATA.md): `j(u) v = u × v`, so
 ///
 ///     j(u) = [[ 0,  -u3,  u2],
 ///             [ u3,  0,  -u1],
 ///             [-u2,  u1,  0 ]].
 ///
-/// With `R` mapping body to space, `Ṙ = R j(ω)` for the body-frame angular velocity ω and `Ṙ = j(Ω) R` for the
-/// space-frame Ω = R ω. Both functions are exact (no rounding) and allocate nothing.
+/// With `R` mapping body to space, `Ṙ = R j(ω)` for the body-frame angular velocity ω and `Ṙ = j(Ω) R` for
+/// the space-frame Ω = R ω. Both functions are exact (no rounding) and allocate nothing.
 
 #include "poinsot/core/types.hpp"
 

@@ -1,11 +1,12 @@
 #pragma once
 /// @file quaternion.hpp
-/// Unit quaternions ↔ rotation matrices. Hamilton convention, `q = w + x i + y j + z k`, and the rotation of a
-/// vector is `q v q*`; for the rotation by θ about the unit axis n, `q = (cos θ/2, sin θ/2 n)`. The matrix is
-/// the body-to-space R of the seeds when q is the body's attitude. Printed and stored in the order (w, x, y, z).
+/// Unit quaternions ↔ rotation matrices. Hamilton convention, `q = w + x i + y j + z k`, and the rotation of
+/// a vector is `q v q*`; for the rotation by θ about the unit axis n, `q = (cos θ/2, sin θ/2 n)`. The matrix
+/// is the body-to-space R of the seeds when q is the body's attitude. Printed and stored in the order (w, x,
+/// y, z).
 ///
-/// q and −q are the same rotation. quaternion_from_rotation returns the canonical one, w ≥ 0 (and at w = 0 the
-/// first non-zero of x, y, z positive), so that results are deterministic.
+/// q and −q are the same rotation. quaternion_from_rotation returns the canonical one, w ≥ 0 (and at w = 0
+/// the first non-zero of x, y, z positive), so that results are deterministic.
 
 #include "poinsot/core/types.hpp"
 
@@ -25,6 +26,8 @@ Quat quaternion_from_rotation(const Mat3& R, double tolerance = 1e-6);
 Quat canonical_unit_quaternion(const Quat& q);
 
 /// The quaternion `(w, x, y, z)` from its four components in that order.
-inline Quat quaternion_wxyz(double w, double x, double y, double z) { return Quat(w, x, y, z); }
+inline Quat quaternion_wxyz(double w, double x, double y, double z) {
+  return Quat(w, x, y, z);
+}
 
 }  // namespace poinsot::so3

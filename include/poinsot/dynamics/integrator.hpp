@@ -1,0 +1,70 @@
+#pragma once
+/// @file integrator.hpp
+/// The one interface every integrator implements (Boost.Odeint's `step(state, dt)` concept, as a small
+/// virtual class): a new method is one new file. Fixed-step methods take exactly the step asked; adaptive
+/// ones take at most that step, report the step taken and propose the next, and offer dense output inside the
+/// last step.
+///
+/// Methods (each in its own file, with its order and what it preserves):
+///   rk4     classical Runge–Kutta on ω and the quaternion, renormalised each step   order 4
+///   dopri5  Dormand–Prince 5(4), adaptive, dense output                              order 5
+///   dop853  Hairer's DOP853 8(5,3), adaptive, dense output of order 7                 order 8
+///   dlm     Dullweber–Leimkuhler–McLachlan symplectic splitting                      order 2
+///   rattle  RATTLE / Moser–Veselov variational method for R̈K = RΛ, RᵀR = I          order 2
+///   exact   closed-form torque-free motion (Jacobi elliptic functions)               exact
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+#include "poinsot/core/types.hpp"
+#include "poinsot/dynamics/rigid_body.hpp"
+#include "poinsot/dynamics/state.hpp"
+#include "poinsot/dynamics/torque.hpp"
+
+namespace poinsot::dynamics {
+
+/// Options common to all integrators; each uses those that apply to it.
+struct IntegratorOptions {
+  double dt = 1e-3;     ///< s: the step of fixed-step methods, the first and largest step of adaptive ones
+  double rtol = 1e-10;  ///< relative tolerance of adaptive methods
+  double atol = 1e-12;  ///< absolute tolerance of adaptive methods
+  double newton_tolerance = 1e-14;  ///< implicit methods (rattle): relative tolerance of the Newton iteration
+  int newton_max_iterations = 50;
+};
+
+/// What one call of step() did.
+struct StepResult {
+  double dt_taken = 0.0;  ///< s
+  double dt_next = 0.0;   ///< s, the step the method proposes next (= dt for fixed-step methods)
+  int rejected = 0;       ///< rejected attempts inside this call (adaptive methods)
+};
+
+class Integrator {
+ public:
+  virtual ~Integrator() = default;
+  /// "rk4", "dopri5", "dop853", "dlm", "rattle", "exact".
+  virtual std::string_view name() const = 0;
+  /// Order of accuracy in the step (0 for exact).
+  virtual int order() const = 0;
+  virtual bool is_adaptive() const { return false; }
+  virtual bool has_dense_output() const { return false; }
+
+  /// Advances `state` by one step of at most `dt` seconds (exactly dt for fixed-step methods).
+  /// Throws ComputationFailed (with t and the cause) when the step cannot be taken.
+  virtual StepResult step(State& state, double dt) = 0;
+  /// The state at time t inside the last step taken (has_dense_output() only). Allocates nothing.
+  virtual State dense_output(double t) const;
+
+  /// The multiplier matrix Λ (body frame, J) of the last step, for methods that compute it (rattle);
+  /// false otherwise.
+  virtual bool last_multiplier(Mat3& lambda_body) const;
+};
+
+/// Creates the named integrator for a body and a torque. Throws InvalidInput for an unknown name (listing the
+/// valid ones), invalid options, or "exact" with a non-zero torque.
+std::unique_ptr<Integrator> make_integrator(std::string_view name, const RigidBody& body,
+                                            std::shared_ptr<const TorqueModel> torque,
+                                            const IntegratorOptions& options = {});
+
+}  // namespace poinsot::dynamics
