@@ -24,7 +24,7 @@ def test_rotation_euler_round_trip(cli):
     r = cli("rotation", "--euler", "ZXZ", "30", "45", "60", "--degrees", "--sequence", "ZXZ")
     assert r.returncode == 0, r.stderr
     line = [l for l in r.stdout.splitlines() if l.startswith("euler ZXZ")][0]
-    values = [float(x) for x in line.split("(")[1].split(")")[0].split(",")]
+    values = [float(x) for x in line.split(":", 1)[1].split("(")[1].split(")")[0].split(",")]
     assert max(abs(a - b) for a, b in zip(values, [30, 45, 60])) < 1e-12
 
 
