@@ -109,7 +109,7 @@ MassProperties from_integrals(const VolumeIntegrals& in, double density, const V
   out.com = origin + d;
   const Mat3 K = density * in.second - out.mass * d * d.transpose();
   out.inertia_com = K.trace() * Mat3::Identity() - K;
-  out.inertia_com = 0.5 * (out.inertia_com + out.inertia_com.transpose());
+  out.inertia_com = (0.5 * (out.inertia_com + out.inertia_com.transpose())).eval();
   return out;
 }
 
