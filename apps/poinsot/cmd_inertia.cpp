@@ -124,7 +124,11 @@ void print_report(const InertiaOptions& o, const Report& r) {
   const PrincipalAxes pa = principal_axes(r.props.inertia_com, o.symmetry_tolerance);
   const Mat3 K = r.props.poinsot_com();
   std::optional<Mat3> J_ref;
-  if (about) J_ref = r.props.inertia_about(*about);
+  std::optional<PrincipalAxes> pa_ref;
+  if (about) {
+    J_ref = r.props.inertia_about(*about);
+    pa_ref = principal_axes(*J_ref, o.symmetry_tolerance);
+  }
 
   std::string out;  // composed fully, then printed
   if (!o.format.empty()) {
@@ -140,6 +144,8 @@ void print_report(const InertiaOptions& o, const Report& r) {
     if (J_ref) {
       j["about"] = json_vector(*about);
       j["inertia_ref"] = json_matrix(*J_ref);
+      j["principal_moments_ref"] = json_vector(pa_ref->moments);
+      j["principal_axes_ref"] = json_matrix(pa_ref->axes);
     }
     j["poinsot_com"] = json_matrix(K);
     j["principal_moments"] = json_vector(pa.moments);
@@ -158,6 +164,8 @@ void print_report(const InertiaOptions& o, const Report& r) {
     if (J_ref) {
       out += fmt::format("inertia J about {} m (kg·m², input frame):\n", format_vector(*about)) +
              matrix_rows(*J_ref);
+      out += fmt::format("  its principal moments: {} kg·m² (ascending)\n", format_vector(pa_ref->moments));
+      out += "  its principal axes (columns):\n" + matrix_rows(pa_ref->axes);
     }
     out += "Poinsot tensor K = tr(J)/2·I − J about the centre of mass (kg·m²):\n" + matrix_rows(K);
     out += fmt::format("principal moments:   {} kg·m² (ascending)\n", format_vector(pa.moments));
@@ -290,7 +298,16 @@ void add_amount_options(CLI::App* cmd, const std::shared_ptr<InertiaOptions>& o,
 
 void register_inertia(CLI::App& app) {
   auto* inertia = app.add_subcommand("inertia", "Mass properties, principal axes and validity of a body");
-  inertia->require_subcommand(1);
+  // No sub-command: say which exist (an unknown one is rejected by CLI11 as "not expected: NAME").
+  inertia->require_subcommand(0, 1);
+  inertia->callback([inertia] {
+    if (inertia->get_subcommands().empty()) {
+      throw InvalidInput(
+          "inertia: no sub-command; expected one of point, rod, plate, box, sphere, cylinder, cone, "
+          "ellipsoid, "
+          "capsule, torus, mesh, tensor, body");
+    }
+  });
 
   struct ShapeDef {
     const char* name;
