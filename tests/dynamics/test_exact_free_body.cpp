@@ -27,11 +27,13 @@ State make_state(const Mat3& R, const Vec3& w, double t = 0.0) {
 }
 
 /// Exact vs reference at time t: ω to `tol`·|ω|, R to `tol` (max entry; R's entries are ≤ 1).
-void expect_matches_reference(const RigidBody& body, const State& s0, double t, double tol,
-                              const char* what) {
+void expect_matches_reference(const RigidBody& body, const State& s0, double t, double tol, const char* what,
+                              int fixed_steps = 0) {
   const ExactFreeBody exact(body, s0);
   const int steps =
-      static_cast<int>(std::ceil(std::abs(t - s0.t) * std::max(1.0, s0.omega_body.norm()) / 1e-2));
+      fixed_steps > 0
+          ? fixed_steps
+          : static_cast<int>(std::ceil(std::abs(t - s0.t) * std::max(1.0, s0.omega_body.norm()) / 1e-2));
   const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, t, std::max(steps, 10));
   const State ex = exact.state_at(t);
   SCOPED_TRACE(std::string(what) + " regime " + to_string(exact.regime()));
