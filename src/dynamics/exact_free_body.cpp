@@ -168,7 +168,7 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
     jacobi_ = JacobiElliptic(k2, kc2_);
     const double K = jacobi_.complete();
     two_k_ = 2.0 * K;
-    // Π(N) − K = (N/3) R_J(0, k'², 1, 1 − N) (Carlson; DLMF 19.25.2).
+    // Π(N) − K = (N/3) R_J(0, k'², 1, 1 − N) (Carlson; DLMF §19.25(i)).
     pi_shift_ = 2.0 * (n_ / 3.0) * boost::math::ellint_rj(0.0, kc2_, 1.0, 1.0 - n_, Policy());
     // u0 = F(am0 | k) = sn0 R_F(cn0², dn0², 1), continued through F(π − x) = 2K − F(x) when cn0 < 0.
     const double r = std::hypot(sn0, cn0);
@@ -199,7 +199,7 @@ ExactFreeBody::Phase ExactFreeBody::phase(double u) const {
   const double ur = u - m * two_k_;
   jacobi_.evaluate(ur, p.sn, p.cn, p.dn);
   const double s2 = p.sn * p.sn;
-  // Π(N; am ur) − ur = (N/3) sn³ R_J(cn², dn², 1, 1 − N sn²)  (DLMF 19.25.14 with F = ur).
+  // Π(N; am ur) − ur = (N/3) sn³ R_J(cn², dn², 1, 1 − N sn²)  (DLMF §19.25(i), with F = ur).
   p.pi_minus_u = (n_ / 3.0) * p.sn * s2 *
                      boost::math::ellint_rj(p.cn * p.cn, p.dn * p.dn, 1.0, 1.0 - n_ * s2, Policy()) +
                  m * pi_shift_;
