@@ -107,3 +107,22 @@ def test_bad_input_is_one_line_with_status_2(cli, args):
     assert r.stdout == ""
     lines = r.stderr.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("poinsot: ")
+
+
+def test_table_script_reproduces_the_docs_rows(source_dir):
+    """scripts/lambda_table.sh runs the CLI for every body; docs/lambda.md holds its output (same rows)."""
+    import os
+    import subprocess
+    exe = os.environ["POINSOT_CLI"]
+    r = subprocess.run(["bash", str(source_dir / "scripts" / "lambda_table.sh"), exe], capture_output=True,
+                       text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    rows = [l for l in r.stdout.splitlines() if l.startswith("| ") and not l.startswith("| body")]
+    assert len(rows) == 12
+    doc = (source_dir / "docs" / "lambda.md").read_text()
+    block = doc.split("<!-- lambda-table:begin -->")[1].split("<!-- lambda-table:end -->")[0]
+    doc_rows = [l for l in block.splitlines() if l.startswith("| ") and not l.startswith("| body")]
+    # Same bodies, methods and 4-digit eigenvalues; the round-off columns may differ between builds.
+    assert [row.split("|")[1:5] for row in doc_rows] == [row.split("|")[1:5] for row in rows]
+    prolate = rows[0].split("|")
+    assert prolate[3].strip() == prolate[4].strip() == "(-1.0294, -0.8450, -0.0656)"
