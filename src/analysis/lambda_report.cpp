@@ -90,8 +90,9 @@ std::string format_lambda_report(const LambdaReport& r) {
   };
   line(fmt::format("Lagrange multipliers Λ = (j(ω)² + j(ω̇))K (Vallée & Dumitriu 2002), body frame, J"));
   line(fmt::format("body: principal moments {} kg·m²; torque: {}", v(r.principal_moments), r.torque));
-  line(fmt::format("run: {} from t = {} s to {} s, step {} s, {} samples every {} s, {} steps", r.method,
-                   g(r.t_initial), g(r.t_end), g(r.dt), p.samples, g(r.sample_dt), r.steps));
+  line(fmt::format("run: {} from t = {} s to {} s, {}, {} samples every {} s, {} steps", r.method,
+                   g(r.t_initial), g(r.t_end), r.dt > 0.0 ? fmt::format("step {} s", g(r.dt)) : "closed form",
+                   p.samples, g(r.sample_dt), r.steps));
   line(fmt::format("eigenvalues of Λ at t0 (ascending, J):     {}", v(p.eigenvalues_initial)));
   line(fmt::format("eigenvalues of Λ at t_end (ascending, J):  {}", v(p.eigenvalues_final)));
   line(fmt::format("largest eigenvalue variation (J):          {}{}", g(p.eigenvalue_max_variation),
