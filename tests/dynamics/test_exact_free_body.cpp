@@ -161,6 +161,9 @@ TEST(ExactFreeBody, AxisymmetricClosedFormAgreesWithEllipticAndReference) {
     const ExactFreeBody elliptic(body, s0, ExactMethod::elliptic);
     EXPECT_EQ(closed.regime(), FreeBodyRegime::axisymmetric);
     EXPECT_NE(elliptic.regime(), FreeBodyRegime::axisymmetric);
+    EXPECT_EQ(elliptic.theory().modulus, 0.0);  // k² ∝ the difference of the two equal moments
+    // The forced elliptic form's ω period 4K/ω_p = 2π/ω_p equals eq. (4.2)'s precession period.
+    EXPECT_NEAR(elliptic.omega_period(), closed.omega_period(), 1e-13 * closed.omega_period());
     expect_matches_reference(body, s0, 100.0, 1e-12, "axisymmetric");
     for (double t : {-40.0, 3.0, 100.0}) {
       const State a = closed.state_at(t);
@@ -186,6 +189,20 @@ TEST(ExactFreeBody, AxisymmetricFormulaWithGeneralAxisMatchesReference) {
   const State cf = axisymmetric_free_motion(A, C, e, s0, 50.0);
   EXPECT_LE(max_abs_diff(cf.omega_body, ref.omega_body), 1e-12);
   EXPECT_LE(max_abs_diff(cf.R, ref.R), 1e-12);
+}
+
+// Nearly symmetric bodies (two moments 1e-13 … 1e-9 apart, beyond the symmetry tolerance): the characteristic
+// N of Π would be ~1/(I2 − I1) for one choice of the attitude frame's polar axis; the other choice keeps it
+// bounded (their product is k²). Without that choice these cases lost up to 8e-10 in R.
+TEST(ExactFreeBody, NearlySymmetricBodiesKeepFullPrecision) {
+  for (const Vec3& I :
+       {Vec3(1.0, 1.0 + 1e-9, 1.5), Vec3(1.0, 1.5, 1.5 + 1e-9), Vec3(1.0, 1.0 + 1e-13, 1.5)}) {
+    for (const Vec3& w : {Vec3(0.9, 0.4, 1e-6), Vec3(1e-6, 0.4, 0.9), Vec3(0.7, 0.7, 0.0)}) {
+      const RigidBody body = RigidBody::from_principal_moments(I);
+      expect_matches_reference(body, make_state(test::random_rotation(), w), 100.0, 1e-12,
+                               "nearly symmetric");
+    }
+  }
 }
 
 // Energy and L_space to 1e-14 relative, and R a rotation, at times near and far, both signs.
