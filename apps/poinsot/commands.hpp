@@ -15,6 +15,7 @@ void register_inertia(CLI::App& app);
 // run (issue 6)
 
 // lambda (issue 5)
+void register_lambda(CLI::App& app);
 
 
 }  // namespace poinsot::cli

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   // run (issue 6)
 
   // lambda (issue 5)
+  poinsot::cli::register_lambda(app);
 
   try {
     app.parse(argc, argv);
