@@ -106,6 +106,7 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
   sum.torque = sc.torque->describe();
   sum.body_description = sc.body_description;
   sum.principal_moments = sc.body.principal_moments();
+  sum.inertia = sc.body.inertia();
   sum.symmetry = symmetry_class(sum.principal_moments);
   sum.initial = sc.initial;
   sum.energy0 = dynamics::total_energy(sc.body, sc.initial, sc.gravity_space);

@@ -66,6 +66,7 @@ std::string summary_json(const RunSummary& s) {
   j["failure"] = s.failure.empty() ? json(nullptr) : json(s.failure);
   j["body"] = {{"description", s.body_description},
                {"principal_moments", vec(s.principal_moments)},
+               {"inertia", mat(s.inertia)},
                {"symmetry", s.symmetry}};
   j["initial"] = state_json(s.initial);
   j["initial"]["energy"] = s.energy0;

@@ -42,6 +42,7 @@ struct TopEvents {
 struct RunSummary {
   std::string scenario, source, title, method, torque, body_description, symmetry;
   Vec3 principal_moments = Vec3::Zero();  ///< kg·m², ascending (about the rotation point)
+  Mat3 inertia = Mat3::Identity();        ///< J about the rotation point, body frame (kg·m²)
   dynamics::State initial;
   double energy0 = 0.0;                 ///< J, T + V at t = 0
   Vec3 L_space0 = Vec3::Zero();         ///< kg·m²/s
