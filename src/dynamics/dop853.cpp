@@ -291,9 +291,12 @@ StepResult Dop853Integrator::step(State& state, double dt) {
   auto& k = m.k;
   if (!m.k0_valid) k[0] = m.f(t, y);
   double h = std::min(dt, m.opt.dt);
+  if (!(h > 0.0)) {
+    throw InvalidInput(fmt::format("dop853: step dt = {} s at t = {} s; expected dt > 0", h, t));
+  }
   int rejected = 0;
   for (;;) {
-    if (!(h > 1e-14 * std::max(1.0, std::abs(t)))) {
+    if (rejected > 0 && !(h > 1e-14 * std::max(1.0, std::abs(t)))) {
       throw ComputationFailed(fmt::format(
           "dop853: step size {:.3g} s too small at t = {} s after {} rejections; expected a step that "
           "meets rtol = {:.3g}, atol = {:.3g} (stiff or singular motion?)",
