@@ -75,8 +75,11 @@ BodyInertia body_from_shape(const Source& source, const toml::table& shape, cons
     for (const auto& k : it->second)
       ok = ok || key.str() == k;
     if (!ok) {
+      const auto& at = key.source().begin;
+      const std::string where =
+          at.line > 0 ? fmt::format("{}:{}:{}: ", source.name, at.line, at.column) : location(source, &value);
       throw InvalidInput(fmt::format("{}[body.shape] key \"{}\" does not apply to a {}; valid keys: {}",
-                                     location(source, &value), key.str(), type, valid));
+                                     where, key.str(), type, valid));
     }
   }
   const Section& s = probe;
