@@ -150,11 +150,12 @@ BodyInertia body_from_mesh(const Source& source, const toml::table& mesh, const 
   out.inertia_com = mp.inertia_com;
   out.mass = mp.mass;
   out.com = mp.com;
-  out.description =
-      fmt::format("{}mesh {} ({} triangles), {} {} {}, mass {} kg, centre of mass {} m (mesh frame)",
-                  shell ? "thin-shell " : "", file.string(), m.triangles.size(), by_mass ? "mass" : "density",
-                  format_number(amount), by_mass ? "kg" : (shell ? "kg/m²" : "kg/m³"), format_number(mp.mass),
-                  format_vector(mp.com));
+  out.description = fmt::format(
+      "{}mesh {} ({} triangles), {} {} {}, mass {} kg, centre of mass {} m (mesh frame)",
+      shell ? "thin-shell " : "", file.string(), m.triangles.size(), by_mass ? "mass" : "density",
+      format_number(amount), by_mass ? "kg" : (shell ? "kg/m²" : "kg/m³"), format_number(mp.mass, 7),
+      fmt::format("({}, {}, {})", format_number(mp.com.x(), 7), format_number(mp.com.y(), 7),
+                  format_number(mp.com.z(), 7)));
   return out;
 }
 
