@@ -192,8 +192,11 @@ def _plot_top(plt, cols, summary, out):
     e1 /= np.linalg.norm(e1)
     e2 = np.cross(u, e1)
     x, y = tip @ e1, tip @ e2
-    fig, ax = plt.subplots(figsize=(6.8, 6.8), constrained_layout=True)
-    sc = ax.scatter(x, y, c=cols["t"], s=2, cmap="viridis")
+    t = cols["t"]
+    theta = np.arccos(np.clip(tip @ u, -1.0, 1.0))
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(13, 6.2), constrained_layout=True,
+                                  gridspec_kw={"width_ratios": [1.15, 1]})
+    sc = ax.scatter(x, y, c=t, s=2, cmap="viridis")
     ax.plot(x, y, color="0.5", lw=0.4, alpha=0.6)
     ax.plot(x[0], y[0], "o", color="C3", label="t = 0")
     r = max(float(np.max(np.hypot(x, y))), 1e-3)
@@ -209,13 +212,26 @@ def _plot_top(plt, cols, summary, out):
     ev = summary.get("events", {})
     rate = ev.get("precession_rate_mean")
     sub = f"mean precession {rate:.4g} rad/s" if rate is not None else ""
-    ax.set_title(f"{top['kind']}: figure-axis tip seen from above, looking down {about}\n"
-                 f"{_title(summary)}; {sub}", fontsize=10)
+    ax.set_title(f"Figure-axis tip seen from above, looking down {about}\n{sub}", fontsize=10)
     cb = fig.colorbar(sc, ax=ax, shrink=0.8)
     cb.set_label("time t (s)")
     ax.legend(loc="upper right", fontsize=9)
     ax.grid(alpha=0.3)
-    fig.savefig(out, dpi=120)
+    # Nutation: the tilt of the axis from the direction, over about a dozen nutation periods.
+    nu = ev.get("nutation_frequency")
+    span = t[-1] - t[0]
+    if nu:
+        span = min(span, 12 * 2 * np.pi / nu)
+    sel = t <= t[0] + span
+    ax2.plot(t[sel], np.degrees(theta[sel]), color="C0", lw=1.2)
+    ax2.set_xlabel("time t (s)")
+    ax2.set_ylabel(f"tilt of the figure axis from {about} (degrees)")
+    nut = f"nutation {nu:.4g} rad/s" if nu else "no nutation detected"
+    ax2.set_title(f"Nutation: tilt against time ({nut})", fontsize=10)
+    ax2.ticklabel_format(axis="y", useOffset=False)
+    ax2.grid(alpha=0.3)
+    fig.suptitle(f"{top['kind']}: {_title(summary)}", fontsize=12)
+    fig.savefig(out, dpi=110)
     plt.close(fig)
 
 
