@@ -229,6 +229,10 @@ def _plot_top(plt, cols, summary, out):
     nut = f"nutation {nu:.4g} rad/s" if nu else "no nutation detected"
     ax2.set_title(f"Nutation: tilt against time ({nut})", fontsize=10)
     ax2.ticklabel_format(axis="y", useOffset=False)
+    tilt = np.degrees(theta[sel])
+    if np.ptp(tilt) < 1e-3:  # a steady tilt: show it on a readable half-degree window, not its round-off
+        mid = float(np.mean(tilt))
+        ax2.set_ylim(mid - 0.5, mid + 0.5)
     ax2.grid(alpha=0.3)
     fig.suptitle(f"{top['kind']}: {_title(summary)}", fontsize=12)
     fig.savefig(out, dpi=110)
