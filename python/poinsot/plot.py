@@ -157,12 +157,17 @@ def _plot_polhode(plt, cols, summary, out):
     for segs in curves[: len(others)]:
         for s in segs:
             ax.plot(s[:, 0], s[:, 1], s[:, 2], color="0.6", lw=0.6)
-    if level0:
-        for i, s in enumerate(curves[-1]):
-            ax.plot(s[:, 0], s[:, 1], s[:, 2], color="k", lw=2.2, ls="--",
-                    label="theory: sphere ∩ initial energy ellipsoid" if i == 0 else None)
-    ax.plot(u[:, 0], u[:, 1], u[:, 2], color="C3", lw=1.3, label="computed L_body / |L|")
+    ax.plot(u[:, 0], u[:, 1], u[:, 2], color="C3", lw=3.0, alpha=0.55, label="computed L_body / |L|")
     ax.scatter(*u[0], color="C3", s=30, label="t = 0")
+    if level0:
+        # The level set has two components (one about each end of the axis the motion circles): draw the one
+        # the body is on, i.e. on the same side as the computed path's mean along its dominant coordinate.
+        mean = u.mean(axis=0)
+        k = int(np.argmax(np.abs(mean)))
+        segs = [s for s in curves[-1] if np.sign(s[:, k].mean()) == np.sign(mean[k])] or curves[-1]
+        for i, s in enumerate(segs):
+            ax.plot(s[:, 0], s[:, 1], s[:, 2], color="k", lw=1.4, ls="--",
+                    label="theory: sphere ∩ initial energy ellipsoid" if i == 0 else None)
     ax.set_xlabel("L₁/|L| (body x)")
     ax.set_ylabel("L₂/|L| (body y)")
     ax.set_zlabel("L₃/|L| (body z)")
