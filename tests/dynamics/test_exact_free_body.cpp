@@ -33,7 +33,7 @@ void expect_matches_reference(const RigidBody& body, const State& s0, double t, 
   const int steps =
       fixed_steps > 0
           ? fixed_steps
-          : static_cast<int>(std::ceil(std::abs(t - s0.t) * std::max(1.0, s0.omega_body.norm()) / 1e-2));
+          : static_cast<int>(std::ceil(std::abs(t - s0.t) * std::max(1.0, s0.omega_body.norm()) / 2e-2));
   const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, t, std::max(steps, 10));
   const State ex = exact.state_at(t);
   SCOPED_TRACE(std::string(what) + " regime " + to_string(exact.regime()));
@@ -45,7 +45,7 @@ void expect_matches_reference(const RigidBody& body, const State& s0, double t, 
 // The accuracy target of the issue: 1e-12 in ω and R at t = 100 s, both regimes, random bodies and states.
 TEST(ExactFreeBody, MatchesReferenceAtHundredSecondsBothRegimes) {
   int largest = 0, smallest = 0;
-  for (int trial = 0; trial < 8; ++trial) {
+  for (int trial = 0; trial < 6; ++trial) {
     Vec3 I(test::uniform(1.0, 2.0), test::uniform(1.0, 2.0), test::uniform(1.0, 2.0));
     std::sort(I.data(), I.data() + 3);
     const RigidBody body = RigidBody::from_principal_moments(I);
@@ -189,6 +189,20 @@ TEST(ExactFreeBody, AxisymmetricFormulaWithGeneralAxisMatchesReference) {
   const State cf = axisymmetric_free_motion(A, C, e, s0, 50.0);
   EXPECT_LE(max_abs_diff(cf.omega_body, ref.omega_body), 1e-12);
   EXPECT_LE(max_abs_diff(cf.R, ref.R), 1e-12);
+}
+
+// Nearly symmetric bodies (two moments 1e-13 … 1e-9 apart, beyond the symmetry tolerance): the characteristic
+// N of Π would be ~1/(I2 − I1) for one choice of the attitude frame's polar axis; the other choice keeps it
+// bounded (their product is k²). Without that choice these cases lost up to 8e-10 in R.
+TEST(ExactFreeBody, NearlySymmetricBodiesKeepFullPrecision) {
+  for (const Vec3& I :
+       {Vec3(1.0, 1.0 + 1e-9, 1.5), Vec3(1.0, 1.5, 1.5 + 1e-9), Vec3(1.0, 1.0 + 1e-13, 1.5)}) {
+    for (const Vec3& w : {Vec3(0.9, 0.4, 1e-6), Vec3(1e-6, 0.4, 0.9), Vec3(0.7, 0.7, 0.0)}) {
+      const RigidBody body = RigidBody::from_principal_moments(I);
+      expect_matches_reference(body, make_state(test::random_rotation(), w), 100.0, 1e-12,
+                               "nearly symmetric");
+    }
+  }
 }
 
 // Energy and L_space to 1e-14 relative, and R a rotation, at times near and far, both signs.
