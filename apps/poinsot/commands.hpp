@@ -13,6 +13,7 @@ void register_rotation(CLI::App& app);
 void register_inertia(CLI::App& app);
 
 // run (issue 6)
+void register_run(CLI::App& app);
 
 // lambda (issue 5)
 void register_lambda(CLI::App& app);

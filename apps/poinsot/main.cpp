@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   poinsot::cli::register_inertia(app);
 
   // run (issue 6)
+  poinsot::cli::register_run(app);
 
   // lambda (issue 5)
   poinsot::cli::register_lambda(app);
