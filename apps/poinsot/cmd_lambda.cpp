@@ -1,7 +1,8 @@
 // `poinsot lambda`: runs a rigid body and checks the theorems of Vallée & Dumitriu (2002) on the Lagrange
 // multipliers Λ along the run (analysis::analyse_lambda), printing a report or, with --json, one object
-// (keys in docs/lambda.md). The body is given by its principal moments or as axisymmetric (A, C, k); the
-// scenario-file form `poinsot lambda SCENARIO.toml` comes with the scenario format (issue 6).
+// (keys in docs/lambda.md). The body, initial state, torque and integrator come from a scenario file
+// (`poinsot lambda SCENARIO.toml`, docs/scenario.md), or from flags: principal moments or axisymmetric (A, C,
+// k) and --omega0. Explicit --method, --dt, --t-end, --sample-dt override the scenario's values.
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,11 +15,14 @@
 #include "poinsot/analysis/lambda_report.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/io/scenario.hpp"
 
 namespace poinsot::cli {
 namespace {
 
 struct LambdaOptions {
+  std::string scenario;  // path of a scenario file; empty: the body comes from the flags
+  bool has_method = false, has_dt = false, has_t_end = false, has_sample_dt = false;
   std::vector<double> moments;  // I1 I2 I3
   double A = 0.0;
   double C = 0.0;
@@ -75,7 +79,38 @@ dynamics::RigidBody make_body(const LambdaOptions& o) {
   return dynamics::RigidBody::from_inertia(analysis::AxisymmetricInertia{o.A, o.C, k.normalized()}.inertia());
 }
 
-void run(const LambdaOptions& o) {
+/// The scenario file's body, state, torque and integrator, with the flags that were given on top.
+analysis::LambdaReport run_scenario(const LambdaOptions& o) {
+  if (!o.moments.empty() || o.A != 0.0 || o.C != 0.0 || !o.omega0.empty()) {
+    throw InvalidInput(
+        fmt::format("lambda: got the scenario file {} and body flags (--moments, --A, --C, --omega0); "
+                    "expected one or the other",
+                    o.scenario));
+  }
+  io::Scenario sc = io::load_scenario(o.scenario);
+  io::ScenarioOverrides ov;
+  if (o.has_method) ov.method = o.method;
+  ov.has_dt = o.has_dt;
+  ov.dt = o.dt;
+  ov.has_t_end = o.has_t_end;
+  ov.t_end = o.t_end;
+  ov.has_sample_dt = o.has_sample_dt;
+  ov.sample_dt = o.sample_dt;
+  io::apply_overrides(sc, ov);
+  analysis::LambdaAnalysisOptions a;
+  a.method = sc.method;
+  a.integrator = sc.integrator;
+  a.t_end = sc.simulation.t_end;
+  a.sample_dt = sc.simulation.sample_dt;
+  a.torque = sc.torque;
+  a.volume_m3 = o.volume;
+  return analysis::analyse_lambda(sc.body, sc.initial, a);
+}
+
+analysis::LambdaReport run_flags(const LambdaOptions& o) {
+  if (o.omega0.empty()) {
+    throw InvalidInput("lambda: --omega0 is missing; expected --omega0 x y z (rad/s) or a scenario file");
+  }
   const dynamics::RigidBody body = make_body(o);
   dynamics::State initial;
   initial.omega_body = vec3(o.omega0);
@@ -85,7 +120,11 @@ void run(const LambdaOptions& o) {
   a.t_end = o.t_end;
   a.sample_dt = o.sample_dt;
   a.volume_m3 = o.volume;
-  const analysis::LambdaReport report = analysis::analyse_lambda(body, initial, a);
+  return analysis::analyse_lambda(body, initial, a);
+}
+
+void run(const LambdaOptions& o) {
+  const analysis::LambdaReport report = o.scenario.empty() ? run_flags(o) : run_scenario(o);
   if (o.json) {
     fmt::print("{}\n", lambda_report_json(report).dump(2));
   } else {
@@ -174,16 +213,24 @@ void register_lambda(CLI::App& app) {
   cmd->add_option("--C", opts->C, "axisymmetric body: moment about the symmetry axis k (kg·m²)");
   cmd->add_option("--k", opts->k, "axisymmetric body: symmetry axis x y z, body frame (default 0 0 1)")
       ->expected(3);
+  cmd->add_option("scenario", opts->scenario, "scenario file (docs/scenario.md) instead of the body flags");
   cmd->add_option("--omega0", opts->omega0, "initial angular velocity x y z, body frame (rad/s); R(0) = I")
-      ->expected(3)
-      ->required();
-  cmd->add_option("--t-end", opts->t_end, "final time (s, default 10)");
-  cmd->add_option("--dt", opts->dt, "integrator step (s, default 1e-3)");
-  cmd->add_option("--sample-dt", opts->sample_dt, "interval between checked states (s, default 0.01)");
-  cmd->add_option("--method", opts->method, "rk4, dopri5, dop853, dlm, rattle (default), exact");
+      ->expected(3);
+  auto* t_end = cmd->add_option("--t-end", opts->t_end, "final time (s, default 10)");
+  auto* dt = cmd->add_option("--dt", opts->dt, "integrator step (s, default 1e-3)");
+  auto* sample_dt =
+      cmd->add_option("--sample-dt", opts->sample_dt, "interval between checked states (s, default 0.01)");
+  auto* method =
+      cmd->add_option("--method", opts->method, "rk4, dopri5, dop853, dlm, rattle (default), exact");
   cmd->add_option("--volume", opts->volume, "body volume (m³) for the mean stress (default: unknown)");
   cmd->add_flag("--json", opts->json, "print one JSON object (keys in docs/lambda.md)");
-  cmd->callback([opts] { run(*opts); });
+  cmd->callback([opts, t_end, dt, sample_dt, method] {
+    opts->has_t_end = t_end->count() > 0;
+    opts->has_dt = dt->count() > 0;
+    opts->has_sample_dt = sample_dt->count() > 0;
+    opts->has_method = method->count() > 0;
+    run(*opts);
+  });
 }
 
 }  // namespace poinsot::cli

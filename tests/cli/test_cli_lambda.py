@@ -126,3 +126,31 @@ def test_table_script_reproduces_the_docs_rows(source_dir):
     assert [row.split("|")[1:5] for row in doc_rows] == [row.split("|")[1:5] for row in rows]
     prolate = rows[0].split("|")
     assert prolate[3].strip() == prolate[4].strip() == "(-1.0294, -0.8450, -0.0656)"
+
+
+def test_scenario_file_form_matches_the_closed_form(cli, source_dir):
+    """`poinsot lambda SCENARIO.toml` runs the scenario's body and state; the eigenvalues of Λ(0) must be the
+    closed form λ1,2 = (c1 ∓ √Δ)/2, λ3 = −C⟨Ω0,Ω0⟩/2 recomputed here from the file's A, C and ω0."""
+    import tomllib
+
+    path = source_dir / "examples" / "axisymmetric_lambda.toml"
+    sc = tomllib.loads(path.read_text())
+    C = sc["body"]["principal_moments"][2]  # the symmetry axis is body z
+    w = np.array(sc["initial"]["omega_body"], dtype=float)
+    J = np.diag(sc["body"]["principal_moments"])
+    expected = np.sort(np.linalg.eigvalsh(lambda_numpy(J, w)))
+    out = run_json(cli, path, "--method", "exact", "--t-end", "5")
+    assert out["method"] == "exact"
+    assert np.allclose(out["eigenvalues_initial"], expected, rtol=0, atol=1e-13 * np.abs(expected).max())
+    eta = w @ w
+    assert out["closed_form"] is not None
+    assert abs(min(out["closed_form"]["eigenvalues"], key=lambda x: abs(x + C * eta / 2)) + C * eta / 2) < 1e-13
+    assert out["closed_form"]["max_deviation"] < 1e-12
+    assert out["t_end"] == 5
+
+
+def test_scenario_file_and_body_flags_together_are_an_error(cli, source_dir):
+    r = cli("lambda", source_dir / "examples" / "axisymmetric_lambda.toml", "--moments", "1", "2", "3")
+    assert r.returncode == 2
+    assert r.stdout == ""
+    assert "expected one or the other" in r.stderr
