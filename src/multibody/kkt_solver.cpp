@@ -1,0 +1,259 @@
+// Block LDLᵀ in tree order (Baraff 1996) with a sparse LU fallback for loops (kkt_solver.hpp).
+#include "poinsot/multibody/kkt_solver.hpp"
+
+#include <deque>
+
+#include <fmt/format.h>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include "poinsot/core/error.hpp"
+
+namespace poinsot::multibody {
+
+struct KktSolver::Sparse {
+  Eigen::SparseMatrix<double> H;
+  std::vector<Eigen::Triplet<double>> triplets;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  Eigen::VectorXd rhs;
+  bool analysed = false;
+};
+
+KktSolver::~KktSolver() = default;
+KktSolver::KktSolver(KktSolver&&) noexcept = default;
+KktSolver& KktSolver::operator=(KktSolver&&) noexcept = default;
+
+KktSolver::KktSolver(const System& system) : system_(&system) {
+  const auto nj = static_cast<std::size_t>(system.joint_count());
+  joint_offset_.resize(nj);
+  for (std::size_t j = 0; j < nj; ++j) {
+    joint_offset_[j] = rows_;
+    rows_ += system.joints()[j].rows();
+  }
+  build_tree(system);
+  if (!tree_) {
+    sparse_ = std::make_unique<Sparse>();
+    const int n = 6 * system.body_count() + rows_;
+    sparse_->H.resize(n, n);
+    sparse_->rhs.resize(n);
+  }
+}
+
+void KktSolver::build_tree(const System& system) {
+  const int nb = system.body_count();
+  const int nj = system.joint_count();
+  const int n = nb + nj;
+  nodes_.clear();
+  nodes_.resize(static_cast<std::size_t>(n));
+  std::vector<std::vector<int>> adjacent(static_cast<std::size_t>(n));
+  for (int j = 0; j < nj; ++j) {
+    const Joint& joint = system.joints()[static_cast<std::size_t>(j)];
+    const int node = nb + j;
+    adjacent[static_cast<std::size_t>(node)].push_back(joint.body_a);
+    adjacent[static_cast<std::size_t>(joint.body_a)].push_back(node);
+    if (joint.body_b != kWorld) {
+      adjacent[static_cast<std::size_t>(node)].push_back(joint.body_b);
+      adjacent[static_cast<std::size_t>(joint.body_b)].push_back(node);
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    Node& node = nodes_[static_cast<std::size_t>(i)];
+    node.is_body = i < nb;
+    node.dim = node.is_body ? 6 : system.joints()[static_cast<std::size_t>(i - nb)].rows();
+  }
+  // Connected parts: count nodes, edges and joints to the world; a tree part has edges = nodes − 1.
+  std::vector<int> part(static_cast<std::size_t>(n), -1);
+  std::vector<int> roots;
+  for (int start = 0; start < n; ++start) {
+    if (part[static_cast<std::size_t>(start)] >= 0) continue;
+    const int id = static_cast<int>(roots.size());
+    std::vector<int> members{start};
+    part[static_cast<std::size_t>(start)] = id;
+    std::size_t edges2 = 0;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+      for (int nb_node : adjacent[static_cast<std::size_t>(members[k])]) {
+        ++edges2;
+        if (part[static_cast<std::size_t>(nb_node)] < 0) {
+          part[static_cast<std::size_t>(nb_node)] = id;
+          members.push_back(nb_node);
+        }
+      }
+    }
+    int world_joints = 0;
+    int root = start;
+    for (int m : members) {
+      if (m >= nb && system.joints()[static_cast<std::size_t>(m - nb)].body_b == kWorld) {
+        ++world_joints;
+        root = m;  // a joint to the world has one neighbour: it must be a root, never a leaf pivot
+      }
+    }
+    if (edges2 / 2 + 1 != members.size() || world_joints > 1) tree_ = false;
+    roots.push_back(root);
+  }
+  if (!tree_) return;
+  // Breadth-first from each root; the reverse of the visiting order has every child before its parent.
+  std::vector<char> seen(static_cast<std::size_t>(n), 0);
+  std::vector<int> visit;
+  visit.reserve(static_cast<std::size_t>(n));
+  for (int root : roots) {
+    std::deque<int> queue{root};
+    seen[static_cast<std::size_t>(root)] = 1;
+    while (!queue.empty()) {
+      const int i = queue.front();
+      queue.pop_front();
+      visit.push_back(i);
+      for (int c : adjacent[static_cast<std::size_t>(i)]) {
+        if (seen[static_cast<std::size_t>(c)]) continue;
+        seen[static_cast<std::size_t>(c)] = 1;
+        nodes_[static_cast<std::size_t>(c)].parent = i;
+        queue.push_back(c);
+      }
+    }
+  }
+  order_.assign(visit.rbegin(), visit.rend());
+  for (int i = 0; i < n; ++i) {
+    Node& node = nodes_[static_cast<std::size_t>(i)];
+    if (node.parent < 0) continue;
+    const int joint_node = node.is_body ? node.parent : i;
+    const int body_node = node.is_body ? i : node.parent;
+    node.parent_side_a = system.joints()[static_cast<std::size_t>(joint_node - nb)].body_a == body_node;
+    const int pdim = nodes_[static_cast<std::size_t>(node.parent)].dim;
+    node.H_up.resize(pdim, node.dim);
+    node.Lt.resize(node.dim, pdim);
+  }
+  work_.resize(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i)
+    work_[static_cast<std::size_t>(i)].resize(nodes_[static_cast<std::size_t>(i)].dim);
+}
+
+void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<JointJacobian>& G_b) {
+  const System& system = *system_;
+  const int nb = system.body_count();
+  if (!tree_) {
+    Sparse& sp = *sparse_;
+    sp.triplets.clear();
+    for (int i = 0; i < nb; ++i) {
+      const Body& body = system.bodies()[static_cast<std::size_t>(i)];
+      for (int r = 0; r < 3; ++r)
+        sp.triplets.emplace_back(6 * i + r, 6 * i + r, body.mass);
+      for (int r = 0; r < 3; ++r) {
+        for (int c = 0; c < 3; ++c)
+          sp.triplets.emplace_back(6 * i + 3 + r, 6 * i + 3 + c, body.inertia(r, c));
+      }
+    }
+    for (int j = 0; j < system.joint_count(); ++j) {
+      const Joint& joint = system.joints()[static_cast<std::size_t>(j)];
+      const int row0 = 6 * nb + joint_offset(j);
+      for (int side = 0; side < 2; ++side) {
+        const int b = side == 0 ? joint.body_a : joint.body_b;
+        if (b == kWorld) continue;
+        const JointJacobian& G =
+            side == 0 ? G_a[static_cast<std::size_t>(j)] : G_b[static_cast<std::size_t>(j)];
+        for (int r = 0; r < joint.rows(); ++r) {
+          for (int c = 0; c < 6; ++c) {
+            if (G(r, c) == 0.0) continue;
+            sp.triplets.emplace_back(row0 + r, 6 * b + c, G(r, c));
+            sp.triplets.emplace_back(6 * b + c, row0 + r, G(r, c));
+          }
+        }
+      }
+    }
+    // Structural zeros are dropped above, so the pattern can change between calls: analyse each time it does.
+    const auto nnz_before = sp.H.nonZeros();
+    sp.H.setFromTriplets(sp.triplets.begin(), sp.triplets.end());
+    if (!sp.analysed || sp.H.nonZeros() != nnz_before) {
+      sp.lu.analyzePattern(sp.H);
+      sp.analysed = true;
+    }
+    sp.lu.factorize(sp.H);
+    if (sp.lu.info() != Eigen::Success) {
+      throw ComputationFailed(
+          "multibody: the constraint matrix is singular (redundant or degenerate joints)");
+    }
+    return;
+  }
+  for (int i = 0; i < nb; ++i) {
+    Node& node = nodes_[static_cast<std::size_t>(i)];
+    const Body& body = system.bodies()[static_cast<std::size_t>(i)];
+    node.D.setZero(6, 6);
+    node.D.topLeftCorner(3, 3).diagonal().setConstant(body.mass);
+    node.D.bottomRightCorner(3, 3) = body.inertia;
+  }
+  for (std::size_t i = static_cast<std::size_t>(nb); i < nodes_.size(); ++i) {
+    nodes_[i].D.setZero(nodes_[i].dim, nodes_[i].dim);
+  }
+  for (int i : order_) {
+    Node& node = nodes_[static_cast<std::size_t>(i)];
+    if (node.is_body) {
+      node.llt.compute(node.D);
+    } else {
+      node.llt.compute(-node.D);
+    }
+    if (node.llt.info() != Eigen::Success) {
+      const std::string what =
+          node.is_body ? fmt::format("body '{}'", system.bodies()[static_cast<std::size_t>(i)].name)
+                       : fmt::format("joint '{}'", system.joints()[static_cast<std::size_t>(i - nb)].name);
+      throw ComputationFailed(
+          fmt::format("multibody: singular pivot at {} (redundant or degenerate constraints)", what));
+    }
+    if (node.parent < 0) continue;
+    // H_up: the Jacobian block of the joint on the body, G (rows × 6), or its transpose.
+    if (node.is_body) {
+      const auto j = static_cast<std::size_t>(node.parent - nb);
+      node.H_up = node.parent_side_a ? G_a[j] : G_b[j];
+    } else {
+      const auto j = static_cast<std::size_t>(i - nb);
+      node.H_up = (node.parent_side_a ? G_a[j] : G_b[j]).transpose();
+    }
+    node.Lt = node.llt.solve(node.H_up.transpose());
+    if (!node.is_body) node.Lt = -node.Lt;
+    nodes_[static_cast<std::size_t>(node.parent)].D.noalias() -= node.H_up * node.Lt;
+  }
+}
+
+void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
+  const int nb = system_->body_count();
+  if (!tree_) {
+    Sparse& sp = *sparse_;
+    for (int i = 0; i < nb; ++i)
+      sp.rhs.segment<6>(6 * i) = body[static_cast<std::size_t>(i)];
+    sp.rhs.tail(rows_) = joint;
+    const Eigen::VectorXd x = sp.lu.solve(sp.rhs);
+    for (int i = 0; i < nb; ++i)
+      body[static_cast<std::size_t>(i)] = x.segment<6>(6 * i);
+    joint = x.tail(rows_);
+    return;
+  }
+  for (int i = 0; i < nb; ++i)
+    work_[static_cast<std::size_t>(i)] = body[static_cast<std::size_t>(i)];
+  for (int j = 0; j < system_->joint_count(); ++j) {
+    work_[static_cast<std::size_t>(nb + j)] =
+        joint.segment(joint_offset(j), nodes_[static_cast<std::size_t>(nb + j)].dim);
+  }
+  for (int i : order_) {  // L y = b
+    const Node& node = nodes_[static_cast<std::size_t>(i)];
+    if (node.parent >= 0)
+      work_[static_cast<std::size_t>(node.parent)].noalias() -=
+          node.Lt.transpose() * work_[static_cast<std::size_t>(i)];
+  }
+  for (int i : order_) {  // D z = y
+    const Node& node = nodes_[static_cast<std::size_t>(i)];
+    NodeVector& w = work_[static_cast<std::size_t>(i)];
+    node.llt.solveInPlace(w);
+    if (!node.is_body) w = -w;
+  }
+  for (auto it = order_.rbegin(); it != order_.rend(); ++it) {  // Lᵀ x = z
+    const Node& node = nodes_[static_cast<std::size_t>(*it)];
+    if (node.parent >= 0)
+      work_[static_cast<std::size_t>(*it)].noalias() -=
+          node.Lt * work_[static_cast<std::size_t>(node.parent)];
+  }
+  for (int i = 0; i < nb; ++i)
+    body[static_cast<std::size_t>(i)] = work_[static_cast<std::size_t>(i)];
+  for (int j = 0; j < system_->joint_count(); ++j) {
+    joint.segment(joint_offset(j), nodes_[static_cast<std::size_t>(nb + j)].dim) =
+        work_[static_cast<std::size_t>(nb + j)];
+  }
+}
+
+}  // namespace poinsot::multibody
