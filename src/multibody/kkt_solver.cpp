@@ -1,6 +1,7 @@
 // Block LDLᵀ in tree order (Baraff 1996) with a sparse LU fallback for loops (kkt_solver.hpp).
 #include "poinsot/multibody/kkt_solver.hpp"
 
+#include <cmath>
 #include <deque>
 
 #include <fmt/format.h>
@@ -10,6 +11,49 @@
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::multibody {
+namespace {
+
+// Inverse of a symmetric positive definite 6×6 matrix by Cholesky, A = L Lᵀ, A⁻¹ = L⁻ᵀ L⁻¹ (fixed-size loops
+// that the compiler unrolls). False when a pivot falls below 1e-13 of its diagonal entry (A singular or
+// indefinite to working accuracy).
+bool spd_inverse(const Eigen::Matrix<double, 6, 6>& A, Eigen::Matrix<double, 6, 6>& inv) {
+  double L[6][6] = {};
+  for (int j = 0; j < 6; ++j) {
+    double d = A(j, j);
+    for (int k = 0; k < j; ++k)
+      d -= L[j][k] * L[j][k];
+    if (!(d > 1e-13 * std::abs(A(j, j)))) return false;
+    L[j][j] = std::sqrt(d);
+    for (int i = j + 1; i < 6; ++i) {
+      double v = A(i, j);
+      for (int k = 0; k < j; ++k)
+        v -= L[i][k] * L[j][k];
+      L[i][j] = v / L[j][j];
+    }
+  }
+  double M[6][6] = {};  // L⁻¹, lower triangular
+  for (int i = 0; i < 6; ++i) {
+    M[i][i] = 1.0 / L[i][i];
+    for (int j = 0; j < i; ++j) {
+      double v = 0.0;
+      for (int k = j; k < i; ++k)
+        v += L[i][k] * M[k][j];
+      M[i][j] = -v * M[i][i];
+    }
+  }
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j <= i; ++j) {
+      double v = 0.0;
+      for (int k = i; k < 6; ++k)
+        v += M[k][i] * M[k][j];
+      inv(i, j) = v;
+      inv(j, i) = v;
+    }
+  }
+  return true;
+}
+
+}  // namespace
 
 struct KktSolver::Sparse {
   Eigen::SparseMatrix<double> H;
@@ -117,13 +161,10 @@ void KktSolver::build_tree(const System& system) {
     const int joint_node = node.is_body ? node.parent : i;
     const int body_node = node.is_body ? i : node.parent;
     node.parent_side_a = system.joints()[static_cast<std::size_t>(joint_node - nb)].body_a == body_node;
-    const int pdim = nodes_[static_cast<std::size_t>(node.parent)].dim;
-    node.H_up.resize(pdim, node.dim);
-    node.Lt.resize(node.dim, pdim);
+    node.H_up.setZero();
+    node.Lt.setZero();
   }
-  work_.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i)
-    work_[static_cast<std::size_t>(i)].resize(nodes_[static_cast<std::size_t>(i)].dim);
+  work_.assign(static_cast<std::size_t>(n), Vec6::Zero());
 }
 
 void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<JointJacobian>& G_b) {
@@ -175,21 +216,21 @@ void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<
   for (int i = 0; i < nb; ++i) {
     Node& node = nodes_[static_cast<std::size_t>(i)];
     const Body& body = system.bodies()[static_cast<std::size_t>(i)];
-    node.D.setZero(6, 6);
-    node.D.topLeftCorner(3, 3).diagonal().setConstant(body.mass);
-    node.D.bottomRightCorner(3, 3) = body.inertia;
+    node.D.setZero();
+    node.D.topLeftCorner<3, 3>().diagonal().setConstant(body.mass);
+    node.D.bottomRightCorner<3, 3>() = body.inertia;
   }
   for (std::size_t i = static_cast<std::size_t>(nb); i < nodes_.size(); ++i) {
-    nodes_[i].D.setZero(nodes_[i].dim, nodes_[i].dim);
+    Node& node = nodes_[i];
+    node.D.setZero();
+    for (int k = node.dim; k < 6; ++k)
+      node.D(k, k) = -1.0;  // padding rows
   }
   for (int i : order_) {
     Node& node = nodes_[static_cast<std::size_t>(i)];
-    if (node.is_body) {
-      node.llt.compute(node.D);
-    } else {
-      node.llt.compute(-node.D);
-    }
-    if (node.llt.info() != Eigen::Success) {
+    const bool ok = node.is_body ? spd_inverse(node.D, node.D_inv) : spd_inverse(-node.D, node.D_inv);
+    if (!node.is_body) node.D_inv = -node.D_inv;
+    if (!ok) {
       const std::string what =
           node.is_body ? fmt::format("body '{}'", system.bodies()[static_cast<std::size_t>(i)].name)
                        : fmt::format("joint '{}'", system.joints()[static_cast<std::size_t>(i - nb)].name);
@@ -200,13 +241,14 @@ void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<
     // H_up: the Jacobian block of the joint on the body, G (rows × 6), or its transpose.
     if (node.is_body) {
       const auto j = static_cast<std::size_t>(node.parent - nb);
-      node.H_up = node.parent_side_a ? G_a[j] : G_b[j];
+      const JointJacobian& G = node.parent_side_a ? G_a[j] : G_b[j];
+      node.H_up.topRows(G.rows()) = G;
     } else {
       const auto j = static_cast<std::size_t>(i - nb);
-      node.H_up = (node.parent_side_a ? G_a[j] : G_b[j]).transpose();
+      const JointJacobian& G = node.parent_side_a ? G_a[j] : G_b[j];
+      node.H_up.leftCols(G.rows()) = G.transpose();
     }
-    node.Lt = node.llt.solve(node.H_up.transpose());
-    if (!node.is_body) node.Lt = -node.Lt;
+    node.Lt.noalias() = node.D_inv * node.H_up.transpose();
     nodes_[static_cast<std::size_t>(node.parent)].D.noalias() -= node.H_up * node.Lt;
   }
 }
@@ -238,9 +280,8 @@ void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
   }
   for (int i : order_) {  // D z = y
     const Node& node = nodes_[static_cast<std::size_t>(i)];
-    NodeVector& w = work_[static_cast<std::size_t>(i)];
-    node.llt.solveInPlace(w);
-    if (!node.is_body) w = -w;
+    Vec6& w = work_[static_cast<std::size_t>(i)];
+    w = node.D_inv * w;
   }
   for (auto it = order_.rbegin(); it != order_.rend(); ++it) {  // Lᵀ x = z
     const Node& node = nodes_[static_cast<std::size_t>(*it)];

@@ -21,7 +21,6 @@
 #include <memory>
 #include <vector>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include "poinsot/multibody/constraints.hpp"
@@ -49,17 +48,18 @@ class KktSolver {
   void solve(std::vector<Vec6>& body, Eigen::VectorXd& joint);
 
  private:
-  using Block = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-  using NodeVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+  // Every node is padded to 6 rows so that all blocks are fixed-size 6×6 (unrolled by Eigen): a joint with
+  // c < 6 rows gets 6 − c decoupled rows with pivot −1 and right-hand side 0, whose solution is 0.
+  using Mat6 = Eigen::Matrix<double, 6, 6>;
   struct Node {
     int dim = 0;
     int parent = -1;  // node index, −1 for a root
     bool is_body = true;
-    bool parent_side_a = true;  // for a body under a joint / a joint under a body: which side of the joint
-    Block D;                    // pivot block
-    Block H_up;                 // block of H in (parent row, this column)
-    Block Lt;                   // D⁻¹ H_upᵀ
-    Eigen::LLT<Block> llt;      // of D (bodies) or −D (joints)
+    bool parent_side_a = true;  // which side of the joint the body is (body under joint or joint under body)
+    Mat6 D;                     // pivot block
+    Mat6 H_up;                  // block of H in (parent row, this column)
+    Mat6 Lt;                    // D⁻¹ H_upᵀ
+    Mat6 D_inv;                 // D⁻¹ (Cholesky of D for bodies, of −D for joints)
   };
   struct Sparse;
 
@@ -71,7 +71,7 @@ class KktSolver {
   std::vector<int> joint_offset_;
   std::vector<Node> nodes_;  // bodies 0..N−1, then joints
   std::vector<int> order_;   // elimination order, children before parents
-  std::vector<NodeVector> work_;
+  std::vector<Vec6> work_;
   std::unique_ptr<Sparse> sparse_;
 };
 
