@@ -269,8 +269,9 @@ void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
   for (int i = 0; i < nb; ++i)
     work_[static_cast<std::size_t>(i)] = body[static_cast<std::size_t>(i)];
   for (int j = 0; j < system_->joint_count(); ++j) {
-    work_[static_cast<std::size_t>(nb + j)] =
-        joint.segment(joint_offset(j), nodes_[static_cast<std::size_t>(nb + j)].dim);
+    const int dim = nodes_[static_cast<std::size_t>(nb + j)].dim;
+    work_[static_cast<std::size_t>(nb + j)].head(dim) = joint.segment(joint_offset(j), dim);
+    work_[static_cast<std::size_t>(nb + j)].tail(6 - dim).setZero();
   }
   for (int i : order_) {  // L y = b
     const Node& node = nodes_[static_cast<std::size_t>(i)];
@@ -292,8 +293,8 @@ void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
   for (int i = 0; i < nb; ++i)
     body[static_cast<std::size_t>(i)] = work_[static_cast<std::size_t>(i)];
   for (int j = 0; j < system_->joint_count(); ++j) {
-    joint.segment(joint_offset(j), nodes_[static_cast<std::size_t>(nb + j)].dim) =
-        work_[static_cast<std::size_t>(nb + j)];
+    const int dim = nodes_[static_cast<std::size_t>(nb + j)].dim;
+    joint.segment(joint_offset(j), dim) = work_[static_cast<std::size_t>(nb + j)].head(dim);
   }
 }
 
