@@ -13,26 +13,27 @@
 namespace poinsot::multibody {
 namespace {
 
-// Inverse of a symmetric positive definite 6×6 matrix by Cholesky, A = L Lᵀ, A⁻¹ = L⁻ᵀ L⁻¹ (fixed-size loops
-// that the compiler unrolls). False when a pivot falls below 1e-13 of its diagonal entry (A singular or
-// indefinite to working accuracy).
+// Inverse of the leading N×N block of a symmetric positive definite matrix by Cholesky, A = L Lᵀ,
+// A⁻¹ = L⁻ᵀ L⁻¹ (fixed-size loops that the compiler unrolls). False when a pivot falls below 1e-13 of its
+// diagonal entry (A singular or indefinite to working accuracy).
+template <int N>
 bool spd_inverse(const Eigen::Matrix<double, 6, 6>& A, Eigen::Matrix<double, 6, 6>& inv) {
-  double L[6][6] = {};
-  for (int j = 0; j < 6; ++j) {
+  double L[N][N] = {};
+  for (int j = 0; j < N; ++j) {
     double d = A(j, j);
     for (int k = 0; k < j; ++k)
       d -= L[j][k] * L[j][k];
     if (!(d > 1e-13 * std::abs(A(j, j)))) return false;
     L[j][j] = std::sqrt(d);
-    for (int i = j + 1; i < 6; ++i) {
+    for (int i = j + 1; i < N; ++i) {
       double v = A(i, j);
       for (int k = 0; k < j; ++k)
         v -= L[i][k] * L[j][k];
       L[i][j] = v / L[j][j];
     }
   }
-  double M[6][6] = {};  // L⁻¹, lower triangular
-  for (int i = 0; i < 6; ++i) {
+  double M[N][N] = {};  // L⁻¹, lower triangular
+  for (int i = 0; i < N; ++i) {
     M[i][i] = 1.0 / L[i][i];
     for (int j = 0; j < i; ++j) {
       double v = 0.0;
@@ -41,16 +42,26 @@ bool spd_inverse(const Eigen::Matrix<double, 6, 6>& A, Eigen::Matrix<double, 6, 
       M[i][j] = -v * M[i][i];
     }
   }
-  for (int i = 0; i < 6; ++i) {
+  for (int i = 0; i < N; ++i) {
     for (int j = 0; j <= i; ++j) {
       double v = 0.0;
-      for (int k = i; k < 6; ++k)
+      for (int k = i; k < N; ++k)
         v += M[k][i] * M[k][j];
       inv(i, j) = v;
       inv(j, i) = v;
     }
   }
   return true;
+}
+
+// One elimination step of a node of size Ni under a parent of size Np (sizes 6, or 3 for ball joints):
+// Lt = D⁻¹ H_upᵀ, D_p −= H_up Lt.
+template <int Ni, int Np>
+void eliminate(const Eigen::Matrix<double, 6, 6>& D_inv, const Eigen::Matrix<double, 6, 6>& H_up,
+               Eigen::Matrix<double, 6, 6>& Lt, Eigen::Matrix<double, 6, 6>& D_parent) {
+  Lt.topLeftCorner<Ni, Np>().noalias() =
+      D_inv.topLeftCorner<Ni, Ni>() * H_up.topLeftCorner<Np, Ni>().transpose();
+  D_parent.topLeftCorner<Np, Np>().noalias() -= H_up.topLeftCorner<Np, Ni>() * Lt.topLeftCorner<Ni, Np>();
 }
 
 }  // namespace
@@ -104,6 +115,11 @@ void KktSolver::build_tree(const System& system) {
     Node& node = nodes_[static_cast<std::size_t>(i)];
     node.is_body = i < nb;
     node.dim = node.is_body ? 6 : system.joints()[static_cast<std::size_t>(i - nb)].rows();
+    node.size = node.dim == 3 ? 3 : 6;
+    node.D.setZero();
+    node.D_inv.setZero();
+    node.H_up.setZero();
+    node.Lt.setZero();
   }
   // Connected parts: count nodes, edges and joints to the world; a tree part has edges = nodes − 1.
   std::vector<int> part(static_cast<std::size_t>(n), -1);
@@ -223,13 +239,18 @@ void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<
   for (std::size_t i = static_cast<std::size_t>(nb); i < nodes_.size(); ++i) {
     Node& node = nodes_[i];
     node.D.setZero();
-    for (int k = node.dim; k < 6; ++k)
+    for (int k = node.dim; k < node.size; ++k)
       node.D(k, k) = -1.0;  // padding rows
   }
   for (int i : order_) {
     Node& node = nodes_[static_cast<std::size_t>(i)];
-    const bool ok = node.is_body ? spd_inverse(node.D, node.D_inv) : spd_inverse(-node.D, node.D_inv);
-    if (!node.is_body) node.D_inv = -node.D_inv;
+    bool ok = false;
+    if (node.is_body) {
+      ok = spd_inverse<6>(node.D, node.D_inv);
+    } else {
+      ok = node.size == 3 ? spd_inverse<3>(-node.D, node.D_inv) : spd_inverse<6>(-node.D, node.D_inv);
+      node.D_inv = -node.D_inv;
+    }
     if (!ok) {
       const std::string what =
           node.is_body ? fmt::format("body '{}'", system.bodies()[static_cast<std::size_t>(i)].name)
@@ -248,8 +269,14 @@ void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<
       const JointJacobian& G = node.parent_side_a ? G_a[j] : G_b[j];
       node.H_up.leftCols(G.rows()) = G.transpose();
     }
-    node.Lt.noalias() = node.D_inv * node.H_up.transpose();
-    nodes_[static_cast<std::size_t>(node.parent)].D.noalias() -= node.H_up * node.Lt;
+    Node& parent = nodes_[static_cast<std::size_t>(node.parent)];
+    if (node.size == 6 && parent.size == 6) {
+      eliminate<6, 6>(node.D_inv, node.H_up, node.Lt, parent.D);
+    } else if (node.size == 6) {
+      eliminate<6, 3>(node.D_inv, node.H_up, node.Lt, parent.D);
+    } else {
+      eliminate<3, 6>(node.D_inv, node.H_up, node.Lt, parent.D);
+    }
   }
 }
 
@@ -275,20 +302,38 @@ void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
   }
   for (int i : order_) {  // L y = b
     const Node& node = nodes_[static_cast<std::size_t>(i)];
-    if (node.parent >= 0)
-      work_[static_cast<std::size_t>(node.parent)].noalias() -=
-          node.Lt.transpose() * work_[static_cast<std::size_t>(i)];
+    if (node.parent < 0) continue;
+    const Vec6& w = work_[static_cast<std::size_t>(i)];
+    Vec6& wp = work_[static_cast<std::size_t>(node.parent)];
+    if (node.size == 6 && nodes_[static_cast<std::size_t>(node.parent)].size == 6) {
+      wp.noalias() -= node.Lt.transpose() * w;
+    } else if (node.size == 6) {
+      wp.head<3>().noalias() -= node.Lt.topLeftCorner<6, 3>().transpose() * w;
+    } else {
+      wp.noalias() -= node.Lt.topLeftCorner<3, 6>().transpose() * w.head<3>();
+    }
   }
   for (int i : order_) {  // D z = y
     const Node& node = nodes_[static_cast<std::size_t>(i)];
     Vec6& w = work_[static_cast<std::size_t>(i)];
-    w = node.D_inv * w;
+    if (node.size == 6) {
+      w = node.D_inv * w;
+    } else {
+      w.head<3>() = node.D_inv.topLeftCorner<3, 3>() * w.head<3>();
+    }
   }
   for (auto it = order_.rbegin(); it != order_.rend(); ++it) {  // Lᵀ x = z
     const Node& node = nodes_[static_cast<std::size_t>(*it)];
-    if (node.parent >= 0)
-      work_[static_cast<std::size_t>(*it)].noalias() -=
-          node.Lt * work_[static_cast<std::size_t>(node.parent)];
+    if (node.parent < 0) continue;
+    Vec6& w = work_[static_cast<std::size_t>(*it)];
+    const Vec6& wp = work_[static_cast<std::size_t>(node.parent)];
+    if (node.size == 6 && nodes_[static_cast<std::size_t>(node.parent)].size == 6) {
+      w.noalias() -= node.Lt * wp;
+    } else if (node.size == 6) {
+      w.noalias() -= node.Lt.topLeftCorner<6, 3>() * wp.head<3>();
+    } else {
+      w.head<3>().noalias() -= node.Lt.topLeftCorner<3, 6>() * wp;
+    }
   }
   for (int i = 0; i < nb; ++i)
     body[static_cast<std::size_t>(i)] = work_[static_cast<std::size_t>(i)];

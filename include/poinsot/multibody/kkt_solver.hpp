@@ -48,11 +48,13 @@ class KktSolver {
   void solve(std::vector<Vec6>& body, Eigen::VectorXd& joint);
 
  private:
-  // Every node is padded to 6 rows so that all blocks are fixed-size 6×6 (unrolled by Eigen): a joint with
-  // c < 6 rows gets 6 − c decoupled rows with pivot −1 and right-hand side 0, whose solution is 0.
+  // Blocks are stored as fixed 6×6 matrices and used through fixed-size corners (unrolled by Eigen): bodies
+  // and hinge/weld joints have size 6 (a joint with c < 6 rows gets 6 − c decoupled padding rows with pivot
+  // −1 and right-hand side 0, whose solution is 0), ball joints size 3.
   using Mat6 = Eigen::Matrix<double, 6, 6>;
   struct Node {
     int dim = 0;
+    int size = 6;     // 6, or 3 for a ball joint (no padding)
     int parent = -1;  // node index, −1 for a root
     bool is_body = true;
     bool parent_side_a = true;  // which side of the joint the body is (body under joint or joint under body)
