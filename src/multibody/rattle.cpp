@@ -79,8 +79,18 @@ struct Rattle::Impl {
       g.setZero();
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
-      const auto seg = y.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
-      gen[static_cast<std::size_t>(joint.body_a)].noalias() += G_a[j].transpose() * seg;
+      const int offset = solver.joint_offset(static_cast<int>(j));
+      Vec6& ga = gen[static_cast<std::size_t>(joint.body_a)];
+      if (joint.rows() == 3) {  // ball joints: fixed-size products
+        const Vec3 seg = y.segment<3>(offset);
+        ga.noalias() += G_a[j].topRows<3>().transpose() * seg;
+        if (joint.body_b != kWorld) {
+          gen[static_cast<std::size_t>(joint.body_b)].noalias() += G_b[j].topRows<3>().transpose() * seg;
+        }
+        continue;
+      }
+      const auto seg = y.segment(offset, joint.rows());
+      ga.noalias() += G_a[j].transpose() * seg;
       if (joint.body_b != kWorld)
         gen[static_cast<std::size_t>(joint.body_b)].noalias() += G_b[j].transpose() * seg;
     }
