@@ -7,6 +7,14 @@
 
 namespace poinsot::multibody::test {
 
+/// Long runs are shortened by this factor in sanitizer builds (Debug + ASan is ~100x slower than Release with
+/// Eigen); the full-length figures are in docs/multibody.md.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr int kSlowdown = 5;
+#else
+inline constexpr int kSlowdown = 1;
+#endif
+
 /// prefix + index (avoids GCC 12's false -Wrestrict on "literal" + std::to_string).
 inline std::string indexed(const char* prefix, int index) {
   std::string s(prefix);
