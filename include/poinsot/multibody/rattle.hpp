@@ -19,9 +19,10 @@
 /// skew part is j(hw)) and its multiplier Λ is then explicit (the symmetric part of the R-equation); K is
 /// never inverted. The position stage is solved by a simplified Newton iteration on (u, w, ν) whose matrix is
 /// the KKT matrix [M Gᵀ; G 0] at qₙ (kkt_solver.hpp, O(N) on trees), factored once per step and reused by the
-/// next step's velocity stage; it stops when the position update is below `tolerance` relative to the
-/// system's length scale (and 1 rad). Damper forces in the velocity stage use the extrapolated velocities 2V½
-/// − Vₙ, which keeps second order.
+/// next step's velocity stage; it stops when every joint residual is below `tolerance` times the system's
+/// length scale (m; dimensionless rows: absolute) and every momentum residual below `tolerance` relative to
+/// the sum of its terms' magnitudes (or has reached its round-off floor once the joints have converged).
+/// Damper forces in the velocity stage use the extrapolated velocities 2V½ − Vₙ, which keeps second order.
 
 #include <memory>
 
@@ -33,8 +34,9 @@
 namespace poinsot::multibody {
 
 struct RattleOptions {
-  double tolerance = 1e-13;  ///< Newton tolerance on the positions, relative to System::length_scale()
-  int max_iterations = 50;   ///< Newton iterations per step before ComputationFailed
+  double tolerance =
+      1e-13;                ///< Newton tolerance: joints relative to System::length_scale(), momenta relative
+  int max_iterations = 50;  ///< Newton iterations per step before ComputationFailed
 };
 
 class Rattle {
