@@ -1,0 +1,145 @@
+#pragma once
+/// @file model.hpp
+/// The constant model of a multibody system in rotation-matrix coordinates (docs/multibody.md).
+///
+/// Each body has 12 coordinates: the position `x` of its centre of mass (space frame, m) and its rotation `R`
+/// (body → space, the nine entries are unknowns), with constant mass data: the mass `m` (kg) and the Poinsot
+/// tensor `K = ∫ρ X⊗X` about the centre of mass in the body frame (kg·m², ERRATA.md; `J = tr(K)·I − K`). The
+/// kinetic energy `½ m|ẋ|² + ½ tr(Ṙ K Ṙᵀ)` has the constant mass matrix `blockdiag(m I₃, K ⊗ I₃)`, and every
+/// constraint enters through a Lagrange multiplier (Vallée & Dumitriu 2002, eq. 1.1 extended to many bodies):
+///
+///     m ẍ = f + Gₓᵀ λ,        R̈ K = R Λ + F_R + G_Rᵀ λ,        RᵀR = I,  g(x, R) = 0,
+///
+/// where `Λ` (symmetric, J) is the body's orthogonality multiplier and `λ` the joints' reactions.
+///
+/// Joints (all holonomic, all written in the 12 coordinates):
+/// - ball: `x_a + R_a A − x_b − R_b B = 0` (3 rows; multiplier = force on body a from b, space frame, N);
+/// - hinge: ball + `(R_a p_k)·(R_b u_b) = 0` for two unit vectors p_1, p_2 ⟂ u_a (2 rows, torques N·m);
+/// - weld: ball + three such perpendicularity rows that freeze the relative rotation.
+/// Body b may be the world (index `kWorld`; its point B is then given in the space frame).
+///
+/// Loads: uniform gravity, constant forces at body points, constant torques, linear spring-dampers between
+/// points. Like Pinocchio and MuJoCo, the model is built once and validated, then read by the integrator; the
+/// mutable State lives apart (state.hpp).
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "poinsot/core/types.hpp"
+
+namespace poinsot::multibody {
+
+inline constexpr int kWorld = -1;  ///< body index of the fixed world frame (x = 0, R = I)
+
+/// Constant data of one rigid body.
+struct Body {
+  std::string name;
+  double mass = 1.0;                ///< m, kg
+  Mat3 poinsot = Mat3::Identity();  ///< K = ∫ρ X⊗X about the centre of mass, body frame, kg·m²
+  Mat3 inertia = Mat3::Identity();  ///< J = tr(K)·I − K about the centre of mass, body frame, kg·m²
+  Mat3 inertia_inverse = Mat3::Identity();  ///< J⁻¹ (J must be positive definite; K may be singular)
+};
+
+enum class JointType { ball, hinge, weld };
+
+/// One joint. Rows: 3 ball rows (always), then `perpendicular_count` rows `(R_a p_k)·(R_b u_k) = 0`.
+struct Joint {
+  std::string name;
+  JointType type = JointType::ball;
+  int body_a = 0;               ///< index of body a (never the world)
+  int body_b = kWorld;          ///< index of body b or kWorld
+  Vec3 point_a = Vec3::Zero();  ///< joint point in body a's frame, from its centre of mass, m
+  Vec3 point_b = Vec3::Zero();  ///< joint point in body b's frame (space frame for the world), m
+  int perpendicular_count = 0;  ///< 0 (ball), 2 (hinge), 3 (weld)
+  std::array<Vec3, 3> p_a{};    ///< unit vectors fixed in body a
+  std::array<Vec3, 3> u_b{};    ///< unit vectors fixed in body b (space frame for the world)
+  int rows() const { return 3 + perpendicular_count; }
+};
+
+/// A linear spring-damper between a point of body a and a point of body b (or of the world):
+/// force on a = −(k (ℓ − ℓ₀) + c ℓ̇) e, with e the unit vector from the point on b to the point on a.
+struct Spring {
+  std::string name;
+  int body_a = 0;
+  int body_b = kWorld;
+  Vec3 point_a = Vec3::Zero();  ///< m, body a frame
+  Vec3 point_b = Vec3::Zero();  ///< m, body b frame (space frame for the world)
+  double stiffness = 0.0;       ///< k, N/m
+  double damping = 0.0;         ///< c, N·s/m
+  double rest_length = 0.0;     ///< ℓ₀, m
+};
+
+/// A constant force (space frame, N) applied at a point of a body (body frame, m from the centre of mass).
+struct ConstantForce {
+  int body = 0;
+  Vec3 force_space = Vec3::Zero();
+  Vec3 point_body = Vec3::Zero();
+};
+
+/// A constant torque (N·m) on a body, given in the space frame or in the body frame.
+struct ConstantTorque {
+  int body = 0;
+  Vec3 torque = Vec3::Zero();
+  bool in_body_frame = false;
+};
+
+/// The model: bodies, joints, loads. Built with the add_ functions, which validate their input and throw
+/// InvalidInput with a one-line message naming the field.
+class System {
+ public:
+  /// Adds a body of mass `mass` (kg) and Poinsot tensor `poinsot_com_body` = K about its centre of mass (body
+  /// frame, kg·m²). K must be symmetric positive semi-definite (it may be singular: laminae) and J = tr(K)I −
+  /// K positive definite (an ideal zero-thickness rod has no moment about its axis: give it a radius).
+  /// Returns the body's index.
+  int add_body(const std::string& name, double mass, const Mat3& poinsot_com_body);
+  /// Same with the classical inertia tensor J about the centre of mass (body frame, kg·m²): K = tr(J)/2·I −
+  /// J.
+  int add_body_from_inertia(const std::string& name, double mass, const Mat3& inertia_com_body);
+
+  /// Ball joint: point_a on body a coincides with point_b on body b (or a fixed point of space if b =
+  /// kWorld).
+  int add_ball(const std::string& name, int body_a, const Vec3& point_a, int body_b, const Vec3& point_b);
+  /// Hinge (revolute) joint: ball joint plus the axis `axis_a` (body a frame) kept parallel to `axis_b` (body
+  /// b frame, or space frame). Axes need not be unit; they must be non-zero.
+  int add_hinge(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a, int body_b,
+                const Vec3& point_b, const Vec3& axis_b);
+  /// Weld joint: ball joint plus fixed relative rotation `R_b_a = R_bᵀ R_a` (R_a = R_b R_b_a).
+  int add_weld(const std::string& name, int body_a, const Vec3& point_a, int body_b, const Vec3& point_b,
+               const Mat3& R_b_a);
+
+  int add_spring(const Spring& spring);
+  void add_force(const ConstantForce& force);
+  void add_torque(const ConstantTorque& torque);
+  /// Uniform gravitational acceleration, space frame, m/s² (e.g. (0, 0, −9.81)).
+  void set_gravity(const Vec3& gravity_space);
+
+  int body_count() const { return static_cast<int>(bodies_.size()); }
+  int joint_count() const { return static_cast<int>(joints_.size()); }
+  const std::vector<Body>& bodies() const { return bodies_; }
+  const std::vector<Joint>& joints() const { return joints_; }
+  const std::vector<Spring>& springs() const { return springs_; }
+  const std::vector<ConstantForce>& forces() const { return forces_; }
+  const std::vector<ConstantTorque>& torques() const { return torques_; }
+  const Vec3& gravity() const { return gravity_; }
+  /// Index of the body called `name`, or kWorld for "world"; throws InvalidInput if there is none.
+  int body_index(const std::string& name) const;
+  /// Total number of joint constraint rows.
+  int constraint_rows() const;
+  /// A length (m) setting the scale of position tolerances: the largest joint lever arm or body radius of
+  /// gyration, at least 1e-3 m.
+  double length_scale() const;
+
+ private:
+  void check_body_index(const std::string& what, int index, bool world_allowed) const;
+  int add_joint(Joint joint);
+
+  std::vector<Body> bodies_;
+  std::vector<Joint> joints_;
+  std::vector<Spring> springs_;
+  std::vector<ConstantForce> forces_;
+  std::vector<ConstantTorque> torques_;
+  Vec3 gravity_ = Vec3::Zero();
+};
+
+}  // namespace poinsot::multibody

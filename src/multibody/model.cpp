@@ -1,0 +1,218 @@
+// The multibody model: validation of bodies, joints and loads (model.hpp).
+#include "poinsot/multibody/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include <fmt/format.h>
+#include <Eigen/Eigenvalues>
+
+#include "poinsot/core/check.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+
+namespace poinsot::multibody {
+namespace {
+
+// A unit vector perpendicular to the unit vector n (deterministic choice).
+Vec3 any_perpendicular(const Vec3& n) {
+  const Vec3 trial = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  return n.cross(trial).normalized();
+}
+
+Vec3 unit_axis(const std::string& what, const Vec3& axis) {
+  require_finite(what, axis);
+  const double norm = axis.norm();
+  if (!(norm > 0.0)) {
+    throw InvalidInput(
+        fmt::format("{}: axis {} is zero; expected a non-zero vector", what, format_vector(axis)));
+  }
+  return axis / norm;
+}
+
+}  // namespace
+
+int System::add_body(const std::string& name, double mass, const Mat3& poinsot_com_body) {
+  const std::string what = fmt::format("multibody body '{}'", name);
+  require_positive(what + ": mass", mass, "kg");
+  require_finite(what + ": Poinsot tensor K", poinsot_com_body);
+  const double scale = std::max(poinsot_com_body.cwiseAbs().maxCoeff(), 1e-300);
+  if ((poinsot_com_body - poinsot_com_body.transpose()).cwiseAbs().maxCoeff() > 1e-12 * scale) {
+    throw InvalidInput(fmt::format("{}: Poinsot tensor K {} kg·m² is not symmetric; expected K = Kᵀ", what,
+                                   format_matrix(poinsot_com_body)));
+  }
+  const Mat3 K = 0.5 * (poinsot_com_body + poinsot_com_body.transpose());
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig_k(K);
+  if (eig_k.eigenvalues().minCoeff() < -1e-12 * scale) {
+    throw InvalidInput(
+        fmt::format("{}: Poinsot tensor K has eigenvalue {} kg·m²; expected K positive semi-definite", what,
+                    format_number(eig_k.eigenvalues().minCoeff())));
+  }
+  const Mat3 J = K.trace() * Mat3::Identity() - K;
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig_j(J);
+  if (!(eig_j.eigenvalues().minCoeff() > 1e-12 * scale)) {
+    throw InvalidInput(
+        fmt::format("{}: inertia J = tr(K)I − K has principal moment {} kg·m²; expected J positive definite "
+                    "(an ideal thin "
+                    "rod has no moment about its axis: give it a radius)",
+                    what, format_number(eig_j.eigenvalues().minCoeff())));
+  }
+  for (const Body& b : bodies_) {
+    if (b.name == name)
+      throw InvalidInput(fmt::format("{}: name already used; expected unique body names", what));
+  }
+  if (name == "world") throw InvalidInput("multibody body: name 'world' is reserved for the fixed frame");
+  Body body;
+  body.name = name;
+  body.mass = mass;
+  body.poinsot = K;
+  body.inertia = J;
+  body.inertia_inverse = J.inverse();
+  bodies_.push_back(body);
+  return body_count() - 1;
+}
+
+int System::add_body_from_inertia(const std::string& name, double mass, const Mat3& inertia_com_body) {
+  require_finite(fmt::format("multibody body '{}': inertia J", name), inertia_com_body);
+  const Mat3 K = 0.5 * inertia_com_body.trace() * Mat3::Identity() - inertia_com_body;
+  return add_body(name, mass, K);
+}
+
+void System::check_body_index(const std::string& what, int index, bool world_allowed) const {
+  if ((index == kWorld && world_allowed) || (index >= 0 && index < body_count())) return;
+  throw InvalidInput(fmt::format("{}: body index {} out of range; expected 0..{}{}", what, index,
+                                 body_count() - 1, world_allowed ? " or the world (-1)" : ""));
+}
+
+int System::add_joint(Joint joint) {
+  const std::string what = fmt::format("multibody joint '{}'", joint.name);
+  check_body_index(what + ": body a", joint.body_a, false);
+  check_body_index(what + ": body b", joint.body_b, true);
+  if (joint.body_a == joint.body_b) {
+    throw InvalidInput(
+        fmt::format("{}: joins body {} to itself; expected two different bodies", what, joint.body_a));
+  }
+  require_finite(what + ": point a", joint.point_a);
+  require_finite(what + ": point b", joint.point_b);
+  joints_.push_back(joint);
+  return joint_count() - 1;
+}
+
+int System::add_ball(const std::string& name, int body_a, const Vec3& point_a, int body_b,
+                     const Vec3& point_b) {
+  Joint j;
+  j.name = name;
+  j.type = JointType::ball;
+  j.body_a = body_a;
+  j.body_b = body_b;
+  j.point_a = point_a;
+  j.point_b = point_b;
+  return add_joint(j);
+}
+
+int System::add_hinge(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a,
+                      int body_b, const Vec3& point_b, const Vec3& axis_b) {
+  const std::string what = fmt::format("multibody joint '{}'", name);
+  const Vec3 ua = unit_axis(what + ": axis a", axis_a);
+  const Vec3 ub = unit_axis(what + ": axis b", axis_b);
+  Joint j;
+  j.name = name;
+  j.type = JointType::hinge;
+  j.body_a = body_a;
+  j.body_b = body_b;
+  j.point_a = point_a;
+  j.point_b = point_b;
+  j.perpendicular_count = 2;
+  j.p_a[0] = any_perpendicular(ua);
+  j.p_a[1] = ua.cross(j.p_a[0]);
+  j.u_b[0] = ub;
+  j.u_b[1] = ub;
+  return add_joint(j);
+}
+
+int System::add_weld(const std::string& name, int body_a, const Vec3& point_a, int body_b,
+                     const Vec3& point_b, const Mat3& R_b_a) {
+  const std::string what = fmt::format("multibody joint '{}'", name);
+  require_finite(what + ": relative rotation", R_b_a);
+  if ((R_b_a.transpose() * R_b_a - Mat3::Identity()).cwiseAbs().maxCoeff() > 1e-9 ||
+      R_b_a.determinant() < 0) {
+    throw InvalidInput(fmt::format("{}: relative rotation {} is not a rotation; expected RᵀR = I, det R = +1",
+                                   what, format_matrix(R_b_a)));
+  }
+  Joint j;
+  j.name = name;
+  j.type = JointType::weld;
+  j.body_a = body_a;
+  j.body_b = body_b;
+  j.point_a = point_a;
+  j.point_b = point_b;
+  j.perpendicular_count = 3;
+  // R_a e_k = R_b (R_b_a e_k): the pairs (e1, C e2), (e2, C e3), (e3, C e1) are perpendicular when welded,
+  // and their three rows are independent there (their normals are ∓ the three axes).
+  for (int k = 0; k < 3; ++k) {
+    j.p_a[static_cast<std::size_t>(k)] = Mat3::Identity().col(k);
+    j.u_b[static_cast<std::size_t>(k)] = R_b_a.col((k + 1) % 3);
+  }
+  return add_joint(j);
+}
+
+int System::add_spring(const Spring& spring) {
+  const std::string what = fmt::format("multibody spring '{}'", spring.name);
+  check_body_index(what + ": body a", spring.body_a, false);
+  check_body_index(what + ": body b", spring.body_b, true);
+  require_non_negative(what + ": stiffness", spring.stiffness, "N/m");
+  require_non_negative(what + ": damping", spring.damping, "N·s/m");
+  require_non_negative(what + ": rest length", spring.rest_length, "m");
+  require_finite(what + ": point a", spring.point_a);
+  require_finite(what + ": point b", spring.point_b);
+  springs_.push_back(spring);
+  return static_cast<int>(springs_.size()) - 1;
+}
+
+void System::add_force(const ConstantForce& force) {
+  check_body_index("multibody force: body", force.body, false);
+  require_finite("multibody force: force", force.force_space);
+  require_finite("multibody force: point", force.point_body);
+  forces_.push_back(force);
+}
+
+void System::add_torque(const ConstantTorque& torque) {
+  check_body_index("multibody torque: body", torque.body, false);
+  require_finite("multibody torque: torque", torque.torque);
+  torques_.push_back(torque);
+}
+
+void System::set_gravity(const Vec3& gravity_space) {
+  require_finite("multibody: gravity", gravity_space);
+  gravity_ = gravity_space;
+}
+
+int System::body_index(const std::string& name) const {
+  if (name == "world") return kWorld;
+  for (int i = 0; i < body_count(); ++i) {
+    if (bodies_[static_cast<std::size_t>(i)].name == name) return i;
+  }
+  throw InvalidInput(fmt::format("multibody: body '{}' not found; expected 'world' or one of the {} bodies",
+                                 name, body_count()));
+}
+
+int System::constraint_rows() const {
+  int rows = 0;
+  for (const Joint& j : joints_)
+    rows += j.rows();
+  return rows;
+}
+
+double System::length_scale() const {
+  double scale = 1e-3;
+  for (const Body& b : bodies_)
+    scale = std::max(scale, std::sqrt(b.poinsot.trace() / b.mass));
+  for (const Joint& j : joints_) {
+    scale = std::max(scale, j.point_a.norm());
+    if (j.body_b != kWorld) scale = std::max(scale, j.point_b.norm());
+  }
+  return scale;
+}
+
+}  // namespace poinsot::multibody

@@ -1,0 +1,104 @@
+// Energy, momenta and constraint violation of a multibody state (observables.hpp).
+#include "poinsot/multibody/observables.hpp"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/check.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/multibody/constraints.hpp"
+#include "poinsot/multibody/loads.hpp"
+
+namespace poinsot::multibody {
+namespace {
+const BodyState& side(const State& s, int index) {
+  return index == kWorld ? world_body_state() : s.bodies[static_cast<std::size_t>(index)];
+}
+}  // namespace
+
+double kinetic_energy(const System& system, const State& state) {
+  double T = 0.0;
+  for (std::size_t i = 0; i < state.bodies.size(); ++i) {
+    const Body& b = system.bodies()[i];
+    const BodyState& s = state.bodies[i];
+    T += 0.5 * b.mass * s.v_space.squaredNorm() + 0.5 * s.omega_body.dot(b.inertia * s.omega_body);
+  }
+  return T;
+}
+
+double total_energy(const System& system, const State& state) {
+  return kinetic_energy(system, state) + potential_energy(system, state.bodies);
+}
+
+Vec3 linear_momentum(const System& system, const State& state) {
+  Vec3 p = Vec3::Zero();
+  for (std::size_t i = 0; i < state.bodies.size(); ++i)
+    p += system.bodies()[i].mass * state.bodies[i].v_space;
+  return p;
+}
+
+Vec3 angular_momentum(const System& system, const State& state) {
+  Vec3 L = Vec3::Zero();
+  for (std::size_t i = 0; i < state.bodies.size(); ++i) {
+    const Body& b = system.bodies()[i];
+    const BodyState& s = state.bodies[i];
+    L += s.x_space.cross(b.mass * s.v_space) + s.R_space_body * (b.inertia * s.omega_body);
+  }
+  return L;
+}
+
+ConstraintViolation constraint_violation(const System& system, const State& state) {
+  ConstraintViolation v;
+  for (const BodyState& s : state.bodies) {
+    v.orthogonality =
+        std::max(v.orthogonality,
+                 (s.R_space_body.transpose() * s.R_space_body - Mat3::Identity()).cwiseAbs().maxCoeff());
+  }
+  for (const Joint& joint : system.joints()) {
+    const BodyState& a = side(state, joint.body_a);
+    const BodyState& b = side(state, joint.body_b);
+    const JointVector g = joint_value(joint, a, b);
+    v.joint_gap = std::max(v.joint_gap, g.head<3>().norm());
+    for (int k = 0; k < joint.perpendicular_count; ++k)
+      v.joint_angle = std::max(v.joint_angle, std::abs(g(3 + k)));
+    JointJacobian Ga, Gb;
+    joint_jacobians(joint, a, b, Ga, Gb);
+    Vec6 va, vb;
+    va << a.v_space, a.omega_body;
+    vb << b.v_space, b.omega_body;
+    const JointVector gdot = Ga * va + Gb * vb;
+    v.joint_velocity = std::max(v.joint_velocity, gdot.head<3>().norm());
+  }
+  return v;
+}
+
+void check_consistent(const System& system, const State& state) {
+  if (state.bodies.size() != static_cast<std::size_t>(system.body_count())) {
+    throw InvalidInput(
+        fmt::format("multibody: state has {} bodies; expected {}", state.bodies.size(), system.body_count()));
+  }
+  for (std::size_t i = 0; i < state.bodies.size(); ++i) {
+    const BodyState& s = state.bodies[i];
+    const std::string what = fmt::format("multibody body '{}'", system.bodies()[i].name);
+    require_finite(what + ": position", s.x_space);
+    require_finite(what + ": rotation", s.R_space_body);
+    require_finite(what + ": velocity", s.v_space);
+    require_finite(what + ": angular velocity", s.omega_body);
+  }
+  const ConstraintViolation v = constraint_violation(system, state);
+  const double L = system.length_scale();
+  if (v.orthogonality > 1e-9) {
+    throw InvalidInput(fmt::format(
+        "multibody: a rotation has |RᵀR − I| = {:.3g}; expected a rotation (< 1e-9)", v.orthogonality));
+  }
+  if (v.joint_gap > 1e-9 * L || v.joint_angle > 1e-9) {
+    throw InvalidInput(
+        fmt::format("multibody: the initial state violates a joint (gap {:.3g} m, angle {:.3g}); expected "
+                    "assembled joints "
+                    "(< 1e-9 relative)",
+                    v.joint_gap, v.joint_angle));
+  }
+}
+
+}  // namespace poinsot::multibody

@@ -1,0 +1,123 @@
+// The scenario driver: integrate, write the trajectory and the report (scenario.hpp).
+#include <chrono>
+#include <ctime>
+#include <fstream>
+#include <ostream>
+
+#include <fmt/format.h>
+#include <fmt/ostream.h>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/multibody/multipliers.hpp"
+#include "poinsot/multibody/observables.hpp"
+#include "poinsot/multibody/rattle.hpp"
+#include "poinsot/multibody/scenario.hpp"
+
+namespace poinsot::multibody {
+namespace {
+
+void write_row(std::ofstream& out, const State& st) {
+  out << fmt::format("{:.17g}", st.time);
+  for (const BodyState& b : st.bodies) {
+    const Quat q(b.R_space_body);
+    out << fmt::format(
+        ",{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:."
+        "17g}",
+        b.x_space.x(), b.x_space.y(), b.x_space.z(), q.w(), q.x(), q.y(), q.z(), b.v_space.x(), b.v_space.y(),
+        b.v_space.z(), b.omega_body.x(), b.omega_body.y(), b.omega_body.z());
+  }
+  out << '\n';
+}
+
+void write_report(std::ostream& out, const Scenario& sc, const State& st, const RunSummary& s) {
+  const System& sys = sc.system;
+  out << "multibody run\n";
+  out << fmt::format("  bodies: {}, joints: {} ({} constraint rows), solver: {}\n", sys.body_count(),
+                     sys.joint_count(), sys.constraint_rows(),
+                     s.tree_solver ? "tree-order block LDLT, O(N)" : "sparse LU (closed loops)");
+  out << fmt::format("  dt: {} s, steps: {}, final time: {} s\n", format_number(sc.dt), s.steps,
+                     format_number(st.time));
+  out << fmt::format("  energy: initial {} J, final {} J, max |E - E0| {} J\n",
+                     format_number(s.energy_initial), format_number(s.energy_final),
+                     format_number(s.max_energy_error));
+  out << fmt::format("  linear momentum: {} kg·m/s\n", format_vector(linear_momentum(sys, st)));
+  out << fmt::format("  angular momentum (origin): {} kg·m²/s\n", format_vector(angular_momentum(sys, st)));
+  out << fmt::format(
+      "  constraint violation (max over the run): joint gap {} m, joint angle {}, |RᵀR − I| {}\n",
+      format_number(s.max_joint_gap), format_number(s.max_joint_angle), format_number(s.max_orthogonality));
+  out << fmt::format("  Newton iterations per step: mean {}, max {}\n",
+                     format_number(s.mean_newton_iterations, 3), s.max_newton_iterations);
+  out << fmt::format("  cpu time per step: {} µs\n", format_number(1e6 * s.cpu_seconds_per_step, 3));
+  const ExactMultipliers ex = exact_multipliers(sys, st);
+  for (int j = 0; j < sys.joint_count(); ++j) {
+    const auto ju = static_cast<std::size_t>(j);
+    out << fmt::format("  joint '{}': reaction force on '{}' {} N, couple {} N·m\n", sys.joints()[ju].name,
+                       sys.bodies()[static_cast<std::size_t>(sys.joints()[ju].body_a)].name,
+                       format_vector(ex.joint_force_space[ju]), format_vector(ex.joint_torque_space[ju]));
+  }
+  for (int i = 0; i < sys.body_count(); ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    out << fmt::format("  body '{}': x {} m, Lambda (body frame, J) {}\n", sys.bodies()[iu].name,
+                       format_vector(st.bodies[iu].x_space), format_matrix(ex.Lambda_body[iu]));
+  }
+}
+
+}  // namespace
+
+RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::string& trajectory_csv) {
+  check_consistent(sc.system, sc.initial);
+  Rattle rattle(sc.system, sc.dt);
+  State st = sc.initial;
+  RunSummary s;
+  s.tree_solver = rattle.uses_tree_solver();
+  s.energy_initial = total_energy(sc.system, st);
+  std::ofstream out;
+  if (!trajectory_csv.empty()) {
+    out.open(trajectory_csv);
+    if (!out)
+      throw InvalidInput(fmt::format("multibody: cannot write the trajectory to '{}'", trajectory_csv));
+    out << "t";
+    for (const Body& b : sc.system.bodies()) {
+      for (const char* c : {"x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"}) {
+        out << ',' << b.name << '.' << c;
+      }
+    }
+    out << '\n';
+    write_row(out, st);
+  }
+  const long steps = std::lround(sc.duration / sc.dt);
+  long iterations = 0;
+  const std::clock_t c0 = std::clock();
+  for (long n = 0; n < steps; ++n) {
+    try {
+      rattle.step(st);
+    } catch (const ComputationFailed&) {
+      if (out.is_open()) out.flush();
+      throw;
+    }
+    iterations += rattle.last_iterations();
+    s.max_newton_iterations = std::max(s.max_newton_iterations, rattle.last_iterations());
+    const ConstraintViolation v = constraint_violation(sc.system, st);
+    s.max_joint_gap = std::max(s.max_joint_gap, v.joint_gap);
+    s.max_joint_angle = std::max(s.max_joint_angle, v.joint_angle);
+    s.max_orthogonality = std::max(s.max_orthogonality, v.orthogonality);
+    s.max_energy_error =
+        std::max(s.max_energy_error, std::abs(total_energy(sc.system, st) - s.energy_initial));
+    if (out.is_open() && ((n + 1) % sc.output_every == 0 || n + 1 == steps)) write_row(out, st);
+  }
+  s.steps = steps;
+  s.cpu_seconds_per_step =
+      steps > 0 ? static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC / static_cast<double>(steps) : 0.0;
+  s.mean_newton_iterations = steps > 0 ? static_cast<double>(iterations) / static_cast<double>(steps) : 0.0;
+  s.energy_final = total_energy(sc.system, st);
+  if (report != nullptr) write_report(*report, sc, st, s);
+  return s;
+}
+
+int run_file(const std::string& toml_path, std::ostream& report, const std::string& trajectory_csv) {
+  run_scenario(load_scenario(toml_path), &report, trajectory_csv);
+  return 0;
+}
+
+}  // namespace poinsot::multibody

@@ -1,0 +1,342 @@
+// RATTLE in rotation-matrix coordinates against closed forms, an independent single-body integrator,
+// conservation laws and its own convergence order.
+#include "poinsot/multibody/rattle.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "multibody_fixtures.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/multibody/observables.hpp"
+#include "poinsot/so3/hat.hpp"
+#include "poinsot_test.hpp"
+
+namespace poinsot::multibody {
+namespace {
+
+using poinsot::so3::hat;
+constexpr double kG = 9.81;
+
+Mat3 rot_y(double a) {
+  return Eigen::AngleAxisd(a, Vec3::UnitY()).toRotationMatrix();
+}
+
+// Period of small oscillations from the upward zero crossings of x(t) (linear interpolation; the error is
+// O(h³) at a crossing, where x is nearly linear).
+double measured_period(Rattle& rattle, State& st, int body, double duration) {
+  std::vector<double> crossings;
+  double prev_x = st.bodies[static_cast<std::size_t>(body)].x_space.x();
+  double prev_t = st.time;
+  while (st.time < duration) {
+    rattle.step(st);
+    const double x = st.bodies[static_cast<std::size_t>(body)].x_space.x();
+    if (prev_x < 0.0 && x >= 0.0) crossings.push_back(prev_t + (st.time - prev_t) * (-prev_x) / (x - prev_x));
+    prev_x = x;
+    prev_t = st.time;
+  }
+  EXPECT_GE(crossings.size(), 3u);
+  return (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+}
+
+TEST(Rattle, CompoundPendulumOnHingeHasSmallOscillationPeriod) {
+  const double m = 1.3, l = 0.8, r = 0.05, theta0 = 1e-3;
+  System s;
+  s.add_body("rod", m, test::rod_poinsot(m, l, r));
+  s.add_hinge("pivot", 0, Vec3(-l / 2, 0, 0), Vec3::UnitY(), kWorld, Vec3::Zero(), Vec3::UnitY());
+  s.set_gravity(Vec3(0, 0, -kG));
+  State st;
+  st.bodies.resize(1);
+  st.bodies[0].R_space_body = rot_y(std::numbers::pi / 2 + theta0);  // body x hangs along −z, tilted by θ0
+  st.bodies[0].x_space = st.bodies[0].R_space_body * Vec3(l / 2, 0, 0);
+  check_consistent(s, st);
+  Rattle rattle(s, 1e-3);
+  EXPECT_TRUE(rattle.uses_tree_solver());
+  const double I_pivot = m * l * l / 12 + m * r * r / 4 + m * l * l / 4;  // J_yy about the pivot
+  const double expected = 2 * std::numbers::pi * std::sqrt(I_pivot / (m * kG * l / 2));
+  const double period = measured_period(rattle, st, 0, 4 * expected);
+  // Errors: RATTLE's phase error (ωh)²/24 ≈ 6e-7, the amplitude correction θ0²/16 ≈ 6e-8. Dropping the rod's
+  // radius term m r²/4 would change the period by 1.7e-3.
+  EXPECT_NEAR(period / expected, 1.0, 3e-6);
+}
+
+TEST(Rattle, WeldedPairSwingsLikeOneCompoundPendulum) {
+  // A rod hung by a ball joint with a cube welded to its lower end: the composite's period.
+  const double m1 = 1.0, l = 1.0, r = 0.02, m2 = 0.5, a = 0.2;
+  System s;
+  s.add_body("rod", m1, test::rod_poinsot(m1, l, r));
+  s.add_body("cube", m2, (m2 * a * a / 12) * Mat3::Identity());
+  s.add_ball("pivot", 0, Vec3(-l / 2, 0, 0), kWorld, Vec3::Zero());
+  s.add_weld("weld", 1, Vec3(-a / 2, 0, 0), 0, Vec3(l / 2, 0, 0), Mat3::Identity());
+  s.set_gravity(Vec3(0, 0, -kG));
+  State st;
+  st.bodies.resize(2);
+  const double theta0 = 1e-3;
+  const Mat3 R = rot_y(std::numbers::pi / 2 + theta0);
+  st.bodies[0].R_space_body = R;
+  st.bodies[0].x_space = R * Vec3(l / 2, 0, 0);
+  st.bodies[1].R_space_body = R;
+  st.bodies[1].x_space = R * Vec3(l + a / 2, 0, 0);
+  check_consistent(s, st);
+  Rattle rattle(s, 1e-3);
+  const double d1 = l / 2, d2 = l + a / 2;
+  const double I_pivot = m1 * l * l / 12 + m1 * r * r / 4 + m1 * d1 * d1 + m2 * a * a / 6 + m2 * d2 * d2;
+  const double M_d = m1 * d1 + m2 * d2;
+  const double expected = 2 * std::numbers::pi * std::sqrt(I_pivot / (M_d * kG));
+  EXPECT_NEAR(measured_period(rattle, st, 1, 4 * expected) / expected, 1.0, 3e-6);
+  EXPECT_LT(constraint_violation(s, st).joint_angle, 1e-12);
+}
+
+// The heavy top: one body with a ball joint to the world, against an independent RK4 integration of Euler's
+// equations about the pivot, J_p ω̇ + ω × J_p ω = d × m Rᵀg, Ṙ = R j(ω).
+struct Top {
+  double m = 2.0;
+  Mat3 J_com = Vec3(0.10, 0.14, 0.17).asDiagonal();
+  Vec3 A = Vec3(0, 0, -0.3);  // pivot in the body frame; d = −A from pivot to centre of mass
+  Mat3 R0 = Eigen::AngleAxisd(0.4, Vec3(1, 0.2, 0).normalized()).toRotationMatrix();
+  Vec3 omega0 = Vec3(0.5, -0.3, 3.0);
+};
+
+std::pair<Mat3, Vec3> top_reference(const Top& top, double T, int steps) {
+  const Vec3 d = -top.A;
+  const Mat3 Jp = top.J_com + top.m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+  const Mat3 Jp_inv = Jp.inverse();
+  const Vec3 g(0, 0, -kG);
+  auto f = [&](const Mat3& R, const Vec3& w, Mat3& dR, Vec3& dw) {
+    dR = R * hat(w);
+    dw = Jp_inv * (d.cross(top.m * (R.transpose() * g)) - w.cross(Jp * w));
+  };
+  Mat3 R = top.R0;
+  Vec3 w = top.omega0;
+  const double h = T / steps;
+  for (int n = 0; n < steps; ++n) {
+    Mat3 k1R, k2R, k3R, k4R;
+    Vec3 k1w, k2w, k3w, k4w;
+    f(R, w, k1R, k1w);
+    f(R + 0.5 * h * k1R, w + 0.5 * h * k1w, k2R, k2w);
+    f(R + 0.5 * h * k2R, w + 0.5 * h * k2w, k3R, k3w);
+    f(R + h * k3R, w + h * k3w, k4R, k4w);
+    R += h / 6 * (k1R + 2 * k2R + 2 * k3R + k4R);
+    w += h / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
+  }
+  return {R, w};
+}
+
+std::pair<Mat3, Vec3> top_multibody(const Top& top, double T, double h) {
+  System s;
+  s.add_body_from_inertia("top", top.m, top.J_com);
+  s.add_ball("pivot", 0, top.A, kWorld, Vec3::Zero());
+  s.set_gravity(Vec3(0, 0, -kG));
+  State st;
+  st.bodies.resize(1);
+  st.bodies[0].R_space_body = top.R0;
+  st.bodies[0].x_space = -top.R0 * top.A;
+  st.bodies[0].omega_body = top.omega0;
+  st.bodies[0].v_space = top.R0 * top.omega0.cross(-top.A);
+  Rattle rattle(s, h);
+  const int steps = static_cast<int>(std::lround(T / h));
+  for (int n = 0; n < steps; ++n)
+    rattle.step(st);
+  return {st.bodies[0].R_space_body, st.bodies[0].omega_body};
+}
+
+TEST(Rattle, HeavyTopConvergesAtOrderTwoToTheSingleBodyTop) {
+  const Top top;
+  const double T = 2.0;                                      // about 3 nutation periods at this spin
+  const auto [R_ref, w_ref] = top_reference(top, T, 30000);  // RK4, h = 1e-4: error (ωh)⁴ ~ 1e-15
+  double err[3];
+  Mat3 R_h[3];
+  const double hs[3] = {2e-3, 1e-3, 5e-4};
+  for (int k = 0; k < 3; ++k) {
+    const auto [R, w] = top_multibody(top, T, hs[k]);
+    R_h[k] = R;
+    err[k] = (R - R_ref).cwiseAbs().maxCoeff() + (w - w_ref).cwiseAbs().maxCoeff() / 3.0;
+  }
+  // Second order: halving h divides the error by 4 (3.5..4.5 allows the O(h⁴) term).
+  EXPECT_NEAR(err[0] / err[1], 4.0, 0.5);
+  EXPECT_NEAR(err[1] / err[2], 4.0, 0.5);
+  // RATTLE is symmetric, so its error expands in h², h⁴: one Richardson step leaves O(h⁴):
+  // measured 3e-9 for h = (2e-3, 1e-3) and 1.4e-10 for (1e-3, 5e-4), the raw error being 1.5e-5 at 5e-4.
+  const Mat3 R_rich = (4 * R_h[2] - R_h[1]) / 3;
+  EXPECT_LT((R_rich - R_ref).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_GT(err[2], 1e-7);  // the comparison is meaningful: the raw error is far above the 1e-9 tolerance
+}
+
+struct RunStats {
+  double max_energy_error = 0.0;
+  double max_gap = 0.0;
+  double max_orthogonality = 0.0;
+  double first_half_max = 0.0;
+  double second_half_max = 0.0;
+};
+
+RunStats run_and_watch(const System& s, State st, double h, int steps) {
+  Rattle rattle(s, h);
+  const double E0 = total_energy(s, st);
+  RunStats stats;
+  for (int n = 0; n < steps; ++n) {
+    rattle.step(st);
+    const double dE = std::abs(total_energy(s, st) - E0);
+    stats.max_energy_error = std::max(stats.max_energy_error, dE);
+    (n < steps / 2 ? stats.first_half_max : stats.second_half_max) =
+        std::max(n < steps / 2 ? stats.first_half_max : stats.second_half_max, dE);
+    const ConstraintViolation v = constraint_violation(s, st);
+    stats.max_gap = std::max(stats.max_gap, v.joint_gap);
+    stats.max_orthogonality = std::max(stats.max_orthogonality, v.orthogonality);
+  }
+  return stats;
+}
+
+TEST(Rattle, DoublePendulumEnergyBoundedAndConstraintsAtRoundOff) {
+  const System s = test::rod_chain(2);
+  State st = test::rod_chain_state(2);
+  st.bodies[1].omega_body = Vec3(0, 0, 3.0);  // out-of-plane motion: a 3-D chaotic double pendulum
+  st.bodies[1].v_space = Vec3(0, 1.5, 0);
+  const double released = 2 * kG;  // m g l N²/2 with m = l = 1, N = 2
+  const RunStats a = run_and_watch(s, st, 1e-3, 20000 / test::kSlowdown);
+  // The energy error of a symplectic method oscillates at O(h²) without drift: both halves of the run share
+  // the same bound (measured 4.0e-5 and 4.3e-5 of the released energy; 5e-4 at h = 4e-3, i.e. order 2).
+  EXPECT_LT(a.max_energy_error, 1e-4 * released);
+  EXPECT_LT(a.second_half_max, 3.0 * a.first_half_max + 1e-9 * released);
+  EXPECT_LT(a.max_gap, 1e-12);
+  EXPECT_LT(a.max_orthogonality, 1e-12);
+}
+
+TEST(Rattle, ChainFallingFromHorizontalKeepsEnergyAndJoints) {
+  const int n = 8;
+  const System s = test::rod_chain(n);
+  const double released = kG * n * n / 2.0;
+  const RunStats a = run_and_watch(s, test::rod_chain_state(n), 1e-3, 4000 / test::kSlowdown);
+  // Measured 7e-5 of the released energy over 4 s (the tip of a chain falling from horizontal whips fast).
+  EXPECT_LT(a.max_energy_error, 2e-4 * released);
+  EXPECT_LT(a.max_gap, 1e-12);
+  EXPECT_LT(a.max_orthogonality, 1e-12);
+}
+
+TEST(Rattle, SecondOrderOnAChain) {
+  const System s = test::rod_chain(4);
+  State st0 = test::rod_chain_state(4);
+  auto run = [&](double h) {
+    State st = st0;
+    Rattle rattle(s, h);
+    for (int n = 0; n < static_cast<int>(std::lround(0.8 / h)); ++n)
+      rattle.step(st);
+    return st;
+  };
+  const State a = run(4e-3), b = run(2e-3), c = run(1e-3);
+  double dab = 0, dbc = 0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    dab = std::max(dab, (a.bodies[i].x_space - b.bodies[i].x_space).norm());
+    dbc = std::max(dbc, (b.bodies[i].x_space - c.bodies[i].x_space).norm());
+  }
+  EXPECT_NEAR(dab / dbc, 4.0, 0.5);
+}
+
+TEST(Rattle, FreeSystemConservesMomentaExactly) {
+  // Three bodies (one a lamina with singular K) joined by a ball and a hinge, no gravity, tumbling.
+  System s;
+  s.add_body_from_inertia("a", 1.0, Vec3(0.1, 0.2, 0.25).asDiagonal());
+  s.add_body("plate", 0.5, Vec3(0.02, 0.01, 0.0).asDiagonal());  // K singular: a lamina
+  s.add_body_from_inertia("c", 2.0, Vec3(0.3, 0.3, 0.1).asDiagonal());
+  s.add_ball("ab", 0, Vec3(0.3, 0, 0), 1, Vec3(-0.2, 0, 0));
+  s.add_hinge("bc", 2, Vec3(0, 0.4, 0), Vec3(0, 0, 1), 1, Vec3(0, -0.1, 0), Vec3(0, 0, 1));
+  State st;
+  st.bodies.resize(3);
+  st.bodies[0].x_space = Vec3(-0.3, 0, 0);
+  st.bodies[1].x_space = Vec3(0.2, 0, 0);
+  st.bodies[2].x_space = Vec3(0.2, -0.5, 0);
+  // Velocities consistent with the joints: a common rigid rotation plus a hinge rate about z.
+  const Vec3 Omega(0.7, -1.1, 2.0);
+  for (BodyState& b : st.bodies) {
+    b.v_space = Omega.cross(b.x_space) + Vec3(0.1, 0.2, -0.3);
+    b.omega_body = Omega;
+  }
+  st.bodies[2].omega_body += Vec3(0, 0, 1.5);
+  st.bodies[2].v_space += Vec3(0, 0, 1.5).cross(Vec3(0, -0.4, 0));
+  EXPECT_LT(constraint_violation(s, st).joint_velocity, 1e-15);
+  Rattle rattle(s, 2e-3);
+  const Vec3 P0 = linear_momentum(s, st), L0 = angular_momentum(s, st);
+  const double E0 = total_energy(s, st);
+  for (int n = 0; n < 3000 / test::kSlowdown; ++n)
+    rattle.step(st);
+  // Exact up to the Newton tolerance (1e-13 of the positions per step) and round-off.
+  EXPECT_LT((linear_momentum(s, st) - P0).norm(), 1e-11 * P0.norm());
+  EXPECT_LT((angular_momentum(s, st) - L0).norm(), 1e-10 * L0.norm());
+  EXPECT_LT(std::abs(total_energy(s, st) - E0), 1e-4 * E0);
+  EXPECT_LT(constraint_violation(s, st).joint_gap, 1e-12);
+  EXPECT_LT(constraint_violation(s, st).joint_angle, 1e-12);
+}
+
+TEST(Rattle, ClosedLoopFallsBackToSparseLuAndHolds) {
+  // A spatial four-bar: three bars joined by ball joints, both ends held at fixed points of the world (a loop
+  // through the world), falling under an oblique gravity.
+  const double l = 1.0;
+  System s;
+  for (int i = 0; i < 3; ++i)
+    s.add_body(test::indexed("bar", i), 1.0, test::rod_poinsot(1.0, l, 0.02));
+  const Vec3 ends[4] = {Vec3(0, 0, 0), Vec3(0, -1, 0), Vec3(1, -1, 0),
+                        Vec3(1 + std::sqrt(0.5), std::sqrt(0.5) - 1, 0)};
+  s.add_ball("w0", 0, Vec3(-l / 2, 0, 0), kWorld, ends[0]);
+  s.add_ball("j1", 1, Vec3(-l / 2, 0, 0), 0, Vec3(l / 2, 0, 0));
+  s.add_ball("j2", 2, Vec3(-l / 2, 0, 0), 1, Vec3(l / 2, 0, 0));
+  s.add_ball("w3", 2, Vec3(l / 2, 0, 0), kWorld, ends[3]);
+  s.set_gravity(Vec3(0, -kG, -3.0));
+  State st;
+  st.bodies.resize(3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Vec3 e = (ends[i + 1] - ends[i]).normalized();
+    st.bodies[i].R_space_body = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), e).toRotationMatrix();
+    st.bodies[i].x_space = 0.5 * (ends[i] + ends[i + 1]);
+  }
+  check_consistent(s, st);
+  EXPECT_FALSE(Rattle(s, 1e-3).uses_tree_solver());
+  const RunStats a = run_and_watch(s, st, 1e-3, 3000 / test::kSlowdown);
+  EXPECT_LT(a.max_energy_error, 1e-5 * kG);
+  EXPECT_LT(a.max_gap, 1e-12);
+  EXPECT_LT(a.max_orthogonality, 1e-12);
+}
+
+TEST(Rattle, SpringOscillatorPeriodAndDampedPairMomentum) {
+  // A body on a spring to the world (no gravity, rest length 0): x'' = −(k/m) x, period 2π √(m/k).
+  const double m = 2.0, k = 50.0;
+  System s;
+  s.add_body_from_inertia("mass", m, 0.01 * Mat3::Identity());
+  s.add_spring({"spring", 0, kWorld, Vec3::Zero(), Vec3::Zero(), k, 0.0, 0.0});
+  State st;
+  st.bodies.resize(1);
+  st.bodies[0].x_space = Vec3(-0.1, 0, 0);
+  Rattle rattle(s, 1e-3);
+  const double expected = 2 * std::numbers::pi * std::sqrt(m / k);
+  // Phase error (ωh)²/24 ≈ 1e-6 at ω = 5 rad/s.
+  EXPECT_NEAR(measured_period(rattle, st, 0, 4 * expected) / expected, 1.0, 3e-6);
+
+  // Two bodies joined by a spring-damper with an offset attachment: internal forces, so the total momentum
+  // is conserved exactly, while the damper only removes energy (second order with the extrapolated
+  // velocities).
+  System pair;
+  pair.add_body_from_inertia("a", 1.0, Vec3(0.1, 0.2, 0.3).asDiagonal());
+  pair.add_body_from_inertia("b", 2.0, Vec3(0.2, 0.2, 0.1).asDiagonal());
+  pair.add_spring({"sd", 0, 1, Vec3(0.1, 0.2, 0), Vec3(-0.1, 0, 0.1), 30.0, 0.8, 0.5});
+  State ps;
+  ps.bodies.resize(2);
+  ps.bodies[1].x_space = Vec3(1, 0, 0);
+  ps.bodies[0].v_space = Vec3(0, 1, 0.5);
+  ps.bodies[0].omega_body = Vec3(1, -2, 3);
+  Rattle pr(pair, 1e-3);
+  const Vec3 P0 = linear_momentum(pair, ps), L0 = angular_momentum(pair, ps);
+  double E = total_energy(pair, ps);
+  const double E0 = E;
+  double max_rise = 0.0;
+  for (int n = 0; n < 2000 / test::kSlowdown; ++n) {
+    pr.step(ps);
+    const double E1 = total_energy(pair, ps);
+    max_rise = std::max(max_rise, E1 - E);
+    E = E1;
+  }
+  EXPECT_LT((linear_momentum(pair, ps) - P0).norm(), 1e-12 * P0.norm());
+  EXPECT_LT((angular_momentum(pair, ps) - L0).norm(), 1e-11 * L0.norm());
+  EXPECT_LT(E, 0.9 * E0);          // the damper has removed energy
+  EXPECT_LT(max_rise, 1e-5 * E0);  // up to the O(h²) oscillation of the conservative part
+}
+
+}  // namespace
+}  // namespace poinsot::multibody
