@@ -246,3 +246,31 @@ def test_progress_bar_only_on_a_terminal_for_long_runs(tmp_path):
     fast = write(tmp_path, MINIMAL, "fast.toml")
     rc, err = _tty_run(exe, ["run", fast, "--out", tmp_path / "c"])
     assert rc == 0 and err == "", err  # under a second: no bar
+
+
+def test_multibody_scenario_runs_through_poinsot_run(cli, source_dir, tmp_path):
+    """A scenario with [[bodies]] goes to the multibody integrator: report, trajectory and summary.json, with the
+    joints closed to round-off (the RATTLE Newton tolerance is 1e-13 relative)."""
+    out = tmp_path / "dp"
+    r = cli("run", source_dir / "examples" / "multibody" / "double_pendulum.toml", "--t-end", "1", "--out", out,
+            "--json")
+    assert r.returncode == 0, r.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert json.loads(r.stdout) == summary
+    assert summary["kind"] == "multibody" and summary["bodies"] == 2
+    assert summary["steps"] == round(1 / summary["dt"])
+    assert summary["joint_gap_max"] < 1e-12
+    assert summary["orthogonality_error_max"] < 1e-12
+    # RATTLE is symplectic: the energy error stays at its O(h²) level (here ~1e-3 of E for h = 1 ms).
+    assert summary["energy_abs_error_max"] < 1e-2 * abs(summary["energy_initial"])
+    rows = (out / "trajectory.csv").read_text().strip().splitlines()
+    assert len(rows) > 10
+    assert (out / "report.txt").read_text().startswith("multibody run")
+
+
+def test_multibody_scenario_rejects_other_methods(cli, source_dir, tmp_path):
+    r = cli("run", source_dir / "examples" / "multibody" / "double_pendulum.toml", "--method", "rk4", "--out",
+            tmp_path / "x")
+    assert r.returncode == 2 and r.stdout == ""
+    assert "expected rattle" in r.stderr
+    assert not (tmp_path / "x").exists()
