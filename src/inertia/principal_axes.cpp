@@ -132,8 +132,13 @@ PrincipalAxes principal_axes(const Mat3& J, double rel_tol) {
   Mat3 v;
   jacobi_eigen(J, lambda, v);
 
+  // Ascending and stable (equal moments keep Jacobi's order), by a three-element insertion sort: no
+  // allocation (std::stable_sort asks for a temporary buffer even for three elements).
   std::array<int, 3> order{0, 1, 2};
-  std::stable_sort(order.begin(), order.end(), [&](int i, int k) { return lambda[i] < lambda[k]; });
+  for (std::size_t i = 1; i < 3; ++i) {
+    for (std::size_t j = i; j > 0 && lambda[order[j]] < lambda[order[j - 1]]; --j)
+      std::swap(order[j], order[j - 1]);
+  }
   PrincipalAxes out;
   for (int k = 0; k < 3; ++k) {
     out.moments[k] = lambda[order[static_cast<std::size_t>(k)]];
