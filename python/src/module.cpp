@@ -17,4 +17,5 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   poinsot::python::bind_so3(m);
+  poinsot::python::bind_dynamics(m);
 }
