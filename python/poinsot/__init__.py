@@ -35,3 +35,7 @@ __all__ = [
     "total_energy",
     "validate_state",
 ]
+
+from ._simulate import SimulationResult, scenario_toml, simulate  # noqa: E402
+
+__all__ += ["simulate", "SimulationResult", "scenario_toml"]

@@ -18,4 +18,5 @@ PYBIND11_MODULE(_core, m) {
   });
   poinsot::python::bind_so3(m);
   poinsot::python::bind_dynamics(m);
+  poinsot::python::bind_simulate(m);
 }
