@@ -1,0 +1,10 @@
+# Dependencies of individual layers, linked PRIVATE to poinsot so that consumers need nothing more than
+# Eigen (see poinsotConfig.cmake.in). Included at the end of src/CMakeLists.txt. One commented block per layer.
+
+# --- inertia (issue 3): assimp reads the mesh files (STL, OBJ, PLY, OFF) of inertia/mesh_io.cpp; toml++ reads
+# the composite-body files of inertia/body_file.cpp. Debian 12: libassimp-dev (target assimp::assimp),
+# libtomlplusplus-dev (target tomlplusplus::tomlplusplus).
+find_package(assimp REQUIRED)
+find_package(tomlplusplus REQUIRED)
+target_link_libraries(poinsot PRIVATE assimp::assimp tomlplusplus::tomlplusplus)
+# --- end inertia
