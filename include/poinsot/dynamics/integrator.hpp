@@ -49,6 +49,10 @@ class Integrator {
   virtual int order() const = 0;
   virtual bool is_adaptive() const { return false; }
   virtual bool has_dense_output() const { return false; }
+  /// s: the step the method was configured with (IntegratorOptions::dt), which the simulation driver uses
+  /// for fixed-step methods and as the first and largest step of adaptive ones; 0 when the method has none
+  /// (exact: any step is exact), in which case the driver steps from sample to sample.
+  virtual double nominal_step() const { return 0.0; }
 
   /// Advances `state` by one step of at most `dt` seconds (exactly dt for fixed-step methods).
   /// Throws ComputationFailed (with t and the cause) when the step cannot be taken.
@@ -56,8 +60,9 @@ class Integrator {
   /// The state at time t inside the last step taken (has_dense_output() only). Allocates nothing.
   virtual State dense_output(double t) const;
 
-  /// The multiplier matrix Λ (body frame, J) of the last step, for methods that compute it (rattle);
-  /// false otherwise.
+  /// The multiplier matrix Λ = Rᵀ R̈ K (body frame, J = kg·m²/s²) of the last step, for methods that compute
+  /// it (rattle); false otherwise. rattle returns its discrete multiplier centred on the midpoint of the last
+  /// step, t − dt_taken/2, where it approximates (j(ω)² + j(ω̇))K to second order.
   virtual bool last_multiplier(Mat3& lambda_body) const;
 };
 

@@ -1,0 +1,256 @@
+#include "poinsot/dynamics/exact_free_body.hpp"
+
+#include <fmt/format.h>
+#include <boost/math/policies/policy.hpp>
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <boost/math/special_functions/ellint_3.hpp>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "poinsot/core/check.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/so3/exp_log.hpp"
+
+namespace poinsot::dynamics {
+namespace {
+
+// Double precision throughout (Boost's default promotes to long double, which costs 3-4x for no gain that
+// matters here: the functions are accurate to a few ulps in double).
+using Policy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
+
+double sign_of(double x) {
+  return x < 0.0 ? -1.0 : 1.0;
+}
+
+/// F(φ|k) for φ ∈ [−π, π], through F(π − x) = 2K − F(x) beyond ±π/2.
+double incomplete_first_kind(double k, double phi, double complete) {
+  constexpr double half_pi = 0.5 * std::numbers::pi;
+  if (phi > half_pi) return 2.0 * complete - boost::math::ellint_1(k, std::numbers::pi - phi, Policy());
+  if (phi < -half_pi) return -2.0 * complete + boost::math::ellint_1(k, std::numbers::pi + phi, Policy());
+  return boost::math::ellint_1(k, phi, Policy());
+}
+
+/// Rotation by angle a about the coordinate axis i (right-hand rule).
+Mat3 axis_rotation(int i, double a) {
+  const double c = std::cos(a);
+  const double s = std::sin(a);
+  const int j = (i + 1) % 3;
+  const int l = (i + 2) % 3;
+  Mat3 r = Mat3::Zero();
+  r(i, i) = 1.0;
+  r(j, j) = c;
+  r(l, l) = c;
+  r(j, l) = -s;
+  r(l, j) = s;
+  return r;
+}
+
+}  // namespace
+
+State axisymmetric_free_motion(double A, double C, const Vec3& axis_body, const State& initial, double t) {
+  const double dt = t - initial.t;
+  const Vec3& w0 = initial.omega_body;
+  const double mu = axis_body.dot(w0);
+  const double nu = (C / A - 1.0) * mu;  // rad/s: ω precesses about the axis at ν (ERRATA C11: not (A − C)/A)
+  const Mat3 E = so3::exp((nu * dt) * axis_body);
+  const Vec3 l_over_a = w0 + nu * axis_body;  // J ω0 / A
+  State s;
+  s.t = t;
+  s.omega_body = E * w0;
+  s.R = initial.R * so3::exp(dt * l_over_a) * E.transpose();  // order R·E (ERRATA, "order of factors")
+  return s;
+}
+
+ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactMethod method)
+    : initial_(initial) {
+  validate_state(initial, "exact: initial state");
+  axes_ = body.principal_axes();
+  const Vec3 w = axes_.transpose() * initial.omega_body;
+  theory_ = free_body_theory(body.principal_moments(), w);
+  moments_ = theory_.moments;
+  const Vec3& I = moments_;
+
+  FreeBodyRegime shape = theory_.regime;
+  if (method == ExactMethod::elliptic) {
+    if (shape == FreeBodyRegime::rest || shape == FreeBodyRegime::sphere) {
+      throw InvalidInput(
+          fmt::format("exact: method elliptic needs a rotating body with I1 < I3; got moments {} kg·m² and "
+                      "omega {} rad/s",
+                      format_vector(I), format_vector(w)));
+    }
+    if (shape == FreeBodyRegime::axisymmetric) {
+      if (I[1] - I[0] <= I[2] - I[1] && w[2] != 0.0) {
+        shape = FreeBodyRegime::largest_axis;
+      } else if (I[1] - I[0] > I[2] - I[1] && w[0] != 0.0) {
+        shape = FreeBodyRegime::smallest_axis;
+      } else {
+        throw InvalidInput(fmt::format(
+            "exact: method elliptic cannot follow a symmetric body (moments {} kg·m²) spinning in its "
+            "equatorial plane (omega {} rad/s); expected a non-zero component along the symmetry axis",
+            format_vector(I), format_vector(w)));
+      }
+      theory_.regime = shape;
+    }
+  }
+
+  switch (shape) {
+    case FreeBodyRegime::rest:
+    case FreeBodyRegime::sphere:
+    case FreeBodyRegime::principal_rotation:
+      kind_ = Kind::steady;
+      return;
+    case FreeBodyRegime::axisymmetric: {
+      kind_ = Kind::axisymmetric;
+      const bool oblate = I[1] - I[0] <= I[2] - I[1];  // I1 = I2: symmetry axis 3; else I2 = I3: axis 1
+      axis_ = oblate ? 2 : 0;
+      const double A = oblate ? 0.5 * (I[0] + I[1]) : 0.5 * (I[1] + I[2]);
+      moments_ = Vec3(A, A, A);
+      moments_[axis_] = I[axis_];
+      return;
+    }
+    case FreeBodyRegime::separatrix:
+      kind_ = Kind::separatrix;
+      break;
+    case FreeBodyRegime::largest_axis:
+    case FreeBodyRegime::smallest_axis:
+      kind_ = Kind::elliptic;
+      break;
+  }
+
+  // Jacobi-elliptic set-up (free_body_theory.hpp): gaps without cancellation, amplitudes, signs, phase u0.
+  const double d3 = I[0] * (I[2] - I[0]) * w[0] * w[0] + I[1] * (I[2] - I[1]) * w[1] * w[1];  // 2T I3 − |L|²
+  const double d1 = I[1] * (I[1] - I[0]) * w[1] * w[1] + I[2] * (I[2] - I[0]) * w[2] * w[2];  // |L|² − 2T I1
+  const double I123 = I[0] * I[1] * I[2];
+  const bool largest = shape != FreeBodyRegime::smallest_axis;  // the separatrix is followed from axis 3
+  double sn0 = 0.0;
+  double cn0 = 1.0;
+  int other = 0;
+  if (largest) {
+    a_ = 0, b_ = 1, c_ = 2, other = 0;
+    cn_axis_ = 0, dn_axis_ = 2;
+    omega_p_ = std::sqrt((I[2] - I[1]) * d1 / I123);
+    k_ = shape == FreeBodyRegime::separatrix
+             ? 1.0
+             : std::sqrt(std::min(1.0, (I[1] - I[0]) * d3 / ((I[2] - I[1]) * d1)));
+    const double a1 = std::sqrt(d3 / (I[0] * (I[2] - I[0])));
+    const double a2 = std::sqrt(d3 / (I[1] * (I[2] - I[1])));
+    const double a3 = std::sqrt(d1 / (I[2] * (I[2] - I[0])));
+    const double s3 = sign_of(w[2]);
+    if (shape == FreeBodyRegime::separatrix) {
+      // ω1 = σ1 a1 sech u, ω2 = σ1σ3 a2 tanh u, ω3 = σ3 a3 sech u (Euler's equations fix σ2 = σ1σ3).
+      const double s1 = sign_of(w[0]);
+      amplitude_ = Vec3(s1 * a1, s1 * s3 * a2, s3 * a3);
+      sn0 = w[1] / amplitude_[1];
+      cn0 = 0.5 * ((a1 > 0.0 ? std::abs(w[0]) / a1 : 0.0) + (a3 > 0.0 ? std::abs(w[2]) / a3 : 0.0));
+    } else {
+      // ω1 = a1 cn u, ω2 = σ3 a2 sn u, ω3 = σ3 a3 dn u.
+      amplitude_ = Vec3(a1, s3 * a2, s3 * a3);
+      sn0 = w[1] / amplitude_[1];
+      cn0 = w[0] / amplitude_[0];
+    }
+  } else {
+    a_ = 1, b_ = 2, c_ = 0, other = 2;
+    cn_axis_ = 2, dn_axis_ = 0;
+    omega_p_ = std::sqrt((I[1] - I[0]) * d3 / I123);
+    k_ = std::sqrt(std::min(1.0, (I[2] - I[1]) * d1 / ((I[1] - I[0]) * d3)));
+    const double a1 = std::sqrt(d3 / (I[0] * (I[2] - I[0])));
+    const double a2 = std::sqrt(d1 / (I[1] * (I[1] - I[0])));
+    const double a3 = std::sqrt(d1 / (I[2] * (I[2] - I[0])));
+    const double s1 = sign_of(w[0]);
+    // ω1 = σ1 a1 dn u, ω2 = σ1 a2 sn u, ω3 = a3 cn u.
+    amplitude_ = Vec3(s1 * a1, s1 * a2, a3);
+    sn0 = w[1] / amplitude_[1];
+    cn0 = w[2] / amplitude_[2];
+  }
+  const double Ic = I[c_];
+  const double Io = I[other];
+  n_ = -Ic * (I[1] - Io) / (Io * (Ic - I[1]));
+  const double G = theory_.momentum;
+  rate0_ = G / Ic;
+  rate1_ = G * (1.0 / Io - 1.0 / Ic) / omega_p_;
+  if (kind_ == Kind::separatrix) {
+    u0_ = std::asinh(sn0 / cn0);
+  } else {
+    const double K = boost::math::ellint_1(k_, Policy());
+    two_k_ = 2.0 * K;
+    pi_complete_ = boost::math::ellint_3(k_, n_, Policy());
+    u0_ = incomplete_first_kind(k_, std::atan2(sn0, cn0), K);
+  }
+  pi0_ = phase(u0_).pi;
+  const Mat3 r0 = initial.R * axes_;  // R_principal(t0)
+  left_ = r0 * attitude_frame(w).transpose();
+}
+
+ExactFreeBody::Phase ExactFreeBody::phase(double u) const {
+  Phase p{};
+  if (kind_ == Kind::separatrix) {
+    p.sn = std::tanh(u);
+    p.cn = 1.0 / std::cosh(u);
+    p.dn = p.cn;
+    const double s = std::sqrt(-n_);
+    p.pi = (u + s * std::atan(s * p.sn)) / (1.0 - n_);
+    return p;
+  }
+  // Reduce u to [−K, K]: sn, cn change sign and am advances by π every 2K, Π(N; am) by 2Π(N).
+  const double m = std::nearbyint(u / two_k_);
+  const double ur = u - m * two_k_;
+  p.sn = boost::math::jacobi_elliptic(k_, ur, &p.cn, &p.dn, Policy());
+  p.pi = boost::math::ellint_3(k_, n_, std::atan2(p.sn, p.cn), Policy()) + 2.0 * m * pi_complete_;
+  if (std::fmod(m, 2.0) != 0.0) {
+    p.sn = -p.sn;
+    p.cn = -p.cn;
+  }
+  return p;
+}
+
+Mat3 ExactFreeBody::attitude_frame(const Vec3& w) const {
+  // Rows: B(n) of the header in the cyclic frame (a, b, c), written in principal coordinates.
+  const Vec3 m = moments_.cwiseProduct(w);
+  const Vec3 n = m / m.norm();
+  const double na = n[a_], nb = n[b_], nc = n[c_];
+  const double s = std::hypot(na, nb);
+  Mat3 B = Mat3::Zero();
+  if (s > 0.0) {
+    B(0, a_) = nb / s, B(0, b_) = -na / s;
+    B(1, a_) = nc * na / s, B(1, b_) = nc * nb / s, B(1, c_) = -s;
+  } else {  // n = ±e_c (not reached by the elliptic regimes, kept for safety)
+    B(0, a_) = 1.0;
+    B(1, b_) = nc;
+  }
+  B(2, a_) = na, B(2, b_) = nb, B(2, c_) = nc;
+  return B;
+}
+
+State ExactFreeBody::state_at(double t) const {
+  const double dt = t - initial_.t;
+  switch (kind_) {
+    case Kind::steady: {
+      State s;
+      s.t = t;
+      s.omega_body = initial_.omega_body;
+      s.R = initial_.R * so3::exp(dt * initial_.omega_body);
+      return s;
+    }
+    case Kind::axisymmetric:
+      return axisymmetric_free_motion(moments_[(axis_ + 1) % 3], moments_[axis_], axes_.col(axis_), initial_,
+                                      t);
+    case Kind::elliptic:
+    case Kind::separatrix:
+      break;
+  }
+  const Phase p = phase(omega_p_ * dt + u0_);
+  Vec3 w;
+  w[cn_axis_] = amplitude_[cn_axis_] * p.cn;
+  w[1] = amplitude_[1] * p.sn;
+  w[dn_axis_] = amplitude_[dn_axis_] * p.dn;
+  const double phi = rate0_ * dt + rate1_ * (p.pi - pi0_);
+  State s;
+  s.t = t;
+  s.omega_body = axes_ * w;
+  s.R = left_ * axis_rotation(2, phi) * attitude_frame(w) * axes_.transpose();
+  return s;
+}
+
+}  // namespace poinsot::dynamics

@@ -1,0 +1,122 @@
+#include "poinsot/dynamics/free_body_theory.hpp"
+
+#include <fmt/format.h>
+#include <boost/math/special_functions/ellint_1.hpp>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "poinsot/core/check.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+
+namespace poinsot::dynamics {
+
+const char* to_string(FreeBodyRegime regime) {
+  switch (regime) {
+    case FreeBodyRegime::rest:
+      return "rest";
+    case FreeBodyRegime::sphere:
+      return "sphere";
+    case FreeBodyRegime::axisymmetric:
+      return "axisymmetric";
+    case FreeBodyRegime::principal_rotation:
+      return "principal rotation";
+    case FreeBodyRegime::largest_axis:
+      return "largest axis";
+    case FreeBodyRegime::separatrix:
+      return "separatrix";
+    case FreeBodyRegime::smallest_axis:
+      return "smallest axis";
+  }
+  return "unknown";
+}
+
+double FreeBodyTheory::flip_interval() const {
+  if (regime != FreeBodyRegime::largest_axis && regime != FreeBodyRegime::smallest_axis) return 0.0;
+  return 2.0 * quarter_period / omega_p;
+}
+
+double FreeBodyTheory::omega_period() const {
+  if (regime == FreeBodyRegime::axisymmetric) {
+    return omega_p > 0.0 ? 2.0 * std::numbers::pi / omega_p : 0.0;
+  }
+  return 2.0 * flip_interval();
+}
+
+FreeBodyTheory free_body_theory(const Vec3& principal_moments, const Vec3& omega_principal) {
+  require_finite("free body: principal moments (kg·m²)", principal_moments);
+  require_finite("free body: omega (rad/s)", omega_principal);
+  const Vec3& I = principal_moments;
+  if (!(I[0] > 0.0) || I[1] < I[0] || I[2] < I[1]) {
+    throw InvalidInput(fmt::format(
+        "free body: principal moments {} kg·m²; expected positive moments in ascending order I1 <= I2 <= I3",
+        format_vector(I)));
+  }
+  FreeBodyTheory th;
+  th.moments = I;
+  th.omega = omega_principal;
+  const Vec3& w = omega_principal;
+  th.energy = 0.5 * (I[0] * w[0] * w[0] + I[1] * w[1] * w[1] + I[2] * w[2] * w[2]);
+  th.momentum = Vec3(I[0] * w[0], I[1] * w[1], I[2] * w[2]).norm();
+  th.separatrix_gap = I[2] * (I[2] - I[1]) * w[2] * w[2] - I[0] * (I[1] - I[0]) * w[0] * w[0];
+
+  const double tol = kSymmetryTolerance * I[2];
+  const bool sym12 = I[1] - I[0] <= tol;
+  const bool sym23 = I[2] - I[1] <= tol;
+  const int nonzero = (w[0] != 0.0) + (w[1] != 0.0) + (w[2] != 0.0);
+  if (nonzero == 0) {
+    th.regime = FreeBodyRegime::rest;
+    return th;
+  }
+  if (I[2] - I[0] <= tol) {
+    th.regime = FreeBodyRegime::sphere;
+    return th;
+  }
+  if (sym12 || sym23) {
+    // J = A·1 + (C − A) e⊗e with e the symmetry axis; ω precesses about e at (C/A − 1)μ, μ = e·ω (ERRATA
+    // C11).
+    const double A = sym12 ? 0.5 * (I[0] + I[1]) : 0.5 * (I[1] + I[2]);
+    const double C = sym12 ? I[2] : I[0];
+    const double mu = sym12 ? w[2] : w[0];
+    th.regime = FreeBodyRegime::axisymmetric;
+    th.omega_p = std::abs((C / A - 1.0) * mu);
+    return th;
+  }
+  if (nonzero == 1) {
+    th.regime = FreeBodyRegime::principal_rotation;
+    return th;
+  }
+  // Gaps 2T I_j − |L|² = Σ_i I_i (I_j − I_i) ω_i², each a sum of terms of one sign (no cancellation).
+  const double d3 = I[0] * (I[2] - I[0]) * w[0] * w[0] + I[1] * (I[2] - I[1]) * w[1] * w[1];  // 2T I3 − |L|²
+  const double d1 = I[1] * (I[1] - I[0]) * w[1] * w[1] + I[2] * (I[2] - I[0]) * w[2] * w[2];  // |L|² − 2T I1
+  const double gap = th.separatrix_gap;
+  const double I123 = I[0] * I[1] * I[2];
+  if (gap >= 0.0) {
+    th.omega_p = std::sqrt((I[2] - I[1]) * d1 / I123);
+    th.modulus = std::sqrt(std::min(1.0, (I[1] - I[0]) * d3 / ((I[2] - I[1]) * d1)));
+    th.modulus_complement2 = (I[2] - I[0]) * gap / ((I[2] - I[1]) * d1);
+  } else {
+    th.omega_p = std::sqrt((I[1] - I[0]) * d3 / I123);
+    th.modulus = std::sqrt(std::min(1.0, (I[2] - I[1]) * d1 / ((I[1] - I[0]) * d3)));
+    th.modulus_complement2 = (I[2] - I[0]) * (-gap) / ((I[1] - I[0]) * d3);
+  }
+  // Below 4 ulps, k rounds to 1 in double and K(k) is infinite: the motion is the separatrix to the
+  // precision of the data (the problem's condition number grows as 1/k'² there).
+  if (th.modulus_complement2 <= 4.0 * std::numeric_limits<double>::epsilon()) {
+    th.regime = FreeBodyRegime::separatrix;
+    th.modulus = 1.0;
+    th.modulus_complement2 = 0.0;
+    th.omega_p = std::sqrt((I[2] - I[1]) * d1 / I123);
+    return th;
+  }
+  th.regime = gap > 0.0 ? FreeBodyRegime::largest_axis : FreeBodyRegime::smallest_axis;
+  th.quarter_period = boost::math::ellint_1(th.modulus);
+  return th;
+}
+
+FreeBodyTheory free_body_theory(const RigidBody& body, const Vec3& omega_body) {
+  return free_body_theory(body.principal_moments(), body.principal_axes().transpose() * omega_body);
+}
+
+}  // namespace poinsot::dynamics

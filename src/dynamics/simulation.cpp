@@ -1,0 +1,187 @@
+#include "poinsot/dynamics/simulation.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/check.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/dynamics/flip_events.hpp"
+#include "poinsot/so3/projection.hpp"
+
+namespace poinsot::dynamics {
+namespace {
+
+/// Worst invariant errors against the initial values.
+class InvariantTracker {
+ public:
+  InvariantTracker(const RigidBody& body, const TorqueModel& torque, const State& initial)
+      : body_(body), g_(torque.gravity_space()) {
+    track_energy_ = torque.is_zero() || torque.is_gravity();
+    track_L_ = torque.is_zero();
+    E0_ = total_energy(body, initial, g_);
+    L0_ = angular_momentum_space(body, initial);
+    L0_norm_ = L0_.norm();
+  }
+  void record(const State& s, InvariantErrors& e) const {
+    if (track_energy_) {
+      const double E = total_energy(body_, s, g_);
+      e.energy_rel_max = std::max(e.energy_rel_max, std::abs(E - E0_) / std::max(std::abs(E0_), 1e-300));
+    }
+    if (track_L_ && L0_norm_ > 0.0) {
+      const Vec3 L = angular_momentum_space(body_, s);
+      e.L_space_rel_max = std::max(e.L_space_rel_max, (L - L0_).norm() / L0_norm_);
+      e.L_norm_rel_max = std::max(e.L_norm_rel_max, std::abs(L.norm() - L0_norm_) / L0_norm_);
+    }
+    e.orthogonality_max = std::max(e.orthogonality_max, so3::orthogonality_error(s.R));
+  }
+
+ private:
+  const RigidBody& body_;
+  Vec3 g_;
+  bool track_energy_ = false;
+  bool track_L_ = false;
+  double E0_ = 0.0;
+  Vec3 L0_ = Vec3::Zero();
+  double L0_norm_ = 0.0;
+};
+
+void require_finite_state(const Integrator& integrator, const State& s, long long step) {
+  if (std::isfinite(s.t) && s.R.allFinite() && s.omega_body.allFinite()) return;
+  throw ComputationFailed(fmt::format(
+      "simulate: {} produced a non-finite state at step {} (t = {} s): omega_body = {} rad/s; expected "
+      "finite values (a smaller step or a tighter tolerance?)",
+      integrator.name(), step, s.t, format_vector(s.omega_body)));
+}
+
+struct DenseContext {
+  const Integrator* integrator;
+  const FlipDetector* flips;
+};
+
+double dense_component(double t, const void* ctx) {
+  const auto& c = *static_cast<const DenseContext*>(ctx);
+  return c.flips->component(c.integrator->dense_output(t));
+}
+
+}  // namespace
+
+SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
+                          const State& initial, Integrator& integrator, const SimulationOptions& options,
+                          const Observer& observer) {
+  const auto wall_start = std::chrono::steady_clock::now();
+  if (!torque) torque = TorqueModel::none();
+  validate_state(initial, "simulate: initial state");
+  require_finite("simulate: t_end (s)", options.t_end);
+  if (!(options.t_end > initial.t)) {
+    throw InvalidInput(fmt::format("simulate: t_end = {} s; expected a time after the initial t = {} s",
+                                   options.t_end, initial.t));
+  }
+  require_positive("simulate: sample_dt", options.sample_dt, "s");
+
+  const InvariantTracker invariants(body, *torque, initial);
+  const FlipDetector flips(body, torque);
+  const bool locate = options.locate_flips && flips.applicable();
+  SimulationResult result;
+  result.flip_times.reserve(64);
+  State s = initial;
+  invariants.record(s, result.errors);
+
+  const double t0 = initial.t;
+  const double span = options.t_end - t0;
+  // Samples at t0 + i·sample_dt for i = 0..n−1 and t_end (a last sample closer than 1e-9·sample_dt to
+  // t_end is t_end itself).
+  const auto n_intervals = static_cast<long long>(std::ceil(span / options.sample_dt - 1e-9));
+  const auto sample_time = [&](long long i) {
+    return i >= n_intervals ? options.t_end : t0 + static_cast<double>(i) * options.sample_dt;
+  };
+  const auto emit = [&](const State& x) {
+    if (observer && !observer(x)) {
+      result.interrupted = true;
+      return false;
+    }
+    return true;
+  };
+  const auto finish = [&]() {
+    result.final_state = s;
+    result.wall_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    return result;
+  };
+  const auto take_step = [&](State& x, double h) {
+    try {
+      const StepResult r = integrator.step(x, h);
+      ++result.steps;
+      result.rejected_steps += r.rejected;
+      return r;
+    } catch (const ComputationFailed& e) {
+      throw ComputationFailed(fmt::format("simulate: {} failed at step {} (t = {} s): {}", integrator.name(),
+                                          result.steps + 1, x.t, e.what()));
+    }
+  };
+  const DenseContext dense{&integrator, &flips};
+
+  if (!emit(s)) return finish();
+  long long next = 1;  // index of the next sample
+
+  if (integrator.is_adaptive()) {
+    double h = integrator.nominal_step() > 0.0 ? integrator.nominal_step() : options.sample_dt;
+    while (s.t < options.t_end) {
+      const State prev = s;
+      const double remaining = options.t_end - s.t;
+      const bool last = h >= remaining;
+      const StepResult r = take_step(s, last ? remaining : h);
+      if (last && r.dt_taken == remaining) s.t = options.t_end;
+      h = r.dt_next;
+      require_finite_state(integrator, s, result.steps);
+      invariants.record(s, result.errors);
+      if (locate) {
+        const double c0 = flips.component(prev);
+        const double c1 = flips.component(s);
+        if (FlipDetector::sign_change(c0, c1)) {
+          result.flip_times.push_back(locate_sign_change(&dense_component, &dense, prev.t, s.t, c0, c1));
+        }
+      }
+      while (next <= n_intervals && sample_time(next) <= s.t) {
+        const double ts = sample_time(next);
+        ++next;
+        if (!emit(ts == s.t ? s : integrator.dense_output(ts))) return finish();
+      }
+    }
+    return finish();
+  }
+
+  // Fixed-step methods: each sample interval is cut into n equal steps of at most the nominal step, so that
+  // samples land exactly on the sample times (no interpolation of the samples).
+  const double h_nominal = integrator.nominal_step();
+  for (; next <= n_intervals; ++next) {
+    const double a = s.t;
+    const double b = sample_time(next);
+    const long long n =
+        h_nominal > 0.0 ? std::max(1LL, static_cast<long long>(std::ceil((b - a) / h_nominal - 1e-9))) : 1;
+    const double hh = (b - a) / static_cast<double>(n);
+    for (long long k = 0; k < n; ++k) {
+      const State prev = s;
+      take_step(s, hh);
+      if (k == n - 1) s.t = b;
+      require_finite_state(integrator, s, result.steps);
+      invariants.record(s, result.errors);
+      if (locate) {
+        const double c0 = flips.component(prev);
+        const double c1 = flips.component(s);
+        if (FlipDetector::sign_change(c0, c1)) {
+          result.flip_times.push_back(
+              integrator.has_dense_output()
+                  ? locate_sign_change(&dense_component, &dense, prev.t, s.t, c0, c1)
+                  : FlipDetector::hermite_root(prev.t, s.t, c0, c1, flips.rate(prev), flips.rate(s)));
+        }
+      }
+    }
+    if (!emit(s)) return finish();
+  }
+  return finish();
+}
+
+}  // namespace poinsot::dynamics
