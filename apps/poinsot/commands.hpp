@@ -12,6 +12,7 @@ void register_rotation(CLI::App& app);
 // inertia (issue 3)
 
 // run (issue 6)
+void register_run(CLI::App& app);
 
 // lambda (issue 5)
 

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   // inertia (issue 3)
 
   // run (issue 6)
+  poinsot::cli::register_run(app);
 
   // lambda (issue 5)
 

@@ -1,0 +1,232 @@
+// `poinsot run SCENARIO.toml`: runs a scenario file, prints its report (or with --json its summary), writes
+// trajectory.csv and summary.json into the output folder, and with --plot the figures (Matplotlib, through
+// python/poinsot/plot.py). Ctrl-C or SIGTERM stops the run cleanly: the files stay complete and
+// summary.json says "interrupted"; the exit status is then 128 + the signal's number. See docs/run.md.
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "commands.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/io/report.hpp"
+#include "poinsot/io/run.hpp"
+#include "poinsot/io/scenario.hpp"
+#include "poinsot/io/summary.hpp"
+
+extern char** environ;
+
+#ifndef POINSOT_PYTHON_DIR
+#define POINSOT_PYTHON_DIR ""
+#endif
+#ifndef POINSOT_PYTHON_SOURCE_DIR
+#define POINSOT_PYTHON_SOURCE_DIR ""
+#endif
+#ifndef POINSOT_PYTHON_EXECUTABLE
+#define POINSOT_PYTHON_EXECUTABLE "/usr/bin/python3"
+#endif
+
+namespace poinsot::cli {
+namespace {
+
+volatile std::sig_atomic_t g_signal = 0;
+
+extern "C" void on_signal(int sig) {
+  g_signal = sig;
+}
+
+/// Installs the SIGINT/SIGTERM handlers for the duration of a run; a second signal kills as usual
+/// (SA_RESETHAND), the rows written so far being complete.
+class SignalGuard {
+ public:
+  SignalGuard() {
+    g_signal = 0;
+    struct sigaction sa {};
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &sa, &old_int_);
+    sigaction(SIGTERM, &sa, &old_term_);
+  }
+  ~SignalGuard() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  SignalGuard(const SignalGuard&) = delete;
+  SignalGuard& operator=(const SignalGuard&) = delete;
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+/// A one-line progress bar on stderr, drawn only when stderr is a terminal, after the first second.
+class Progress {
+ public:
+  Progress(bool enabled, double t_end) : enabled_(enabled && isatty(STDERR_FILENO) == 1), t_end_(t_end) {}
+  void update(double t) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    if (elapsed < 1.0 || now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    const double f = t_end_ > 0.0 ? std::min(1.0, t / t_end_) : 1.0;
+    const int width = 30;
+    const int done = static_cast<int>(f * width);
+    fmt::print(stderr, "\r[{}{}] {:5.1f}%  t = {:.4g} / {:.4g} s  {:.1f} s elapsed",
+               std::string(static_cast<std::size_t>(done), '#'),
+               std::string(static_cast<std::size_t>(width - done), '.'), 100.0 * f, t, t_end_, elapsed);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  void finish() {
+    if (drawn_) fmt::print(stderr, "\r\033[K");
+    drawn_ = false;
+  }
+
+ private:
+  bool enabled_;
+  double t_end_;
+  bool drawn_ = false;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_ = start_;
+};
+
+struct RunCliOptions {
+  std::string scenario;
+  std::string out;
+  bool json = false, plot = false, quiet = false;
+  std::string method;
+  double dt = 0.0, t_end = 0.0, sample_dt = 0.0;
+  CLI::Option* dt_opt = nullptr;
+  CLI::Option* t_end_opt = nullptr;
+  CLI::Option* sample_dt_opt = nullptr;
+};
+
+std::string env_or(const char* name, const char* fallback) {
+  const char* v = std::getenv(name);
+  return v != nullptr && *v != '\0' ? std::string(v) : std::string(fallback);
+}
+
+/// Runs python/poinsot/plot.py on the run folder, with PYTHONPATH pointing at the build's python folder
+/// (POINSOT_PYTHON_DIR, overridden by the environment variable of the same name). Its output goes to
+/// stderr when stdout carries JSON.
+void make_plots(const std::string& dir, bool stdout_is_json) {
+  namespace fs = std::filesystem;
+  const std::string python = env_or("POINSOT_PYTHON", POINSOT_PYTHON_EXECUTABLE);
+  const std::string pydir = env_or("POINSOT_PYTHON_DIR", POINSOT_PYTHON_DIR);
+  std::string script = (fs::path(pydir) / "poinsot" / "plot.py").string();
+  if (!fs::exists(script)) script = (fs::path(POINSOT_PYTHON_SOURCE_DIR) / "poinsot" / "plot.py").string();
+  if (!fs::exists(script)) {
+    throw ComputationFailed(
+        fmt::format("plot: cannot find poinsot/plot.py under \"{}\"; set POINSOT_PYTHON_DIR "
+                    "to the build's python folder",
+                    pydir));
+  }
+  const char* old = std::getenv("PYTHONPATH");
+  const std::string path = old != nullptr && *old != '\0' ? pydir + ":" + old : pydir;
+  setenv("PYTHONPATH", path.c_str(), 1);
+  setenv("MPLBACKEND", "Agg", 0);
+  std::vector<std::string> args = {python, script, dir};
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (stdout_is_json) posix_spawn_file_actions_adddup2(&actions, STDERR_FILENO, STDOUT_FILENO);
+  std::fflush(stdout);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, python.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) {
+    throw ComputationFailed(
+        fmt::format("plot: cannot start \"{}\": {}; expected a Python 3 with Matplotlib "
+                    "(set POINSOT_PYTHON)",
+                    python, std::strerror(rc)));
+  }
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw ComputationFailed(fmt::format("plot: \"{} {} {}\" failed (status {}); the run's files are complete",
+                                        python, script, dir, WIFEXITED(status) ? WEXITSTATUS(status) : -1));
+  }
+}
+
+void run(RunCliOptions& o) {
+  io::Scenario sc = io::load_scenario(o.scenario);
+  io::ScenarioOverrides ov;
+  ov.method = o.method;
+  ov.has_dt = o.dt_opt->count() > 0;
+  ov.dt = o.dt;
+  ov.has_t_end = o.t_end_opt->count() > 0;
+  ov.t_end = o.t_end;
+  ov.has_sample_dt = o.sample_dt_opt->count() > 0;
+  ov.sample_dt = o.sample_dt;
+  ov.out_dir = o.out;
+  io::apply_overrides(sc, ov);
+  const std::string dir = sc.out_dir.empty() ? sc.name + "-run" : sc.out_dir;
+  io::prepare_output_dir(dir);  // before anything is simulated
+
+  Progress progress(!o.quiet, sc.simulation.t_end);
+  io::RunOptions ro;
+  ro.out_dir = dir;
+  ro.stop_requested = [] { return g_signal != 0; };
+  ro.on_sample = [&progress](double t) { progress.update(t); };
+  io::RunSummary summary = [&] {
+    SignalGuard guard;
+    try {
+      auto s = io::run_scenario(sc, ro);
+      progress.finish();
+      return s;
+    } catch (...) {
+      progress.finish();
+      throw;
+    }
+  }();
+  if (o.json) {
+    fmt::print("{}", io::summary_json(summary));
+  } else {
+    fmt::print("{}", io::format_report(summary));
+  }
+  std::fflush(stdout);
+  if (g_signal != 0) {
+    fmt::print(stderr, "poinsot: interrupted by signal {} at t = {} s; the files are complete up to there\n",
+               static_cast<int>(g_signal), summary.result.final_state.t);
+    std::fflush(stderr);
+    std::exit(128 + g_signal);
+  }
+  if (o.plot) {
+    make_plots(dir, o.json);
+  }
+}
+
+}  // namespace
+
+void register_run(CLI::App& app) {
+  auto o = std::make_shared<RunCliOptions>();
+  auto* cmd = app.add_subcommand("run", "Run a scenario file: report, trajectory.csv, summary.json, plots");
+  cmd->add_option("scenario", o->scenario, "the scenario (TOML, see docs/scenario.md)")->required();
+  cmd->add_option("--out", o->out, "output folder (default: [output] dir, else SCENARIO-run)");
+  cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
+  cmd->add_flag("--plot", o->plot, "also draw the figures (PNG, Matplotlib) into the output folder");
+  cmd->add_flag("--quiet", o->quiet, "no progress bar");
+  cmd->add_option("--method", o->method,
+                  "override [integrator] method: exact, rk4, dopri5, dop853, dlm, rattle");
+  o->dt_opt = cmd->add_option("--dt", o->dt, "override [integrator] dt (s)");
+  o->t_end_opt = cmd->add_option("--t-end", o->t_end, "override [output] t_end (s)");
+  o->sample_dt_opt = cmd->add_option("--sample-dt", o->sample_dt, "override [output] sample_dt (s)");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace poinsot::cli

@@ -1,0 +1,79 @@
+#pragma once
+/// @file run.hpp
+/// Runs a scenario: builds the integrator, streams the samples of dynamics::simulate into trajectory.csv
+/// (constant memory), measures the events (flips of the intermediate axis beside their closed-form interval;
+/// precession and nutation of a top beside its theory) and writes summary.json atomically. The text report
+/// is report.hpp; `poinsot run` (apps/poinsot/cmd_run.cpp) adds signals, the progress bar and the plots.
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "poinsot/core/types.hpp"
+#include "poinsot/dynamics/simulation.hpp"
+#include "poinsot/io/scenario.hpp"
+
+namespace poinsot::io {
+
+/// Symmetry of the principal moments (ascending), equal when they differ by less than `rel_tol` × trace:
+/// "asymmetric", "prolate" (two equal moments larger than the third), "oblate" (two equal moments smaller
+/// than the third), "spherical".
+std::string symmetry_class(const Vec3& principal_moments, double rel_tol = 1e-9);
+
+/// The top measurements of a run (heavy top, or torque-free axisymmetric body).
+struct TopEvents {
+  std::string kind;                            ///< "heavy top" or "free symmetric top"
+  Vec3 axis_body = Vec3::Zero();               ///< the figure axis, body frame (unit)
+  Vec3 direction_space = Vec3::Zero();         ///< precession about: −g/|g| or L_space/|L| (unit)
+  double spin = 0.0;                           ///< ω·axis at t = 0 (rad/s)
+  double moment_axial = 0.0;                   ///< I3 = aᵀJa about the rotation point (kg·m²)
+  double moment_transverse = 0.0;              ///< I1 = (tr J − I3)/2 about the rotation point (kg·m²)
+  std::optional<double> precession_rate_mean;  ///< measured (rad/s)
+  /// Theory (rad/s): heavy top, the fast-top rate M g l/(I3 ω3) of the notes; free symmetric top, |L|/I1.
+  std::optional<double> precession_rate_theory;
+  std::optional<double> nutation_frequency;         ///< measured (rad/s)
+  std::optional<double> nutation_frequency_theory;  ///< heavy fast top: I3 ω3 / I1 (rad/s)
+  double theta_min = 0.0, theta_max = 0.0;          ///< range of the axis's polar angle (rad)
+  std::optional<bool> sleeping;  ///< heavy top: ω3² > 4 I1 M g l / I3² (stable upright), when upright
+};
+
+/// Everything a run produced, for the report and summary.json.
+struct RunSummary {
+  std::string scenario, source, title, method, torque, body_description, symmetry;
+  Vec3 principal_moments = Vec3::Zero();  ///< kg·m², ascending (about the rotation point)
+  dynamics::State initial;
+  double energy0 = 0.0;                 ///< J, T + V at t = 0
+  Vec3 L_space0 = Vec3::Zero();         ///< kg·m²/s
+  double t_end = 0.0, sample_dt = 0.0;  ///< s
+  dynamics::SimulationResult result;    ///< final state, steps, worst errors, flip times, wall time
+  long long samples = 0;
+  std::string failure;  ///< the message of a ComputationFailed that stopped the run (empty: none)
+  /// Free asymmetric body: the closed form 2K(k)/ω_p between flips and 4K(k)/ω_p the period of ω (s).
+  std::optional<double> flip_interval_theory, period_theory;
+  std::optional<TopEvents> top;
+  /// Λ at t = 0 (body frame, J) and its eigenvalues, ascending, when the analysis layer provides them.
+  std::optional<Mat3> lambda0;
+  std::vector<std::string> lambda_lines;  ///< a few lines for the report
+  std::string out_dir;                    ///< empty: no files written
+  std::string trajectory_file, summary_file;
+};
+
+struct RunOptions {
+  std::string out_dir;  ///< where trajectory.csv and summary.json go; empty: no files
+  /// Polled at every sample; true stops the run (the summary then says interrupted).
+  std::function<bool()> stop_requested;
+  /// Called at every sample with its time (s), e.g. for a progress bar.
+  std::function<void(double t)> on_sample;
+};
+
+/// Creates `dir` (with its parents) and checks that a file can be written in it, before anything is
+/// simulated. Throws InvalidInput naming the folder and the system's reason.
+void prepare_output_dir(const std::string& dir);
+
+/// Runs the scenario. Bad input throws InvalidInput before anything is simulated. A ComputationFailed during
+/// the run is recorded in `failure` (the files written so far stay complete, summary.json says so) and
+/// re-thrown after the summary is written.
+RunSummary run_scenario(const Scenario& scenario, const RunOptions& options);
+
+}  // namespace poinsot::io

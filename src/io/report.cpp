@@ -1,0 +1,149 @@
+// The text report of a run (see report.hpp).
+#include "poinsot/io/report.hpp"
+
+#include <cmath>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/format.hpp"
+
+namespace poinsot::io {
+namespace {
+
+std::string g(double x, int digits = 6) {
+  return format_number(x, digits);
+}
+
+std::string vec(const Vec3& v, int digits = 6) {
+  return fmt::format("({}, {}, {})", g(v[0], digits), g(v[1], digits), g(v[2], digits));
+}
+
+std::string symmetry_note(const std::string& sym) {
+  if (sym == "asymmetric")
+    return "asymmetric, I1 < I2 < I3: rotation about the intermediate axis is unstable";
+  if (sym == "prolate") return "prolate, I1 < I2 = I3 (a symmetric top)";
+  if (sym == "oblate") return "oblate, I1 = I2 < I3 (a symmetric top)";
+  return "spherical, I1 = I2 = I3";
+}
+
+std::string rel_diff(double measured, double theory) {
+  if (theory == 0.0) return "";
+  return fmt::format("relative difference {:.1e}", std::abs(measured - theory) / std::abs(theory));
+}
+
+}  // namespace
+
+std::string format_report(const RunSummary& s) {
+  std::string out;
+  auto o = std::back_inserter(out);
+  const auto& r = s.result;
+  fmt::format_to(o, "poinsot run: {} ({})\n", s.scenario, s.source);
+  if (!s.title.empty()) fmt::format_to(o, "  {}\n", s.title);
+  fmt::format_to(o, "\nbody\n  given as: {}\n", s.body_description);
+  fmt::format_to(o, "  principal moments I1, I2, I3 = {} kg·m² about the rotation point\n",
+                 vec(s.principal_moments, 7));
+  fmt::format_to(o, "  symmetry: {}\n", symmetry_note(s.symmetry));
+  fmt::format_to(o, "  torque: {}\n", s.torque);
+
+  fmt::format_to(o, "\ninitial state (t = 0)\n");
+  fmt::format_to(o, "  omega_body = {} rad/s, |omega| = {} rad/s\n", vec(s.initial.omega_body),
+                 g(s.initial.omega_body.norm()));
+  fmt::format_to(o, "  energy E0 = {} J, L_space = {} kg·m²/s, |L| = {} kg·m²/s\n", g(s.energy0, 9),
+                 vec(s.L_space0), g(s.L_space0.norm(), 9));
+
+  fmt::format_to(o, "\nrun\n  method {}, t_end = {} s, a sample every {} s ({} samples)\n", s.method,
+                 g(s.t_end), g(s.sample_dt), s.samples);
+  if (!s.failure.empty()) fmt::format_to(o, "  FAILED: {}\n", s.failure);
+  if (r.interrupted)
+    fmt::format_to(o, "  INTERRUPTED at t = {} s (the files are complete up to there)\n", g(r.final_state.t));
+  fmt::format_to(o, "  final: t = {} s, omega_body = {} rad/s\n", g(r.final_state.t),
+                 vec(r.final_state.omega_body));
+
+  fmt::format_to(o, "\ninvariants: worst relative error over the run\n");
+  fmt::format_to(o, "  energy            {:.2e}\n", r.errors.energy_rel_max);
+  if (s.torque.rfind("none", 0) == 0)
+    fmt::format_to(o, "  L_space           {:.2e}\n", r.errors.L_space_rel_max);
+  fmt::format_to(o, "  |L|               {:.2e}\n", r.errors.L_norm_rel_max);
+  fmt::format_to(o, "  ‖RᵀR − I‖_F       {:.2e} (absolute)\n", r.errors.orthogonality_max);
+
+  fmt::format_to(o, "\nevents\n");
+  const auto& flips = r.flip_times;
+  if (s.symmetry == "asymmetric" || !flips.empty()) {
+    fmt::format_to(o, "  flips of the intermediate axis (sign changes of L2, body frame): {}\n",
+                   flips.size());
+    if (!flips.empty()) {
+      std::string list;
+      const std::size_t shown = std::min<std::size_t>(flips.size(), 12);
+      for (std::size_t i = 0; i < shown; ++i)
+        list += (i ? ", " : "") + g(flips[i], 6);
+      if (shown < flips.size()) list += ", ...";
+      fmt::format_to(o, "    at t = {} s\n", list);
+    }
+    if (flips.size() >= 2) {
+      const double mean = (flips.back() - flips.front()) / static_cast<double>(flips.size() - 1);
+      fmt::format_to(o, "    interval between flips: measured {} s (mean)", g(mean, 10));
+      if (s.flip_interval_theory) {
+        fmt::format_to(o, ", theory 2K(k)/ω_p = {} s, {}", g(*s.flip_interval_theory, 10),
+                       rel_diff(mean, *s.flip_interval_theory));
+      }
+      fmt::format_to(o, "\n");
+    } else if (s.flip_interval_theory) {
+      fmt::format_to(o, "    theory: interval between flips 2K(k)/ω_p = {} s\n",
+                     g(*s.flip_interval_theory, 10));
+    }
+    if (s.period_theory) {
+      fmt::format_to(o, "    period of omega: theory 4K(k)/ω_p = {} s\n", g(*s.period_theory, 10));
+    }
+    if (!s.flip_interval_theory && s.symmetry == "asymmetric") {
+      fmt::format_to(o, "    (no closed-form interval: a torque acts, or the motion never flips)\n");
+    }
+  }
+  if (s.top) {
+    const auto& t = *s.top;
+    const std::string about = t.kind == "heavy top" ? "the vertical (−g)" : "L_space";
+    fmt::format_to(
+        o, "  {}: figure axis {} (body frame), spin omega3 = {} rad/s, I3 = {} kg·m², I1 = {} kg·m²\n",
+        t.kind, vec(t.axis_body, 4), g(t.spin), g(t.moment_axial), g(t.moment_transverse));
+    fmt::format_to(o, "    precession about {}: mean {} rad/s", about,
+                   t.precession_rate_mean ? g(*t.precession_rate_mean) : "n/a");
+    if (t.precession_rate_theory) {
+      fmt::format_to(o, ", theory {} {} rad/s",
+                     t.kind == "heavy top" ? "M g l/(I3 omega3) (fast top)" : "|L|/I1",
+                     g(*t.precession_rate_theory));
+      if (t.precession_rate_mean)
+        fmt::format_to(o, ", {}", rel_diff(*t.precession_rate_mean, *t.precession_rate_theory));
+    }
+    fmt::format_to(o, "\n    nutation: axis tilt from {} between {} and {} rad", about, g(t.theta_min),
+                   g(t.theta_max));
+    if (t.nutation_frequency) fmt::format_to(o, ", frequency {} rad/s", g(*t.nutation_frequency));
+    if (t.nutation_frequency_theory) {
+      fmt::format_to(o, ", fast-top theory I3 omega3/I1 = {} rad/s", g(*t.nutation_frequency_theory));
+    }
+    fmt::format_to(o, "\n");
+    if (t.sleeping) {
+      fmt::format_to(o, "    sleeping-top criterion omega3² > 4 I1 M g l/I3²: {}\n",
+                     *t.sleeping ? "holds" : "fails");
+    }
+  }
+  if (s.symmetry != "asymmetric" && flips.empty() && !s.top)
+    fmt::format_to(o, "  none tracked for this body\n");
+
+  if (!s.lambda_lines.empty()) {
+    fmt::format_to(o, "\nLagrange multipliers Λ (Vallée & Dumitriu 2002)\n");
+    for (const auto& line : s.lambda_lines)
+      fmt::format_to(o, "  {}\n", line);
+  }
+
+  fmt::format_to(o, "\ncost\n  {} steps ({} rejected), wall time {:.3f} s", r.steps, r.rejected_steps,
+                 r.wall_time_s);
+  if (r.wall_time_s > 0.0)
+    fmt::format_to(o, ", {:.3g} steps/s", static_cast<double>(r.steps) / r.wall_time_s);
+  fmt::format_to(o, "\n");
+  if (!s.out_dir.empty()) {
+    fmt::format_to(o, "\nfiles\n  {} ({} rows)\n  {}\n", s.trajectory_file, s.samples, s.summary_file);
+  }
+  return out;
+}
+
+}  // namespace poinsot::io

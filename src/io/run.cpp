@@ -1,0 +1,169 @@
+// Runs a scenario into its files and its summary (see run.hpp).
+#include "poinsot/io/run.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/exact_free_body.hpp"
+#include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/io/axis_tracker.hpp"
+#include "poinsot/io/summary.hpp"
+#include "poinsot/io/trajectory_writer.hpp"
+#include "run_lambda.hpp"
+
+namespace poinsot::io {
+
+std::string symmetry_class(const Vec3& m, double rel_tol) {
+  const double tol = rel_tol * (m[0] + m[1] + m[2]);
+  const bool low = std::abs(m[1] - m[0]) <= tol;   // I1 = I2
+  const bool high = std::abs(m[2] - m[1]) <= tol;  // I2 = I3
+  if (low && high) return "spherical";
+  if (low) return "oblate";    // two equal moments smaller than the third (a disc)
+  if (high) return "prolate";  // two equal moments larger than the third (a rod)
+  return "asymmetric";
+}
+
+void prepare_output_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) {
+    throw InvalidInput(
+        fmt::format("output: cannot create folder \"{}\": {}; expected a writable place", dir, ec.message()));
+  }
+  if (!fs::is_directory(dir)) {
+    throw InvalidInput(fmt::format("output: \"{}\" exists and is not a folder; expected a folder", dir));
+  }
+  const std::string probe = (fs::path(dir) / ".poinsot-write-test").string();
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) {
+    throw InvalidInput(fmt::format("output: cannot write in folder \"{}\": {}; expected a writable folder",
+                                   dir, std::strerror(errno)));
+  }
+  ::close(fd);
+  ::unlink(probe.c_str());
+}
+
+namespace {
+
+/// The figure axis of a top, if the scenario is one.
+std::optional<TopEvents> top_setup(const Scenario& sc, const dynamics::State& s0) {
+  const auto& body = sc.body;
+  const Mat3& J = body.inertia();
+  TopEvents top;
+  if (sc.torque->is_gravity() && body.has_pivot() && body.pivot_to_com().norm() > 0.0 &&
+      sc.gravity_space.norm() > 0.0) {
+    top.kind = "heavy top";
+    top.axis_body = body.pivot_to_com().normalized();
+    top.direction_space = -sc.gravity_space.normalized();
+  } else if (sc.torque->is_zero() && !body.has_pivot()) {
+    const std::string sym = symmetry_class(body.principal_moments());
+    if (sym != "oblate" && sym != "prolate") return std::nullopt;
+    const int unique = sym == "oblate" ? 2 : 0;
+    top.kind = "free symmetric top";
+    top.axis_body = body.principal_axes().col(unique);
+    const Vec3 L = dynamics::angular_momentum_space(body, s0);
+    if (!(L.norm() > 0.0)) return std::nullopt;
+    top.direction_space = L.normalized();
+  } else {
+    return std::nullopt;
+  }
+  top.spin = s0.omega_body.dot(top.axis_body);
+  top.moment_axial = top.axis_body.dot(J * top.axis_body);
+  top.moment_transverse = 0.5 * (J.trace() - top.moment_axial);
+  if (top.kind == "heavy top") {
+    const double mgl = body.mass() * sc.gravity_space.norm() * body.pivot_to_com().norm();
+    if (std::abs(top.spin) > 0.0) {
+      top.precession_rate_theory = mgl / (top.moment_axial * top.spin);  // notes: Ω = M g l/(I3 ω3)
+      top.nutation_frequency_theory = top.moment_axial * std::abs(top.spin) / top.moment_transverse;
+    }
+    top.sleeping =
+        top.spin * top.spin > 4.0 * top.moment_transverse * mgl / (top.moment_axial * top.moment_axial);
+  } else {
+    // Free symmetric body: the figure axis turns about L at |L|/I1 (I1 the transverse moment).
+    top.precession_rate_theory = dynamics::angular_momentum_space(body, s0).norm() / top.moment_transverse;
+  }
+  return top;
+}
+
+}  // namespace
+
+RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
+  RunSummary sum;
+  sum.scenario = sc.name;
+  sum.source = sc.source;
+  sum.title = sc.title;
+  sum.method = sc.method;
+  sum.torque = sc.torque->describe();
+  sum.body_description = sc.body_description;
+  sum.principal_moments = sc.body.principal_moments();
+  sum.symmetry = symmetry_class(sum.principal_moments);
+  sum.initial = sc.initial;
+  sum.energy0 = dynamics::total_energy(sc.body, sc.initial, sc.gravity_space);
+  sum.L_space0 = dynamics::angular_momentum_space(sc.body, sc.initial);
+  sum.t_end = sc.simulation.t_end;
+  sum.sample_dt = sc.simulation.sample_dt;
+  sum.out_dir = options.out_dir;
+
+  // Everything that can be refused is checked before the first step.
+  check_method(sc, sc.method, "[integrator] method");
+  auto integrator = dynamics::make_integrator(sc.method, sc.body, sc.torque, sc.integrator);
+  if (!options.out_dir.empty()) prepare_output_dir(options.out_dir);
+
+  if (sc.torque->is_zero() && !sc.body.has_pivot() && sum.symmetry == "asymmetric") {
+    const dynamics::ExactFreeBody exact(sc.body, sc.initial);
+    if (exact.flip_interval() > 0.0) sum.flip_interval_theory = exact.flip_interval();
+    if (exact.omega_period() > 0.0) sum.period_theory = exact.omega_period();
+  }
+  sum.top = top_setup(sc, sc.initial);
+  detail::lambda_report(sc, sum);
+
+  std::optional<TrajectoryCsvWriter> csv;
+  if (!options.out_dir.empty()) {
+    sum.trajectory_file = (std::filesystem::path(options.out_dir) / "trajectory.csv").string();
+    sum.summary_file = (std::filesystem::path(options.out_dir) / "summary.json").string();
+    csv.emplace(sum.trajectory_file, sc.body, sc.gravity_space);
+  }
+  std::optional<AxisTracker> tracker;
+  if (sum.top) tracker.emplace(sum.top->axis_body, sum.top->direction_space);
+
+  bool stopped = false;
+  const dynamics::Observer observer = [&](const dynamics::State& s) {
+    if (csv) csv->write(s);
+    if (tracker) tracker->add(s.t, s.R);
+    ++sum.samples;
+    if (options.on_sample) options.on_sample(s.t);
+    if (options.stop_requested && options.stop_requested()) {
+      stopped = true;
+      return false;
+    }
+    return true;
+  };
+  try {
+    sum.result = dynamics::simulate(sc.body, sc.torque, sc.initial, *integrator, sc.simulation, observer);
+  } catch (const ComputationFailed& e) {
+    sum.failure = e.what();
+  }
+  sum.result.interrupted = sum.result.interrupted || stopped;
+  if (tracker) {
+    sum.top->precession_rate_mean = tracker->precession_rate_mean();
+    sum.top->nutation_frequency = tracker->nutation_frequency();
+    sum.top->theta_min = tracker->theta_min();
+    sum.top->theta_max = tracker->theta_max();
+  }
+  if (csv) csv->flush();
+  if (!sum.summary_file.empty()) write_file_atomic(sum.summary_file, summary_json(sum));
+  if (!sum.failure.empty()) throw ComputationFailed(sum.failure);
+  return sum;
+}
+
+}  // namespace poinsot::io
