@@ -129,20 +129,17 @@ def scenario_toml(scenario: Mapping[str, Any]) -> str:
 
 
 def _scenario_parts(scenario: Any) -> dict:
-    """body, initial, torque, method, integrator and output options of a scenario (path, dict, TOML text or
-    a poinsot.Scenario)."""
-    load = getattr(_core, "_load_scenario", None)
-    if load is None:
-        raise ValueError("scenario: this build of poinsot has no scenario reader (io layer); give body= and "
-                         "the initial state instead")
+    """body, initial, torque, method, integrator and output options of a scenario (a path, a dict with the
+    file's layout, or a poinsot.Scenario)."""
     if isinstance(scenario, Mapping):
-        return _core._parse_scenario(scenario_toml(scenario), "<dict>", os.getcwd())
-    if isinstance(scenario, (str, os.PathLike)):
-        return load(os.fspath(scenario))
-    parts = getattr(scenario, "_parts", None)
-    if parts is not None:
-        return dict(parts)
-    raise TypeError(f"scenario: expected a path, a dict or a poinsot.Scenario, got {type(scenario).__name__}")
+        scenario = _core.parse_scenario(scenario_toml(scenario), "<dict>", os.getcwd())
+    elif isinstance(scenario, (str, os.PathLike)):
+        scenario = _core.load_scenario(os.fspath(scenario))
+    if not isinstance(scenario, _core.Scenario):
+        raise TypeError(f"scenario: expected a path, a dict or a poinsot.Scenario, got {type(scenario).__name__}")
+    keys = ("body", "initial", "torque", "method", "dt", "rtol", "atol", "newton_tolerance",
+            "newton_max_iterations", "t_end", "sample_dt", "locate_flips")
+    return {k: getattr(scenario, k) for k in keys}
 
 
 def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, omega_body: Any = None,

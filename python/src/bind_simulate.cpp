@@ -11,6 +11,8 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "docstrings.hpp"
+#include "poinsot/dynamics/exact_free_body.hpp"
+#include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/simulation.hpp"
@@ -103,7 +105,151 @@ py::dict run_simulation(const RigidBody& body, const State& initial, const py::o
   return out;
 }
 
+namespace {
+
+void bind_exact(py::module_& m) {
+  using dynamics::ExactFreeBody;
+  using dynamics::FreeBodyTheory;
+  py::class_<FreeBodyTheory>(m, "FreeBodyTheory", POINSOT_DOC(file_dynamics_free_body_theory))
+      .def_property_readonly(
+          "moments", [](const FreeBodyTheory& t) { return from_vec3(t.moments); },
+          POINSOT_DOC(dynamics_FreeBodyTheory_moments))
+      .def_property_readonly(
+          "omega", [](const FreeBodyTheory& t) { return from_vec3(t.omega); }, POINSOT_DOC(dynamics_FreeBodyTheory_omega))
+      .def_readonly("energy", &FreeBodyTheory::energy, POINSOT_DOC(dynamics_FreeBodyTheory_energy))
+      .def_readonly("momentum", &FreeBodyTheory::momentum, POINSOT_DOC(dynamics_FreeBodyTheory_momentum))
+      .def_readonly("separatrix_gap", &FreeBodyTheory::separatrix_gap,
+                    POINSOT_DOC(dynamics_FreeBodyTheory_separatrix_gap))
+      .def_property_readonly(
+          "regime", [](const FreeBodyTheory& t) { return std::string(dynamics::to_string(t.regime)); },
+          POINSOT_DOC(dynamics_to_string))
+      .def_readonly("modulus", &FreeBodyTheory::modulus, POINSOT_DOC(dynamics_FreeBodyTheory_modulus))
+      .def_readonly("modulus_complement2", &FreeBodyTheory::modulus_complement2,
+                    POINSOT_DOC(dynamics_FreeBodyTheory_modulus_complement2))
+      .def_readonly("omega_p", &FreeBodyTheory::omega_p, POINSOT_DOC(dynamics_FreeBodyTheory_omega_p))
+      .def_readonly("quarter_period", &FreeBodyTheory::quarter_period,
+                    POINSOT_DOC(dynamics_FreeBodyTheory_quarter_period))
+      .def_property_readonly("flip_interval", &FreeBodyTheory::flip_interval,
+                             POINSOT_DOC(dynamics_FreeBodyTheory_flip_interval))
+      .def_property_readonly("omega_period", &FreeBodyTheory::omega_period,
+                             POINSOT_DOC(dynamics_FreeBodyTheory_omega_period))
+      .def("__repr__", [](const FreeBodyTheory& t) {
+        return std::string("FreeBodyTheory(regime=") + dynamics::to_string(t.regime) +
+               ", k=" + std::to_string(t.modulus) + ", omega_p=" + std::to_string(t.omega_p) +
+               " rad/s, flip_interval=" + std::to_string(t.flip_interval()) + " s)";
+      });
+  m.def(
+      "free_body_theory",
+      [](const py::object& body_or_moments, ArrayLike omega) {
+        if (py::isinstance<RigidBody>(body_or_moments))
+          return dynamics::free_body_theory(body_or_moments.cast<const RigidBody&>(), to_vec3(omega, "omega_body"));
+        return dynamics::free_body_theory(to_vec3(body_or_moments, "principal_moments"),
+                                          to_vec3(omega, "omega_principal"));
+      },
+      py::arg("body"), py::arg("omega_body"),
+      (std::string("The closed-form theory of the torque-free motion for a poinsot.RigidBody and ω in its body "
+                   "frame (rad/s), or for principal moments (ascending, kg·m²) and ω in the principal frame.\n\n") +
+       POINSOT_DOC(dynamics_free_body_theory_2) + "\n\n" + POINSOT_DOC(file_dynamics_free_body_theory))
+          .c_str());
+
+  py::class_<ExactFreeBody>(m, "ExactFreeBody", POINSOT_DOC(file_dynamics_exact_free_body))
+      .def(py::init([](const RigidBody& body, const State& initial, const std::string& method) {
+             if (method != "automatic" && method != "elliptic")
+               throw py::value_error("method: got \"" + method + "\", expected \"automatic\" or \"elliptic\"");
+             return ExactFreeBody(body, initial,
+                                  method == "elliptic" ? dynamics::ExactMethod::elliptic
+                                                       : dynamics::ExactMethod::automatic);
+           }),
+           py::arg("body"), py::arg("initial"), py::arg("method") = "automatic",
+           POINSOT_DOC(dynamics_ExactFreeBody_ExactFreeBody))
+      .def("state_at", &ExactFreeBody::state_at, py::arg("t"), POINSOT_DOC(dynamics_ExactFreeBody_state_at))
+      .def(
+          "states_at",
+          [](const ExactFreeBody& e, ArrayLike t_obj) {
+            auto t = to_float_array(t_obj.obj, "t", {-1});
+            const py::ssize_t n = t.shape(0);
+            std::vector<double> R(static_cast<std::size_t>(9 * n)), w(static_cast<std::size_t>(3 * n));
+            {
+              py::gil_scoped_release release;
+              for (py::ssize_t i = 0; i < n; ++i) {
+                const State s = e.state_at(t.data()[i]);
+                for (int a = 0; a < 3; ++a) {
+                  for (int b = 0; b < 3; ++b) R[static_cast<std::size_t>(9 * i + 3 * a + b)] = s.R(a, b);
+                  w[static_cast<std::size_t>(3 * i + a)] = s.omega_body[a];
+                }
+              }
+            }
+            return py::make_tuple(array_from_buffer(std::move(R), {n, 3, 3}), array_from_buffer(std::move(w), {n, 3}));
+          },
+          py::arg("t"), "The closed-form (R (n, 3, 3), omega_body (n, 3)) at the times t (n,) (s).")
+      .def_property_readonly("theory", &ExactFreeBody::theory, POINSOT_DOC(dynamics_ExactFreeBody_theory))
+      .def_property_readonly("omega_period", &ExactFreeBody::omega_period,
+                             POINSOT_DOC(dynamics_ExactFreeBody_omega_period))
+      .def_property_readonly("flip_interval", &ExactFreeBody::flip_interval,
+                             POINSOT_DOC(dynamics_ExactFreeBody_flip_interval));
+  m.def(
+      "axisymmetric_free_motion",
+      [](double A, double C, ArrayLike axis, const State& initial, double t) {
+        return dynamics::axisymmetric_free_motion(A, C, to_vec3(axis, "axis_body"), initial, t);
+      },
+      py::arg("A"), py::arg("C"), py::arg("axis_body"), py::arg("initial"), py::arg("t"),
+      POINSOT_DOC(dynamics_axisymmetric_free_motion));
+
+  using dynamics::Integrator;
+  py::class_<Integrator>(m, "Integrator", POINSOT_DOC(file_dynamics_integrator))
+      .def_property_readonly("name", [](const Integrator& i) { return std::string(i.name()); },
+                             POINSOT_DOC(dynamics_Integrator_name))
+      .def_property_readonly("order", &Integrator::order, POINSOT_DOC(dynamics_Integrator_order))
+      .def_property_readonly("is_adaptive", &Integrator::is_adaptive)
+      .def_property_readonly("has_dense_output", &Integrator::has_dense_output)
+      .def(
+          "step",
+          [](Integrator& i, State& s, double dt) {
+            const auto r = i.step(s, dt);
+            py::dict d;
+            d["dt_taken"] = r.dt_taken;
+            d["dt_next"] = r.dt_next;
+            d["rejected"] = r.rejected;
+            return d;
+          },
+          py::arg("state"), py::arg("dt"),
+          (std::string(POINSOT_DOC(dynamics_Integrator_step)) +
+           "\n\nAdvances `state` in place; returns a dict: dt_taken (s), dt_next (s), rejected.")
+              .c_str())
+      .def("dense_output", &Integrator::dense_output, py::arg("t"), POINSOT_DOC(dynamics_Integrator_dense_output))
+      .def(
+          "last_multiplier",
+          [](const Integrator& i) -> py::object {
+            Mat3 L;
+            if (!i.last_multiplier(L)) return py::none();
+            return from_mat3(L);
+          },
+          (std::string(POINSOT_DOC(dynamics_Integrator_last_multiplier)) + "\n\nReturns None when there is none.")
+              .c_str());
+  m.def(
+      "make_integrator",
+      [](const std::string& name, const RigidBody& body, const py::object& torque, double dt, double rtol,
+         double atol, double newton_tolerance, int newton_max_iterations) {
+        dynamics::IntegratorOptions o;
+        o.dt = dt;
+        o.rtol = rtol;
+        o.atol = atol;
+        o.newton_tolerance = newton_tolerance;
+        o.newton_max_iterations = newton_max_iterations;
+        return dynamics::make_integrator(name, body, as_torque(torque), o);
+      },
+      py::arg("name"), py::arg("body"), py::arg("torque") = py::none(), py::kw_only(),
+      py::arg("dt") = dynamics::IntegratorOptions{}.dt, py::arg("rtol") = dynamics::IntegratorOptions{}.rtol,
+      py::arg("atol") = dynamics::IntegratorOptions{}.atol,
+      py::arg("newton_tolerance") = dynamics::IntegratorOptions{}.newton_tolerance,
+      py::arg("newton_max_iterations") = dynamics::IntegratorOptions{}.newton_max_iterations,
+      py::keep_alive<0, 2>(), POINSOT_DOC(dynamics_make_integrator));
+}
+
+}  // namespace
+
 void bind_simulate(py::module_& m) {
+  bind_exact(m);
   m.def(
       "_simulate",
       [](const RigidBody& body, const State& initial, const py::object& torque, const std::string& method,

@@ -21,4 +21,5 @@ PYBIND11_MODULE(_core, m) {
   poinsot::python::bind_inertia(m);
   poinsot::python::bind_simulate(m);
   poinsot::python::bind_analysis(m);
+  poinsot::python::bind_io(m);
 }

@@ -61,7 +61,8 @@ class _Extractor:
 
     def add(self, scope: list[str], name: str, text: str) -> None:
         parts = [s.removeprefix("poinsot::") for s in scope if s and s != "poinsot"] + [name]
-        key = "_".join(p.replace("::", "_") for p in parts)
+        key = "_".join(p.replace("::", "_") for p in parts).replace("~", "destructor_")
+        key = re.sub(r"\W", "_", key)  # operators and anything else that is not an identifier
         n = self.counts.get(key, 0) + 1
         self.counts[key] = n
         if n > 1:
@@ -153,7 +154,8 @@ def render(docs: dict[str, str]) -> str:
     ]
     for key in sorted(docs):
         text = docs[key]
-        assert ')doc"' not in text, key
+        if ')doc"' in text:
+            text = text.replace(')doc"', ') doc"')
         out.append(f'inline constexpr const char* {key} = R"doc({text})doc";')
     out += ["}  // namespace poinsot::python::doc", "", "#define POINSOT_DOC(key) ::poinsot::python::doc::key", ""]
     return "\n".join(out)
