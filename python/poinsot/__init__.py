@@ -6,25 +6,42 @@ Lagrange multipliers of the rotation-matrix formulation (Vallée & Dumitriu 2002
 they say "throws InvalidInput" or "ComputationFailed", Python raises ``ValueError`` with the same one-line
 message). Arrays are NumPy float64; vectors have shape (3,), matrices (3, 3), quaternions (w, x, y, z).
 Conventions: ``R`` maps body to space, ``omega_body`` is the body-frame angular velocity, SI units.
+
+Submodules: ``so3`` (rotations), ``inertia`` (mass properties), ``analysis`` (Λ and the constraint stress),
+``plot`` (figures of a run folder, Matplotlib; imported on first use).
 """
 from . import _core
 from ._core import (
+    ExactFreeBody,
+    FreeBodyTheory,
+    Integrator,
     RigidBody,
+    Scenario,
     State,
     TorqueModel,
     __version__,
+    analysis,
     angular_momentum_body,
     angular_momentum_space,
+    axisymmetric_free_motion,
+    free_body_theory,
+    inertia,
     kinetic_energy,
+    load_scenario,
+    make_integrator,
+    parse_scenario,
     potential_energy,
     so3,
     total_energy,
     validate_state,
 )
+from ._simulate import RunResult, SimulationResult, run, scenario_toml, simulate
 
 __all__ = [
     "__version__",
     "so3",
+    "inertia",
+    "analysis",
     "RigidBody",
     "State",
     "TorqueModel",
@@ -34,8 +51,29 @@ __all__ = [
     "potential_energy",
     "total_energy",
     "validate_state",
+    "Integrator",
+    "make_integrator",
+    "ExactFreeBody",
+    "FreeBodyTheory",
+    "free_body_theory",
+    "axisymmetric_free_motion",
+    "Scenario",
+    "load_scenario",
+    "parse_scenario",
+    "scenario_toml",
+    "simulate",
+    "SimulationResult",
+    "run",
+    "RunResult",
 ]
 
-from ._simulate import SimulationResult, scenario_toml, simulate  # noqa: E402
 
-__all__ += ["simulate", "SimulationResult", "scenario_toml"]
+def __getattr__(name):
+    # poinsot.plot needs Matplotlib: imported on first use only, so that `import poinsot` stays light.
+    if name == "plot":
+        import importlib
+
+        module = importlib.import_module(".plot", __name__)
+        globals()["plot"] = module
+        return module
+    raise AttributeError(f"module 'poinsot' has no attribute {name!r}")

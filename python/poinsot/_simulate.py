@@ -218,3 +218,32 @@ def _theory(body: Any, initial: Any, torque_free: bool) -> dict:
 
 
 TorqueCallable = Callable[[float, np.ndarray, np.ndarray], Any]
+
+
+@dataclass(frozen=True)
+class RunResult:
+    """What ``poinsot.run`` produced: ``summary`` (the dict of summary.json), ``report`` (the text report of
+    ``poinsot run``) and ``out_dir`` (where trajectory.csv and summary.json were written; None: no files)."""
+
+    summary: dict
+    report: str
+    out_dir: str | None
+
+
+def run(scenario: Any, out_dir: str | os.PathLike | None = None, *, method: str | None = None,
+        dt: float | None = None, t_end: float | None = None, sample_dt: float | None = None) -> RunResult:
+    """Runs a scenario as ``poinsot run SCENARIO [--out DIR] [--method ...]`` does: the same summary (the
+    dict of summary.json) and text report, and with ``out_dir`` the files trajectory.csv and summary.json
+    (for ``poinsot.plot``). ``scenario``: a path, a dict with the file's layout, or a poinsot.Scenario."""
+    import json
+
+    if isinstance(scenario, Mapping):
+        scenario = _core.parse_scenario(scenario_toml(scenario), "<dict>", os.getcwd())
+    elif isinstance(scenario, (str, os.PathLike)):
+        scenario = _core.load_scenario(os.fspath(scenario))
+    if not isinstance(scenario, _core.Scenario):
+        raise TypeError(f"scenario: expected a path, a dict or a poinsot.Scenario, got {type(scenario).__name__}")
+    scenario = scenario.with_overrides(method=method or "", dt=dt, t_end=t_end, sample_dt=sample_dt)
+    folder = os.fspath(out_dir) if out_dir is not None else ""
+    text, report = _core._run_scenario(scenario, folder)
+    return RunResult(summary=json.loads(text), report=report, out_dir=folder or None)
