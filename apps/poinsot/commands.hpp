@@ -10,6 +10,7 @@ void register_version(CLI::App& app);
 void register_rotation(CLI::App& app);
 
 // inertia (issue 3)
+void register_inertia(CLI::App& app);
 
 // run (issue 6)
 void register_run(CLI::App& app);

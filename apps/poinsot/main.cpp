@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   poinsot::cli::register_rotation(app);
 
   // inertia (issue 3)
+  poinsot::cli::register_inertia(app);
 
   // run (issue 6)
   poinsot::cli::register_run(app);

@@ -163,7 +163,7 @@ PrincipalAxes principal_axes(const Mat3& J, double rel_tol) {
   }
   out.axes.col(0) = sign_fixed(out.axes.col(0));
   out.axes.col(1) = sign_fixed(out.axes.col(1));
-  out.axes.col(2) = out.axes.col(0).cross(out.axes.col(1));
+  out.axes.col(2) = out.axes.col(0).cross(out.axes.col(1)).normalized();
   return out;
 }
 

@@ -132,7 +132,7 @@ InertiaRepair repair_inertia(const Mat3& J) {
   const Vec3 mu = project_moments_to_valid(lambda);
   InertiaRepair out;
   out.inertia = q * mu.asDiagonal() * q.transpose();
-  out.inertia = 0.5 * (out.inertia + out.inertia.transpose());
+  out.inertia = (0.5 * (out.inertia + out.inertia.transpose())).eval();
   if (check_inertia(J).valid) out.inertia = J;  // nothing to repair: return the input unchanged
   out.distance = (J - out.inertia).norm();
   out.moments_before = lambda;

@@ -14,7 +14,7 @@
 /// Ordering and sign rule (deterministic). Moments ascending, I1 <= I2 <= I3. The axes are the columns a1,
 /// a2, a3 of a proper rotation (det = +1): a1 and a2 each have their component of largest magnitude positive
 /// (when several components agree in magnitude to 1e-12 relative, the first of them, in the order x, y, z, is
-/// made positive); a3 = a1 × a2. Degenerate moments (equal within the classification tolerance):
+/// made positive); a3 = a1 × a2 (normalised). Degenerate moments (equal within the classification tolerance):
 ///  * two equal moments (prolate or oblate): the unique axis is the eigenvector of the distinct moment; the
 ///    first axis of the equal pair is the projection onto the plane ⟂ to it of the coordinate axis (x, y or
 ///    z, the first one with the smallest component along the unique axis), normalised; the second follows
