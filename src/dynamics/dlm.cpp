@@ -11,11 +11,11 @@
 namespace poinsot::dynamics {
 
 struct DlmIntegrator::Impl {
-  Mat3 P;              // principal axes (columns) in the body frame, det = +1
-  bool P_identity;     // the body frame is the principal frame: no change of frame
-  Vec3 inv_I;          // 1 / principal moments, 1/(kg·m²)
-  Mat3 Rp;             // R P: principal frame → space
-  Vec3 Pi;             // body momentum in the principal frame, kg·m²/s
+  Mat3 P;           // principal axes (columns) in the body frame, det = +1
+  bool P_identity;  // the body frame is the principal frame: no change of frame
+  Vec3 inv_I;       // 1 / principal moments, 1/(kg·m²)
+  Mat3 Rp;          // R P: principal frame → space
+  Vec3 Pi;          // body momentum in the principal frame, kg·m²/s
   std::shared_ptr<const TorqueModel> torque;
   bool torque_free;
   bool omega_dependent;
@@ -63,10 +63,17 @@ DlmIntegrator::DlmIntegrator(const RigidBody& body, std::shared_ptr<const Torque
   require_positive("dlm: dt", options.dt, "s");
   const bool free = !torque || torque->is_zero();
   const bool omega_dep = !free && torque->depends_on_omega();
-  impl_ = std::make_unique<Impl>(Impl{body.principal_axes(), body.principal_axes() == Mat3::Identity(),
-                                      body.principal_moments().cwiseInverse(), Mat3::Identity(),
-                                      Vec3::Zero(), std::move(torque), free, omega_dep,
-                                      options.newton_max_iterations, options.newton_tolerance, {}});
+  impl_ = std::make_unique<Impl>(Impl{body.principal_axes(),
+                                      body.principal_axes() == Mat3::Identity(),
+                                      body.principal_moments().cwiseInverse(),
+                                      Mat3::Identity(),
+                                      Vec3::Zero(),
+                                      std::move(torque),
+                                      free,
+                                      omega_dep,
+                                      options.newton_max_iterations,
+                                      options.newton_tolerance,
+                                      {}});
 }
 
 DlmIntegrator::~DlmIntegrator() = default;

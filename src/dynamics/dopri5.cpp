@@ -74,9 +74,12 @@ StepResult Dopri5Integrator::step(State& state, double dt) {
   if (!m.k1_valid) m.k1 = m.f(t, y);
   const Vec7& k1 = m.k1;
   double h = std::min(dt, m.opt.dt);
+  if (!(h > 0.0)) {
+    throw InvalidInput(fmt::format("dopri5: step dt = {} s at t = {} s; expected dt > 0", h, t));
+  }
   int rejected = 0;
   for (;;) {
-    if (!(h > 1e-14 * std::max(1.0, std::abs(t)))) {
+    if (rejected > 0 && !(h > 1e-14 * std::max(1.0, std::abs(t)))) {
       throw ComputationFailed(fmt::format(
           "dopri5: step size {:.3g} s too small at t = {} s after {} rejections; expected a step that "
           "meets rtol = {:.3g}, atol = {:.3g} (stiff or singular motion?)",

@@ -5,6 +5,7 @@
 #include "poinsot/dynamics/dlm.hpp"
 #include "poinsot/dynamics/dop853.hpp"
 #include "poinsot/dynamics/dopri5.hpp"
+#include "poinsot/dynamics/exact_integrator.hpp"
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/dynamics/rattle.hpp"
 #include "poinsot/dynamics/rk4.hpp"
@@ -20,17 +21,7 @@ std::unique_ptr<Integrator> make_integrator(std::string_view name, const RigidBo
   if (name == "dop853") return std::make_unique<Dop853Integrator>(body, std::move(torque), options);
   if (name == "dlm") return std::make_unique<DlmIntegrator>(body, std::move(torque), options);
   if (name == "rattle") return std::make_unique<RattleIntegrator>(body, std::move(torque), options);
-  if (name == "exact") {
-    if (!torque->is_zero()) {
-      throw InvalidInput(fmt::format(
-          "integrator: method \"exact\" solves the torque-free motion only, torque is {}; expected torque "
-          "\"none\" or another method (dlm, rattle, dop853)",
-          torque->describe()));
-    }
-    throw InvalidInput(
-        "integrator: method \"exact\" is unavailable in this build (the closed-form solution is not linked); "
-        "expected one of rk4, dopri5, dop853, dlm, rattle");
-  }
+  if (name == "exact") return make_exact_integrator(body, std::move(torque));  // refuses a torque
   throw InvalidInput(fmt::format(
       "integrator: unknown method \"{}\"; expected one of rk4, dopri5, dop853, dlm, rattle, exact", name));
 }

@@ -14,7 +14,8 @@ struct Rk4Integrator::Impl {
 
 Rk4Integrator::Rk4Integrator(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
                              const IntegratorOptions& options)
-    : impl_(std::make_unique<Impl>(Impl{detail::EulerRhs(body, std::move(torque)), detail::Vec7::Zero(), {}})),
+    : impl_(
+          std::make_unique<Impl>(Impl{detail::EulerRhs(body, std::move(torque)), detail::Vec7::Zero(), {}})),
       dt_(options.dt) {
   require_positive("rk4: dt", options.dt, "s");
 }

@@ -106,8 +106,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
   };
   const auto finish = [&]() {
     result.final_state = s;
-    result.wall_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+    result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     return result;
   };
   const auto take_step = [&](State& x, double h) {

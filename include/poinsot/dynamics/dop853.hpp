@@ -27,8 +27,8 @@ class Dop853Integrator final : public Integrator {
   bool is_adaptive() const override { return true; }
   bool has_dense_output() const override { return true; }
   double nominal_step() const override;
-  /// One accepted step of at most dt (s). Throws ComputationFailed when the step falls below
-  /// 1e-14·max(1, |t|) s.
+  /// One accepted step of at most dt (s). Throws ComputationFailed when rejections shrink the step
+  /// below 1e-14·max(1, |t|) s; InvalidInput for dt ≤ 0.
   StepResult step(State& state, double dt) override;
   /// The interpolated state at t (s) in the last accepted step, error O(h⁸). The first call in a step
   /// evaluates the 3 extra stages (no allocation).
