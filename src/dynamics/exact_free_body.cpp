@@ -2,9 +2,8 @@
 
 #include <fmt/format.h>
 #include <boost/math/policies/policy.hpp>
-#include <boost/math/special_functions/ellint_1.hpp>
-#include <boost/math/special_functions/ellint_3.hpp>
-#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <boost/math/special_functions/ellint_rf.hpp>
+#include <boost/math/special_functions/ellint_rj.hpp>
 #include <cmath>
 #include <numbers>
 
@@ -17,19 +16,11 @@ namespace poinsot::dynamics {
 namespace {
 
 // Double precision throughout (Boost's default promotes to long double, which costs 3-4x for no gain that
-// matters here: the functions are accurate to a few ulps in double).
+// matters here: Carlson's integrals are accurate to a few ulps in double).
 using Policy = boost::math::policies::policy<boost::math::policies::promote_double<false>>;
 
 double sign_of(double x) {
   return x < 0.0 ? -1.0 : 1.0;
-}
-
-/// F(φ|k) for φ ∈ [−π, π], through F(π − x) = 2K − F(x) beyond ±π/2.
-double incomplete_first_kind(double k, double phi, double complete) {
-  constexpr double half_pi = 0.5 * std::numbers::pi;
-  if (phi > half_pi) return 2.0 * complete - boost::math::ellint_1(k, std::numbers::pi - phi, Policy());
-  if (phi < -half_pi) return -2.0 * complete + boost::math::ellint_1(k, std::numbers::pi + phi, Policy());
-  return boost::math::ellint_1(k, phi, Policy());
 }
 
 /// Rotation by angle a about the coordinate axis i (right-hand rule).
@@ -70,7 +61,7 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
   const Vec3 w = axes_.transpose() * initial.omega_body;
   theory_ = free_body_theory(body.principal_moments(), w);
   moments_ = theory_.moments;
-  const Vec3& I = moments_;
+  const Vec3& I = theory_.moments;
 
   FreeBodyRegime shape = theory_.regime;
   if (method == ExactMethod::elliptic) {
@@ -127,13 +118,13 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
   double sn0 = 0.0;
   double cn0 = 1.0;
   int other = 0;
+  double k2 = 0.0;
   if (largest) {
     a_ = 0, b_ = 1, c_ = 2, other = 0;
     cn_axis_ = 0, dn_axis_ = 2;
     omega_p_ = std::sqrt((I[2] - I[1]) * d1 / I123);
-    k_ = shape == FreeBodyRegime::separatrix
-             ? 1.0
-             : std::sqrt(std::min(1.0, (I[1] - I[0]) * d3 / ((I[2] - I[1]) * d1)));
+    k2 = std::min(1.0, (I[1] - I[0]) * d3 / ((I[2] - I[1]) * d1));
+    kc2_ = (I[2] - I[0]) * theory_.separatrix_gap / ((I[2] - I[1]) * d1);
     const double a1 = std::sqrt(d3 / (I[0] * (I[2] - I[0])));
     const double a2 = std::sqrt(d3 / (I[1] * (I[2] - I[1])));
     const double a3 = std::sqrt(d1 / (I[2] * (I[2] - I[0])));
@@ -154,7 +145,8 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
     a_ = 1, b_ = 2, c_ = 0, other = 2;
     cn_axis_ = 2, dn_axis_ = 0;
     omega_p_ = std::sqrt((I[1] - I[0]) * d3 / I123);
-    k_ = std::sqrt(std::min(1.0, (I[2] - I[1]) * d1 / ((I[1] - I[0]) * d3)));
+    k2 = std::min(1.0, (I[2] - I[1]) * d1 / ((I[1] - I[0]) * d3));
+    kc2_ = (I[2] - I[0]) * (-theory_.separatrix_gap) / ((I[1] - I[0]) * d3);
     const double a1 = std::sqrt(d3 / (I[0] * (I[2] - I[0])));
     const double a2 = std::sqrt(d1 / (I[1] * (I[1] - I[0])));
     const double a3 = std::sqrt(d1 / (I[2] * (I[2] - I[0])));
@@ -168,17 +160,25 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
   const double Io = I[other];
   n_ = -Ic * (I[1] - Io) / (Io * (Ic - I[1]));
   const double G = theory_.momentum;
-  rate0_ = G / Ic;
   rate1_ = G * (1.0 / Io - 1.0 / Ic) / omega_p_;
+  rate_lin_ = G / Io;  // = G/I_c + rate1 ω_p: the linear part of Π(u) moved out of the bracket
   if (kind_ == Kind::separatrix) {
     u0_ = std::asinh(sn0 / cn0);
   } else {
-    const double K = boost::math::ellint_1(k_, Policy());
+    jacobi_ = JacobiElliptic(k2, kc2_);
+    const double K = jacobi_.complete();
     two_k_ = 2.0 * K;
-    pi_complete_ = boost::math::ellint_3(k_, n_, Policy());
-    u0_ = incomplete_first_kind(k_, std::atan2(sn0, cn0), K);
+    // Π(N) − K = (N/3) R_J(0, k'², 1, 1 − N) (Carlson; DLMF §19.25(i)).
+    pi_shift_ = 2.0 * (n_ / 3.0) * boost::math::ellint_rj(0.0, kc2_, 1.0, 1.0 - n_, Policy());
+    // u0 = F(am0 | k) = sn0 R_F(cn0², dn0², 1), continued through F(π − x) = 2K − F(x) when cn0 < 0.
+    const double r = std::hypot(sn0, cn0);
+    sn0 /= r;
+    cn0 /= r;
+    const double dn0 = std::sqrt(cn0 * cn0 + kc2_ * sn0 * sn0);
+    const double f = sn0 * boost::math::ellint_rf(cn0 * cn0, dn0 * dn0, 1.0, Policy());
+    u0_ = cn0 >= 0.0 ? f : sign_of(sn0) * two_k_ - f;
   }
-  pi0_ = phase(u0_).pi;
+  corr0_ = phase(u0_).pi_minus_u;
   const Mat3 r0 = initial.R * axes_;  // R_principal(t0)
   left_ = r0 * attitude_frame(w).transpose();
 }
@@ -186,18 +186,23 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
 ExactFreeBody::Phase ExactFreeBody::phase(double u) const {
   Phase p{};
   if (kind_ == Kind::separatrix) {
+    // ∫₀^u du/(1 − N tanh²u) = [u + √−N atan(√−N tanh u)]/(1 − N).
     p.sn = std::tanh(u);
     p.cn = 1.0 / std::cosh(u);
     p.dn = p.cn;
     const double s = std::sqrt(-n_);
-    p.pi = (u + s * std::atan(s * p.sn)) / (1.0 - n_);
+    p.pi_minus_u = (n_ * u + s * std::atan(s * p.sn)) / (1.0 - n_);
     return p;
   }
-  // Reduce u to [−K, K]: sn, cn change sign and am advances by π every 2K, Π(N; am) by 2Π(N).
+  // Reduce u to [−K, K]: sn, cn change sign and am advances by π every 2K; Π − F advances by 2(Π(N) − K).
   const double m = std::nearbyint(u / two_k_);
   const double ur = u - m * two_k_;
-  p.sn = boost::math::jacobi_elliptic(k_, ur, &p.cn, &p.dn, Policy());
-  p.pi = boost::math::ellint_3(k_, n_, std::atan2(p.sn, p.cn), Policy()) + 2.0 * m * pi_complete_;
+  jacobi_.evaluate(ur, p.sn, p.cn, p.dn);
+  const double s2 = p.sn * p.sn;
+  // Π(N; am ur) − ur = (N/3) sn³ R_J(cn², dn², 1, 1 − N sn²)  (DLMF §19.25(i), with F = ur).
+  p.pi_minus_u = (n_ / 3.0) * p.sn * s2 *
+                     boost::math::ellint_rj(p.cn * p.cn, p.dn * p.dn, 1.0, 1.0 - n_ * s2, Policy()) +
+                 m * pi_shift_;
   if (std::fmod(m, 2.0) != 0.0) {
     p.sn = -p.sn;
     p.cn = -p.cn;
@@ -245,7 +250,7 @@ State ExactFreeBody::state_at(double t) const {
   w[cn_axis_] = amplitude_[cn_axis_] * p.cn;
   w[1] = amplitude_[1] * p.sn;
   w[dn_axis_] = amplitude_[dn_axis_] * p.dn;
-  const double phi = rate0_ * dt + rate1_ * (p.pi - pi0_);
+  const double phi = rate_lin_ * dt + rate1_ * (p.pi_minus_u - corr0_);
   State s;
   s.t = t;
   s.omega_body = axes_ * w;

@@ -1,7 +1,6 @@
 #include "poinsot/dynamics/free_body_theory.hpp"
 
 #include <fmt/format.h>
-#include <boost/math/special_functions/ellint_1.hpp>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -9,6 +8,7 @@
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/dynamics/jacobi_elliptic.hpp"
 
 namespace poinsot::dynamics {
 
@@ -101,9 +101,9 @@ FreeBodyTheory free_body_theory(const Vec3& principal_moments, const Vec3& omega
     th.modulus = std::sqrt(std::min(1.0, (I[2] - I[1]) * d1 / ((I[1] - I[0]) * d3)));
     th.modulus_complement2 = (I[2] - I[0]) * (-gap) / ((I[1] - I[0]) * d3);
   }
-  // Below 4 ulps, k rounds to 1 in double and K(k) is infinite: the motion is the separatrix to the
-  // precision of the data (the problem's condition number grows as 1/k'² there).
-  if (th.modulus_complement2 <= 4.0 * std::numeric_limits<double>::epsilon()) {
+  // k' = 0 exactly: the separatrix. Any k' > 0 is followed by the elliptic form, which takes k' itself
+  // (jacobi_elliptic.hpp), so the precision holds however close to the separatrix the data are.
+  if (!(th.modulus_complement2 > 0.0)) {
     th.regime = FreeBodyRegime::separatrix;
     th.modulus = 1.0;
     th.modulus_complement2 = 0.0;
@@ -111,7 +111,7 @@ FreeBodyTheory free_body_theory(const Vec3& principal_moments, const Vec3& omega
     return th;
   }
   th.regime = gap > 0.0 ? FreeBodyRegime::largest_axis : FreeBodyRegime::smallest_axis;
-  th.quarter_period = boost::math::ellint_1(th.modulus);
+  th.quarter_period = JacobiElliptic(th.modulus * th.modulus, th.modulus_complement2).complete();
   return th;
 }
 

@@ -19,6 +19,9 @@
 ///
 /// so φ(t) = |L| t/I_c + |L| (1/I_o − 1/I_c)/ω_p · [Π(N; am u | k) − Π(N; am u0 | k)], with Π the incomplete
 /// elliptic integral of the third kind, continued beyond am u = ±π/2 by Π(N; φ + mπ) = Π(N; φ) + 2m Π(N).
+/// Π is evaluated through Carlson's form Π(N; am u) = u + (N/3) sn³ R_J(cn², dn², 1, 1 − N sn²) for
+/// |u| ≤ K (Boost.Math ellint_rj), and sn, cn, dn, K from the complementary modulus (jacobi_elliptic.hpp),
+/// which keeps full precision near the separatrix.
 /// On the separatrix ∫du/(1 − N tanh²u) = [u + √−N atan(√−N tanh u)]/(1 − N). Axisymmetric bodies (and the
 /// sphere) use eq. (4.2) of Vallée & Dumitriu (ERRATA C11); steady rotations R(t) = R0 exp[(t − t0) j(ω0)].
 ///
@@ -27,6 +30,7 @@
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
+#include "poinsot/dynamics/jacobi_elliptic.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/state.hpp"
 
@@ -64,7 +68,8 @@ class ExactFreeBody {
  private:
   enum class Kind { steady, axisymmetric, elliptic, separatrix };
   struct Phase {
-    double sn, cn, dn, pi;  // Jacobi functions at u and the continued Π(N; am u | k) (or its separatrix form)
+    double sn, cn, dn;  // Jacobi functions at u
+    double pi_minus_u;  // Π(N; am u | k) − u, continued beyond am u = ±π/2 (or its separatrix form)
   };
   Phase phase(double u) const;
   Mat3 attitude_frame(const Vec3& omega_principal) const;  // B(n) in the cyclic frame (a, b, c)
@@ -84,9 +89,14 @@ class ExactFreeBody {
   int a_ = 0, b_ = 1, c_ = 2;      // cyclic frame (a, b, c), c the axis ω circles
   Vec3 amplitude_ = Vec3::Zero();  // signed a1, a2, a3 (rad/s)
   int cn_axis_ = 0, dn_axis_ = 2;  // which component follows cn, which dn (sn: axis 1)
-  double k_ = 0, two_k_ = 0, pi_complete_ = 0, n_ = 0, u0_ = 0, pi0_ = 0, omega_p_ = 0;
-  double rate0_ = 0, rate1_ = 0;  // φ = rate0 (t − t0) + rate1 (Π(u) − Π(u0))
-  Mat3 left_ = Mat3::Identity();  // R_principal(t0) B(t0)ᵀ
+  JacobiElliptic jacobi_;
+  double two_k_ = 0;     // 2K(k)
+  double pi_shift_ = 0;  // 2(Π(N) − K): the advance of Π − F per half period 2K
+  double n_ = 0;         // the characteristic N ≤ 0
+  double kc2_ = 1;       // k'²
+  double u0_ = 0, corr0_ = 0, omega_p_ = 0;
+  double rate_lin_ = 0, rate1_ = 0;  // φ = rate_lin (t − t0) + rate1 [(Π − u)(u) − (Π − u)(u0)]
+  Mat3 left_ = Mat3::Identity();     // R_principal(t0) B(t0)ᵀ
 };
 
 /// Vallée & Dumitriu eq. (4.2) (with ERRATA C11): the free motion of an axisymmetric body J = A·1 + (C − A)
