@@ -16,6 +16,7 @@ void register_inertia(CLI::App& app);
 void register_run(CLI::App& app);
 
 // lambda (issue 5)
+void register_lambda(CLI::App& app);
 
 
 }  // namespace poinsot::cli

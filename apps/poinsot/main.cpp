@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   poinsot::cli::register_run(app);
 
   // lambda (issue 5)
+  poinsot::cli::register_lambda(app);
 
   try {
     app.parse(argc, argv);

@@ -44,15 +44,18 @@ LambdaTracker::LambdaTracker(const dynamics::RigidBody& body,
   observe(initial);
 }
 
+void LambdaTracker::compare_multiplier(const dynamics::State& at, const Mat3& lambda_integrator_body) {
+  const Vec3 tau = props_.torque_free ? Vec3::Zero() : Vec3(torque_->torque_body(at.t, at.R, at.omega_body));
+  const Mat3 lambda = lambda_from_state(body_, at, torque_.get());
+  LambdaProperties& p = props_;
+  p.has_integrator_multiplier = true;
+  p.integrator_multiplier_deviation_max =
+      std::max(p.integrator_multiplier_deviation_max, (lambda_integrator_body - lambda).norm());
+  p.integrator_multiplier_symmetry_error_max =
+      std::max(p.integrator_multiplier_symmetry_error_max, symmetry_error(lambda_integrator_body, tau));
+}
+
 void LambdaTracker::observe(const dynamics::State& state) {
-  observe_impl(state, nullptr);
-}
-
-void LambdaTracker::observe(const dynamics::State& state, const Mat3& lambda_integrator_body) {
-  observe_impl(state, &lambda_integrator_body);
-}
-
-void LambdaTracker::observe_impl(const dynamics::State& state, const Mat3* lambda_integrator) {
   const Vec3 tau =
       props_.torque_free ? Vec3::Zero() : Vec3(torque_->torque_body(state.t, state.R, state.omega_body));
   const Mat3 lambda = lambda_from_state(body_, state, torque_.get());
@@ -71,14 +74,6 @@ void LambdaTracker::observe_impl(const dynamics::State& state, const Mat3* lambd
   const StressSummary s = summarize_stress(stress_integral_space(lambda, state.R));
   const double vm = options_.volume_m3 > 0.0 ? s.von_mises / options_.volume_m3 : s.von_mises;
   p.von_mises_max = std::max(p.von_mises_max, vm);
-
-  if (lambda_integrator != nullptr) {
-    p.has_integrator_multiplier = true;
-    p.integrator_multiplier_deviation_max =
-        std::max(p.integrator_multiplier_deviation_max, (*lambda_integrator - lambda).norm());
-    p.integrator_multiplier_symmetry_error_max =
-        std::max(p.integrator_multiplier_symmetry_error_max, symmetry_error(*lambda_integrator, tau));
-  }
 
   if (axisymmetric_) {
     const AxisymmetricLambda& a = *axisymmetric_;

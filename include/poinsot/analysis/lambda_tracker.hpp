@@ -83,14 +83,14 @@ class LambdaTracker {
 
   /// Adds one state of the trajectory.
   void observe(const dynamics::State& state);
-  /// Adds one state and the integrator's multiplier matrix at that state (J, body frame).
-  void observe(const dynamics::State& state, const Mat3& lambda_integrator_body);
+  /// Compares an integrator's own multiplier matrix (J, body frame; rattle's last_multiplier()) with the
+  /// state formula at the state `at` where the integrator's value is centred (rattle: the midpoint of its
+  /// last step). Does not count as a sample.
+  void compare_multiplier(const dynamics::State& at, const Mat3& lambda_integrator_body);
 
   const LambdaProperties& properties() const { return props_; }
 
  private:
-  void observe_impl(const dynamics::State& state, const Mat3* lambda_integrator);
-
   dynamics::RigidBody body_;  // a copy: RigidBody is a small value type
   std::shared_ptr<const dynamics::TorqueModel> torque_;
   LambdaTrackerOptions options_;
