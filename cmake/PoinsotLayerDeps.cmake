@@ -9,7 +9,6 @@ find_package(tomlplusplus REQUIRED)
 target_link_libraries(poinsot PRIVATE assimp::assimp tomlplusplus::tomlplusplus)
 # --- end inertia
 
-
 # dynamics (issue 4): Boost.Math (header-only) for the Jacobi elliptic functions and the elliptic integrals
 # of the exact free rigid body and of the heavy-top theory. Kept out of public headers, hence PRIVATE.
 find_package(Boost 1.74 REQUIRED)

@@ -15,6 +15,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/exact_free_body.hpp"
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/io/axis_tracker.hpp"
 #include "poinsot/io/summary.hpp"
 #include "poinsot/io/trajectory_writer.hpp"
@@ -23,13 +24,7 @@
 namespace poinsot::io {
 
 std::string symmetry_class(const Vec3& m, double rel_tol) {
-  const double tol = rel_tol * (m[0] + m[1] + m[2]);
-  const bool low = std::abs(m[1] - m[0]) <= tol;   // I1 = I2
-  const bool high = std::abs(m[2] - m[1]) <= tol;  // I2 = I3
-  if (low && high) return "spherical";
-  if (low) return "oblate";    // two equal moments smaller than the third (a disc)
-  if (high) return "prolate";  // two equal moments larger than the third (a rod)
-  return "asymmetric";
+  return inertia::to_string(inertia::classify(m, rel_tol));
 }
 
 void prepare_output_dir(const std::string& dir) {
@@ -106,6 +101,7 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
   sum.torque = sc.torque->describe();
   sum.body_description = sc.body_description;
   sum.principal_moments = sc.body.principal_moments();
+  sum.inertia = sc.body.inertia();
   sum.symmetry = symmetry_class(sum.principal_moments);
   sum.initial = sc.initial;
   sum.energy0 = dynamics::total_energy(sc.body, sc.initial, sc.gravity_space);
@@ -125,7 +121,6 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
     if (exact.omega_period() > 0.0) sum.period_theory = exact.omega_period();
   }
   sum.top = top_setup(sc, sc.initial);
-  detail::lambda_report(sc, sum);
 
   std::optional<TrajectoryCsvWriter> csv;
   if (!options.out_dir.empty()) {
@@ -133,6 +128,7 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
     sum.summary_file = (std::filesystem::path(options.out_dir) / "summary.json").string();
     csv.emplace(sum.trajectory_file, sc.body, sc.gravity_space);
   }
+  analysis::LambdaTracker lambda(sc.body, sc.torque, sc.initial);
   std::optional<AxisTracker> tracker;
   if (sum.top) tracker.emplace(sum.top->axis_body, sum.top->direction_space);
 
@@ -140,6 +136,7 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
   const dynamics::Observer observer = [&](const dynamics::State& s) {
     if (csv) csv->write(s);
     if (tracker) tracker->add(s.t, s.R);
+    if (s.t > sc.initial.t) lambda.observe(s);  // the tracker observed the initial state itself
     ++sum.samples;
     if (options.on_sample) options.on_sample(s.t);
     if (options.stop_requested && options.stop_requested()) {
@@ -160,6 +157,8 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
     sum.top->theta_min = tracker->theta_min();
     sum.top->theta_max = tracker->theta_max();
   }
+  sum.lambda = lambda.properties();
+  sum.lambda_lines = detail::lambda_lines(*sum.lambda);
   if (csv) csv->flush();
   if (!sum.summary_file.empty()) write_file_atomic(sum.summary_file, summary_json(sum));
   if (!sum.failure.empty()) throw ComputationFailed(sum.failure);

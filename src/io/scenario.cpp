@@ -43,12 +43,13 @@ struct BodyPart {
 
 BodyPart read_body(const Source& src, const toml::table& root, std::string_view base_dir) {
   const Section s(src, root["body"].as_table(), "body",
-                  {"principal_moments", "inertia", "shape", "mesh", "mass", "pivot_to_com"});
+                  {"principal_moments", "inertia", "shape", "mesh", "mass", "pivot_to_com", "pivot"});
   const auto how =
       s.exactly_one({"principal_moments", "inertia", "shape", "mesh"}, "the inertia (one way to give it)");
   std::optional<dynamics::RigidBody> body;
   std::string description;
   std::optional<double> shape_mass;
+  Vec3 com = Vec3::Zero();  // in the frame the body was given in
   if (how == "principal_moments") {
     const Vec3 m = *s.vec3(how);
     body = located(s, how, [&] { return dynamics::RigidBody::from_principal_moments(m); });
@@ -64,23 +65,32 @@ BodyPart read_body(const Source& src, const toml::table& root, std::string_view 
     body = located(s, how, [&] { return dynamics::RigidBody::from_inertia(b.inertia_com); });
     description = b.description;
     shape_mass = b.mass;
+    com = b.com;
   }
   const auto mass = s.number("mass");
-  const auto d = s.vec3("pivot_to_com");
+  if (s.has("pivot") && s.has("pivot_to_com")) {
+    s.fail("pivot",
+           "given with [body] pivot_to_com; expected one of them (pivot: the point, pivot_to_com: the "
+           "vector from it to the centre of mass)");
+  }
+  std::optional<Vec3> d = s.vec3("pivot_to_com");
+  if (const auto p = s.vec3("pivot")) d = Vec3(com - *p);
+  const std::string_view pivot_key = s.has("pivot") ? "pivot" : "pivot_to_com";
   if (shape_mass && mass) {
     s.fail("mass", fmt::format("got {} kg, but the {} already gives the mass ({} kg); remove [body] mass",
                                format_number(*mass), how, format_number(*shape_mass)));
   }
-  if (mass && !d) s.fail("mass", "given without [body] pivot_to_com; a pivot needs both (or neither)");
+  if (mass && !d)
+    s.fail("mass", "given without a pivot; a top needs [body] mass and pivot_to_com (or neither)");
   if (d && !mass && !shape_mass) {
-    s.fail("pivot_to_com", "given without [body] mass; a pivot needs both (or neither)");
+    s.fail(pivot_key, "given without [body] mass; a top needs [body] mass and pivot_to_com (or neither)");
   }
   if (d) {
     const double m = mass ? *mass : *shape_mass;
     if (!(m > 0.0)) s.fail(mass ? "mass" : how, fmt::format("got {} kg, expected > 0", format_number(m)));
-    body = located(s, "pivot_to_com", [&] { return body->with_pivot(m, *d); });
-    description +=
-        fmt::format(", mass {} kg, pivot to centre of mass {} m", format_number(m), format_vector(*d));
+    body = located(s, pivot_key, [&] { return body->with_pivot(m, *d); });
+    description += fmt::format("; held at a fixed pivot, mass {} kg, pivot to centre of mass {} m",
+                               format_number(m), format_vector(*d));
   }
   return {*body, description};
 }

@@ -14,6 +14,7 @@ namespace poinsot::io::detail {
 struct BodyInertia {
   Mat3 inertia_com = Mat3::Identity();  ///< J about the centre of mass, body frame (kg·m²)
   double mass = 0.0;                    ///< kg
+  Vec3 com = Vec3::Zero();              ///< centre of mass in the shape's or mesh's frame (m)
   std::string description;              ///< for the report, e.g. "box 0.3 × 0.1 × 0.02 m, 0.4 kg"
 };
 

@@ -66,6 +66,7 @@ std::string summary_json(const RunSummary& s) {
   j["failure"] = s.failure.empty() ? json(nullptr) : json(s.failure);
   j["body"] = {{"description", s.body_description},
                {"principal_moments", vec(s.principal_moments)},
+               {"inertia", mat(s.inertia)},
                {"symmetry", s.symmetry}};
   j["initial"] = state_json(s.initial);
   j["initial"]["energy"] = s.energy0;
@@ -105,7 +106,30 @@ std::string summary_json(const RunSummary& s) {
   }
   j["events"] = events;
   j["top"] = top;
-  j["lambda"] = s.lambda0 ? json{{"lambda0_body", mat(*s.lambda0)}} : json(nullptr);
+  json lam = nullptr;
+  if (s.lambda) {
+    const auto& p = *s.lambda;
+    lam = {{"lambda_initial_body", mat(p.lambda_initial)},
+           {"eigenvalues_initial", vec(p.eigenvalues_initial)},
+           {"eigenvalues_final", vec(p.eigenvalues_final)},
+           {"eigenvalue_max_variation", num(p.eigenvalue_max_variation)},
+           {"symmetry_error_max", num(p.symmetry_error_max)},
+           {"max_eigenvalue_max", num(p.max_eigenvalue_max)},
+           {"trace_plus_2T_max", num(p.trace_plus_2T_max)},
+           {"stress_integral_initial", mat(p.stress_initial.integral.tensor)},
+           {"closed_form", nullptr}};
+    if (p.closed_form) {
+      const auto& c = *p.closed_form;
+      lam["closed_form"] = {{"A", c.inertia.A},
+                            {"C", c.inertia.C},
+                            {"c1", c.c1},
+                            {"c2", c.c2},
+                            {"Delta", c.Delta},
+                            {"eigenvalues", vec(c.eigenvalues)},
+                            {"max_deviation", num(c.max_deviation)}};
+    }
+  }
+  j["lambda"] = lam;
   j["steps"] = r.steps;
   j["rejected_steps"] = r.rejected_steps;
   j["samples"] = s.samples;

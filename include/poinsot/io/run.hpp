@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "poinsot/analysis/lambda_tracker.hpp"
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/io/scenario.hpp"
@@ -42,6 +43,7 @@ struct TopEvents {
 struct RunSummary {
   std::string scenario, source, title, method, torque, body_description, symmetry;
   Vec3 principal_moments = Vec3::Zero();  ///< kg·m², ascending (about the rotation point)
+  Mat3 inertia = Mat3::Identity();        ///< J about the rotation point, body frame (kg·m²)
   dynamics::State initial;
   double energy0 = 0.0;                 ///< J, T + V at t = 0
   Vec3 L_space0 = Vec3::Zero();         ///< kg·m²/s
@@ -52,8 +54,8 @@ struct RunSummary {
   /// Free asymmetric body: the closed form 2K(k)/ω_p between flips and 4K(k)/ω_p the period of ω (s).
   std::optional<double> flip_interval_theory, period_theory;
   std::optional<TopEvents> top;
-  /// Λ at t = 0 (body frame, J) and its eigenvalues, ascending, when the analysis layer provides them.
-  std::optional<Mat3> lambda0;
+  /// Λ along the samples (analysis layer): eigenvalues, their variation, checks, closed form, stress.
+  std::optional<analysis::LambdaProperties> lambda;
   std::vector<std::string> lambda_lines;  ///< a few lines for the report
   std::string out_dir;                    ///< empty: no files written
   std::string trajectory_file, summary_file;
