@@ -8,7 +8,7 @@ message). Arrays are NumPy float64; vectors have shape (3,), matrices (3, 3), qu
 Conventions: ``R`` maps body to space, ``omega_body`` is the body-frame angular velocity, SI units.
 
 Submodules: ``so3`` (rotations), ``inertia`` (mass properties), ``analysis`` (Λ and the constraint stress),
-``plot`` (figures of a run folder, Matplotlib; imported on first use).
+``plot`` (the figures of a run folder, Matplotlib: ``poinsot.plot.plot_run(folder)``).
 """
 from . import _core
 from ._core import (
@@ -35,6 +35,7 @@ from ._core import (
     total_energy,
     validate_state,
 )
+from . import plot
 from ._simulate import RunResult, SimulationResult, run, scenario_toml, simulate
 
 __all__ = [
@@ -65,15 +66,6 @@ __all__ = [
     "SimulationResult",
     "run",
     "RunResult",
+    "plot",
 ]
 
-
-def __getattr__(name):
-    # poinsot.plot needs Matplotlib: imported on first use only, so that `import poinsot` stays light.
-    if name == "plot":
-        import importlib
-
-        module = importlib.import_module(".plot", __name__)
-        globals()["plot"] = module
-        return module
-    raise AttributeError(f"module 'poinsot' has no attribute {name!r}")

@@ -228,13 +228,16 @@ class RunResult:
     summary: dict
     report: str
     out_dir: str | None
+    figures: list = field(default_factory=list)
 
 
 def run(scenario: Any, out_dir: str | os.PathLike | None = None, *, method: str | None = None,
-        dt: float | None = None, t_end: float | None = None, sample_dt: float | None = None) -> RunResult:
+        dt: float | None = None, t_end: float | None = None, sample_dt: float | None = None,
+        plot: bool = False) -> RunResult:
     """Runs a scenario as ``poinsot run SCENARIO [--out DIR] [--method ...]`` does: the same summary (the
     dict of summary.json) and text report, and with ``out_dir`` the files trajectory.csv and summary.json
-    (for ``poinsot.plot``). ``scenario``: a path, a dict with the file's layout, or a poinsot.Scenario."""
+    (for ``poinsot.plot``; ``plot=True`` draws the figures there, as ``--plot`` does, and lists them in
+    ``figures``). ``scenario``: a path, a dict with the file's layout, or a poinsot.Scenario."""
     import json
 
     if isinstance(scenario, Mapping):
@@ -245,5 +248,12 @@ def run(scenario: Any, out_dir: str | os.PathLike | None = None, *, method: str 
         raise TypeError(f"scenario: expected a path, a dict or a poinsot.Scenario, got {type(scenario).__name__}")
     scenario = scenario.with_overrides(method=method or "", dt=dt, t_end=t_end, sample_dt=sample_dt)
     folder = os.fspath(out_dir) if out_dir is not None else ""
+    if plot and not folder:
+        raise ValueError("plot: the figures are drawn from the run's files; expected an out_dir")
     text, report = _core._run_scenario(scenario, folder)
-    return RunResult(summary=json.loads(text), report=report, out_dir=folder or None)
+    figures = []
+    if plot:
+        from . import plot as plotting
+
+        figures = plotting.plot_run(folder)
+    return RunResult(summary=json.loads(text), report=report, out_dir=folder or None, figures=figures)

@@ -204,3 +204,13 @@ def test_integrator_step_by_step_matches_simulate():
     r = poinsot.simulate(body=body, omega_body=W0, method="rk4", dt=1e-2, t_end=1.0, sample_dt=1.0)
     assert integ.name == "rk4" and integ.order == 4
     assert np.abs(s.R - r.final_state.R).max() < 1e-14
+
+
+def test_plot_draws_the_figures_of_a_run_folder(tennis_racket, tmp_path):
+    pytest.importorskip("matplotlib")
+    res = poinsot.run(tennis_racket, tmp_path / "run", method="dop853", t_end=3.0, plot=True)
+    names = sorted(p.name for p in res.figures)
+    assert names == ["invariants.png", "omega.png", "polhode.png"]
+    for p in res.figures:
+        assert p.stat().st_size > 1000 and p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert poinsot.plot.plot_run(tmp_path / "run") == res.figures
