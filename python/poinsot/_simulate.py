@@ -210,11 +210,14 @@ def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, ome
 
 
 def _theory(body: Any, initial: Any, torque_free: bool) -> dict:
-    fn = getattr(_core, "free_body_theory", None)
-    if fn is None or not torque_free or body.has_pivot:
+    """The closed-form flip interval and period of ω for a torque-free body (as `poinsot run` reports them)."""
+    if not torque_free or body.has_pivot:
         return {}
-    th = fn(body, initial.omega_body)
-    return {"flip_interval_theory": th.flip_interval or None, "period_theory": th.omega_period or None}
+    try:
+        exact = _core.ExactFreeBody(body, initial)
+    except ValueError:
+        return {}
+    return {"flip_interval_theory": exact.flip_interval or None, "period_theory": exact.omega_period or None}
 
 
 TorqueCallable = Callable[[float, np.ndarray, np.ndarray], Any]
@@ -257,3 +260,7 @@ def run(scenario: Any, out_dir: str | os.PathLike | None = None, *, method: str 
 
         figures = plotting.plot_run(folder)
     return RunResult(summary=json.loads(text), report=report, out_dir=folder or None, figures=figures)
+
+# The C++ driver's documentation, from its header (one source): appended to simulate's own docstring.
+simulate.__doc__ = (simulate.__doc__ or "") + "\n    The C++ driver (dynamics::simulate):\n\n" + "\n".join(
+    "    " + line for line in (_core._doc_simulation + "\n\n" + _core._doc_simulate).splitlines())
