@@ -48,6 +48,7 @@ struct InertiaOptions {
   // tensor
   std::vector<double> entries;
   bool repair = false;
+  double validity_tolerance = kDefaultValidityTolerance;
 };
 
 /// What is printed: the body's mass properties and what was found.
@@ -250,7 +251,7 @@ void run_tensor(InertiaOptions o) {
   Report r;
   r.mass = o.mass;
   r.props.mass = o.mass.value_or(0.0);
-  const InertiaCheck c = check_inertia(J, kDefaultValidityTolerance, "tensor");
+  const InertiaCheck c = check_inertia(J, o.validity_tolerance, "tensor");
   if (!c.valid && !o.repair) throw InvalidInput(c.message + "; pass --repair for the nearest valid tensor");
   if (!c.valid) {
     const InertiaRepair rep = repair_inertia(J);
@@ -379,6 +380,8 @@ void register_inertia(CLI::App& app) {
     cmd->add_option("--mass", o->mass, "mass (kg), for --about and --format");
     cmd->add_option("--density", o->density, "not applicable");
     cmd->add_flag("--repair", o->repair, "replace an invalid tensor by the nearest valid one");
+    cmd->add_option("--validity-tolerance", o->validity_tolerance,
+                    "relative tolerance (times the trace) of the validity test (default 1e-10)");
     cmd->callback([o] { run_tensor(*o); });
   }
   {

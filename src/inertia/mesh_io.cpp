@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <unordered_map>
 
@@ -84,6 +85,10 @@ struct Builder {
 }  // namespace
 
 TriangleMesh load_mesh(const std::string& path) {
+  if (std::filesystem::is_directory(path)) {
+    throw InvalidInput(
+        fmt::format("mesh: \"{}\" is a folder; expected a mesh file (STL, OBJ, PLY, OFF)", path));
+  }
   {
     std::ifstream probe(path, std::ios::binary);
     if (!probe)

@@ -114,6 +114,11 @@ def test_tensor_invalid_and_repair(cli):
     # Nearest point of the cone I1 + I2 >= I3 to (1, 1, 5): (2, 2, 4), distance √3.
     assert close(j["principal_moments"], [2, 2, 4]) and abs(j["repair_distance"] - math.sqrt(3)) < 1e-14
     assert j["valid"] is True and any("repaired" in d for d in j["diagnostics"])
+    # A lamina typed with 6 digits misses I1 + I2 >= I3 by 1e-6: rejected at the default 1e-10 of the trace,
+    # accepted with a tolerance the caller sets.
+    lamina = ["tensor", "0.083333", "0.083333", "0.166667", "0", "0", "0"]
+    assert cli("inertia", *lamina).returncode == 2
+    assert run_json(cli, *lamina, "--validity-tolerance", "1e-5")["symmetry"] == "oblate"
 
 
 def test_mesh_solid_shell_and_diagnostics(cli, tmp_path):
