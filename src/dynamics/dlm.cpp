@@ -10,6 +10,31 @@
 
 namespace poinsot::dynamics {
 
+namespace {
+
+/// sin θ and cos θ to within an ulp: Taylor polynomials for |θ| ≤ 1/4 (the truncation errors θ¹⁵/15! and
+/// θ¹⁶/16! are below 1e-18), the C library beyond. DLM's angles h Πᵢ/Iᵢ are small at useful steps, and five
+/// library calls would dominate the cost of a step.
+inline void sin_cos(double x, double& s, double& c) {
+  if (std::abs(x) > 0.25) {
+    s = std::sin(x);
+    c = std::cos(x);
+    return;
+  }
+  const double z = x * x;
+  s = x *
+      (1.0 + z * (-1.0 / 6 +
+                  z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800 +
+                                                                               z * (1.0 / 6227020800.0)))))));
+  c = 1.0 +
+      z * (-0.5 + z * (1.0 / 24 +
+                       z * (-1.0 / 720 +
+                            z * (1.0 / 40320 + z * (-1.0 / 3628800 +
+                                                    z * (1.0 / 479001600 + z * (-1.0 / 87178291200.0)))))));
+}
+
+}  // namespace
+
 struct DlmIntegrator::Impl {
   Mat3 P;           // principal axes (columns) in the body frame, det = +1
   bool P_identity;  // the body frame is the principal frame: no change of frame
@@ -22,14 +47,15 @@ struct DlmIntegrator::Impl {
   int max_iterations;
   double tolerance;
   detail::ResumeCheck resume;
+  int steps_since_projection = 0;
 
   // The exact flow of H_i = Π_i²/(2 I_i) for a time h: planar rotations by θ = h Π_i / I_i.
   void rotate(int i, double h) {
     const int j = (i + 1) % 3;
     const int k = (i + 2) % 3;
     const double theta = h * Pi[i] * inv_I[i];
-    const double c = std::cos(theta);
-    const double s = std::sin(theta);
+    double s, c;
+    sin_cos(theta, s, c);
     const double pj = Pi[j];
     const double pk = Pi[k];
     Pi[j] = c * pj + s * pk;
@@ -110,6 +136,10 @@ StepResult DlmIntegrator::step(State& state, double dt) {
         }
       }
     }
+  }
+  if (++m.steps_since_projection >= detail::kReorthogonalizeEvery) {
+    detail::reorthogonalize(m.Rp);
+    m.steps_since_projection = 0;
   }
   state.t = t + h;
   state.R = m.R_body();

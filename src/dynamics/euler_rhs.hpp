@@ -30,26 +30,34 @@ class EulerRhs {
   EulerRhs(const RigidBody& body, std::shared_ptr<const TorqueModel> torque)
       : J_(body.inertia()), J_inv_(body.inertia_inverse()), torque_(std::move(torque)) {
     torque_free_ = !torque_ || torque_->is_zero();
+    diagonal_ = body.is_diagonal();
+    const Vec3 I = J_.diagonal();
+    // Euler's equations in a principal body frame: ω̇1 = (I2 − I3)/I1 ω2 ω3 + τ1/I1, cyclically.
+    gyro_ = Vec3((I[1] - I[2]) / I[0], (I[2] - I[0]) / I[1], (I[0] - I[1]) / I[2]);
+    inv_diag_ = I.cwiseInverse();
   }
 
+  /// ω̇ (rad/s²) of the free body, −J⁻¹(ω × Jω).
+  Vec3 free_omega_dot(const Vec3& w) const {
+    if (diagonal_) return Vec3(gyro_[0] * w[1] * w[2], gyro_[1] * w[2] * w[0], gyro_[2] * w[0] * w[1]);
+    return -(J_inv_ * w.cross(J_ * w));
+  }
   /// ω̇ (rad/s²) at time t, attitude R and body angular velocity w.
   Vec3 omega_dot(double t, const Mat3& R, const Vec3& w) const {
-    Vec3 rhs = -w.cross(J_ * w);
-    if (!torque_free_) rhs += torque_->torque_body(t, R, w);
-    return J_inv_ * rhs;
+    if (torque_free_) return free_omega_dot(w);
+    const Vec3 tau = torque_->torque_body(t, R, w);
+    return free_omega_dot(w) + (diagonal_ ? Vec3(tau.cwiseProduct(inv_diag_)) : Vec3(J_inv_ * tau));
   }
 
   /// ẏ for y = (q, ω).
-  Vec7 operator()(double t, const Vec7& y) const {
+  __attribute__((always_inline)) Vec7 operator()(double t, const Vec7& y) const {
     const Vec3 w = y.tail<3>();
     Vec7 d;
     d[0] = -0.5 * (y[1] * w[0] + y[2] * w[1] + y[3] * w[2]);
     d[1] = 0.5 * (y[0] * w[0] + y[2] * w[2] - y[3] * w[1]);
     d[2] = 0.5 * (y[0] * w[1] + y[3] * w[0] - y[1] * w[2]);
     d[3] = 0.5 * (y[0] * w[2] + y[1] * w[1] - y[2] * w[0]);
-    Vec3 rhs = -w.cross(J_ * w);
-    if (!torque_free_) rhs += torque_->torque_body(t, rotation_of(y), w);
-    d.tail<3>() = J_inv_ * rhs;
+    d.tail<3>() = torque_free_ ? free_omega_dot(w) : omega_dot(t, rotation_of(y), w);
     return d;
   }
 
@@ -61,7 +69,20 @@ class EulerRhs {
   Mat3 J_inv_;
   std::shared_ptr<const TorqueModel> torque_;
   bool torque_free_ = true;
+  bool diagonal_ = false;
+  Vec3 gyro_ = Vec3::Zero();
+  Vec3 inv_diag_ = Vec3::Zero();
 };
+
+/// One Björck–Bowie step towards the nearest rotation, R ← R − ½ R (RᵀR − I): for ‖RᵀR − I‖ = δ it leaves
+/// O(δ²). The splitting and variational methods apply it every kReorthogonalizeEvery steps so that rounding
+/// errors, which otherwise accumulate like a random walk (‖RᵀR − I‖ ~ 3e-13 after 10⁶ steps), stay at the
+/// level of one step's round-off; it moves R by O(δ) = O(1e-15), below anything the methods resolve.
+inline void reorthogonalize(Mat3& R) {
+  const Mat3 E = R.transpose() * R - Mat3::Identity();
+  R -= 0.5 * (R * E);
+}
+inline constexpr int kReorthogonalizeEvery = 16;
 
 /// Keeps the integrator's own representation of the state between steps (a quaternion, a momentum in the
 /// principal frame, ...) and tells whether the State handed to the next step is the one it produced, so that

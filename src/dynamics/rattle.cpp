@@ -25,6 +25,7 @@ struct RattleIntegrator::Impl {
   Mat3 R = Mat3::Identity();
   Vec3 Pi = Vec3::Zero();  // body momentum J ω, kg·m²/s
   detail::ResumeCheck resume;
+  int steps_since_projection = 0;
   // The last step, for Λ and as the Newton predictor of the next one.
   Vec3 c = Vec3::Zero();
   double h = 0.0;
@@ -117,6 +118,10 @@ StepResult RattleIntegrator::step(State& state, double dt) {
         }
       }
     }
+  }
+  if (++m.steps_since_projection >= detail::kReorthogonalizeEvery) {
+    detail::reorthogonalize(m.R);
+    m.steps_since_projection = 0;
   }
   m.c = c;
   m.h = h;
