@@ -5,7 +5,6 @@
 #include <boost/math/special_functions/ellint_rf.hpp>
 #include <boost/math/special_functions/ellint_rj.hpp>
 #include <cmath>
-#include <numbers>
 
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
@@ -114,6 +113,10 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
   const double d3 = I[0] * (I[2] - I[0]) * w[0] * w[0] + I[1] * (I[2] - I[1]) * w[1] * w[1];  // 2T I3 − |L|²
   const double d1 = I[1] * (I[1] - I[0]) * w[1] * w[1] + I[2] * (I[2] - I[0]) * w[2] * w[2];  // |L|² − 2T I1
   const double I123 = I[0] * I[1] * I[2];
+  if (d3 == 0.0 || d1 == 0.0) {  // a steady rotation about axis 3 or 1 (reached by ExactMethod::elliptic)
+    kind_ = Kind::steady;
+    return;
+  }
   const bool largest = shape != FreeBodyRegime::smallest_axis;  // the separatrix is followed from axis 3
   double sn0 = 0.0;
   double cn0 = 1.0;
@@ -179,6 +182,12 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
     u0_ = cn0 >= 0.0 ? f : sign_of(sn0) * two_k_ - f;
   }
   corr0_ = phase(u0_).pi_minus_u;
+  if (kind_ == Kind::elliptic) {  // keep theory_ consistent when ExactMethod::elliptic overrode the regime
+    theory_.modulus = std::sqrt(k2);
+    theory_.modulus_complement2 = kc2_;
+    theory_.omega_p = omega_p_;
+    theory_.quarter_period = 0.5 * two_k_;
+  }
   const Mat3 r0 = initial.R * axes_;  // R_principal(t0)
   left_ = r0 * attitude_frame(w).transpose();
 }

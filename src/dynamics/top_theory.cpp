@@ -10,6 +10,7 @@
 
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
 
 namespace poinsot::dynamics {
 namespace {
@@ -157,6 +158,53 @@ TopMotion top_motion(const HeavyTop& top, double theta0, double theta_dot0, doub
   m.mean_precession_rate = bracket / (2.0 * K);
   m.precession_per_nutation = m.mean_precession_rate * m.nutation_period;
   return m;
+}
+
+HeavyTop heavy_top_from(const RigidBody& body, const Vec3& gravity_space) {
+  require_finite("top: gravity (m/s²)", gravity_space);
+  if (!body.has_pivot() || body.pivot_to_com().norm() == 0.0) {
+    throw InvalidInput(
+        "top: body has no pivot away from its centre of mass; expected RigidBody::with_pivot(mass, d) with d "
+        "!= 0");
+  }
+  if (gravity_space.norm() == 0.0) {
+    throw InvalidInput("top: gravity is (0, 0, 0) m/s²; expected a non-zero gravity vector");
+  }
+  const Mat3& J = body.inertia();
+  const Vec3 e = body.pivot_to_com().normalized();
+  HeavyTop top;
+  top.I3 = e.dot(J * e);
+  top.I1 = 0.5 * (J.trace() - top.I3);
+  top.mass = body.mass();
+  top.length = body.pivot_to_com().norm();
+  top.gravity = gravity_space.norm();
+  // Symmetric about e: J = I1 (1 − e⊗e) + I3 e⊗e.
+  const Mat3 model = top.I1 * (Mat3::Identity() - e * e.transpose()) + top.I3 * e * e.transpose();
+  const double off = (J - model).cwiseAbs().maxCoeff();
+  if (off > 1e-9 * J.trace()) {
+    throw InvalidInput(
+        fmt::format("top: inertia about the pivot {} kg·m² is not symmetric about the "
+                    "pivot-to-centre-of-mass axis {} (off by "
+                    "{}); expected I1 = I2 about that axis",
+                    format_matrix(J), format_vector(e), format_number(off, 3)));
+  }
+  return top;
+}
+
+TopInitialConditions top_initial_conditions(const RigidBody& body, const State& state,
+                                            const Vec3& gravity_space) {
+  heavy_top_from(body, gravity_space);  // validates
+  const Vec3 e = body.pivot_to_com().normalized();
+  const Vec3 up = -gravity_space.normalized();
+  const Vec3 s = state.R * e;
+  const Vec3 sdot = state.R * state.omega_body.cross(e);
+  TopInitialConditions ic;
+  const double sin_theta = up.cross(s).norm();
+  ic.theta = std::atan2(sin_theta, up.dot(s));
+  ic.theta_dot = sin_theta > 0.0 ? -up.dot(sdot) / sin_theta : 0.0;
+  ic.phi_dot = sin_theta > 0.0 ? up.dot(s.cross(sdot)) / (sin_theta * sin_theta) : 0.0;
+  ic.omega3 = state.omega_body.dot(e);
+  return ic;
 }
 
 }  // namespace poinsot::dynamics

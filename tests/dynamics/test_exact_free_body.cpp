@@ -161,6 +161,9 @@ TEST(ExactFreeBody, AxisymmetricClosedFormAgreesWithEllipticAndReference) {
     const ExactFreeBody elliptic(body, s0, ExactMethod::elliptic);
     EXPECT_EQ(closed.regime(), FreeBodyRegime::axisymmetric);
     EXPECT_NE(elliptic.regime(), FreeBodyRegime::axisymmetric);
+    EXPECT_EQ(elliptic.theory().modulus, 0.0);  // k² ∝ the difference of the two equal moments
+    // The forced elliptic form's ω period 4K/ω_p = 2π/ω_p equals eq. (4.2)'s precession period.
+    EXPECT_NEAR(elliptic.omega_period(), closed.omega_period(), 1e-13 * closed.omega_period());
     expect_matches_reference(body, s0, 100.0, 1e-12, "axisymmetric");
     for (double t : {-40.0, 3.0, 100.0}) {
       const State a = closed.state_at(t);

@@ -80,6 +80,20 @@ TEST(ExactIntegrator, ReinitialisesForAStateItDidNotProduce) {
   EXPECT_LE(max_abs_diff(s.R, edited.R), 1e-14);
 }
 
+// A body held at a pivot with no torque rotates freely about the pivot, with J about the pivot.
+TEST(ExactIntegrator, BodyAtAPivotWithoutTorque) {
+  const RigidBody body =
+      RigidBody::from_principal_moments(Vec3(1.0, 2.0, 2.5)).with_pivot(2.0, Vec3(0.1, -0.2, 0.3));
+  ASSERT_FALSE(body.is_diagonal());
+  auto integ = make_exact_integrator(body, TorqueModel::none());
+  State s = start();
+  const State s0 = s;
+  integ->step(s, 30.0);
+  const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, s.t, 6000);
+  EXPECT_LE(max_abs_diff(s.omega_body, ref.omega_body), 1e-12);
+  EXPECT_LE(max_abs_diff(s.R, ref.R), 1e-12);
+}
+
 TEST(ExactIntegrator, RejectsBadInput) {
   const RigidBody body = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 2.5));
   auto integ = make_exact_integrator(body, nullptr);

@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/rigid_body.hpp"
 
 namespace poinsot::dynamics {
 namespace {
@@ -183,6 +184,38 @@ TEST(TopTheory, SleepingTopCriterion) {
   const double a = top.I3 * w / top.I1, beta = 2.0 * top.mgl() / top.I1;
   EXPECT_NEAR(fall.u1, a * a / beta - 1.0, 1e-6);
   EXPECT_GT(fall.theta_max, 0.5);
+}
+
+// A RigidBody disc top and a state built from Euler angles (z-x-z: R = Rz(φ) Rx(θ) Rz(ψ)) and their rates
+// (body-frame ω of the z-x-z sequence) give back the parameters and initial data of the theory.
+TEST(TopTheory, FromRigidBodyAndState) {
+  const HeavyTop ref = disc_top();
+  const double r = 0.05, m = 1.0, l = 0.1;
+  const RigidBody body =
+      RigidBody::from_principal_moments(Vec3(0.25 * m * r * r, 0.25 * m * r * r, 0.5 * m * r * r))
+          .with_pivot(m, Vec3(0, 0, l));
+  const Vec3 g(0.0, 0.0, -9.81);
+  const HeavyTop top = heavy_top_from(body, g);
+  EXPECT_NEAR(top.I1, ref.I1, 1e-15);
+  EXPECT_NEAR(top.I3, ref.I3, 1e-15);
+  EXPECT_NEAR(top.mgl(), ref.mgl(), 1e-15);
+  const double phi = 0.4, theta = 1.1, psi = -0.7, phid = 0.8, thetad = -0.3, psid = 150.0;
+  const auto Rz = [](double a) { return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix(); };
+  const auto Rx = [](double a) { return Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix(); };
+  State s;
+  s.R = Rz(phi) * Rx(theta) * Rz(psi);
+  s.omega_body =
+      Vec3(phid * std::sin(theta) * std::sin(psi) + thetad * std::cos(psi),
+           phid * std::sin(theta) * std::cos(psi) - thetad * std::sin(psi), phid * std::cos(theta) + psid);
+  const TopInitialConditions ic = top_initial_conditions(body, s, g);
+  EXPECT_NEAR(ic.theta, theta, 1e-14);
+  EXPECT_NEAR(ic.theta_dot, thetad, 1e-13);
+  EXPECT_NEAR(ic.phi_dot, phid, 1e-13);
+  EXPECT_NEAR(ic.omega3, phid * std::cos(theta) + psid, 1e-12);
+  EXPECT_THROW(heavy_top_from(RigidBody::from_principal_moments(Vec3(1, 2, 2.5)), g), InvalidInput);
+  EXPECT_THROW(
+      heavy_top_from(RigidBody::from_principal_moments(Vec3(1, 2, 2.5)).with_pivot(1.0, Vec3(0, 0, 0.1)), g),
+      InvalidInput);
 }
 
 TEST(TopTheory, RejectsInvalidInput) {

@@ -23,6 +23,10 @@
 /// the gyroscopic formula of the notes, M g l/(I3 ω3), with a relative error of order I1 M g l/(I3 ω3)²
 /// (ERRATA B3), and the nutation frequency 2π/T_nut to a = I3 ω3/I1.
 
+#include "poinsot/core/types.hpp"
+#include "poinsot/dynamics/rigid_body.hpp"
+#include "poinsot/dynamics/state.hpp"
+
 namespace poinsot::dynamics {
 
 /// The constant parameters of a heavy symmetric top (SI units).
@@ -70,5 +74,19 @@ struct TopMotion {
 };
 /// Throws InvalidInput for invalid parameters or θ0 outside (0, π).
 TopMotion top_motion(const HeavyTop& top, double theta0, double theta_dot0, double phi_dot0, double omega3);
+
+/// The top of a RigidBody held at a pivot (RigidBody::with_pivot) in gravity g (space frame, m/s²): I3 = eᵀJe
+/// and I1 = (tr J − I3)/2 about the pivot with e = d/|d| the pivot-to-centre-of-mass axis, M = mass(),
+/// l = |d|, g = |g|. Throws InvalidInput unless the body has a pivot and J is symmetric about e (J e = I3 e
+/// and the two transverse moments equal, to 1e-9 of tr J), and g ≠ 0.
+HeavyTop heavy_top_from(const RigidBody& body, const Vec3& gravity_space);
+
+/// The initial data of top_motion() from a state of that body: θ = the angle between the axis R e and "up"
+/// (−g/|g|), θ̇ = −up·ṡ/sin θ and φ̇ = up·(s × ṡ)/sin²θ with s = R e, ṡ = R(ω × e), and ω3 = ω·e (rad, rad/s).
+struct TopInitialConditions {
+  double theta = 0.0, theta_dot = 0.0, phi_dot = 0.0, omega3 = 0.0;
+};
+TopInitialConditions top_initial_conditions(const RigidBody& body, const State& state,
+                                            const Vec3& gravity_space);
 
 }  // namespace poinsot::dynamics
