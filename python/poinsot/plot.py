@@ -157,12 +157,17 @@ def _plot_polhode(plt, cols, summary, out):
     for segs in curves[: len(others)]:
         for s in segs:
             ax.plot(s[:, 0], s[:, 1], s[:, 2], color="0.6", lw=0.6)
-    if level0:
-        for i, s in enumerate(curves[-1]):
-            ax.plot(s[:, 0], s[:, 1], s[:, 2], color="k", lw=2.2, ls="--",
-                    label="theory: sphere ∩ initial energy ellipsoid" if i == 0 else None)
-    ax.plot(u[:, 0], u[:, 1], u[:, 2], color="C3", lw=1.3, label="computed L_body / |L|")
+    ax.plot(u[:, 0], u[:, 1], u[:, 2], color="C3", lw=3.0, alpha=0.55, label="computed L_body / |L|")
     ax.scatter(*u[0], color="C3", s=30, label="t = 0")
+    if level0:
+        # The level set has two components (one about each end of the axis the motion circles): draw the one
+        # the body is on, i.e. on the same side as the computed path's mean along its dominant coordinate.
+        mean = u.mean(axis=0)
+        k = int(np.argmax(np.abs(mean)))
+        segs = [s for s in curves[-1] if np.sign(s[:, k].mean()) == np.sign(mean[k])] or curves[-1]
+        for i, s in enumerate(segs):
+            ax.plot(s[:, 0], s[:, 1], s[:, 2], color="k", lw=1.4, ls="--",
+                    label="theory: sphere ∩ initial energy ellipsoid" if i == 0 else None)
     ax.set_xlabel("L₁/|L| (body x)")
     ax.set_ylabel("L₂/|L| (body y)")
     ax.set_zlabel("L₃/|L| (body z)")
@@ -192,8 +197,11 @@ def _plot_top(plt, cols, summary, out):
     e1 /= np.linalg.norm(e1)
     e2 = np.cross(u, e1)
     x, y = tip @ e1, tip @ e2
-    fig, ax = plt.subplots(figsize=(6.8, 6.8), constrained_layout=True)
-    sc = ax.scatter(x, y, c=cols["t"], s=2, cmap="viridis")
+    t = cols["t"]
+    theta = np.arccos(np.clip(tip @ u, -1.0, 1.0))
+    fig, (ax, ax2) = plt.subplots(1, 2, figsize=(13, 6.2), constrained_layout=True,
+                                  gridspec_kw={"width_ratios": [1.15, 1]})
+    sc = ax.scatter(x, y, c=t, s=2, cmap="viridis")
     ax.plot(x, y, color="0.5", lw=0.4, alpha=0.6)
     ax.plot(x[0], y[0], "o", color="C3", label="t = 0")
     r = max(float(np.max(np.hypot(x, y))), 1e-3)
@@ -209,13 +217,30 @@ def _plot_top(plt, cols, summary, out):
     ev = summary.get("events", {})
     rate = ev.get("precession_rate_mean")
     sub = f"mean precession {rate:.4g} rad/s" if rate is not None else ""
-    ax.set_title(f"{top['kind']}: figure-axis tip seen from above, looking down {about}\n"
-                 f"{_title(summary)}; {sub}", fontsize=10)
+    ax.set_title(f"Figure-axis tip seen from above, looking down {about}\n{sub}", fontsize=10)
     cb = fig.colorbar(sc, ax=ax, shrink=0.8)
     cb.set_label("time t (s)")
     ax.legend(loc="upper right", fontsize=9)
     ax.grid(alpha=0.3)
-    fig.savefig(out, dpi=120)
+    # Nutation: the tilt of the axis from the direction, over about a dozen nutation periods.
+    nu = ev.get("nutation_frequency")
+    span = t[-1] - t[0]
+    if nu:
+        span = min(span, 12 * 2 * np.pi / nu)
+    sel = t <= t[0] + span
+    ax2.plot(t[sel], np.degrees(theta[sel]), color="C0", lw=1.2)
+    ax2.set_xlabel("time t (s)")
+    ax2.set_ylabel(f"tilt of the figure axis from {about} (degrees)")
+    nut = f"nutation {nu:.4g} rad/s" if nu else "no nutation detected"
+    ax2.set_title(f"Nutation: tilt against time ({nut})", fontsize=10)
+    ax2.ticklabel_format(axis="y", useOffset=False)
+    tilt = np.degrees(theta[sel])
+    if np.ptp(tilt) < 1e-3:  # a steady tilt: show it on a readable half-degree window, not its round-off
+        mid = float(np.mean(tilt))
+        ax2.set_ylim(mid - 0.5, mid + 0.5)
+    ax2.grid(alpha=0.3)
+    fig.suptitle(f"{top['kind']}: {_title(summary)}", fontsize=12)
+    fig.savefig(out, dpi=110)
     plt.close(fig)
 
 

@@ -92,11 +92,17 @@ std::string format_report(const RunSummary& s) {
       fmt::format_to(o, "    theory: interval between flips 2K(k)/ω_p = {} s\n",
                      g(*s.flip_interval_theory, 10));
     }
-    if (s.period_theory) {
+    if (s.period_theory && s.symmetry == "asymmetric") {
       fmt::format_to(o, "    period of omega: theory 4K(k)/ω_p = {} s\n", g(*s.period_theory, 10));
     }
     if (!s.flip_interval_theory && s.symmetry == "asymmetric") {
-      fmt::format_to(o, "    (no closed-form interval: a torque acts, or the motion never flips)\n");
+      if (s.free_body_regime.empty()) {
+        fmt::format_to(o, "    (no closed-form interval: a torque acts)\n");
+      } else {
+        fmt::format_to(o, "    theory: no flips in this regime ({})\n", s.free_body_regime);
+      }
+    } else if (!s.free_body_regime.empty()) {
+      fmt::format_to(o, "    regime of the torque-free motion: {}\n", s.free_body_regime);
     }
   }
   if (s.top) {

@@ -13,7 +13,7 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
-#include "poinsot/dynamics/exact_free_body.hpp"
+#include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/io/axis_tracker.hpp"
@@ -115,10 +115,12 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
   auto integrator = dynamics::make_integrator(sc.method, sc.body, sc.torque, sc.integrator);
   if (!options.out_dir.empty()) prepare_output_dir(options.out_dir);
 
-  if (sc.torque->is_zero() && !sc.body.has_pivot() && sum.symmetry == "asymmetric") {
-    const dynamics::ExactFreeBody exact(sc.body, sc.initial);
-    if (exact.flip_interval() > 0.0) sum.flip_interval_theory = exact.flip_interval();
-    if (exact.omega_period() > 0.0) sum.period_theory = exact.omega_period();
+  if (sc.torque->is_zero()) {
+    // Torque-free about the rotation point (the centre of mass, or a pivot without gravity): Euler-Poinsot.
+    const dynamics::FreeBodyTheory theory = dynamics::free_body_theory(sc.body, sc.initial.omega_body);
+    sum.free_body_regime = dynamics::to_string(theory.regime);
+    if (theory.flip_interval() > 0.0) sum.flip_interval_theory = theory.flip_interval();
+    if (theory.omega_period() > 0.0) sum.period_theory = theory.omega_period();
   }
   sum.top = top_setup(sc, sc.initial);
 

@@ -75,8 +75,11 @@ BodyInertia body_from_shape(const Source& source, const toml::table& shape, cons
     for (const auto& k : it->second)
       ok = ok || key.str() == k;
     if (!ok) {
+      const auto& at = key.source().begin;
+      const std::string where =
+          at.line > 0 ? fmt::format("{}:{}:{}: ", source.name, at.line, at.column) : location(source, &value);
       throw InvalidInput(fmt::format("{}[body.shape] key \"{}\" does not apply to a {}; valid keys: {}",
-                                     location(source, &value), key.str(), type, valid));
+                                     where, key.str(), type, valid));
     }
   }
   const Section& s = probe;
@@ -147,11 +150,12 @@ BodyInertia body_from_mesh(const Source& source, const toml::table& mesh, const 
   out.inertia_com = mp.inertia_com;
   out.mass = mp.mass;
   out.com = mp.com;
-  out.description =
-      fmt::format("{}mesh {} ({} triangles), {} {} {}, mass {} kg, centre of mass {} m (mesh frame)",
-                  shell ? "thin-shell " : "", file.string(), m.triangles.size(), by_mass ? "mass" : "density",
-                  format_number(amount), by_mass ? "kg" : (shell ? "kg/m²" : "kg/m³"), format_number(mp.mass),
-                  format_vector(mp.com));
+  out.description = fmt::format(
+      "{}mesh {} ({} triangles), {} {} {}, mass {} kg, centre of mass {} m (mesh frame)",
+      shell ? "thin-shell " : "", file.string(), m.triangles.size(), by_mass ? "mass" : "density",
+      format_number(amount), by_mass ? "kg" : (shell ? "kg/m²" : "kg/m³"), format_number(mp.mass, 7),
+      fmt::format("({}, {}, {})", format_number(mp.com.x(), 7), format_number(mp.com.y(), 7),
+                  format_number(mp.com.z(), 7)));
   return out;
 }
 

@@ -86,6 +86,7 @@ std::string summary_json(const RunSummary& s) {
           : json(nullptr);
   events["flip_interval_theory"] = opt(s.flip_interval_theory);
   events["period_theory"] = opt(s.period_theory);
+  events["free_body_regime"] = s.free_body_regime.empty() ? json(nullptr) : json(s.free_body_regime);
   json top = nullptr;
   if (s.top) {
     const auto& t = *s.top;

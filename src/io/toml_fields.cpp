@@ -57,8 +57,11 @@ Section::Section(const Source& source, const toml::table* table, std::string nam
     for (const auto& v : valid)
       known = known || key.str() == v;
     if (!known) {
-      throw InvalidInput(fmt::format("{}[{}] unknown key \"{}\"; valid keys: {}", location(source_, &value),
-                                     name_, key.str(), join(valid)));
+      const auto& at = key.source().begin;
+      const std::string where = at.line > 0 ? fmt::format("{}:{}:{}: ", source_.name, at.line, at.column)
+                                            : location(source_, &value);
+      throw InvalidInput(
+          fmt::format("{}[{}] unknown key \"{}\"; valid keys: {}", where, name_, key.str(), join(valid)));
     }
   }
 }

@@ -51,7 +51,11 @@ struct RunSummary {
   dynamics::SimulationResult result;    ///< final state, steps, worst errors, flip times, wall time
   long long samples = 0;
   std::string failure;  ///< the message of a ComputationFailed that stopped the run (empty: none)
-  /// Free asymmetric body: the closed form 2K(k)/ω_p between flips and 4K(k)/ω_p the period of ω (s).
+  /// Torque-free body: the regime of the Euler-Poinsot motion ("largest axis", "axisymmetric", ...); empty
+  /// with a torque.
+  std::string free_body_regime;
+  /// Torque-free asymmetric body off the separatrix: the closed form 2K(k)/ω_p between flips (s); the period
+  /// of ω (s): 4K(k)/ω_p for an asymmetric body, 2π/ω_p for an axisymmetric one.
   std::optional<double> flip_interval_theory, period_theory;
   std::optional<TopEvents> top;
   /// Λ along the samples (analysis layer): eigenvalues, their variation, checks, closed form, stress.

@@ -1,0 +1,203 @@
+"""`poinsot run`: the report, the files, the examples, the overrides, bad input, and interruption."""
+import json
+import os
+import re
+import signal
+import subprocess
+import time
+from pathlib import Path
+
+import pytest
+
+EXAMPLES = sorted((Path(__file__).resolve().parents[2] / "examples").glob("*.toml"))
+
+MINIMAL = """
+[body]
+principal_moments = [1.0, 2.0, 3.0]
+[initial]
+omega_body = [0.1, 2.0, 0.1]
+[integrator]
+method = "exact"
+[output]
+t_end = 5.0
+sample_dt = 0.5
+"""
+
+
+def write(tmp_path, text, name="s.toml"):
+    p = tmp_path / name
+    p.write_text(text)
+    return p
+
+
+def csv_rows(path):
+    lines = Path(path).read_text().splitlines()
+    assert lines[0].startswith("# poinsot trajectory. Units:")
+    names = lines[1].split(",")
+    return names, [[float(x) for x in line.split(",")] for line in lines[2:]]
+
+
+def test_tennis_racket_report_puts_the_flips_beside_the_closed_form(cli, source_dir, tmp_path):
+    out = tmp_path / "racket"
+    r = cli("run", source_dir / "examples/tennis_racket.toml", "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert r.stderr == ""  # not a terminal: no progress bar
+    text = r.stdout
+    assert "principal moments I1, I2, I3 = (0.00121, 0.01638, 0.01748) kg·m²" in text
+    assert "asymmetric" in text
+    m = re.search(r"interval between flips: measured ([0-9.]+) s \(mean\), theory 2K\(k\)/ω_p = ([0-9.]+) s", text)
+    assert m, text
+    measured, theory = float(m.group(1)), float(m.group(2))
+    assert abs(measured - theory) <= 1e-8 * theory
+    assert "period of omega: theory 4K(k)/ω_p" in text
+    assert re.search(r"\d+ steps \(\d+ rejected\), wall time [0-9.]+ s, [0-9.e+]+ steps/s", text)
+    summary = json.loads((out / "summary.json").read_text())
+    for key in ("t", "omega_body", "R", "quaternion"):
+        assert key in summary["final"]
+    for key in ("energy_rel_error_max", "L_space_rel_error_max", "orthogonality_error_max"):
+        assert summary["invariants"][key] < 1e-12
+    ev = summary["events"]
+    assert len(ev["flip_times"]) >= 5
+    assert abs(ev["period_theory"] - 2 * ev["flip_interval_theory"]) < 1e-12
+    assert summary["steps"] > 0 and summary["wall_time_s"] >= 0
+    names, rows = csv_rows(out / "trajectory.csv")
+    assert names[:12] == ["t", "qw", "qx", "qy", "qz", "wx", "wy", "wz", "energy",
+                          "L_space_x", "L_space_y", "L_space_z"]
+    assert len(rows) == summary["samples"] == 4001
+    assert rows[-1][0] == summary["final"]["t"] == 20.0
+    # The quaternion of each row is a unit quaternion (body to space).
+    assert all(abs(sum(x * x for x in row[1:5]) - 1.0) < 1e-14 for row in rows)
+
+
+@pytest.mark.parametrize("example", EXAMPLES, ids=[p.stem for p in EXAMPLES])
+def test_every_example_runs_and_says_what_it_shows(cli, example, tmp_path):
+    first = example.read_text().splitlines()[0]
+    assert first.startswith("# ") and "What it shows" in example.read_text()
+    r = cli("run", example, "--out", tmp_path / "run", "--quiet")
+    assert r.returncode == 0, r.stderr
+    summary = json.loads((tmp_path / "run" / "summary.json").read_text())
+    assert summary["status"] == "completed"
+    assert summary["invariants"]["energy_rel_error_max"] < 1e-6
+
+
+def test_json_on_stdout_is_the_summary(cli, tmp_path):
+    s = write(tmp_path, MINIMAL)
+    r = cli("run", s, "--out", tmp_path / "o", "--json")
+    assert r.returncode == 0, r.stderr
+    j = json.loads(r.stdout)
+    assert j == json.loads((tmp_path / "o" / "summary.json").read_text())
+    assert j["method"] == "exact" and j["final"]["t"] == 5.0
+
+
+def test_overrides(cli, tmp_path):
+    s = write(tmp_path, MINIMAL)
+    r = cli("run", s, "--out", tmp_path / "o", "--json", "--method", "rk4", "--dt", "0.01", "--t-end", "2",
+            "--sample-dt", "0.25")
+    assert r.returncode == 0, r.stderr
+    j = json.loads(r.stdout)
+    assert j["method"] == "rk4" and j["t_end"] == 2.0 and j["steps"] == 200
+    assert len(csv_rows(tmp_path / "o" / "trajectory.csv")[1]) == 9  # t = 0, 0.25, ..., 2
+
+
+def test_default_output_folder_is_named_after_the_scenario(cli, tmp_path):
+    s = write(tmp_path, MINIMAL, "spin.toml")
+    r = cli("run", s, "--quiet", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "spin-run" / "summary.json").is_file()
+
+
+def bad(cli, tmp_path, text, *extra):
+    s = write(tmp_path, text)
+    out = tmp_path / "never"
+    r = cli("run", s, "--out", out, *extra)
+    assert r.returncode == 2, (r.stdout, r.stderr)
+    assert r.stdout == ""
+    lines = r.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("poinsot: "), r.stderr
+    assert not (out / "trajectory.csv").exists()
+    return lines[0]
+
+
+def test_bad_syntax_gives_line_and_column(cli, tmp_path):
+    msg = bad(cli, tmp_path, MINIMAL.replace("t_end = 5.0", "t_end = = 5.0"))
+    assert "s.toml:9:9: TOML syntax error" in msg, msg  # line 9 of MINIMAL, the second "="
+
+
+def test_unknown_key_is_named_with_the_valid_ones(cli, tmp_path):
+    msg = bad(cli, tmp_path, MINIMAL.replace("sample_dt", "sampel_dt"))
+    assert 'unknown key "sampel_dt"; valid keys: t_end, sample_dt, dir' in msg
+
+
+def test_missing_and_double_keys(cli, tmp_path):
+    assert "[output] t_end: missing" in bad(cli, tmp_path, MINIMAL.replace("t_end = 5.0", ""))
+    msg = bad(cli, tmp_path, MINIMAL.replace("[initial]", "[initial]\nomega_space = [1, 0, 0]"))
+    assert "the angular velocity is given 2 times" in msg
+    msg = bad(cli, tmp_path, MINIMAL.replace("[body]", "[body]\nshape = { type = \"sphere\", radius = 1, mass = 1 }"))
+    assert "the inertia (one way to give it) is given 2 times (principal_moments and shape)" in msg
+
+
+def test_wrong_types_and_ranges(cli, tmp_path):
+    assert 'got "5", expected a number' in bad(cli, tmp_path, MINIMAL.replace("t_end = 5.0", 't_end = "5"'))
+    assert "t_end: got -5 s, expected a number > 0" in bad(cli, tmp_path, MINIMAL.replace("5.0", "-5.0"))
+    assert "dt: got 0 s, expected a number > 0" in bad(cli, tmp_path, MINIMAL.replace('"exact"', '"rk4"\ndt = 0'))
+    assert "expected finite numbers" in bad(cli, tmp_path, MINIMAL.replace("0.1, 2.0", "nan, 2.0"))
+    assert "--dt: got -1 s" in bad(cli, tmp_path, MINIMAL, "--dt", "-1")
+    assert "--t-end: got inf s" in bad(cli, tmp_path, MINIMAL, "--t-end", "inf")
+
+
+def test_invalid_inertia_gives_the_inertia_layers_message(cli, tmp_path):
+    msg = bad(cli, tmp_path, MINIMAL.replace("[1.0, 2.0, 3.0]", "[1.0, 1.0, 5.0]"))
+    assert "[body] principal_moments:" in msg and "triangle inequality" in msg
+
+
+def test_exact_with_a_torque_is_refused(cli, tmp_path):
+    msg = bad(cli, tmp_path, MINIMAL + '[torque]\ntype = "body"\nvalue = [0, 0, 0.1]\n')
+    assert 'method: got "exact"' in msg and "torque-free" in msg
+    torqued = MINIMAL.replace('"exact"', '"rk4"') + '[torque]\ntype = "space"\nvalue = [0, 0, 1]\n'
+    assert '--method: got "exact"' in bad(cli, tmp_path, torqued, "--method", "exact")
+
+
+def test_unwritable_output_is_refused_before_simulating(cli, tmp_path):
+    s = write(tmp_path, MINIMAL)
+    (tmp_path / "a_file").write_text("x")
+    r = cli("run", s, "--out", tmp_path / "a_file" / "run")
+    assert r.returncode == 2
+    assert r.stdout == ""
+    assert r.stderr.startswith("poinsot: output: cannot create folder")
+
+
+def test_sigterm_leaves_complete_files_marked_interrupted(source_dir, tmp_path):
+    exe = os.environ["POINSOT_CLI"]
+    s = write(tmp_path, MINIMAL.replace('"exact"', '"rk4"\ndt = 1e-5').replace("t_end = 5.0", "t_end = 1e6")
+              .replace("sample_dt = 0.5", "sample_dt = 0.001"))
+    out = tmp_path / "o"
+    p = subprocess.Popen([exe, "run", str(s), "--out", str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True)
+    csv = out / "trajectory.csv"
+    deadline = time.time() + 60
+    while time.time() < deadline and (not csv.exists() or csv.stat().st_size < 20000):
+        time.sleep(0.05)
+    p.send_signal(signal.SIGTERM)
+    stdout, stderr = p.communicate(timeout=60)
+    assert p.returncode == 128 + signal.SIGTERM, stderr
+    assert "INTERRUPTED at t =" in stdout
+    assert "interrupted by signal 15" in stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["status"] == "interrupted" and summary["interrupted"] is True
+    text = csv.read_text()
+    assert text.endswith("\n")
+    names, rows = csv_rows(csv)
+    assert all(len(row) == len(names) for row in rows)
+    assert rows[-1][0] == summary["final"]["t"]
+    assert summary["samples"] == len(rows)
+    assert not list(out.glob(".*tmp"))
+
+
+def test_plot_writes_the_figures(cli, source_dir, tmp_path):
+    out = tmp_path / "top"
+    r = cli("run", source_dir / "examples/gyroscope.toml", "--out", out, "--plot", "--quiet", "--t-end", "2")
+    assert r.returncode == 0, r.stderr
+    for name in ("omega.png", "invariants.png", "polhode.png", "top.png"):
+        data = (out / name).read_bytes()
+        assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000, name
+    assert "plot: wrote" in r.stdout
