@@ -48,6 +48,25 @@ class FreeBodyTheory:
     @property
     def separatrix_gap(self) -> float: ...
 
+class HeavyTop:
+    """The constant parameters of a heavy symmetric top (SI units)."""
+    @property
+    def I1(self) -> float: ...
+    @property
+    def I3(self) -> float: ...
+    def __init__(self, I1: float, I3: float, mass: float, length: float, gravity: float = ...) -> None:
+        """Throws InvalidInput unless every parameter is finite and positive."""
+    def __repr__(self) -> str:
+        ...
+    @property
+    def gravity(self) -> float: ...
+    @property
+    def length(self) -> float: ...
+    @property
+    def mass(self) -> float: ...
+    @property
+    def mgl(self) -> float: ...
+
 class Integrator:
     """The one interface every integrator implements (Boost.Odeint's `step(state, dt)` concept, as a small virtual class): a new method is one new file."""
     def dense_output(self, t: float) -> State:
@@ -207,8 +226,17 @@ def angular_momentum_space(body: RigidBody, state: State) -> numpy.typing.NDArra
 def axisymmetric_free_motion(A: float, C: float, axis_body: numpy.typing.ArrayLike, initial: State, t: float) -> State:
     """Vallée & Dumitriu eq."""
 
+def fast_top_precession_rate(top: HeavyTop, omega3: float) -> float:
+    """The gyroscopic (fast-top) precession rate of the notes, Ω = M g l/(I3 ω3) (rad/s), ERRATA B3: an approximation that neglects nutation and the transverse angular momentum."""
+
 def free_body_theory(body: object, omega_body: numpy.typing.ArrayLike) -> FreeBodyTheory:
     """The closed-form theory of the torque-free motion for a poinsot.RigidBody and ω in its body frame (rad/s), or for principal moments (ascending, kg·m²) and ω in the principal frame."""
+
+def heavy_top_from(body: RigidBody, gravity_space: numpy.typing.ArrayLike) -> HeavyTop:
+    """The top of a RigidBody held at a pivot (RigidBody::with_pivot) in gravity g (space frame, m/s²): I3 = eᵀJe and I1 = (tr J − I3)/2 about the pivot with e = d/|d| the pivot-to-centre-of-mass axis, M = mass(), l = |d|, g = |g|."""
+
+def is_sleeping_top_stable(top: HeavyTop, omega3: float) -> bool:
+    """The sleeping-top criterion: a top spinning upright is stable when ω3² > 4 I1 M g l / I3² (I1 about the pivot)."""
 
 def kinetic_energy(body: RigidBody, state: State) -> float:
     """½ ωᵀ J ω (J)."""
@@ -224,6 +252,18 @@ def parse_scenario(text: str, source: str = ..., base_dir: str = ...) -> Scenari
 
 def potential_energy(body: RigidBody, state: State, gravity_space: numpy.typing.ArrayLike) -> float:
     """−m gᵀ R d (J) for a body with a pivot; 0 for a free body."""
+
+def sleeping_top_threshold(top: HeavyTop) -> float:
+    """The sleeping-top criterion: a top spinning upright is stable when ω3² > 4 I1 M g l / I3² (I1 about the pivot)."""
+
+def steady_precession_rates(top: HeavyTop, theta: float, omega3: float) -> dict:
+    """The two rates of steady precession at tilt θ (rad) and spin ω3 (rad/s): the roots of I1 cos θ φ̇² − I3 ω3 φ̇ + M g l = 0 (θ̈ = 0 in Lagrange's equation for θ)."""
+
+def top_initial_conditions(body: RigidBody, state: State, gravity_space: numpy.typing.ArrayLike) -> dict:
+    """The initial data of top_motion() from a state of that body: θ = the angle between the axis R e and "up" (−g/|g|), θ̇ = −up·ṡ/sin θ and φ̇ = up·(s × ṡ)/sin²θ with s = R e, ṡ = R(ω × e), and ω3 = ω·e (rad, rad/s)."""
+
+def top_motion(top: HeavyTop, theta0: float, theta_dot0: float, phi_dot0: float, omega3: float) -> dict:
+    """Throws InvalidInput for invalid parameters or θ0 outside (0, π)."""
 
 def total_energy(body: RigidBody, state: State, gravity_space: numpy.typing.ArrayLike) -> float:
     """T + V (J)."""

@@ -1,5 +1,5 @@
-// Bindings of the analysis layer as poinsot.analysis: the multipliers Λ (from the state, in closed form, along
-// a whole sampled trajectory), the axisymmetric closed form of the paper, the constraint stress and the
+// Bindings of the analysis layer as poinsot.analysis: the multipliers Λ (from the state, in closed form,
+// along a whole sampled trajectory), the axisymmetric closed form of the paper, the constraint stress and the
 // property tracker. Docstrings from the headers.
 #include <pybind11/stl.h>
 
@@ -102,7 +102,8 @@ analysis::ClosedForm closed_form_of(const std::string& name) {
   if (name == "property2" || name == "3.7") return analysis::ClosedForm::property2;
   if (name == "eq38" || name == "3.8") return analysis::ClosedForm::eq38;
   if (name == "symmetric") return analysis::ClosedForm::symmetric;
-  throw py::value_error("form: got \"" + name + "\", expected \"property2\" (eq. 3.7), \"eq38\" (eq. 3.8) or "
+  throw py::value_error("form: got \"" + name +
+                        "\", expected \"property2\" (eq. 3.7), \"eq38\" (eq. 3.8) or "
                         "\"symmetric\"");
 }
 
@@ -121,7 +122,8 @@ struct Trajectory {
     s.t = t.data()[i];
     const double* r = R.data() + 9 * i;
     for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) s.R(a, b) = r[3 * a + b];
+      for (int b = 0; b < 3; ++b)
+        s.R(a, b) = r[3 * a + b];
     const double* p = w.data() + 3 * i;
     s.omega_body = Vec3(p[0], p[1], p[2]);
     return s;
@@ -144,16 +146,19 @@ void bind_analysis(py::module_& parent) {
   m.def(
       "lambda_from_omega",
       [](const RigidBody& body, ArrayLike w, ArrayLike wdot) {
-        return from_mat3(analysis::lambda_from_omega(body, to_vec3(w, "omega_body"), to_vec3(wdot, "omega_dot_body")));
+        return from_mat3(
+            analysis::lambda_from_omega(body, to_vec3(w, "omega_body"), to_vec3(wdot, "omega_dot_body")));
       },
-      py::arg("body"), py::arg("omega_body"), py::arg("omega_dot_body"), POINSOT_DOC(analysis_lambda_from_omega));
+      py::arg("body"), py::arg("omega_body"), py::arg("omega_dot_body"),
+      POINSOT_DOC(analysis_lambda_from_omega));
   m.def(
       "lambda_from_state",
       [](const RigidBody& body, const State& s, const py::object& torque) {
         const auto tm = as_torque(torque);
         return from_mat3(analysis::lambda_from_state(body, s, tm.get()));
       },
-      py::arg("body"), py::arg("state"), py::arg("torque") = py::none(), POINSOT_DOC(analysis_lambda_from_state));
+      py::arg("body"), py::arg("state"), py::arg("torque") = py::none(),
+      POINSOT_DOC(analysis_lambda_from_state));
   m.def(
       "lambda_trajectory",
       [](const RigidBody& body, ArrayLike t, ArrayLike R, ArrayLike w, const py::object& torque) {
@@ -164,7 +169,8 @@ void bind_analysis(py::module_& parent) {
         for (py::ssize_t i = 0; i < tr.n; ++i) {
           const Mat3 L = analysis::lambda_from_state(body, tr.state(i), tm.get());
           for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b) out.push_back(L(a, b));
+            for (int b = 0; b < 3; ++b)
+              out.push_back(L(a, b));
         }
         return array_from_buffer(std::move(out), {tr.n, 3, 3});
       },
@@ -177,7 +183,8 @@ void bind_analysis(py::module_& parent) {
   m.def(
       "lambda_closed_form",
       [](ArrayLike J, ArrayLike w, const std::string& form) {
-        return from_mat3(analysis::lambda_closed_form(to_mat3(J, "J"), to_vec3(w, "omega_body"), closed_form_of(form)));
+        return from_mat3(
+            analysis::lambda_closed_form(to_mat3(J, "J"), to_vec3(w, "omega_body"), closed_form_of(form)));
       },
       py::arg("J"), py::arg("omega_body"), py::arg("form") = "property2",
       (std::string(POINSOT_DOC(analysis_lambda_closed_form)) +
@@ -192,7 +199,8 @@ void bind_analysis(py::module_& parent) {
       py::arg("lambda_body"), py::arg("torque_body") = py::make_tuple(0.0, 0.0, 0.0),
       POINSOT_DOC(analysis_symmetry_error));
   m.def(
-      "sorted_eigenvalues", [](ArrayLike L) { return from_vec3(analysis::sorted_eigenvalues(to_mat3(L, "lambda_body"))); },
+      "sorted_eigenvalues",
+      [](ArrayLike L) { return from_vec3(analysis::sorted_eigenvalues(to_mat3(L, "lambda_body"))); },
       py::arg("lambda_body"), POINSOT_DOC(analysis_sorted_eigenvalues));
 
   // Stress.
@@ -203,7 +211,8 @@ void bind_analysis(py::module_& parent) {
         return from_mat3(analysis::stress_integral_space(body, s, tm.get()));
       },
       py::arg("body"), py::arg("state"), py::arg("torque") = py::none(),
-      (std::string(POINSOT_DOC(analysis_stress_integral_space_2)) + "\n\n" + POINSOT_DOC(file_analysis_stress))
+      (std::string(POINSOT_DOC(analysis_stress_integral_space_2)) + "\n\n" +
+       POINSOT_DOC(file_analysis_stress))
           .c_str());
   m.def(
       "stress_integral_from_lambda",
@@ -214,19 +223,24 @@ void bind_analysis(py::module_& parent) {
   m.def(
       "steady_spin_stress_integral_body",
       [](ArrayLike K, ArrayLike k, double rate) {
-        return from_mat3(analysis::steady_spin_stress_integral_body(to_mat3(K, "poinsot_K"), to_vec3(k, "k_body"), rate));
+        return from_mat3(
+            analysis::steady_spin_stress_integral_body(to_mat3(K, "poinsot_K"), to_vec3(k, "k_body"), rate));
       },
-      py::arg("poinsot_K"), py::arg("k_body"), py::arg("rate"), POINSOT_DOC(analysis_steady_spin_stress_integral_body));
+      py::arg("poinsot_K"), py::arg("k_body"), py::arg("rate"),
+      POINSOT_DOC(analysis_steady_spin_stress_integral_body));
   m.def(
-      "summarize_stress", [](ArrayLike T) { return stress_dict(analysis::summarize_stress(to_mat3(T, "tensor"))); },
+      "summarize_stress",
+      [](ArrayLike T) { return stress_dict(analysis::summarize_stress(to_mat3(T, "tensor"))); },
       py::arg("tensor"),
       (std::string(POINSOT_DOC(analysis_StressSummary)) +
-       "\n\nReturns a dict: tensor, principal (ascending), principal_axes (columns), tresca, von_mises, trace.")
+       "\n\nReturns a dict: tensor, principal (ascending), principal_axes (columns), tresca, von_mises, "
+       "trace.")
           .c_str());
   m.def(
       "constraint_stress",
       [](ArrayLike L, ArrayLike R, double volume) {
-        return constraint_stress_dict(analysis::constraint_stress(to_mat3(L, "lambda_body"), to_mat3(R, "R"), volume));
+        return constraint_stress_dict(
+            analysis::constraint_stress(to_mat3(L, "lambda_body"), to_mat3(R, "R"), volume));
       },
       py::arg("lambda_body"), py::arg("R"), py::arg("volume_m3") = 0.0,
       (std::string(POINSOT_DOC(analysis_constraint_stress)) +
@@ -234,7 +248,8 @@ void bind_analysis(py::module_& parent) {
           .c_str());
 
   // The axisymmetric closed form of the paper.
-  py::class_<analysis::AxisymmetricInertia>(m, "AxisymmetricInertia", POINSOT_DOC(analysis_AxisymmetricInertia))
+  py::class_<analysis::AxisymmetricInertia>(m, "AxisymmetricInertia",
+                                            POINSOT_DOC(analysis_AxisymmetricInertia))
       .def(py::init([](double A, double C, ArrayLike k) {
              analysis::AxisymmetricInertia a;
              a.A = A;
@@ -252,16 +267,16 @@ void bind_analysis(py::module_& parent) {
       .def("__repr__", [](const analysis::AxisymmetricInertia& a) {
         return "AxisymmetricInertia(A=" + std::to_string(a.A) + ", C=" + std::to_string(a.C) + ")";
       });
-  m.def("detect_axisymmetry", &analysis::detect_axisymmetry, py::arg("body"), py::arg("relative_tolerance") = 1e-12,
-        POINSOT_DOC(analysis_detect_axisymmetry));
+  m.def("detect_axisymmetry", &analysis::detect_axisymmetry, py::arg("body"),
+        py::arg("relative_tolerance") = 1e-12, POINSOT_DOC(analysis_detect_axisymmetry));
 
   using AL = analysis::AxisymmetricLambda;
   py::class_<AL>(m, "AxisymmetricLambda", POINSOT_DOC(file_analysis_axisymmetric))
       .def(py::init([](const analysis::AxisymmetricInertia& in, ArrayLike w, double t0, double tol) {
              return AL(in, to_vec3(w, "omega0_body"), t0, tol);
            }),
-           py::arg("inertia"), py::arg("omega0_body"), py::arg("t0") = 0.0, py::arg("relative_tolerance") = 1e-12,
-           POINSOT_DOC(analysis_AxisymmetricLambda_AxisymmetricLambda))
+           py::arg("inertia"), py::arg("omega0_body"), py::arg("t0") = 0.0,
+           py::arg("relative_tolerance") = 1e-12, POINSOT_DOC(analysis_AxisymmetricLambda_AxisymmetricLambda))
       .def_property_readonly("mu", &AL::mu, POINSOT_DOC(analysis_AxisymmetricLambda_mu))
       .def_property_readonly("eta0", &AL::eta0, POINSOT_DOC(analysis_AxisymmetricLambda_eta0))
       .def_property_readonly("r", &AL::r, POINSOT_DOC(analysis_AxisymmetricLambda_r))
@@ -300,8 +315,8 @@ void bind_analysis(py::module_& parent) {
   // The properties of Λ along a trajectory.
   m.def(
       "lambda_properties",
-      [](const RigidBody& body, ArrayLike t, ArrayLike R, ArrayLike w, const py::object& torque, double volume,
-         double axisymmetry_tolerance) {
+      [](const RigidBody& body, ArrayLike t, ArrayLike R, ArrayLike w, const py::object& torque,
+         double volume, double axisymmetry_tolerance) {
         const Trajectory tr(t.obj, R.obj, w.obj);
         if (tr.n == 0) throw py::value_error("t: expected at least one sample, got none");
         analysis::LambdaTrackerOptions o;
@@ -309,7 +324,8 @@ void bind_analysis(py::module_& parent) {
         o.axisymmetry_tolerance = axisymmetry_tolerance;
         std::shared_ptr<const dynamics::TorqueModel> tm = as_torque(torque);
         analysis::LambdaTracker tracker(body, tm, tr.state(0), o);
-        for (py::ssize_t i = 1; i < tr.n; ++i) tracker.observe(tr.state(i));
+        for (py::ssize_t i = 1; i < tr.n; ++i)
+          tracker.observe(tr.state(i));
         return properties_dict(tracker.properties());
       },
       py::arg("body"), py::arg("t"), py::arg("R"), py::arg("omega_body"), py::arg("torque") = py::none(),

@@ -51,9 +51,11 @@ std::shared_ptr<TorqueModel> python_torque(py::function f, bool depends_on_omega
 std::shared_ptr<TorqueModel> as_torque(const py::object& torque) {
   if (torque.is_none()) return std::const_pointer_cast<TorqueModel>(TorqueModel::none());
   if (py::isinstance<TorqueModel>(torque)) return torque.cast<std::shared_ptr<TorqueModel>>();
-  if (PyCallable_Check(torque.ptr())) return python_torque(torque.cast<py::function>(), true, "Python callable");
-  throw py::type_error("torque: expected None, a poinsot.TorqueModel or a callable tau(t, R, omega) -> (3,), got " +
-                       std::string(py::str(py::type::of(torque).attr("__name__"))));
+  if (PyCallable_Check(torque.ptr()))
+    return python_torque(torque.cast<py::function>(), true, "Python callable");
+  throw py::type_error(
+      "torque: expected None, a poinsot.TorqueModel or a callable tau(t, R, omega) -> (3,), got " +
+      std::string(py::str(py::type::of(torque).attr("__name__"))));
 }
 
 State make_state(double t, const py::object& R, const py::object& quaternion, const py::object& omega_body) {
@@ -77,8 +79,7 @@ void bind_dynamics(py::module_& m) {
           [](ArrayLike moments) { return RigidBody::from_principal_moments(to_vec3(moments, "moments")); },
           py::arg("moments"), POINSOT_DOC(dynamics_RigidBody_from_principal_moments))
       .def_static(
-          "from_inertia",
-          [](ArrayLike J) { return RigidBody::from_inertia(to_mat3(J, "inertia_com_body")); },
+          "from_inertia", [](ArrayLike J) { return RigidBody::from_inertia(to_mat3(J, "inertia_com_body")); },
           py::arg("inertia_com_body"), POINSOT_DOC(dynamics_RigidBody_from_inertia))
       .def(
           "with_pivot",
@@ -90,19 +91,22 @@ void bind_dynamics(py::module_& m) {
           "inertia_com", [](const RigidBody& b) { return from_mat3(b.inertia_com()); },
           POINSOT_DOC(dynamics_RigidBody_inertia_com))
       .def_property_readonly(
-          "inertia", [](const RigidBody& b) { return from_mat3(b.inertia()); }, POINSOT_DOC(dynamics_RigidBody_inertia))
+          "inertia", [](const RigidBody& b) { return from_mat3(b.inertia()); },
+          POINSOT_DOC(dynamics_RigidBody_inertia))
       .def_property_readonly(
           "inertia_inverse", [](const RigidBody& b) { return from_mat3(b.inertia_inverse()); },
           POINSOT_DOC(dynamics_RigidBody_inertia_inverse))
       .def_property_readonly(
-          "poinsot", [](const RigidBody& b) { return from_mat3(b.poinsot()); }, POINSOT_DOC(dynamics_RigidBody_poinsot))
+          "poinsot", [](const RigidBody& b) { return from_mat3(b.poinsot()); },
+          POINSOT_DOC(dynamics_RigidBody_poinsot))
       .def_property_readonly(
           "principal_moments", [](const RigidBody& b) { return from_vec3(b.principal_moments()); },
           POINSOT_DOC(dynamics_RigidBody_principal_moments))
       .def_property_readonly(
           "principal_axes", [](const RigidBody& b) { return from_mat3(b.principal_axes()); },
           POINSOT_DOC(dynamics_RigidBody_principal_axes))
-      .def_property_readonly("is_diagonal", &RigidBody::is_diagonal, POINSOT_DOC(dynamics_RigidBody_is_diagonal))
+      .def_property_readonly("is_diagonal", &RigidBody::is_diagonal,
+                             POINSOT_DOC(dynamics_RigidBody_is_diagonal))
       .def_property_readonly("mass", &RigidBody::mass, POINSOT_DOC(dynamics_RigidBody_mass))
       .def_property_readonly(
           "pivot_to_com", [](const RigidBody& b) { return from_vec3(b.pivot_to_com()); },
@@ -111,22 +115,25 @@ void bind_dynamics(py::module_& m) {
       .def("__repr__", [](const RigidBody& b) {
         std::string s = "RigidBody(principal_moments=" + format_vector(b.principal_moments()) + " kg·m²";
         if (b.has_pivot())
-          s += ", mass=" + format_number(b.mass()) + " kg, pivot_to_com=" + format_vector(b.pivot_to_com()) + " m";
+          s += ", mass=" + format_number(b.mass()) + " kg, pivot_to_com=" + format_vector(b.pivot_to_com()) +
+               " m";
         return s + ")";
       });
 
   py::class_<State>(m, "State", POINSOT_DOC(file_dynamics_state))
-      .def(py::init(&make_state), py::kw_only(), py::arg("t") = 0.0, py::arg("R") = py::none(),
-           py::arg("quaternion") = py::none(), py::arg("omega_body") = py::none(),
-           "A state at time t (s) with orientation R (body → space, 3×3) or quaternion (w, x, y, z), and body "
-           "angular velocity omega_body (rad/s). Defaults: t = 0, R = I, omega_body = 0.")
+      .def(
+          py::init(&make_state), py::kw_only(), py::arg("t") = 0.0, py::arg("R") = py::none(),
+          py::arg("quaternion") = py::none(), py::arg("omega_body") = py::none(),
+          "A state at time t (s) with orientation R (body → space, 3×3) or quaternion (w, x, y, z), and body "
+          "angular velocity omega_body (rad/s). Defaults: t = 0, R = I, omega_body = 0.")
       .def_readwrite("t", &State::t, POINSOT_DOC(dynamics_State_t))
       .def_property(
           "R", [](const State& s) { return from_mat3(s.R); },
           [](State& s, ArrayLike R) { s.R = to_mat3(R, "R"); }, POINSOT_DOC(dynamics_State_R))
       .def_property(
           "omega_body", [](const State& s) { return from_vec3(s.omega_body); },
-          [](State& s, ArrayLike w) { s.omega_body = to_vec3(w, "omega_body"); }, POINSOT_DOC(dynamics_State_omega_body))
+          [](State& s, ArrayLike w) { s.omega_body = to_vec3(w, "omega_body"); },
+          POINSOT_DOC(dynamics_State_omega_body))
       .def(
           "quaternion", [](const State& s) { return from_quat(s.quaternion()); },
           POINSOT_DOC(dynamics_State_quaternion))
@@ -161,7 +168,8 @@ void bind_dynamics(py::module_& m) {
       },
       py::arg("body"), py::arg("state"), py::arg("gravity_space"), POINSOT_DOC(dynamics_total_energy));
   m.def(
-      "validate_state", [](const State& s, const std::string& what) { dynamics::validate_state(s, what.c_str()); },
+      "validate_state",
+      [](const State& s, const std::string& what) { dynamics::validate_state(s, what.c_str()); },
       py::arg("state"), py::arg("what") = "state", POINSOT_DOC(dynamics_validate_state));
 
   py::class_<TorqueModel, std::shared_ptr<TorqueModel>>(m, "TorqueModel", POINSOT_DOC(file_dynamics_torque))
@@ -174,7 +182,8 @@ void bind_dynamics(py::module_& m) {
       .def_property_readonly("is_zero", &TorqueModel::is_zero, POINSOT_DOC(dynamics_TorqueModel_is_zero))
       .def_property_readonly("depends_on_omega", &TorqueModel::depends_on_omega,
                              POINSOT_DOC(dynamics_TorqueModel_depends_on_omega))
-      .def_property_readonly("is_gravity", &TorqueModel::is_gravity, POINSOT_DOC(dynamics_TorqueModel_is_gravity))
+      .def_property_readonly("is_gravity", &TorqueModel::is_gravity,
+                             POINSOT_DOC(dynamics_TorqueModel_is_gravity))
       .def_property_readonly(
           "gravity_space", [](const TorqueModel& tm) { return from_vec3(tm.gravity_space()); },
           POINSOT_DOC(dynamics_TorqueModel_gravity_space))
@@ -186,13 +195,15 @@ void bind_dynamics(py::module_& m) {
       .def_static(
           "constant_body",
           [](ArrayLike tau) {
-            return std::const_pointer_cast<TorqueModel>(TorqueModel::constant_body(to_vec3(tau, "torque_body")));
+            return std::const_pointer_cast<TorqueModel>(
+                TorqueModel::constant_body(to_vec3(tau, "torque_body")));
           },
           py::arg("torque_body"), POINSOT_DOC(dynamics_TorqueModel_constant_body))
       .def_static(
           "constant_space",
           [](ArrayLike tau) {
-            return std::const_pointer_cast<TorqueModel>(TorqueModel::constant_space(to_vec3(tau, "torque_space")));
+            return std::const_pointer_cast<TorqueModel>(
+                TorqueModel::constant_space(to_vec3(tau, "torque_space")));
           },
           py::arg("torque_space"), POINSOT_DOC(dynamics_TorqueModel_constant_space))
       .def_static(

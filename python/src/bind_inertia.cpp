@@ -47,11 +47,13 @@ TriangleMesh make_mesh(const py::handle& vertices, const py::handle& triangles) 
   py::array t_raw = py::module_::import("numpy").attr("asarray")(triangles);
   const char kind = t_raw.dtype().kind();
   if (kind != 'i' && kind != 'u')
-    throw py::type_error("triangles: expected integer vertex indices, got dtype " + std::string(py::str(t_raw.dtype())));
+    throw py::type_error("triangles: expected integer vertex indices, got dtype " +
+                         std::string(py::str(t_raw.dtype())));
   auto t = to_float_array(t_raw, "triangles", {-1, 3});  // checks the shape; indices are exact in float64
   TriangleMesh mesh;
   const double* pv = v.data();
-  for (py::ssize_t i = 0; i < v.shape(0); ++i) mesh.vertices.emplace_back(pv[3 * i], pv[3 * i + 1], pv[3 * i + 2]);
+  for (py::ssize_t i = 0; i < v.shape(0); ++i)
+    mesh.vertices.emplace_back(pv[3 * i], pv[3 * i + 1], pv[3 * i + 2]);
   const double* pt = t.data();
   for (py::ssize_t i = 0; i < t.shape(0); ++i)
     mesh.triangles.push_back({static_cast<std::int32_t>(pt[3 * i]), static_cast<std::int32_t>(pt[3 * i + 1]),
@@ -60,7 +62,7 @@ TriangleMesh make_mesh(const py::handle& vertices, const py::handle& triangles) 
 }
 
 void with_mass_or_density(const char* what, const std::optional<double>& mass,
-                                    const std::optional<double>& density) {
+                          const std::optional<double>& density) {
   if (mass.has_value() == density.has_value())
     throw py::value_error(std::string(what) + ": give exactly one of mass (kg) and density, got " +
                           (mass ? "both" : "neither"));
@@ -102,10 +104,15 @@ void bind_inertia(py::module_& parent) {
           "poinsot.inertia.principal_axes.")
       .def_property_readonly(
           "symmetry",
-          [](const MassProperties& p) { return inertia::to_string(inertia::principal_axes(p.inertia_com).symmetry); },
+          [](const MassProperties& p) {
+            return inertia::to_string(inertia::principal_axes(p.inertia_com).symmetry);
+          },
           "\"asymmetric\", \"prolate\", \"oblate\" or \"spherical\" (relative tolerance 1e-9).")
       .def(
-          "inertia_about", [](const MassProperties& p, ArrayLike point) { return from_mat3(p.inertia_about(to_vec3(point, "point"))); },
+          "inertia_about",
+          [](const MassProperties& p, ArrayLike point) {
+            return from_mat3(p.inertia_about(to_vec3(point, "point")));
+          },
           py::arg("point"), POINSOT_DOC(inertia_MassProperties_inertia_about))
       .def(
           "placed",
@@ -114,44 +121,57 @@ void bind_inertia(py::module_& parent) {
           },
           py::arg("R_P_F"), py::arg("position_P"), POINSOT_DOC(inertia_MassProperties_placed))
       .def(
-          "to_rigid_body", [](const MassProperties& p) { return dynamics::RigidBody::from_inertia(p.inertia_com); },
-          "A free poinsot.RigidBody whose body frame is this frame, with J = inertia_com (about the centre of mass).")
+          "to_rigid_body",
+          [](const MassProperties& p) { return dynamics::RigidBody::from_inertia(p.inertia_com); },
+          "A free poinsot.RigidBody whose body frame is this frame, with J = inertia_com (about the centre "
+          "of mass).")
       .def("__add__", &inertia::combine, POINSOT_DOC(inertia_combine))
       .def("__sub__", &inertia::subtract, POINSOT_DOC(inertia_subtract))
       .def("__repr__", [](const MassProperties& p) {
-        return "MassProperties(mass=" + format_number(p.mass) + " kg, center_of_mass=" + format_vector(p.com) +
+        return "MassProperties(mass=" + format_number(p.mass) +
+               " kg, center_of_mass=" + format_vector(p.com) +
                " m, inertia_com=" + format_matrix(p.inertia_com) + " kg·m²)";
       });
 
   m.def(
       "from_inertia_about",
       [](double mass, ArrayLike com, ArrayLike J, ArrayLike point) {
-        return inertia::from_inertia_about(mass, to_vec3(com, "com"), to_mat3(J, "J_point"), to_vec3(point, "point"));
+        return inertia::from_inertia_about(mass, to_vec3(com, "com"), to_mat3(J, "J_point"),
+                                           to_vec3(point, "point"));
       },
-      py::arg("mass"), py::arg("com"), py::arg("J_point"), py::arg("point"), POINSOT_DOC(inertia_from_inertia_about));
+      py::arg("mass"), py::arg("com"), py::arg("J_point"), py::arg("point"),
+      POINSOT_DOC(inertia_from_inertia_about));
   m.def("combine", &inertia::combine, py::arg("a"), py::arg("b"), POINSOT_DOC(inertia_combine));
   m.def("subtract", &inertia::subtract, py::arg("whole"), py::arg("removed"), POINSOT_DOC(inertia_subtract));
   m.def(
-      "poinsot_from_inertia", [](ArrayLike J) { return from_mat3(inertia::poinsot_from_inertia(to_mat3(J, "J"))); },
-      py::arg("J"), POINSOT_DOC(inertia_poinsot_from_inertia));
+      "poinsot_from_inertia",
+      [](ArrayLike J) { return from_mat3(inertia::poinsot_from_inertia(to_mat3(J, "J"))); }, py::arg("J"),
+      POINSOT_DOC(inertia_poinsot_from_inertia));
   m.def(
-      "inertia_from_poinsot", [](ArrayLike K) { return from_mat3(inertia::inertia_from_poinsot(to_mat3(K, "K"))); },
-      py::arg("K"), POINSOT_DOC(inertia_inertia_from_poinsot));
+      "inertia_from_poinsot",
+      [](ArrayLike K) { return from_mat3(inertia::inertia_from_poinsot(to_mat3(K, "K"))); }, py::arg("K"),
+      POINSOT_DOC(inertia_inertia_from_poinsot));
   m.def(
       "shift_from_com",
       [](ArrayLike J, double mass, ArrayLike com, ArrayLike point) {
-        return from_mat3(inertia::shift_from_com(to_mat3(J, "J_com"), mass, to_vec3(com, "com"), to_vec3(point, "point")));
+        return from_mat3(
+            inertia::shift_from_com(to_mat3(J, "J_com"), mass, to_vec3(com, "com"), to_vec3(point, "point")));
       },
-      py::arg("J_com"), py::arg("mass"), py::arg("com"), py::arg("point"), POINSOT_DOC(inertia_shift_from_com));
+      py::arg("J_com"), py::arg("mass"), py::arg("com"), py::arg("point"),
+      POINSOT_DOC(inertia_shift_from_com));
   m.def(
       "shift_to_com",
       [](ArrayLike J, double mass, ArrayLike com, ArrayLike point) {
-        return from_mat3(inertia::shift_to_com(to_mat3(J, "J_point"), mass, to_vec3(com, "com"), to_vec3(point, "point")));
+        return from_mat3(
+            inertia::shift_to_com(to_mat3(J, "J_point"), mass, to_vec3(com, "com"), to_vec3(point, "point")));
       },
-      py::arg("J_point"), py::arg("mass"), py::arg("com"), py::arg("point"), POINSOT_DOC(inertia_shift_to_com));
+      py::arg("J_point"), py::arg("mass"), py::arg("com"), py::arg("point"),
+      POINSOT_DOC(inertia_shift_to_com));
   m.def(
       "reexpress",
-      [](ArrayLike T, ArrayLike R) { return from_mat3(inertia::reexpress(to_mat3(T, "tensor_F"), to_mat3(R, "R_B_F"))); },
+      [](ArrayLike T, ArrayLike R) {
+        return from_mat3(inertia::reexpress(to_mat3(T, "tensor_F"), to_mat3(R, "R_B_F")));
+      },
       py::arg("tensor_F"), py::arg("R_B_F"), POINSOT_DOC(inertia_reexpress));
 
   // Principal axes and validity.
@@ -167,10 +187,12 @@ void bind_inertia(py::module_& parent) {
        POINSOT_DOC(file_inertia_principal_axes))
           .c_str());
   m.def(
-      "classify", [](ArrayLike moments, double rel_tol) {
+      "classify",
+      [](ArrayLike moments, double rel_tol) {
         return inertia::to_string(inertia::classify(to_vec3(moments, "moments_ascending"), rel_tol));
       },
-      py::arg("moments_ascending"), py::arg("rel_tol") = inertia::kDefaultSymmetryTolerance, POINSOT_DOC(inertia_classify));
+      py::arg("moments_ascending"), py::arg("rel_tol") = inertia::kDefaultSymmetryTolerance,
+      POINSOT_DOC(inertia_classify));
   m.def(
       "check_inertia",
       [](ArrayLike J, double rel_tol, const std::string& what) {
@@ -207,7 +229,8 @@ void bind_inertia(py::module_& parent) {
       },
       py::arg("J"),
       (std::string(POINSOT_DOC(inertia_repair_inertia)) +
-       "\n\nReturns a dict: inertia (3, 3), moments_before, moments_after (ascending, kg·m²), distance (kg·m²).\n\n" +
+       "\n\nReturns a dict: inertia (3, 3), moments_before, moments_after (ascending, kg·m²), distance "
+       "(kg·m²).\n\n" +
        POINSOT_DOC(file_inertia_validity))
           .c_str());
 
@@ -216,8 +239,8 @@ void bind_inertia(py::module_& parent) {
   m.def("rod", &inertia::rod, py::arg("mass"), py::arg("length"));
   m.def("plate", &inertia::plate, py::arg("mass"), py::arg("size_x"), py::arg("size_y"));
   m.def(
-      "box", [](double mass, ArrayLike size) { return inertia::box(mass, to_vec3(size, "size")); }, py::arg("mass"),
-      py::arg("size"));
+      "box", [](double mass, ArrayLike size) { return inertia::box(mass, to_vec3(size, "size")); },
+      py::arg("mass"), py::arg("size"));
   m.def("solid_sphere", &inertia::solid_sphere, py::arg("mass"), py::arg("radius"));
   m.def("hollow_sphere", &inertia::hollow_sphere, py::arg("mass"), py::arg("radius"), py::arg("inner_radius"),
         POINSOT_DOC(inertia_hollow_sphere));
@@ -225,8 +248,8 @@ void bind_inertia(py::module_& parent) {
         POINSOT_DOC(inertia_spherical_shell));
   m.def("cylinder", &inertia::cylinder, py::arg("mass"), py::arg("radius"), py::arg("length"),
         py::arg("inner_radius") = 0.0, POINSOT_DOC(inertia_cylinder));
-  m.def("cylindrical_shell", &inertia::cylindrical_shell, py::arg("mass"), py::arg("radius"), py::arg("length"),
-        POINSOT_DOC(inertia_cylindrical_shell));
+  m.def("cylindrical_shell", &inertia::cylindrical_shell, py::arg("mass"), py::arg("radius"),
+        py::arg("length"), POINSOT_DOC(inertia_cylindrical_shell));
   m.def("cone", &inertia::cone, py::arg("mass"), py::arg("radius"), py::arg("height"));
   m.def(
       "ellipsoid", [](double mass, ArrayLike a) { return inertia::ellipsoid(mass, to_vec3(a, "semi_axes")); },
@@ -272,14 +295,15 @@ void bind_inertia(py::module_& parent) {
   py::class_<TriangleMesh>(m, "TriangleMesh", POINSOT_DOC(inertia_TriangleMesh))
       .def(py::init([](ArrayLike v, ArrayLike t) { return make_mesh(v.obj, t.obj); }), py::arg("vertices"),
            py::arg("triangles"), "A mesh from vertices (n, 3) in m and triangles (m, 3) of vertex indices.")
-      .def_property_readonly("vertices",
-                             [](const TriangleMesh& mesh) {
-                               std::vector<double> buf;
-                               buf.reserve(3 * mesh.vertices.size());
-                               for (const auto& v : mesh.vertices) buf.insert(buf.end(), {v[0], v[1], v[2]});
-                               return array_from_buffer(std::move(buf),
-                                                        {static_cast<py::ssize_t>(mesh.vertices.size()), 3});
-                             })
+      .def_property_readonly(
+          "vertices",
+          [](const TriangleMesh& mesh) {
+            std::vector<double> buf;
+            buf.reserve(3 * mesh.vertices.size());
+            for (const auto& v : mesh.vertices)
+              buf.insert(buf.end(), {v[0], v[1], v[2]});
+            return array_from_buffer(std::move(buf), {static_cast<py::ssize_t>(mesh.vertices.size()), 3});
+          })
       .def_property_readonly("triangles",
                              [](const TriangleMesh& mesh) {
                                py::array_t<std::int32_t> a({static_cast<py::ssize_t>(mesh.triangles.size()),
@@ -307,8 +331,8 @@ void bind_inertia(py::module_& parent) {
       "mesh",
       [](const py::object& source, std::optional<double> mass, std::optional<double> density,
          std::optional<double> areal_density, bool shell, bool flip_inward) {
-        TriangleMesh mesh =
-            py::isinstance<TriangleMesh>(source) ? source.cast<TriangleMesh>() : inertia::load_mesh(py::str(source));
+        TriangleMesh mesh = py::isinstance<TriangleMesh>(source) ? source.cast<TriangleMesh>()
+                                                                 : inertia::load_mesh(py::str(source));
         inertia::MeshOptions options;
         options.flip_inward = flip_inward;
         if (shell) {
@@ -323,9 +347,10 @@ void bind_inertia(py::module_& parent) {
       },
       py::arg("source"), py::kw_only(), py::arg("mass") = py::none(), py::arg("density") = py::none(),
       py::arg("areal_density") = py::none(), py::arg("shell") = false, py::arg("flip_inward") = false,
-      (std::string("Mass properties of a mesh (a file path or a TriangleMesh): the enclosed solid with a mass "
-                   "(kg) or a density (kg/m³), or with shell=True the surface with a mass or an areal_density "
-                   "(kg/m²).\n\n") +
+      (std::string(
+           "Mass properties of a mesh (a file path or a TriangleMesh): the enclosed solid with a mass "
+           "(kg) or a density (kg/m³), or with shell=True the surface with a mass or an areal_density "
+           "(kg/m²).\n\n") +
        POINSOT_DOC(inertia_mesh_mass_properties) + "\n\n" + POINSOT_DOC(file_inertia_mesh))
           .c_str());
 }

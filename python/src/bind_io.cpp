@@ -22,37 +22,45 @@ void bind_io(py::module_& m) {
       .def_readonly("source", &Scenario::source, POINSOT_DOC(io_Scenario_source))
       .def_readonly("title", &Scenario::title, POINSOT_DOC(io_Scenario_title))
       .def_readonly("body", &Scenario::body, POINSOT_DOC(io_Scenario_body))
-      .def_readonly("body_description", &Scenario::body_description, POINSOT_DOC(io_Scenario_body_description))
+      .def_readonly("body_description", &Scenario::body_description,
+                    POINSOT_DOC(io_Scenario_body_description))
       .def_readonly("initial", &Scenario::initial, POINSOT_DOC(io_Scenario_initial))
       .def_readonly("torque_type", &Scenario::torque_type, POINSOT_DOC(io_Scenario_torque_type))
       .def_property_readonly(
-          "torque", [](const Scenario& s) { return std::const_pointer_cast<dynamics::TorqueModel>(s.torque); },
+          "torque",
+          [](const Scenario& s) { return std::const_pointer_cast<dynamics::TorqueModel>(s.torque); },
           POINSOT_DOC(io_Scenario_torque))
       .def_property_readonly(
           "gravity_space", [](const Scenario& s) { return from_vec3(s.gravity_space); },
           POINSOT_DOC(io_Scenario_gravity_space))
       .def_readonly("method", &Scenario::method, POINSOT_DOC(io_Scenario_method))
-      .def_property_readonly("dt", [](const Scenario& s) { return s.integrator.dt; },
-                             POINSOT_DOC(dynamics_IntegratorOptions_dt))
-      .def_property_readonly("rtol", [](const Scenario& s) { return s.integrator.rtol; },
-                             POINSOT_DOC(dynamics_IntegratorOptions_rtol))
-      .def_property_readonly("atol", [](const Scenario& s) { return s.integrator.atol; },
-                             POINSOT_DOC(dynamics_IntegratorOptions_atol))
-      .def_property_readonly("newton_tolerance", [](const Scenario& s) { return s.integrator.newton_tolerance; },
-                             POINSOT_DOC(dynamics_IntegratorOptions_newton_tolerance))
+      .def_property_readonly(
+          "dt", [](const Scenario& s) { return s.integrator.dt; }, POINSOT_DOC(dynamics_IntegratorOptions_dt))
+      .def_property_readonly(
+          "rtol", [](const Scenario& s) { return s.integrator.rtol; },
+          POINSOT_DOC(dynamics_IntegratorOptions_rtol))
+      .def_property_readonly(
+          "atol", [](const Scenario& s) { return s.integrator.atol; },
+          POINSOT_DOC(dynamics_IntegratorOptions_atol))
+      .def_property_readonly(
+          "newton_tolerance", [](const Scenario& s) { return s.integrator.newton_tolerance; },
+          POINSOT_DOC(dynamics_IntegratorOptions_newton_tolerance))
       .def_property_readonly("newton_max_iterations",
                              [](const Scenario& s) { return s.integrator.newton_max_iterations; })
-      .def_property_readonly("t_end", [](const Scenario& s) { return s.simulation.t_end; },
-                             POINSOT_DOC(dynamics_SimulationOptions_t_end))
-      .def_property_readonly("sample_dt", [](const Scenario& s) { return s.simulation.sample_dt; },
-                             POINSOT_DOC(dynamics_SimulationOptions_sample_dt))
-      .def_property_readonly("locate_flips", [](const Scenario& s) { return s.simulation.locate_flips; },
-                             POINSOT_DOC(dynamics_SimulationOptions_locate_flips))
+      .def_property_readonly(
+          "t_end", [](const Scenario& s) { return s.simulation.t_end; },
+          POINSOT_DOC(dynamics_SimulationOptions_t_end))
+      .def_property_readonly(
+          "sample_dt", [](const Scenario& s) { return s.simulation.sample_dt; },
+          POINSOT_DOC(dynamics_SimulationOptions_sample_dt))
+      .def_property_readonly(
+          "locate_flips", [](const Scenario& s) { return s.simulation.locate_flips; },
+          POINSOT_DOC(dynamics_SimulationOptions_locate_flips))
       .def_readonly("out_dir", &Scenario::out_dir, POINSOT_DOC(io_Scenario_out_dir))
       .def(
           "with_overrides",
-          [](const Scenario& s, const std::string& method, py::object dt, py::object t_end, py::object sample_dt,
-             const std::string& out_dir) {
+          [](const Scenario& s, const std::string& method, py::object dt, py::object t_end,
+             py::object sample_dt, const std::string& out_dir) {
             Scenario copy = s;
             io::ScenarioOverrides o;
             o.method = method;
@@ -65,7 +73,8 @@ void bind_io(py::module_& m) {
           },
           py::kw_only(), py::arg("method") = "", py::arg("dt") = py::none(), py::arg("t_end") = py::none(),
           py::arg("sample_dt") = py::none(), py::arg("out_dir") = "",
-          (std::string("A copy with the command line's overrides applied (validated as `poinsot run` does).\n\n") +
+          (std::string(
+               "A copy with the command line's overrides applied (validated as `poinsot run` does).\n\n") +
            POINSOT_DOC(io_apply_overrides))
               .c_str())
       .def("__repr__", [](const Scenario& s) {
@@ -78,7 +87,8 @@ void bind_io(py::module_& m) {
       [](const std::string& text, const std::string& source, const std::string& base_dir) {
         return io::parse_scenario(text, source, base_dir);
       },
-      py::arg("text"), py::arg("source") = "<string>", py::arg("base_dir") = "", POINSOT_DOC(io_parse_scenario));
+      py::arg("text"), py::arg("source") = "<string>", py::arg("base_dir") = "",
+      POINSOT_DOC(io_parse_scenario));
 
   m.def(
       "_run_scenario",

@@ -17,6 +17,7 @@
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/dynamics/state.hpp"
+#include "poinsot/dynamics/top_theory.hpp"
 
 namespace poinsot::python {
 
@@ -40,7 +41,8 @@ struct Samples {
   void add(const RigidBody& body, const Vec3& g, const State& s) {
     t.push_back(s.t);
     for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) R.push_back(s.R(i, j));
+      for (int j = 0; j < 3; ++j)
+        R.push_back(s.R(i, j));
     const Quat q = s.quaternion();
     quaternion.insert(quaternion.end(), {q.w(), q.x(), q.y(), q.z()});
     omega_body.insert(omega_body.end(), {s.omega_body[0], s.omega_body[1], s.omega_body[2]});
@@ -59,8 +61,7 @@ py::dict run_simulation(const RigidBody& body, const State& initial, const py::o
   auto integrator = dynamics::make_integrator(method, body, torque, integrator_options);
   const Vec3 g = torque->gravity_space();
   Samples samples;
-  if (keep_samples && simulation_options.sample_dt > 0.0 &&
-      simulation_options.t_end > initial.t) {
+  if (keep_samples && simulation_options.sample_dt > 0.0 && simulation_options.t_end > initial.t) {
     const double n = std::ceil((simulation_options.t_end - initial.t) / simulation_options.sample_dt) + 2.0;
     if (n < 1e8) samples.reserve(static_cast<std::size_t>(n));
   }
@@ -95,8 +96,8 @@ py::dict run_simulation(const RigidBody& body, const State& initial, const py::o
   errors["L_norm_rel_max"] = result.errors.L_norm_rel_max;
   errors["orthogonality_max"] = result.errors.orthogonality_max;
   out["errors"] = errors;
-  out["flip_times"] = py::array_t<double>(static_cast<py::ssize_t>(result.flip_times.size()),
-                                          result.flip_times.data());
+  out["flip_times"] =
+      py::array_t<double>(static_cast<py::ssize_t>(result.flip_times.size()), result.flip_times.data());
   out["wall_time_s"] = result.wall_time_s;
   out["interrupted"] = result.interrupted;
   out["method"] = std::string(integrator->name());
@@ -115,7 +116,8 @@ void bind_exact(py::module_& m) {
           "moments", [](const FreeBodyTheory& t) { return from_vec3(t.moments); },
           POINSOT_DOC(dynamics_FreeBodyTheory_moments))
       .def_property_readonly(
-          "omega", [](const FreeBodyTheory& t) { return from_vec3(t.omega); }, POINSOT_DOC(dynamics_FreeBodyTheory_omega))
+          "omega", [](const FreeBodyTheory& t) { return from_vec3(t.omega); },
+          POINSOT_DOC(dynamics_FreeBodyTheory_omega))
       .def_readonly("energy", &FreeBodyTheory::energy, POINSOT_DOC(dynamics_FreeBodyTheory_energy))
       .def_readonly("momentum", &FreeBodyTheory::momentum, POINSOT_DOC(dynamics_FreeBodyTheory_momentum))
       .def_readonly("separatrix_gap", &FreeBodyTheory::separatrix_gap,
@@ -142,26 +144,29 @@ void bind_exact(py::module_& m) {
       "free_body_theory",
       [](const py::object& body_or_moments, ArrayLike omega) {
         if (py::isinstance<RigidBody>(body_or_moments))
-          return dynamics::free_body_theory(body_or_moments.cast<const RigidBody&>(), to_vec3(omega, "omega_body"));
+          return dynamics::free_body_theory(body_or_moments.cast<const RigidBody&>(),
+                                            to_vec3(omega, "omega_body"));
         return dynamics::free_body_theory(to_vec3(body_or_moments, "principal_moments"),
                                           to_vec3(omega, "omega_principal"));
       },
       py::arg("body"), py::arg("omega_body"),
-      (std::string("The closed-form theory of the torque-free motion for a poinsot.RigidBody and ω in its body "
-                   "frame (rad/s), or for principal moments (ascending, kg·m²) and ω in the principal frame.\n\n") +
+      (std::string(
+           "The closed-form theory of the torque-free motion for a poinsot.RigidBody and ω in its body "
+           "frame (rad/s), or for principal moments (ascending, kg·m²) and ω in the principal frame.\n\n") +
        POINSOT_DOC(dynamics_free_body_theory_2) + "\n\n" + POINSOT_DOC(file_dynamics_free_body_theory))
           .c_str());
 
   py::class_<ExactFreeBody>(m, "ExactFreeBody", POINSOT_DOC(file_dynamics_exact_free_body))
-      .def(py::init([](const RigidBody& body, const State& initial, const std::string& method) {
-             if (method != "automatic" && method != "elliptic")
-               throw py::value_error("method: got \"" + method + "\", expected \"automatic\" or \"elliptic\"");
-             return ExactFreeBody(body, initial,
-                                  method == "elliptic" ? dynamics::ExactMethod::elliptic
-                                                       : dynamics::ExactMethod::automatic);
-           }),
-           py::arg("body"), py::arg("initial"), py::arg("method") = "automatic",
-           POINSOT_DOC(dynamics_ExactFreeBody_ExactFreeBody))
+      .def(
+          py::init([](const RigidBody& body, const State& initial, const std::string& method) {
+            if (method != "automatic" && method != "elliptic")
+              throw py::value_error("method: got \"" + method + "\", expected \"automatic\" or \"elliptic\"");
+            return ExactFreeBody(
+                body, initial,
+                method == "elliptic" ? dynamics::ExactMethod::elliptic : dynamics::ExactMethod::automatic);
+          }),
+          py::arg("body"), py::arg("initial"), py::arg("method") = "automatic",
+          POINSOT_DOC(dynamics_ExactFreeBody_ExactFreeBody))
       .def("state_at", &ExactFreeBody::state_at, py::arg("t"), POINSOT_DOC(dynamics_ExactFreeBody_state_at))
       .def(
           "states_at",
@@ -174,12 +179,14 @@ void bind_exact(py::module_& m) {
               for (py::ssize_t i = 0; i < n; ++i) {
                 const State s = e.state_at(t.data()[i]);
                 for (int a = 0; a < 3; ++a) {
-                  for (int b = 0; b < 3; ++b) R[static_cast<std::size_t>(9 * i + 3 * a + b)] = s.R(a, b);
+                  for (int b = 0; b < 3; ++b)
+                    R[static_cast<std::size_t>(9 * i + 3 * a + b)] = s.R(a, b);
                   w[static_cast<std::size_t>(3 * i + a)] = s.omega_body[a];
                 }
               }
             }
-            return py::make_tuple(array_from_buffer(std::move(R), {n, 3, 3}), array_from_buffer(std::move(w), {n, 3}));
+            return py::make_tuple(array_from_buffer(std::move(R), {n, 3, 3}),
+                                  array_from_buffer(std::move(w), {n, 3}));
           },
           py::arg("t"), "The closed-form (R (n, 3, 3), omega_body (n, 3)) at the times t (n,) (s).")
       .def_property_readonly("theory", &ExactFreeBody::theory, POINSOT_DOC(dynamics_ExactFreeBody_theory))
@@ -195,10 +202,98 @@ void bind_exact(py::module_& m) {
       py::arg("A"), py::arg("C"), py::arg("axis_body"), py::arg("initial"), py::arg("t"),
       POINSOT_DOC(dynamics_axisymmetric_free_motion));
 
+  // The heavy symmetric top (top_theory.hpp).
+  using dynamics::HeavyTop;
+  py::class_<HeavyTop>(m, "HeavyTop", POINSOT_DOC(dynamics_HeavyTop))
+      .def(py::init([](double I1, double I3, double mass, double length, double gravity) {
+             HeavyTop t{I1, I3, mass, length, gravity};
+             dynamics::validate(t);
+             return t;
+           }),
+           py::arg("I1"), py::arg("I3"), py::arg("mass"), py::arg("length"), py::arg("gravity") = 9.81,
+           POINSOT_DOC(dynamics_validate))
+      .def_readonly("I1", &HeavyTop::I1, POINSOT_DOC(dynamics_HeavyTop_I1))
+      .def_readonly("I3", &HeavyTop::I3, POINSOT_DOC(dynamics_HeavyTop_I3))
+      .def_readonly("mass", &HeavyTop::mass, POINSOT_DOC(dynamics_HeavyTop_mass))
+      .def_readonly("length", &HeavyTop::length, POINSOT_DOC(dynamics_HeavyTop_length))
+      .def_readonly("gravity", &HeavyTop::gravity, POINSOT_DOC(dynamics_HeavyTop_gravity))
+      .def_property_readonly("mgl", &HeavyTop::mgl, POINSOT_DOC(dynamics_HeavyTop_mgl))
+      .def("__repr__", [](const HeavyTop& t) {
+        return "HeavyTop(I1=" + std::to_string(t.I1) + " kg·m², I3=" + std::to_string(t.I3) +
+               " kg·m², mass=" + std::to_string(t.mass) + " kg, length=" + std::to_string(t.length) +
+               " m, gravity=" + std::to_string(t.gravity) + " m/s²)";
+      });
+  m.attr("_doc_top_theory") = POINSOT_DOC(file_dynamics_top_theory);
+  m.def("fast_top_precession_rate", &dynamics::fast_top_precession_rate, py::arg("top"), py::arg("omega3"),
+        POINSOT_DOC(dynamics_fast_top_precession_rate));
+  m.def(
+      "steady_precession_rates",
+      [](const HeavyTop& top, double theta, double omega3) {
+        const auto r = dynamics::steady_precession_rates(top, theta, omega3);
+        py::dict d;
+        d["count"] = r.count;
+        d["slow"] = r.slow;
+        d["fast"] = r.fast;
+        return d;
+      },
+      py::arg("top"), py::arg("theta"), py::arg("omega3"),
+      (std::string(POINSOT_DOC(dynamics_SteadyPrecession)) +
+       "\n\nReturns a dict: count, slow, fast (rad/s).")
+          .c_str());
+  m.def("sleeping_top_threshold", &dynamics::sleeping_top_threshold, py::arg("top"),
+        POINSOT_DOC(dynamics_sleeping_top_threshold));
+  m.def("is_sleeping_top_stable", &dynamics::is_sleeping_top_stable, py::arg("top"), py::arg("omega3"),
+        POINSOT_DOC(dynamics_sleeping_top_threshold));
+  m.def(
+      "top_motion",
+      [](const HeavyTop& top, double theta0, double theta_dot0, double phi_dot0, double omega3) {
+        const auto t = dynamics::top_motion(top, theta0, theta_dot0, phi_dot0, omega3);
+        py::dict d;
+        d["u1"] = t.u1;
+        d["u2"] = t.u2;
+        d["u3"] = t.u3;
+        d["theta_min"] = t.theta_min;
+        d["theta_max"] = t.theta_max;
+        d["nutation_period"] = t.nutation_period;
+        d["nutation_frequency"] = t.nutation_frequency;
+        d["precession_per_nutation"] = t.precession_per_nutation;
+        d["mean_precession_rate"] = t.mean_precession_rate;
+        return d;
+      },
+      py::arg("top"), py::arg("theta0"), py::arg("theta_dot0"), py::arg("phi_dot0"), py::arg("omega3"),
+      (std::string(POINSOT_DOC(dynamics_top_motion)) +
+       "\n\nReturns a dict with the fields of TopMotion: u1, u2, u3, theta_min, theta_max (rad), "
+       "nutation_period "
+       "(s), nutation_frequency (rad/s), precession_per_nutation (rad), mean_precession_rate (rad/s).\n\n" +
+       POINSOT_DOC(file_dynamics_top_theory))
+          .c_str());
+  m.def(
+      "heavy_top_from",
+      [](const RigidBody& body, ArrayLike g) {
+        return dynamics::heavy_top_from(body, to_vec3(g, "gravity_space"));
+      },
+      py::arg("body"), py::arg("gravity_space"), POINSOT_DOC(dynamics_heavy_top_from));
+  m.def(
+      "top_initial_conditions",
+      [](const RigidBody& body, const State& s, ArrayLike g) {
+        const auto c = dynamics::top_initial_conditions(body, s, to_vec3(g, "gravity_space"));
+        py::dict d;
+        d["theta"] = c.theta;
+        d["theta_dot"] = c.theta_dot;
+        d["phi_dot"] = c.phi_dot;
+        d["omega3"] = c.omega3;
+        return d;
+      },
+      py::arg("body"), py::arg("state"), py::arg("gravity_space"),
+      (std::string(POINSOT_DOC(dynamics_TopInitialConditions)) +
+       "\n\nReturns a dict: theta (rad), theta_dot, phi_dot, omega3 (rad/s).")
+          .c_str());
+
   using dynamics::Integrator;
   py::class_<Integrator>(m, "Integrator", POINSOT_DOC(file_dynamics_integrator))
-      .def_property_readonly("name", [](const Integrator& i) { return std::string(i.name()); },
-                             POINSOT_DOC(dynamics_Integrator_name))
+      .def_property_readonly(
+          "name", [](const Integrator& i) { return std::string(i.name()); },
+          POINSOT_DOC(dynamics_Integrator_name))
       .def_property_readonly("order", &Integrator::order, POINSOT_DOC(dynamics_Integrator_order))
       .def_property_readonly("is_adaptive", &Integrator::is_adaptive)
       .def_property_readonly("has_dense_output", &Integrator::has_dense_output)
@@ -216,7 +311,8 @@ void bind_exact(py::module_& m) {
           (std::string(POINSOT_DOC(dynamics_Integrator_step)) +
            "\n\nAdvances `state` in place; returns a dict: dt_taken (s), dt_next (s), rejected.")
               .c_str())
-      .def("dense_output", &Integrator::dense_output, py::arg("t"), POINSOT_DOC(dynamics_Integrator_dense_output))
+      .def("dense_output", &Integrator::dense_output, py::arg("t"),
+           POINSOT_DOC(dynamics_Integrator_dense_output))
       .def(
           "last_multiplier",
           [](const Integrator& i) -> py::object {
@@ -224,7 +320,8 @@ void bind_exact(py::module_& m) {
             if (!i.last_multiplier(L)) return py::none();
             return from_mat3(L);
           },
-          (std::string(POINSOT_DOC(dynamics_Integrator_last_multiplier)) + "\n\nReturns None when there is none.")
+          (std::string(POINSOT_DOC(dynamics_Integrator_last_multiplier)) +
+           "\n\nReturns None when there is none.")
               .c_str());
   m.def(
       "make_integrator",
@@ -253,8 +350,8 @@ void bind_simulate(py::module_& m) {
   m.def(
       "_simulate",
       [](const RigidBody& body, const State& initial, const py::object& torque, const std::string& method,
-         double dt, double rtol, double atol, double newton_tolerance, int newton_max_iterations, double t_end,
-         double sample_dt, bool locate_flips, bool keep_samples) {
+         double dt, double rtol, double atol, double newton_tolerance, int newton_max_iterations,
+         double t_end, double sample_dt, bool locate_flips, bool keep_samples) {
         dynamics::IntegratorOptions io;
         io.dt = dt;
         io.rtol = rtol;
@@ -267,10 +364,11 @@ void bind_simulate(py::module_& m) {
         so.locate_flips = locate_flips;
         return run_simulation(body, initial, torque, method, io, so, keep_samples);
       },
-      py::arg("body"), py::arg("initial"), py::arg("torque"), py::arg("method"), py::arg("dt"), py::arg("rtol"),
-      py::arg("atol"), py::arg("newton_tolerance"), py::arg("newton_max_iterations"), py::arg("t_end"),
-      py::arg("sample_dt"), py::arg("locate_flips"), py::arg("keep_samples") = true,
-      "Low-level driver of poinsot.simulate (use that): returns a dict of NumPy arrays and the run's summary.");
+      py::arg("body"), py::arg("initial"), py::arg("torque"), py::arg("method"), py::arg("dt"),
+      py::arg("rtol"), py::arg("atol"), py::arg("newton_tolerance"), py::arg("newton_max_iterations"),
+      py::arg("t_end"), py::arg("sample_dt"), py::arg("locate_flips"), py::arg("keep_samples") = true,
+      "Low-level driver of poinsot.simulate (use that): returns a dict of NumPy arrays and the run's "
+      "summary.");
 
   const dynamics::IntegratorOptions io;
   const dynamics::SimulationOptions so;

@@ -27,9 +27,8 @@ std::string expected_shape_text(const std::vector<py::ssize_t>& shape) {
 }
 }  // namespace
 
-py::array_t<double, py::array::c_style | py::array::forcecast> to_float_array(const py::handle& obj,
-                                                                              const char* what,
-                                                                              std::vector<py::ssize_t> shape) {
+py::array_t<double, py::array::c_style | py::array::forcecast> to_float_array(
+    const py::handle& obj, const char* what, std::vector<py::ssize_t> shape) {
   py::module_ np = py::module_::import("numpy");
   py::array a;
   try {
@@ -72,7 +71,8 @@ Mat3 to_mat3(const py::handle& obj, const char* what) {
   const double* p = a.data();
   Mat3 m;
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) m(i, j) = p[3 * i + j];
+    for (int j = 0; j < 3; ++j)
+      m(i, j) = p[3 * i + j];
   return m;
 }
 
@@ -92,7 +92,8 @@ py::array_t<double> from_mat3(const Mat3& m) {
   py::array_t<double> a({3, 3});
   double* p = a.mutable_data();
   for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) p[3 * i + j] = m(i, j);
+    for (int j = 0; j < 3; ++j)
+      p[3 * i + j] = m(i, j);
   return a;
 }
 

@@ -6,7 +6,8 @@
 //   TypeError  "omega_body: expected real numbers (float64), got dtype complex128"
 //   ValueError "omega_body: expected an array of shape (3,), got shape (4,)"
 // naming the argument, so a wrong array never produces pybind11's generic "incompatible function arguments".
-// Results go back as fresh float64 arrays (row-major, C order), or as views of a C++ buffer owned by a capsule.
+// Results go back as fresh float64 arrays (row-major, C order), or as views of a C++ buffer owned by a
+// capsule.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
