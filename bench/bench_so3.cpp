@@ -42,6 +42,27 @@ void BM_Exp(benchmark::State& state) {
 }
 BENCHMARK(BM_Exp);
 
+// Baseline in the same process: Eigen's AngleAxis → matrix (the same rotation as exp, by another route).
+void BM_Baseline_EigenAngleAxisToMatrix(benchmark::State& state) {
+  const auto vs = random_vectors(1.8);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Vec3& v = vs[i++ % kN];
+    const double n = v.norm();
+    benchmark::DoNotOptimize(Eigen::AngleAxisd(n, v / n).toRotationMatrix());
+  }
+}
+BENCHMARK(BM_Baseline_EigenAngleAxisToMatrix);
+
+// Baseline in the same process: Eigen's matrix → AngleAxis (acos-free, via its quaternion), as log's peer.
+void BM_Baseline_EigenMatrixToAngleAxis(benchmark::State& state) {
+  const auto rs = random_rotations();
+  std::size_t i = 0;
+  for (auto _ : state)
+    benchmark::DoNotOptimize(Eigen::AngleAxisd(rs[i++ % kN]));
+}
+BENCHMARK(BM_Baseline_EigenMatrixToAngleAxis);
+
 void BM_Log(benchmark::State& state) {
   const auto rs = random_rotations();
   std::size_t i = 0;

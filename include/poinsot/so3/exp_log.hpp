@@ -32,9 +32,11 @@ inline Mat3 exp(const Vec3& v) {
     a = 1.0 - theta2 / 6.0 * (1.0 - theta2 / 20.0);
     b = 0.5 - theta2 / 24.0 * (1.0 - theta2 / 30.0);
   } else {
+    // One sincos of the half angle: sin θ = 2 s c and 1 − cos θ = 2 s², both free of cancellation.
     const double theta = std::sqrt(theta2);
     const double s = std::sin(0.5 * theta);
-    a = std::sin(theta) / theta;
+    const double c = std::cos(0.5 * theta);
+    a = 2.0 * s * c / theta;
     b = 2.0 * s * s / theta2;
   }
   const Mat3 k = hat(v);
