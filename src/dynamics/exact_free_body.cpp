@@ -120,10 +120,8 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
   const bool largest = shape != FreeBodyRegime::smallest_axis;  // the separatrix is followed from axis 3
   double sn0 = 0.0;
   double cn0 = 1.0;
-  int other = 0;
   double k2 = 0.0;
   if (largest) {
-    a_ = 0, b_ = 1, c_ = 2, other = 0;
     cn_axis_ = 0, dn_axis_ = 2;
     omega_p_ = std::sqrt((I[2] - I[1]) * d1 / I123);
     k2 = std::min(1.0, (I[1] - I[0]) * d3 / ((I[2] - I[1]) * d1));
@@ -145,7 +143,6 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
       cn0 = w[0] / amplitude_[0];
     }
   } else {
-    a_ = 1, b_ = 2, c_ = 0, other = 2;
     cn_axis_ = 2, dn_axis_ = 0;
     omega_p_ = std::sqrt((I[1] - I[0]) * d3 / I123);
     k2 = std::min(1.0, (I[2] - I[1]) * d1 / ((I[1] - I[0]) * d3));
@@ -159,12 +156,29 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
     sn0 = w[1] / amplitude_[1];
     cn0 = w[2] / amplitude_[2];
   }
-  const double Ic = I[c_];
-  const double Io = I[other];
-  n_ = -Ic * (I[1] - Io) / (Io * (Ic - I[1]));
+  // The polar axis c of the attitude frame B(n): 3 or 1, both valid in both regimes (n never reaches ±e_c:
+  // the component that follows dn never vanishes). With L_c² = P − Q sn² (Q = P k² when L_c follows dn, Q = P
+  // when it follows cn), φ̇ = G/I_c + C1/(1 − N sn²), C1 = G(2T − G²/I_c)/(G² − P), N = −Q/(G² − P):
+  //   c = 3: C1 = G(1/I1 − 1/I3), N = −I3 d1 q/(I1 d3);   c = 1: C1 = G(1/I3 − 1/I1), N = −I1 d3 q/(I3 d1),
+  // q = k² or 1. The two N multiply to k²; the one of smaller magnitude keeps Π well conditioned (|N| → ∞
+  // for a nearly symmetric body otherwise).
+  const double q3 = largest ? k2 : 1.0;  // L3 follows dn (axis-3 regime and separatrix) or cn
+  const double q1 = largest ? 1.0 : k2;
+  const double n3 = -I[2] * d1 * q3 / (I[0] * d3);
+  const double n1 = -I[0] * d3 * q1 / (I[2] * d1);
   const double G = theory_.momentum;
-  rate1_ = G * (1.0 / Io - 1.0 / Ic) / omega_p_;
-  rate_lin_ = G / Io;  // = G/I_c + rate1 ω_p: the linear part of Π(u) moved out of the bracket
+  double c1 = 0.0;
+  if (std::abs(n3) <= std::abs(n1)) {
+    a_ = 0, b_ = 1, c_ = 2;
+    n_ = n3;
+    c1 = G * (1.0 / I[0] - 1.0 / I[2]);
+  } else {
+    a_ = 1, b_ = 2, c_ = 0;
+    n_ = n1;
+    c1 = G * (1.0 / I[2] - 1.0 / I[0]);
+  }
+  rate1_ = c1 / omega_p_;
+  rate_lin_ = G / I[c_] + c1;  // the linear part of Π(u), moved out of the bracket
   if (kind_ == Kind::separatrix) {
     u0_ = std::asinh(sn0 / cn0);
   } else {

@@ -8,14 +8,19 @@
 ///
 /// Method (docs/exact.md has the derivation). In the principal frame (moments I1 ≤ I2 ≤ I3, axes the columns
 /// P of RigidBody::principal_axes(), a proper rotation), ω(t) is Landau's Jacobi-elliptic solution
-/// (free_body_theory.hpp) with phase u = ω_p (t − t0) + u0. Let c be the axis that ω circles (3 when
-/// |L|² ≥ 2T I2, 1 otherwise), o the other extreme axis, and (a, b, c) the cyclic order ending in c. With
-/// n = L_body/|L| and B(n) the rotation with rows ((n_b, −n_a, 0)/s, (n_c n_a, n_c n_b, −s²)/s, n), s =
-/// √(n_a² + n_b²) (the Euler angles θ, ψ of L in the body), the attitude is
+/// (free_body_theory.hpp) with phase u = ω_p (t − t0) + u0. Let c be a polar axis, 3 or 1 (both are valid in
+/// both regimes, since the component of ω that follows dn never vanishes), o the other extreme axis, and
+/// (a, b, c) the cyclic order ending in c. With n = L_body/|L| and B(n) the rotation with rows
+/// ((n_b, −n_a, 0)/s, (n_c n_a, n_c n_b, −s²)/s, n), s = √(n_a² + n_b²) (the Euler angles θ, ψ of L in the
+/// body, Landau & Lifshitz §37), the attitude is
 ///
 ///     R_principal(t) = R_principal(t0) B(t0)ᵀ Rz(φ(t)) B(t),
 ///     φ̇ = |L| (2T − L_c²/I_c)/(|L|² − L_c²) = |L|/I_c + |L| (1/I_o − 1/I_c) / (1 − N sn²u),
-///     N = −I_c (I2 − I_o)/(I_o (I_c − I2))  (independent of the initial state),
+///     N = −I3 d1 q/(I1 d3) for c = 3,  N = −I1 d3 q/(I3 d1) for c = 1,
+///
+/// with d1 = |L|² − 2T I1, d3 = 2T I3 − |L|², q = k² when L_c follows dn and 1 when it follows cn. The two
+/// N multiply to k²; the polar axis with the smaller |N| is taken (|N| → ∞ for a nearly symmetric body
+/// with the other one). In the regime around axis 3 with c = 3, N = −I3(I2 − I1)/(I1(I3 − I2)).
 ///
 /// so φ(t) = |L| t/I_c + |L| (1/I_o − 1/I_c)/ω_p · [Π(N; am u | k) − Π(N; am u0 | k)], with Π the incomplete
 /// elliptic integral of the third kind, continued beyond am u = ±π/2 by Π(N; φ + mπ) = Π(N; φ) + 2m Π(N).
