@@ -111,22 +111,31 @@ std::string format_report(const RunSummary& s) {
     fmt::format_to(
         o, "  {}: figure axis {} (body frame), spin omega3 = {} rad/s, I3 = {} kg·m², I1 = {} kg·m²\n",
         t.kind, vec(t.axis_body, 4), g(t.spin), g(t.moment_axial), g(t.moment_transverse));
-    fmt::format_to(o, "    precession about {}: mean {} rad/s", about,
+    fmt::format_to(o, "    precession about {}: measured mean {} rad/s\n", about,
                    t.precession_rate_mean ? g(*t.precession_rate_mean) : "n/a");
-    if (t.precession_rate_theory) {
-      fmt::format_to(o, ", theory {} {} rad/s",
-                     t.kind == "heavy top" ? "M g l/(I3 omega3) (fast top)" : "|L|/I1",
-                     g(*t.precession_rate_theory));
-      if (t.precession_rate_mean)
-        fmt::format_to(o, ", {}", rel_diff(*t.precession_rate_mean, *t.precession_rate_theory));
+    const auto beside = [&](const char* name, const std::optional<double>& theory,
+                            const std::optional<double>& measured) {
+      if (!theory) return;
+      fmt::format_to(o, "      {} {} rad/s", name, g(*theory));
+      if (measured) fmt::format_to(o, " ({})", rel_diff(*measured, *theory));
+      fmt::format_to(o, "\n");
+    };
+    if (t.kind == "heavy top") {
+      beside("exact heavy top (Goldstein §5.7) Δφ/T_nut =", t.precession_rate_exact, t.precession_rate_mean);
+      beside("fast top (the notes) M g l/(I3 omega3) =", t.precession_rate_theory, t.precession_rate_mean);
+    } else {
+      beside("theory |L|/I1 =", t.precession_rate_theory, t.precession_rate_mean);
     }
-    fmt::format_to(o, "\n    nutation: axis tilt from {} between {} and {} rad", about, g(t.theta_min),
+    fmt::format_to(o, "    nutation: tilt of the axis from {} between {} and {} rad", about, g(t.theta_min),
                    g(t.theta_max));
-    if (t.nutation_frequency) fmt::format_to(o, ", frequency {} rad/s", g(*t.nutation_frequency));
-    if (t.nutation_frequency_theory) {
-      fmt::format_to(o, ", fast-top theory I3 omega3/I1 = {} rad/s", g(*t.nutation_frequency_theory));
+    if (t.theta_min_theory && t.theta_max_theory) {
+      fmt::format_to(o, " (exact: {} to {} rad)", g(*t.theta_min_theory), g(*t.theta_max_theory));
     }
     fmt::format_to(o, "\n");
+    if (t.nutation_frequency)
+      fmt::format_to(o, "      measured frequency {} rad/s\n", g(*t.nutation_frequency));
+    beside("exact heavy top 2π/T_nut =", t.nutation_frequency_theory, t.nutation_frequency);
+    beside("fast top I3 omega3/I1 =", t.nutation_frequency_fast_top, t.nutation_frequency);
     if (t.sleeping) {
       fmt::format_to(o, "    sleeping-top criterion omega3² > 4 I1 M g l/I3²: {}\n",
                      *t.sleeping ? "holds" : "fails");

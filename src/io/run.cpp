@@ -15,6 +15,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/top_theory.hpp"
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/io/axis_tracker.hpp"
 #include "poinsot/io/summary.hpp"
@@ -79,10 +80,26 @@ std::optional<TopEvents> top_setup(const Scenario& sc, const dynamics::State& s0
     const double mgl = body.mass() * sc.gravity_space.norm() * body.pivot_to_com().norm();
     if (std::abs(top.spin) > 0.0) {
       top.precession_rate_theory = mgl / (top.moment_axial * top.spin);  // notes: Ω = M g l/(I3 ω3)
-      top.nutation_frequency_theory = top.moment_axial * std::abs(top.spin) / top.moment_transverse;
+      top.nutation_frequency_fast_top = top.moment_axial * std::abs(top.spin) / top.moment_transverse;
     }
     top.sleeping =
         top.spin * top.spin > 4.0 * top.moment_transverse * mgl / (top.moment_axial * top.moment_axial);
+    // The exact heavy symmetric top (dynamics/top_theory.hpp), when the body is symmetric about its axis and
+    // the axis is tilted (θ0 in (0, π)).
+    try {
+      const dynamics::HeavyTop ht = dynamics::heavy_top_from(body, sc.gravity_space);
+      const dynamics::TopInitialConditions ic = dynamics::top_initial_conditions(body, s0, sc.gravity_space);
+      if (std::abs(ic.omega3) > 0.0)
+        top.precession_rate_theory = dynamics::fast_top_precession_rate(ht, ic.omega3);
+      top.sleeping = dynamics::is_sleeping_top_stable(ht, ic.omega3);
+      const dynamics::TopMotion m = dynamics::top_motion(ht, ic.theta, ic.theta_dot, ic.phi_dot, ic.omega3);
+      top.precession_rate_exact = m.mean_precession_rate;
+      top.nutation_frequency_theory = m.nutation_frequency;
+      top.theta_min_theory = m.theta_min;
+      top.theta_max_theory = m.theta_max;
+    } catch (const InvalidInput&) {
+      // Not a symmetric top, or upright: only the fast-top formulas above apply.
+    }
   } else {
     // Free symmetric body: the figure axis turns about L at |L|/I1 (I1 the transverse moment).
     top.precession_rate_theory = dynamics::angular_momentum_space(body, s0).norm() / top.moment_transverse;

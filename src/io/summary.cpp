@@ -98,12 +98,16 @@ std::string summary_json(const RunSummary& s) {
            {"moment_transverse", t.moment_transverse},
            {"theta_min", t.theta_min},
            {"theta_max", t.theta_max},
+           {"theta_min_theory", opt(t.theta_min_theory)},
+           {"theta_max_theory", opt(t.theta_max_theory)},
            {"sleeping_criterion", t.sleeping ? json(*t.sleeping) : json(nullptr)}};
     events["precession_rate_mean"] = opt(t.precession_rate_mean);
     events[t.kind == "heavy top" ? "precession_rate_fast_top" : "precession_rate_theory"] =
         opt(t.precession_rate_theory);
+    if (t.kind == "heavy top") events["precession_rate_exact"] = opt(t.precession_rate_exact);
     events["nutation_frequency"] = opt(t.nutation_frequency);
     events["nutation_frequency_theory"] = opt(t.nutation_frequency_theory);
+    if (t.kind == "heavy top") events["nutation_frequency_fast_top"] = opt(t.nutation_frequency_fast_top);
   }
   j["events"] = events;
   j["top"] = top;

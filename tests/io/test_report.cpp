@@ -55,14 +55,17 @@ TEST(Report, TopLinesCompareWithTheory) {
   t.precession_rate_mean = 0.5;
   t.precession_rate_theory = 0.5;
   t.nutation_frequency = 80.0;
-  t.nutation_frequency_theory = 81.0;
+  t.nutation_frequency_fast_top = 81.0;
+  t.precession_rate_exact = 0.5;
   t.sleeping = true;
   s.top = t;
   const std::string r = format_report(s);
-  EXPECT_TRUE(
-      has(r, "precession about the vertical (−g): mean 0.5 rad/s, theory M g l/(I3 omega3) (fast top) 0.5"))
+  EXPECT_TRUE(has(r, "precession about the vertical (−g): measured mean 0.5 rad/s")) << r;
+  EXPECT_TRUE(has(r, "exact heavy top (Goldstein §5.7) Δφ/T_nut = 0.5 rad/s (relative difference 0.0e+00)"))
       << r;
-  EXPECT_TRUE(has(r, "frequency 80 rad/s, fast-top theory I3 omega3/I1 = 81 rad/s")) << r;
+  EXPECT_TRUE(has(r, "fast top (the notes) M g l/(I3 omega3) = 0.5 rad/s")) << r;
+  EXPECT_TRUE(has(r, "measured frequency 80 rad/s")) << r;
+  EXPECT_TRUE(has(r, "fast top I3 omega3/I1 = 81 rad/s (relative difference 1.2e-02)")) << r;
   EXPECT_TRUE(has(r, "sleeping-top criterion omega3² > 4 I1 M g l/I3²: holds")) << r;
 }
 

@@ -33,9 +33,13 @@ struct TopEvents {
   std::optional<double> precession_rate_mean;  ///< measured (rad/s)
   /// Theory (rad/s): heavy top, the fast-top rate M g l/(I3 ω3) of the notes; free symmetric top, |L|/I1.
   std::optional<double> precession_rate_theory;
-  std::optional<double> nutation_frequency;         ///< measured (rad/s)
-  std::optional<double> nutation_frequency_theory;  ///< heavy fast top: I3 ω3 / I1 (rad/s)
-  double theta_min = 0.0, theta_max = 0.0;          ///< range of the axis's polar angle (rad)
+  /// Heavy symmetric top: the exact mean precession rate Ω̄ = Δφ/T_nut (Goldstein §5.7, top_theory.hpp).
+  std::optional<double> precession_rate_exact;
+  std::optional<double> nutation_frequency;           ///< measured (rad/s)
+  std::optional<double> nutation_frequency_theory;    ///< heavy symmetric top: exact 2π/T_nut (rad/s)
+  std::optional<double> nutation_frequency_fast_top;  ///< heavy top: the fast-top value I3 ω3 / I1 (rad/s)
+  double theta_min = 0.0, theta_max = 0.0;            ///< range of the axis's polar angle, measured (rad)
+  std::optional<double> theta_min_theory, theta_max_theory;  ///< heavy symmetric top: exact range (rad)
   std::optional<bool> sleeping;  ///< heavy top: ω3² > 4 I1 M g l / I3² (stable upright), when upright
 };
 
