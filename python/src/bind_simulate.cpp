@@ -65,13 +65,24 @@ py::dict run_simulation(const RigidBody& body, const State& initial, const py::o
     const double n = std::ceil((simulation_options.t_end - initial.t) / simulation_options.sample_dt) + 2.0;
     if (n < 1e8) samples.reserve(static_cast<std::size_t>(n));
   }
-  dynamics::Observer observer;
-  if (keep_samples) {
-    observer = [&](const State& s) {
-      samples.add(body, g, s);
-      return true;
-    };
-  }
+  // The observer keeps the samples (when asked) and, about ten times a second, takes the GIL to let Python
+  // handle a pending signal: Ctrl-C stops the run (the driver marks it interrupted) and raises
+  // KeyboardInterrupt here, as a long computation in Python would.
+  bool signalled = false;
+  auto last_check = std::chrono::steady_clock::now();
+  const dynamics::Observer observer = [&](const State& s) {
+    if (keep_samples) samples.add(body, g, s);
+    const auto now = std::chrono::steady_clock::now();
+    if (now - last_check > std::chrono::milliseconds(100)) {
+      last_check = now;
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) {
+        signalled = true;
+        return false;
+      }
+    }
+    return true;
+  };
   dynamics::SimulationResult result;
   {
     // The C++ loop runs without the GIL; a Python torque callback takes it back for each call, and a Python
@@ -79,6 +90,8 @@ py::dict run_simulation(const RigidBody& body, const State& initial, const py::o
     py::gil_scoped_release release;
     result = dynamics::simulate(body, torque, initial, *integrator, simulation_options, observer);
   }
+  if (signalled)
+    throw py::error_already_set();  // the exception set by the signal handler (KeyboardInterrupt)
   const auto n = static_cast<py::ssize_t>(samples.t.size());
   py::dict out;
   out["t"] = array_from_buffer(std::move(samples.t), {n});
@@ -237,8 +250,7 @@ void bind_exact(py::module_& m) {
         return d;
       },
       py::arg("top"), py::arg("theta"), py::arg("omega3"),
-      (std::string(POINSOT_DOC(dynamics_SteadyPrecession)) +
-       "\n\nReturns a dict: count, slow, fast (rad/s).")
+      (std::string(POINSOT_DOC(dynamics_SteadyPrecession)) + "\n\nReturns a dict: count, slow, fast (rad/s).")
           .c_str());
   m.def("sleeping_top_threshold", &dynamics::sleeping_top_threshold, py::arg("top"),
         POINSOT_DOC(dynamics_sleeping_top_threshold));

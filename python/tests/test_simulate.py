@@ -214,3 +214,18 @@ def test_plot_draws_the_figures_of_a_run_folder(tennis_racket, tmp_path):
     for p in res.figures:
         assert p.stat().st_size > 1000 and p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert poinsot.plot.plot_run(tmp_path / "run") == res.figures
+
+
+def test_ctrl_c_interrupts_a_long_run():
+    import _thread
+    import threading
+
+    # interrupt_main() raises SIGINT's flag as Ctrl-C would; the C++ loop polls for it between samples.
+    timer = threading.Timer(0.3, _thread.interrupt_main)
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            poinsot.simulate(body=BODY, omega_body=W0, method="rk4", dt=1e-6, t_end=1000.0, sample_dt=0.01,
+                             keep_samples=False)  # 1e9 steps: minutes, unless interrupted
+    finally:
+        timer.cancel()
