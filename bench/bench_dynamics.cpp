@@ -30,7 +30,7 @@ using poinsot::Vec3;
 using namespace poinsot::dynamics;
 
 const Vec3 kMoments(0.00121, 0.01638, 0.01748);  // kg·m², tennis racket
-const Vec3 kOmega0(0.01, 2.0, 0.01);              // rad/s
+const Vec3 kOmega0(0.01, 2.0, 0.01);             // rad/s
 
 RigidBody racket() {
   return RigidBody::from_principal_moments(kMoments);
@@ -129,7 +129,8 @@ void BM_AccuracyAt100s(benchmark::State& st) {
   State s;
   long long steps = 0;
   for (auto _ : st) {
-    auto m = make_integrator(name, racket(), TorqueModel::none(), options(adaptive ? 10.0 : 100.0 / static_cast<double>(n), tol));
+    auto m = make_integrator(name, racket(), TorqueModel::none(),
+                             options(adaptive ? 10.0 : 100.0 / static_cast<double>(n), tol));
     s = racket_state();
     steps = 0;
     if (adaptive) {

@@ -23,6 +23,26 @@ inline void free_principal_rhs(const Arr7& y, Arr7& d, const Vec3& g) {
   d[6] = g[2] * w1 * w2;
 }
 
+/// One classical RK4 step of the torque-free body in a principal frame, on values (nothing aliased).
+Arr7 free_principal_step(const Arr7 y, const double g1, const double g2, const double g3, const double h) {
+  const Vec3 g(g1, g2, g3);
+  Arr7 k1, k2, k3, k4, tmp;
+  free_principal_rhs(y, k1, g);
+  for (int i = 0; i < 7; ++i)
+    tmp[i] = y[i] + 0.5 * h * k1[i];
+  free_principal_rhs(tmp, k2, g);
+  for (int i = 0; i < 7; ++i)
+    tmp[i] = y[i] + 0.5 * h * k2[i];
+  free_principal_rhs(tmp, k3, g);
+  for (int i = 0; i < 7; ++i)
+    tmp[i] = y[i] + h * k3[i];
+  free_principal_rhs(tmp, k4, g);
+  Arr7 out;
+  for (int i = 0; i < 7; ++i)
+    out[i] = y[i] + h / 6 * (k1[i] + 2 * (k2[i] + k3[i]) + k4[i]);
+  return out;
+}
+
 }  // namespace
 
 struct Rk4Integrator::Impl {
@@ -57,22 +77,12 @@ StepResult Rk4Integrator::step(State& state, double dt) {
   const double h = dt;
   const double h2 = 0.5 * h;
   if (m.fast) {
-    Arr7 y0, k1, k2, k3, k4, tmp;
+    Arr7 y0;
     for (int i = 0; i < 7; ++i)
       y0[i] = y[i];
-    free_principal_rhs(y0, k1, m.gyro);
+    const Arr7 y1 = free_principal_step(y0, m.gyro[0], m.gyro[1], m.gyro[2], h);
     for (int i = 0; i < 7; ++i)
-      tmp[i] = y0[i] + h2 * k1[i];
-    free_principal_rhs(tmp, k2, m.gyro);
-    for (int i = 0; i < 7; ++i)
-      tmp[i] = y0[i] + h2 * k2[i];
-    free_principal_rhs(tmp, k3, m.gyro);
-    for (int i = 0; i < 7; ++i)
-      tmp[i] = y0[i] + h * k3[i];
-    free_principal_rhs(tmp, k4, m.gyro);
-    const double h6 = h / 6.0;
-    for (int i = 0; i < 7; ++i)
-      y[i] = y0[i] + h6 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]);
+      y[i] = y1[i];
   } else {
     const detail::Vec7 k1 = m.f(t, y);
     const detail::Vec7 k2 = m.f(t + h2, y + h2 * k1);

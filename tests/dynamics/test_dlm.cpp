@@ -51,7 +51,7 @@ TEST(Dlm, ConvergesAtOrderTwoWithTorques) {
 
 TEST(Dlm, LongRunKeepsTheInvariants) {
   // The tennis racket (kg·m²) spun mostly about its intermediate axis, h = 1/200 of the rotation period
-  // 2π/|ω|, 10⁵ steps (≈ 500 rotations, ≈ 80 flips). The 10⁶-step figures are measured by bench_dynamics.
+  // 2π/|ω|, 3·10⁴ steps (≈ 150 rotations, ≈ 25 flips). The 10⁶-step figures are measured by bench_dynamics.
   const RigidBody racket = RigidBody::from_principal_moments(Vec3(0.00121, 0.01638, 0.01748));
   State s;
   s.omega_body = Vec3(0.01, 2.0, 0.01);
@@ -59,7 +59,7 @@ TEST(Dlm, LongRunKeepsTheInvariants) {
   DlmIntegrator dlm(racket, TorqueModel::none());
   const double E0 = dynamics::kinetic_energy(racket, s);
   const Vec3 L0 = dynamics::angular_momentum_space(racket, s);
-  const int n = 100000;
+  const int n = 30000;
   double e_first = 0.0, e_all = 0.0, L_err = 0.0;
   for (int i = 0; i < n; ++i) {
     dlm.step(s, h);
@@ -68,7 +68,7 @@ TEST(Dlm, LongRunKeepsTheInvariants) {
     e_all = std::max(e_all, e);
     L_err = std::max(L_err, (dynamics::angular_momentum_space(racket, s) - L0).norm() / L0.norm());
   }
-  std::printf("dlm 1e5 steps: energy %.3g (first tenth %.3g), L_space %.3g, |RtR-I| %.3g\n", e_all, e_first,
+  std::printf("dlm 3e4 steps: energy %.3g (first tenth %.3g), L_space %.3g, |RtR-I| %.3g\n", e_all, e_first,
               L_err, so3::orthogonality_error(s.R));
   // Bounded energy error: the whole run is no worse than its first tenth (a drift would be ten times worse).
   EXPECT_LT(e_all, 1.5 * e_first);
@@ -122,7 +122,7 @@ TEST(Dlm, HeavyTopEnergyStaysBounded) {
   s.omega_body = Vec3(0, 0, 50.0);
   DlmIntegrator dlm(top, gravity);
   const double E0 = dynamics::total_energy(top, s, g);
-  const int n = 40000;
+  const int n = 10000;
   double e_first = 0.0, e_all = 0.0;
   for (int i = 0; i < n; ++i) {
     dlm.step(s, 1e-3);

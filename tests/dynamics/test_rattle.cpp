@@ -102,7 +102,7 @@ TEST(Rattle, WorksForAPlaneLamina) {
 }
 
 TEST(Rattle, LongRunKeepsTheInvariants) {
-  // As in test_dlm: the tennis racket at 1/200 of its rotation period, 10⁵ steps (10⁶ in bench_dynamics).
+  // As in test_dlm: the tennis racket at 1/200 of its rotation period, 3·10⁴ steps (10⁶ in bench_dynamics).
   const RigidBody racket = RigidBody::from_principal_moments(Vec3(0.00121, 0.01638, 0.01748));
   State s;
   s.omega_body = Vec3(0.01, 2.0, 0.01);
@@ -110,7 +110,7 @@ TEST(Rattle, LongRunKeepsTheInvariants) {
   RattleIntegrator rattle(racket, TorqueModel::none());
   const double E0 = dynamics::kinetic_energy(racket, s);
   const Vec3 L0 = dynamics::angular_momentum_space(racket, s);
-  const int n = 100000;
+  const int n = 30000;
   double e_first = 0.0, e_all = 0.0, L_err = 0.0;
   for (int i = 0; i < n; ++i) {
     rattle.step(s, h);
@@ -119,7 +119,7 @@ TEST(Rattle, LongRunKeepsTheInvariants) {
     e_all = std::max(e_all, e);
     L_err = std::max(L_err, (dynamics::angular_momentum_space(racket, s) - L0).norm() / L0.norm());
   }
-  std::printf("rattle 1e5 steps: energy %.3g (first tenth %.3g), L_space %.3g, |RtR-I| %.3g\n", e_all,
+  std::printf("rattle 3e4 steps: energy %.3g (first tenth %.3g), L_space %.3g, |RtR-I| %.3g\n", e_all,
               e_first, L_err, so3::orthogonality_error(s.R));
   // Bounded: no worse than the first tenth of the run, or at round-off. (For the free body the discrete
   // Moser–Veselov map conserves the kinetic energy itself: the error is round-off, ~1e-14.)
@@ -152,7 +152,7 @@ TEST(Rattle, HeavyTopEnergyStaysBounded) {
   s.omega_body = Vec3(0, 0, 50.0);
   RattleIntegrator rattle(top, gravity);
   const double E0 = dynamics::total_energy(top, s, g);
-  const int n = 40000;
+  const int n = 10000;
   double e_first = 0.0, e_all = 0.0;
   for (int i = 0; i < n; ++i) {
     rattle.step(s, 1e-3);

@@ -150,7 +150,7 @@ TEST(Simulation, HeavyTopTotalEnergyIsTracked) {
   s.R = so3::exp(Vec3(M_PI / 3, 0, 0));
   s.omega_body = Vec3(0, 0, 50.0);
   SimulationOptions o;
-  o.t_end = 5.0;
+  o.t_end = 2.0;
   o.sample_dt = 0.05;
   auto rattle = make_integrator("rattle", top, gravity, tight(1e-10, 5e-4));
   const auto r = simulate(top, gravity, s, *rattle, o);
@@ -179,16 +179,16 @@ TEST(Simulation, FlipIntervalsFromDop853MatchTheClosedForm) {
 TEST(Simulation, FlipsFromFixedStepMethodsAgreeWithDop853) {
   auto ref = make_integrator("dop853", kRacket, TorqueModel::none(), tight(1e-12, 1.0));
   SimulationOptions o;
-  o.t_end = 30.0;
+  o.t_end = 20.0;
   o.sample_dt = 1.0;
   const auto r0 = simulate(kRacket, TorqueModel::none(), racket_state(), *ref, o);
-  ASSERT_GE(r0.flip_times.size(), 3u);
+  ASSERT_GE(r0.flip_times.size(), 2u);
   for (const char* name : {"rk4", "dlm", "rattle"}) {
-    auto m = make_integrator(name, kRacket, TorqueModel::none(), tight(1e-10, 1e-3));
+    auto m = make_integrator(name, kRacket, TorqueModel::none(), tight(1e-10, 2e-3));
     const auto r = simulate(kRacket, TorqueModel::none(), racket_state(), *m, o);
     ASSERT_EQ(r.flip_times.size(), r0.flip_times.size()) << name;
     for (std::size_t i = 0; i < r.flip_times.size(); ++i) {
-      // h = 1 ms, hω = 2e-3: the order-2 methods shift the flips by O(h²) relative, amplified near the
+      // h = 2 ms, hω = 4e-3: the order-2 methods shift the flips by O(h²) relative, amplified near the
       // separatrix; rk4 by O(h⁴). The Hermite interpolant adds O(h⁴).
       EXPECT_NEAR(r.flip_times[i], r0.flip_times[i], 1e-3 * r0.flip_times[i]) << name << " flip " << i;
     }
@@ -255,7 +255,7 @@ TEST(Simulation, RejectsBadOptions) {
 }
 
 TEST(Simulation, AllocatesNothingPerStep) {
-  // The same run with 100 and 10 000 steps (same samples, no flips) allocates the same number of times.
+  // The same run with 100 and 1000 steps (same samples, no flips) allocates the same number of times.
   const auto count = [](double dt) {
     auto m = make_integrator("rattle", kBody, TorqueModel::constant_space(Vec3(0.1, 0, 0)), tight(1e-10, dt));
     SimulationOptions o;
@@ -268,16 +268,16 @@ TEST(Simulation, AllocatesNothingPerStep) {
     return std::make_pair(allocation_count() - before, r.steps);
   };
   const auto few = count(1e-2);
-  const auto many = count(1e-4);
+  const auto many = count(1e-3);
   EXPECT_EQ(few.second, 100);
-  EXPECT_EQ(many.second, 10000);
+  EXPECT_EQ(many.second, 1000);
   EXPECT_EQ(few.first, many.first);
   for (const char* name : {"rk4", "dlm", "dopri5", "dop853"}) {
     auto m = make_integrator(name, kBody, TorqueModel::none(), tight(1e-10, 0.01));
     State s = tumbling();
     m->step(s, 0.01);  // first step may set up caches
     const long long before = allocation_count();
-    for (int i = 0; i < 1000; ++i)
+    for (int i = 0; i < 200; ++i)
       m->step(s, 0.01);
     if (m->has_dense_output()) m->dense_output(s.t - 0.001);
     EXPECT_EQ(allocation_count(), before) << name;
