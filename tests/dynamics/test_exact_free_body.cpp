@@ -33,7 +33,7 @@ void expect_matches_reference(const RigidBody& body, const State& s0, double t, 
   const int steps =
       fixed_steps > 0
           ? fixed_steps
-          : static_cast<int>(std::ceil(std::abs(t - s0.t) * std::max(1.0, s0.omega_body.norm()) / 1e-2));
+          : static_cast<int>(std::ceil(std::abs(t - s0.t) * std::max(1.0, s0.omega_body.norm()) / 2e-2));
   const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, t, std::max(steps, 10));
   const State ex = exact.state_at(t);
   SCOPED_TRACE(std::string(what) + " regime " + to_string(exact.regime()));
@@ -45,7 +45,7 @@ void expect_matches_reference(const RigidBody& body, const State& s0, double t, 
 // The accuracy target of the issue: 1e-12 in ω and R at t = 100 s, both regimes, random bodies and states.
 TEST(ExactFreeBody, MatchesReferenceAtHundredSecondsBothRegimes) {
   int largest = 0, smallest = 0;
-  for (int trial = 0; trial < 8; ++trial) {
+  for (int trial = 0; trial < 6; ++trial) {
     Vec3 I(test::uniform(1.0, 2.0), test::uniform(1.0, 2.0), test::uniform(1.0, 2.0));
     std::sort(I.data(), I.data() + 3);
     const RigidBody body = RigidBody::from_principal_moments(I);
