@@ -8,7 +8,6 @@
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
-#include "poinsot/dynamics/exact_integrator.hpp"
 #include "poinsot/dynamics/rk4.hpp"
 
 namespace poinsot::analysis {
@@ -17,8 +16,7 @@ LambdaReport analyse_lambda(const dynamics::RigidBody& body, const dynamics::Sta
                             const LambdaAnalysisOptions& options) {
   const auto torque = options.torque ? options.torque : dynamics::TorqueModel::none();
   std::unique_ptr<dynamics::Integrator> integrator =
-      options.method == "exact" ? dynamics::make_exact_integrator(body, torque)
-                                : dynamics::make_integrator(options.method, body, torque, options.integrator);
+      dynamics::make_integrator(options.method, body, torque, options.integrator);
   LambdaTrackerOptions tracker_options;
   tracker_options.volume_m3 = options.volume_m3;
   tracker_options.axisymmetry_tolerance = options.axisymmetry_tolerance;
