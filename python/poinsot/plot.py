@@ -165,9 +165,12 @@ def _plot_polhode(plt, cols, summary, out):
         mean = u.mean(axis=0)
         k = int(np.argmax(np.abs(mean)))
         segs = [s for s in curves[-1] if np.sign(s[:, k].mean()) == np.sign(mean[k])] or curves[-1]
+        free = str(summary.get("torque", "none")).startswith("none")
+        label = ("theory: sphere ∩ initial energy ellipsoid" if free else
+                 "sphere ∩ initial energy ellipsoid (a path only without torque)")
         for i, s in enumerate(segs):
-            ax.plot(s[:, 0], s[:, 1], s[:, 2], color="k", lw=1.4, ls="--",
-                    label="theory: sphere ∩ initial energy ellipsoid" if i == 0 else None)
+            ax.plot(s[:, 0], s[:, 1], s[:, 2], color="k", lw=1.4, ls="--" if free else ":",
+                    label=label if i == 0 else None)
     ax.set_xlabel("L₁/|L| (body x)")
     ax.set_ylabel("L₂/|L| (body y)")
     ax.set_zlabel("L₃/|L| (body z)")
