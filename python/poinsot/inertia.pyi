@@ -89,11 +89,17 @@ def hollow_sphere(mass: float, radius: float, inner_radius: float) -> MassProper
 def inertia_from_poinsot(K: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """K → J = tr(K)·I − K (kg·m²), about the same point and in the same frame."""
 
+def load_body_file(path: str) -> dict:
+    """Reads and evaluates a body file."""
+
 def load_mesh(path: str) -> TriangleMesh:
     """Reads `path`."""
 
 def mesh(source: object, *, mass: Optional[float] = ..., density: Optional[float] = ..., areal_density: Optional[float] = ..., shell: bool = ..., flip_inward: bool = ...) -> MassProperties:
     """Mass properties of a mesh (a file path or a TriangleMesh): the enclosed solid with a mass (kg) or a density (kg/m³), or with shell=True the surface with a mass or an areal_density (kg/m²)."""
+
+def parse_body(toml_text: str, base_dir: str = ...) -> dict:
+    """The same from TOML text; mesh paths are relative to `base_dir`."""
 
 def plate(mass: float, size_x: float, size_y: float) -> MassProperties:
     ...

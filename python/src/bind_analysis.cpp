@@ -13,6 +13,7 @@
 #include "docstrings.hpp"
 #include "poinsot/analysis/axisymmetric.hpp"
 #include "poinsot/analysis/closed_form.hpp"
+#include "poinsot/analysis/lambda_report.hpp"
 #include "poinsot/analysis/lambda_tracker.hpp"
 #include "poinsot/analysis/multipliers.hpp"
 #include "poinsot/analysis/stress.hpp"
@@ -334,6 +335,56 @@ void bind_analysis(py::module_& parent) {
                    "(n, 3)), as a dict with the keys of LambdaProperties (closed_form: a dict for an "
                    "axisymmetric torque-free body, else None).\n\n") +
        POINSOT_DOC(file_analysis_lambda_tracker))
+          .c_str());
+
+  m.def(
+      "lambda_report",
+      [](const RigidBody& body, const State& initial, const std::string& method, double dt, double rtol,
+         double atol, double t_end, double sample_dt, const py::object& torque, double volume,
+         double axisymmetry_tolerance) {
+        analysis::LambdaAnalysisOptions o;
+        o.method = method;
+        o.integrator.dt = dt;
+        o.integrator.rtol = rtol;
+        o.integrator.atol = atol;
+        o.t_end = t_end;
+        o.sample_dt = sample_dt;
+        o.torque = as_torque(torque);
+        o.volume_m3 = volume;
+        o.axisymmetry_tolerance = axisymmetry_tolerance;
+        const auto r = analysis::analyse_lambda(body, initial, o);  // with the GIL: a Python torque may run
+        py::dict d;
+        d["method"] = r.method;
+        d["torque"] = r.torque;
+        d["principal_moments"] = from_vec3(r.principal_moments);
+        d["t_initial"] = r.t_initial;
+        d["t_end"] = r.t_end;
+        d["sample_dt"] = r.sample_dt;
+        d["dt"] = r.dt;
+        d["volume_m3"] = r.volume_m3;
+        d["properties"] = properties_dict(r.properties);
+        d["steps"] = r.steps;
+        py::dict errors;
+        errors["energy_rel_max"] = r.invariant_errors.energy_rel_max;
+        errors["L_space_rel_max"] = r.invariant_errors.L_space_rel_max;
+        errors["L_norm_rel_max"] = r.invariant_errors.L_norm_rel_max;
+        errors["orthogonality_max"] = r.invariant_errors.orthogonality_max;
+        d["errors"] = errors;
+        d["wall_time_s"] = r.wall_time_s;
+        d["text"] = analysis::format_lambda_report(r);
+        return d;
+      },
+      py::arg("body"), py::arg("initial"), py::kw_only(), py::arg("method") = "rk4",
+      py::arg("dt") = dynamics::IntegratorOptions{}.dt, py::arg("rtol") = dynamics::IntegratorOptions{}.rtol,
+      py::arg("atol") = dynamics::IntegratorOptions{}.atol, py::arg("t_end") = 10.0,
+      py::arg("sample_dt") = 0.01, py::arg("torque") = py::none(), py::arg("volume_m3") = 0.0,
+      py::arg("axisymmetry_tolerance") = 1e-12,
+      (std::string(POINSOT_DOC(analysis_analyse_lambda)) +
+       "\n\nThe engine of `poinsot lambda`. Returns a dict: method, torque, principal_moments, t_initial, "
+       "t_end, "
+       "sample_dt, dt, volume_m3, properties (as lambda_properties), steps, errors, wall_time_s, text (the "
+       "report).\n\n" +
+       POINSOT_DOC(file_analysis_lambda_report))
           .c_str());
 }
 

@@ -10,6 +10,7 @@
 #include "docstrings.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
+#include "poinsot/inertia/body_file.hpp"
 #include "poinsot/inertia/mass_properties.hpp"
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/inertia/mesh_io.hpp"
@@ -320,6 +321,30 @@ void bind_inertia(py::module_& parent) {
         return "TriangleMesh(vertices=" + std::to_string(mesh.vertices.size()) +
                ", triangles=" + std::to_string(mesh.triangles.size()) + ")";
       });
+  // Composite bodies from a body file (the format of `poinsot inertia body FILE.toml`).
+  const auto body_result = [](const inertia::BodyFileResult& r) {
+    py::dict d;
+    d["body"] = r.body;
+    d["diagnostics"] = r.diagnostics;
+    d["parts"] = r.parts;
+    d["voids"] = r.voids;
+    return d;
+  };
+  m.def(
+      "load_body_file",
+      [body_result](const std::string& path) { return body_result(inertia::load_body_file(path)); },
+      py::arg("path"),
+      (std::string(POINSOT_DOC(inertia_load_body_file)) +
+       "\n\nReturns a dict: body (MassProperties, body frame), diagnostics (list of str), parts, voids.\n\n" +
+       POINSOT_DOC(file_inertia_body_file))
+          .c_str());
+  m.def(
+      "parse_body",
+      [body_result](const std::string& text, const std::string& base_dir) {
+        return body_result(inertia::parse_body(text, base_dir));
+      },
+      py::arg("toml_text"), py::arg("base_dir") = ".",
+      (std::string(POINSOT_DOC(inertia_parse_body)) + "\n\nReturns the dict of load_body_file.").c_str());
   m.def("load_mesh", &inertia::load_mesh, py::arg("path"),
         (std::string(POINSOT_DOC(inertia_load_mesh)) + "\n\n" + POINSOT_DOC(file_inertia_mesh_io)).c_str());
   m.def("write_binary_stl", &inertia::write_binary_stl, py::arg("mesh"), py::arg("path"),

@@ -122,3 +122,25 @@ def test_shape_errors():
         inertia.box(-1.0, [1, 1, 1])
     with pytest.raises(ValueError, match=r"size: expected an array of shape \(3,\)"):
         inertia.box(1.0, [1, 1])
+
+
+def test_body_file_composite_equals_the_sum_of_its_parts(tmp_path):
+    text = """
+[[part]]
+shape = "box"
+size = [2.0, 2.0, 2.0]
+mass = 8.0
+
+[[void]]
+shape = "box"
+size = [1.0, 1.0, 1.0]
+mass = 1.0
+position = [0.5, 0.5, 0.5]
+"""
+    (tmp_path / "b.toml").write_text(text)
+    res = inertia.load_body_file(str(tmp_path / "b.toml"))
+    assert res["parts"] == 1 and res["voids"] == 1
+    expected = inertia.box(8.0, [2, 2, 2]) - inertia.box(1.0, [1, 1, 1]).placed(np.eye(3), [0.5, 0.5, 0.5])
+    assert res["body"].mass == expected.mass
+    assert np.allclose(res["body"].inertia_com, expected.inertia_com, rtol=1e-14, atol=1e-15)
+    assert np.allclose(inertia.parse_body(text)["body"].center_of_mass, expected.center_of_mass, rtol=1e-14)
