@@ -49,7 +49,7 @@ class SimulationResult:
     body: Any
     flip_interval_theory: float | None = None
     period_theory: float | None = None
-    extra: dict = field(default_factory=dict)
+    torque_model: Any = None
 
     @property
     def omega_space(self) -> np.ndarray:
@@ -60,6 +60,11 @@ class SimulationResult:
     def L_body(self) -> np.ndarray:
         """J ω (n, 3), kg·m²/s, body frame."""
         return self.omega_body @ np.asarray(self.body.inertia).T
+
+    def lambda_body(self) -> np.ndarray:
+        """Λ = (j(ω)² + j(ω̇)) K (n, 3, 3), J, body frame, at every sample (poinsot.analysis.lambda_trajectory
+        with this run's body and torque)."""
+        return _core.analysis.lambda_trajectory(self.body, self.t, self.R, self.omega_body, self.torque_model)
 
     def __len__(self) -> int:
         return len(self.t)
@@ -206,7 +211,7 @@ def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, ome
                           float(opts["t_end"]), float(opts["sample_dt"]), bool(opts["locate_flips"]),
                           keep_samples)
     theory = _theory(parts["body"], parts["initial"], out.pop("torque_is_zero"))
-    return SimulationResult(body=parts["body"], **out, **theory)
+    return SimulationResult(body=parts["body"], torque_model=parts.get("torque"), **out, **theory)
 
 
 def _theory(body: Any, initial: Any, torque_free: bool) -> dict:

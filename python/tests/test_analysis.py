@@ -88,3 +88,13 @@ def test_lambda_report_is_the_engine_of_poinsot_lambda():
     rep = analysis.lambda_report(body, State(omega_body=[0.4, -0.3, 2.0]), method="rk4", dt=1e-3, t_end=0.5,
                                  torque=lambda t, R, w: np.array([0.0, 0.0, 0.01]))
     assert rep["properties"]["closed_form"] is None and not rep["properties"]["torque_free"]
+
+
+def test_result_lambda_uses_the_runs_torque():
+    body = RigidBody.from_principal_moments([1.0, 2.0, 2.5])
+    tau = np.array([0.0, 0.1, 0.0])
+    r = poinsot.simulate(body=body, omega_body=[0.3, 1.0, 0.2], torque=lambda t, R, w: tau, method="rk4",
+                         dt=1e-3, t_end=0.5, sample_dt=0.25)
+    lam = r.lambda_body()
+    for i in range(len(r)):
+        assert np.allclose(lam[i], lambda_numpy(body.inertia, r.omega_body[i], tau), atol=1e-13)
