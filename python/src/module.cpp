@@ -17,4 +17,9 @@ PYBIND11_MODULE(_core, m) {
     }
   });
   poinsot::python::bind_so3(m);
+  poinsot::python::bind_dynamics(m);
+  poinsot::python::bind_inertia(m);
+  poinsot::python::bind_simulate(m);
+  poinsot::python::bind_analysis(m);
+  poinsot::python::bind_io(m);
 }
