@@ -18,5 +18,4 @@ void register_run(CLI::App& app);
 // lambda (issue 5)
 void register_lambda(CLI::App& app);
 
-
 }  // namespace poinsot::cli
