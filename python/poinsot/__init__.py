@@ -8,7 +8,8 @@ message). Arrays are NumPy float64; vectors have shape (3,), matrices (3, 3), qu
 Conventions: ``R`` maps body to space, ``omega_body`` is the body-frame angular velocity, SI units.
 
 Submodules: ``so3`` (rotations), ``inertia`` (mass properties), ``analysis`` (Λ and the constraint stress),
-``plot`` (the figures of a run folder, Matplotlib: ``poinsot.plot.plot_run(folder)``).
+``multibody`` (coupled bodies and joints integrated by RATTLE, their multipliers, scenario files), ``plot``
+(the figures of a run folder, Matplotlib: ``poinsot.plot.plot_run(folder)``).
 """
 from . import _core
 from ._core import (
@@ -33,6 +34,7 @@ from ._core import (
     kinetic_energy,
     load_scenario,
     make_integrator,
+    multibody,
     parse_scenario,
     potential_energy,
     sleeping_top_threshold,
@@ -51,6 +53,7 @@ __all__ = [
     "so3",
     "inertia",
     "analysis",
+    "multibody",
     "RigidBody",
     "State",
     "TorqueModel",

@@ -22,4 +22,5 @@ PYBIND11_MODULE(_core, m) {
   poinsot::python::bind_simulate(m);
   poinsot::python::bind_analysis(m);
   poinsot::python::bind_io(m);
+  poinsot::python::bind_multibody(m);
 }

@@ -1,0 +1,459 @@
+// Bindings of the multibody layer as the submodule poinsot.multibody: the model (System), the state, the
+// RATTLE integrator, the exact multipliers, the observables and the scenario files. Bodies are named by
+// index or by name ("world" or poinsot.multibody.WORLD for the fixed frame). Per-body results are NumPy
+// arrays with the body index first: x (N, 3), R (N, 3, 3), Λ (N, 3, 3). Docstrings come from the headers'
+// doc comments through the generated docstrings.hpp (python/tools/gen_docstrings.py).
+#include <pybind11/stl.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "convert.hpp"
+#include "docstrings.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/multibody/loads.hpp"
+#include "poinsot/multibody/model.hpp"
+#include "poinsot/multibody/multipliers.hpp"
+#include "poinsot/multibody/observables.hpp"
+#include "poinsot/multibody/rattle.hpp"
+#include "poinsot/multibody/scenario.hpp"
+#include "poinsot/multibody/state.hpp"
+
+namespace poinsot::python {
+
+namespace mb = poinsot::multibody;
+
+namespace {
+
+// A body given by index (int, WORLD = -1) or by name (str, "world"); the System validates the index.
+int body_ref(const mb::System& s, const py::handle& body, const char* what) {
+  if (py::isinstance<py::str>(body)) return s.body_index(body.cast<std::string>());
+  if (py::isinstance<py::int_>(body)) return body.cast<int>();
+  throw py::type_error(std::string(what) + ": expected a body index (int) or a body name (str), got " +
+                       std::string(py::str(py::type::of(body).attr("__name__"))));
+}
+
+py::array_t<double> stack_vec3(const std::vector<Vec3>& v) {
+  std::vector<double> buf;
+  buf.reserve(3 * v.size());
+  for (const Vec3& x : v)
+    buf.insert(buf.end(), {x[0], x[1], x[2]});
+  return array_from_buffer(std::move(buf), {static_cast<py::ssize_t>(v.size()), 3});
+}
+
+py::array_t<double> stack_mat3(const std::vector<Mat3>& v) {
+  std::vector<double> buf;
+  buf.reserve(9 * v.size());
+  for (const Mat3& M : v)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        buf.push_back(M(i, j));
+  return array_from_buffer(std::move(buf), {static_cast<py::ssize_t>(v.size()), 3, 3});
+}
+
+template <class Get>
+py::array_t<double> per_body_vec3(const mb::State& s, Get get) {
+  std::vector<Vec3> v;
+  v.reserve(s.bodies.size());
+  for (const auto& b : s.bodies)
+    v.push_back(get(b));
+  return stack_vec3(v);
+}
+
+mb::BodyState make_body_state(ArrayLike x, ArrayLike R, ArrayLike v, ArrayLike omega) {
+  mb::BodyState b;
+  if (!x.obj.is_none()) b.x_space = to_vec3(x, "x_space");
+  if (!R.obj.is_none()) b.R_space_body = to_mat3(R, "R_space_body");
+  if (!v.obj.is_none()) b.v_space = to_vec3(v, "v_space");
+  if (!omega.obj.is_none()) b.omega_body = to_vec3(omega, "omega_body");
+  return b;
+}
+
+mb::BodyState& body_at(mb::State& s, py::ssize_t i) {
+  const auto n = static_cast<py::ssize_t>(s.bodies.size());
+  if (i < 0) i += n;
+  if (i < 0 || i >= n) throw py::index_error("state: body index out of range");
+  return s.bodies[static_cast<std::size_t>(i)];
+}
+
+void bind_multipliers(py::module_& m) {
+  py::class_<mb::Multipliers>(m, "Multipliers", POINSOT_DOC(file_multibody_multipliers))
+      .def_property_readonly(
+          "Lambda_body", [](const mb::Multipliers& x) { return stack_mat3(x.Lambda_body); },
+          POINSOT_DOC(multibody_Multipliers_Lambda_body))
+      .def_property_readonly(
+          "joint_force_space", [](const mb::Multipliers& x) { return stack_vec3(x.joint_force_space); },
+          POINSOT_DOC(multibody_Multipliers_joint_force_space))
+      .def_property_readonly(
+          "joint_torque_space", [](const mb::Multipliers& x) { return stack_vec3(x.joint_torque_space); },
+          POINSOT_DOC(multibody_Multipliers_joint_torque_space));
+  py::class_<mb::ExactMultipliers, mb::Multipliers>(m, "ExactMultipliers",
+                                                    POINSOT_DOC(multibody_ExactMultipliers))
+      .def_property_readonly(
+          "acceleration_space",
+          [](const mb::ExactMultipliers& x) { return stack_vec3(x.acceleration_space); },
+          "Acceleration of each body's centre of mass, space frame, m/s², shape (N, 3).")
+      .def_property_readonly(
+          "omega_dot_body", [](const mb::ExactMultipliers& x) { return stack_vec3(x.omega_dot_body); },
+          "Angular acceleration of each body, body frame, rad/s², shape (N, 3).");
+  m.def("exact_multipliers", &mb::exact_multipliers, py::arg("system"), py::arg("state"),
+        POINSOT_DOC(multibody_ExactMultipliers));
+}
+
+void bind_system(py::module_& m) {
+  py::class_<mb::System>(m, "System", POINSOT_DOC(multibody_System))
+      .def(py::init<>(), "An empty system: no bodies, no joints, no gravity.")
+      .def(
+          "add_body",
+          [](mb::System& s, const std::string& name, double mass, ArrayLike K) {
+            return s.add_body(name, mass, to_mat3(K, "poinsot_com_body"));
+          },
+          py::arg("name"), py::arg("mass"), py::arg("poinsot_com_body"),
+          POINSOT_DOC(multibody_System_add_body))
+      .def(
+          "add_body_from_inertia",
+          [](mb::System& s, const std::string& name, double mass, ArrayLike J) {
+            return s.add_body_from_inertia(name, mass, to_mat3(J, "inertia_com_body"));
+          },
+          py::arg("name"), py::arg("mass"), py::arg("inertia_com_body"),
+          POINSOT_DOC(multibody_System_add_body_from_inertia))
+      .def(
+          "add_ball",
+          [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, const py::object& b,
+             ArrayLike pb) {
+            return s.add_ball(name, body_ref(s, a, "body_a"), to_vec3(pa, "point_a"),
+                              body_ref(s, b, "body_b"),
+                              pb.obj.is_none() ? Vec3::Zero().eval() : to_vec3(pb, "point_b"));
+          },
+          py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("body_b") = mb::kWorld,
+          py::arg("point_b") = py::none(), POINSOT_DOC(multibody_System_add_ball))
+      .def(
+          "add_hinge",
+          [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, ArrayLike axis_a,
+             const py::object& b, ArrayLike pb, ArrayLike axis_b) {
+            return s.add_hinge(name, body_ref(s, a, "body_a"), to_vec3(pa, "point_a"),
+                               to_vec3(axis_a, "axis_a"), body_ref(s, b, "body_b"), to_vec3(pb, "point_b"),
+                               to_vec3(axis_b, "axis_b"));
+          },
+          py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("axis_a"), py::arg("body_b"),
+          py::arg("point_b"), py::arg("axis_b"), POINSOT_DOC(multibody_System_add_hinge))
+      .def(
+          "add_weld",
+          [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, const py::object& b,
+             ArrayLike pb, ArrayLike R_b_a) {
+            return s.add_weld(name, body_ref(s, a, "body_a"), to_vec3(pa, "point_a"),
+                              body_ref(s, b, "body_b"), to_vec3(pb, "point_b"), to_mat3(R_b_a, "R_b_a"));
+          },
+          py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("body_b"), py::arg("point_b"),
+          py::arg("R_b_a"), POINSOT_DOC(multibody_System_add_weld))
+      .def(
+          "add_spring",
+          [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, const py::object& b,
+             ArrayLike pb, double stiffness, double damping, double rest_length) {
+            mb::Spring sp;
+            sp.name = name;
+            sp.body_a = body_ref(s, a, "body_a");
+            sp.point_a = to_vec3(pa, "point_a");
+            sp.body_b = body_ref(s, b, "body_b");
+            sp.point_b = to_vec3(pb, "point_b");
+            sp.stiffness = stiffness;
+            sp.damping = damping;
+            sp.rest_length = rest_length;
+            return s.add_spring(sp);
+          },
+          py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("body_b"), py::arg("point_b"),
+          py::kw_only(), py::arg("stiffness"), py::arg("damping") = 0.0, py::arg("rest_length") = 0.0,
+          POINSOT_DOC(multibody_Spring))
+      .def(
+          "add_force",
+          [](mb::System& s, const py::object& body, ArrayLike f, ArrayLike p) {
+            mb::ConstantForce c;
+            c.body = body_ref(s, body, "body");
+            c.force_space = to_vec3(f, "force_space");
+            if (!p.obj.is_none()) c.point_body = to_vec3(p, "point_body");
+            s.add_force(c);
+          },
+          py::arg("body"), py::arg("force_space"), py::arg("point_body") = py::none(),
+          POINSOT_DOC(multibody_ConstantForce))
+      .def(
+          "add_torque",
+          [](mb::System& s, const py::object& body, ArrayLike tau, bool in_body_frame) {
+            mb::ConstantTorque c;
+            c.body = body_ref(s, body, "body");
+            c.torque = to_vec3(tau, "torque");
+            c.in_body_frame = in_body_frame;
+            s.add_torque(c);
+          },
+          py::arg("body"), py::arg("torque"), py::kw_only(), py::arg("in_body_frame") = false,
+          POINSOT_DOC(multibody_ConstantTorque))
+      .def_property(
+          "gravity", [](const mb::System& s) { return from_vec3(s.gravity()); },
+          [](mb::System& s, ArrayLike g) { s.set_gravity(to_vec3(g, "gravity_space")); },
+          POINSOT_DOC(multibody_System_set_gravity))
+      .def_property_readonly("body_count", &mb::System::body_count, "Number of bodies.")
+      .def_property_readonly("joint_count", &mb::System::joint_count, "Number of joints.")
+      .def_property_readonly(
+          "body_names",
+          [](const mb::System& s) {
+            std::vector<std::string> n;
+            for (const auto& b : s.bodies())
+              n.push_back(b.name);
+            return n;
+          },
+          "The bodies' names, in index order.")
+      .def_property_readonly(
+          "joint_names",
+          [](const mb::System& s) {
+            std::vector<std::string> n;
+            for (const auto& j : s.joints())
+              n.push_back(j.name);
+            return n;
+          },
+          "The joints' names, in index order.")
+      .def_property_readonly(
+          "masses",
+          [](const mb::System& s) {
+            std::vector<double> v;
+            for (const auto& b : s.bodies())
+              v.push_back(b.mass);
+            return array_from_buffer(std::move(v), {s.body_count()});
+          },
+          POINSOT_DOC(multibody_Body_mass))
+      .def_property_readonly(
+          "poinsot_tensors",
+          [](const mb::System& s) {
+            std::vector<Mat3> v;
+            for (const auto& b : s.bodies())
+              v.push_back(b.poinsot);
+            return stack_mat3(v);
+          },
+          POINSOT_DOC(multibody_Body_poinsot))
+      .def_property_readonly(
+          "inertia_tensors",
+          [](const mb::System& s) {
+            std::vector<Mat3> v;
+            for (const auto& b : s.bodies())
+              v.push_back(b.inertia);
+            return stack_mat3(v);
+          },
+          POINSOT_DOC(multibody_Body_inertia))
+      .def("body_index", &mb::System::body_index, py::arg("name"), POINSOT_DOC(multibody_System_body_index))
+      .def("constraint_rows", &mb::System::constraint_rows, POINSOT_DOC(multibody_System_constraint_rows))
+      .def("length_scale", &mb::System::length_scale, POINSOT_DOC(multibody_System_length_scale))
+      .def("__repr__", [](const mb::System& s) {
+        return "System(bodies=" + std::to_string(s.body_count()) +
+               ", joints=" + std::to_string(s.joint_count()) + ", gravity=" + format_vector(s.gravity()) +
+               " m/s²)";
+      });
+}
+
+void bind_state(py::module_& m) {
+  py::class_<mb::BodyState>(m, "BodyState", "The state of one body (state.hpp).")
+      .def(py::init(&make_body_state), py::kw_only(), py::arg("x_space") = py::none(),
+           py::arg("R_space_body") = py::none(), py::arg("v_space") = py::none(),
+           py::arg("omega_body") = py::none(),
+           "A body state; defaults: x_space = 0 (m), R_space_body = I, v_space = 0 (m/s), omega_body = 0 "
+           "(rad/s).")
+      .def_property(
+          "x_space", [](const mb::BodyState& b) { return from_vec3(b.x_space); },
+          [](mb::BodyState& b, ArrayLike x) { b.x_space = to_vec3(x, "x_space"); },
+          POINSOT_DOC(multibody_BodyState_x_space))
+      .def_property(
+          "R_space_body", [](const mb::BodyState& b) { return from_mat3(b.R_space_body); },
+          [](mb::BodyState& b, ArrayLike R) { b.R_space_body = to_mat3(R, "R_space_body"); },
+          POINSOT_DOC(multibody_BodyState_R_space_body))
+      .def_property(
+          "v_space", [](const mb::BodyState& b) { return from_vec3(b.v_space); },
+          [](mb::BodyState& b, ArrayLike v) { b.v_space = to_vec3(v, "v_space"); },
+          POINSOT_DOC(multibody_BodyState_v_space))
+      .def_property(
+          "omega_body", [](const mb::BodyState& b) { return from_vec3(b.omega_body); },
+          [](mb::BodyState& b, ArrayLike w) { b.omega_body = to_vec3(w, "omega_body"); },
+          POINSOT_DOC(multibody_BodyState_omega_body))
+      .def("__repr__", [](const mb::BodyState& b) {
+        return "BodyState(x_space=" + format_vector(b.x_space) + " m, v_space=" + format_vector(b.v_space) +
+               " m/s, omega_body=" + format_vector(b.omega_body) + " rad/s)";
+      });
+
+  py::class_<mb::State>(m, "State", POINSOT_DOC(file_multibody_state))
+      .def(py::init([](double time, std::vector<mb::BodyState> bodies) {
+             return mb::State{time, std::move(bodies)};
+           }),
+           py::kw_only(), py::arg("time") = 0.0, py::arg("bodies") = std::vector<mb::BodyState>{},
+           "A state at `time` (s) with one BodyState per body, in the System's body order.")
+      .def_readwrite("time", &mb::State::time, POINSOT_DOC(multibody_State_time))
+      .def_property(
+          "bodies", [](const mb::State& s) { return s.bodies; },
+          [](mb::State& s, std::vector<mb::BodyState> b) { s.bodies = std::move(b); },
+          "A copy of the body states (a list); assign a list to replace them, or edit one in place through "
+          "state[i].")
+      .def("__len__", [](const mb::State& s) { return s.bodies.size(); })
+      .def("__getitem__", &body_at, py::arg("i"), py::return_value_policy::reference_internal,
+           "The i-th body's state, a view into this State (editing it edits the State).")
+      .def_property_readonly(
+          "x_space",
+          [](const mb::State& s) { return per_body_vec3(s, [](const auto& b) { return b.x_space; }); },
+          "Centres of mass, space frame, m, shape (N, 3).")
+      .def_property_readonly(
+          "R_space_body",
+          [](const mb::State& s) {
+            std::vector<Mat3> v;
+            for (const auto& b : s.bodies)
+              v.push_back(b.R_space_body);
+            return stack_mat3(v);
+          },
+          "Rotations body → space, shape (N, 3, 3).")
+      .def_property_readonly(
+          "v_space",
+          [](const mb::State& s) { return per_body_vec3(s, [](const auto& b) { return b.v_space; }); },
+          "Velocities of the centres of mass, space frame, m/s, shape (N, 3).")
+      .def_property_readonly(
+          "omega_body",
+          [](const mb::State& s) { return per_body_vec3(s, [](const auto& b) { return b.omega_body; }); },
+          "Angular velocities, body frames, rad/s, shape (N, 3).")
+      .def("__repr__", [](const mb::State& s) {
+        return "State(time=" + format_number(s.time) + " s, bodies=" + std::to_string(s.bodies.size()) + ")";
+      });
+}
+
+void bind_observables(py::module_& m) {
+  m.def("kinetic_energy", &mb::kinetic_energy, py::arg("system"), py::arg("state"),
+        POINSOT_DOC(multibody_kinetic_energy));
+  m.def(
+      "potential_energy",
+      [](const mb::System& s, const mb::State& st) { return mb::potential_energy(s, st.bodies); },
+      py::arg("system"), py::arg("state"), POINSOT_DOC(multibody_potential_energy));
+  m.def("total_energy", &mb::total_energy, py::arg("system"), py::arg("state"),
+        POINSOT_DOC(multibody_total_energy));
+  m.def(
+      "linear_momentum",
+      [](const mb::System& s, const mb::State& st) { return from_vec3(mb::linear_momentum(s, st)); },
+      py::arg("system"), py::arg("state"), POINSOT_DOC(multibody_linear_momentum));
+  m.def(
+      "angular_momentum",
+      [](const mb::System& s, const mb::State& st) { return from_vec3(mb::angular_momentum(s, st)); },
+      py::arg("system"), py::arg("state"), POINSOT_DOC(multibody_angular_momentum));
+  py::class_<mb::ConstraintViolation>(m, "ConstraintViolation", "How far a state is from the constraints.")
+      .def_readonly("orthogonality", &mb::ConstraintViolation::orthogonality,
+                    POINSOT_DOC(multibody_ConstraintViolation_orthogonality))
+      .def_readonly("joint_gap", &mb::ConstraintViolation::joint_gap,
+                    POINSOT_DOC(multibody_ConstraintViolation_joint_gap))
+      .def_readonly("joint_angle", &mb::ConstraintViolation::joint_angle,
+                    POINSOT_DOC(multibody_ConstraintViolation_joint_angle))
+      .def_readonly("joint_velocity", &mb::ConstraintViolation::joint_velocity,
+                    POINSOT_DOC(multibody_ConstraintViolation_joint_velocity))
+      .def("__repr__", [](const mb::ConstraintViolation& c) {
+        return "ConstraintViolation(orthogonality=" + format_number(c.orthogonality) +
+               ", joint_gap=" + format_number(c.joint_gap) +
+               " m, joint_angle=" + format_number(c.joint_angle) +
+               ", joint_velocity=" + format_number(c.joint_velocity) + " m/s)";
+      });
+  m.def("constraint_violation", &mb::constraint_violation, py::arg("system"), py::arg("state"),
+        "Max violation of RᵀR = I, of the joints' positions (m) and angles, and of the ball rows' velocity "
+        "(m/s).");
+  m.def("check_consistent", &mb::check_consistent, py::arg("system"), py::arg("state"),
+        POINSOT_DOC(multibody_check_consistent));
+}
+
+void bind_rattle(py::module_& m) {
+  py::class_<mb::Rattle>(m, "Rattle", POINSOT_DOC(file_multibody_rattle))
+      .def(py::init([](const mb::System& s, double dt, double tolerance, int max_iterations) {
+             mb::RattleOptions o;
+             o.tolerance = tolerance;
+             o.max_iterations = max_iterations;
+             return mb::Rattle(s, dt, o);
+           }),
+           py::arg("system"), py::arg("dt"), py::kw_only(), py::arg("tolerance") = 1e-13,
+           py::arg("max_iterations") = 50, POINSOT_DOC(multibody_Rattle_Rattle))
+      .def(
+          "step",
+          [](mb::Rattle& r, mb::State& state, long steps) {
+            if (steps < 1) throw InvalidInput("steps: " + std::to_string(steps) + " must be >= 1");
+            py::gil_scoped_release release;  // no Python callbacks in the multibody layer
+            for (long i = 0; i < steps; ++i)
+              r.step(state);
+          },
+          py::arg("state"), py::arg("steps") = 1, POINSOT_DOC(multibody_Rattle_step))
+      .def_property_readonly("dt", &mb::Rattle::dt, "The step size, s.")
+      .def_property_readonly("uses_tree_solver", &mb::Rattle::uses_tree_solver,
+                             "True when the KKT solves use the O(N) tree factorisation.")
+      .def_property_readonly("last_iterations", &mb::Rattle::last_iterations,
+                             POINSOT_DOC(multibody_Rattle_last_iterations))
+      .def_property_readonly("position_stage", &mb::Rattle::position_stage,
+                             POINSOT_DOC(multibody_Rattle_position_stage))
+      .def_property_readonly("velocity_stage", &mb::Rattle::velocity_stage,
+                             POINSOT_DOC(multibody_Rattle_position_stage));
+}
+
+void bind_scenario(py::module_& m) {
+  py::class_<mb::Scenario>(m, "Scenario", POINSOT_DOC(file_multibody_scenario))
+      .def_readwrite("system", &mb::Scenario::system, "The model.")
+      .def_readwrite("initial", &mb::Scenario::initial, "The initial state (velocities already projected).")
+      .def_readwrite("dt", &mb::Scenario::dt, POINSOT_DOC(multibody_Scenario_dt))
+      .def_readwrite("duration", &mb::Scenario::duration, POINSOT_DOC(multibody_Scenario_duration))
+      .def_readwrite("output_every", &mb::Scenario::output_every,
+                     POINSOT_DOC(multibody_Scenario_output_every));
+  m.def("is_multibody_scenario", &mb::is_multibody_scenario, py::arg("toml_path"),
+        POINSOT_DOC(multibody_is_multibody_scenario));
+  m.def("load_scenario", &mb::load_scenario, py::arg("toml_path"), POINSOT_DOC(multibody_load_scenario));
+  m.def("parse_scenario", &mb::parse_scenario, py::arg("toml_text"), py::arg("source_name") = "<string>",
+        POINSOT_DOC(multibody_parse_scenario));
+  m.def("project_velocities", &mb::project_velocities, py::arg("system"), py::arg("state"),
+        POINSOT_DOC(multibody_project_velocities));
+
+  py::class_<mb::RunSummary>(m, "RunSummary", POINSOT_DOC(multibody_RunSummary))
+      .def_readonly("steps", &mb::RunSummary::steps)
+      .def_readonly("energy_initial", &mb::RunSummary::energy_initial,
+                    POINSOT_DOC(multibody_RunSummary_energy_initial))
+      .def_readonly("energy_final", &mb::RunSummary::energy_final)
+      .def_readonly("max_energy_error", &mb::RunSummary::max_energy_error,
+                    POINSOT_DOC(multibody_RunSummary_max_energy_error))
+      .def_readonly("max_joint_gap", &mb::RunSummary::max_joint_gap,
+                    POINSOT_DOC(multibody_RunSummary_max_joint_gap))
+      .def_readonly("max_joint_angle", &mb::RunSummary::max_joint_angle,
+                    POINSOT_DOC(multibody_RunSummary_max_joint_angle))
+      .def_readonly("max_orthogonality", &mb::RunSummary::max_orthogonality,
+                    POINSOT_DOC(multibody_RunSummary_max_orthogonality))
+      .def_readonly("mean_newton_iterations", &mb::RunSummary::mean_newton_iterations)
+      .def_readonly("max_newton_iterations", &mb::RunSummary::max_newton_iterations)
+      .def_readonly("tree_solver", &mb::RunSummary::tree_solver)
+      .def_readonly("cpu_seconds_per_step", &mb::RunSummary::cpu_seconds_per_step)
+      .def("__repr__", [](const mb::RunSummary& r) {
+        return "RunSummary(steps=" + std::to_string(r.steps) +
+               ", max_energy_error=" + format_number(r.max_energy_error) +
+               " J, max_joint_gap=" + format_number(r.max_joint_gap) +
+               " m, max_orthogonality=" + format_number(r.max_orthogonality) + ")";
+      });
+  m.def(
+      "run_scenario",
+      [](const mb::Scenario& sc, const std::string& trajectory_csv, const py::object& report) {
+        std::ostringstream text;
+        mb::RunSummary summary;
+        {
+          py::gil_scoped_release release;
+          summary = mb::run_scenario(sc, report.is_none() ? nullptr : &text, trajectory_csv);
+        }
+        if (!report.is_none()) report.attr("write")(text.str());
+        return summary;
+      },
+      py::arg("scenario"), py::arg("trajectory_csv") = "", py::arg("report") = py::none(),
+      POINSOT_DOC(multibody_run_scenario));
+}
+
+}  // namespace
+
+void bind_multibody(py::module_& parent) {
+  auto m = parent.def_submodule("multibody", POINSOT_DOC(file_multibody_model));
+  m.attr("WORLD") = mb::kWorld;
+  bind_system(m);
+  bind_state(m);
+  bind_multipliers(m);
+  bind_observables(m);
+  bind_rattle(m);
+  bind_scenario(m);
+}
+
+}  // namespace poinsot::python

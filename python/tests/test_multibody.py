@@ -1,0 +1,230 @@
+"""poinsot.multibody: the multibody layer from Python, checked against closed forms computed here in NumPy."""
+import io
+import math
+
+import numpy as np
+import pytest
+
+import poinsot
+from poinsot import multibody as mb
+
+from conftest import SOURCE_DIR
+
+G = 9.81
+
+
+def hat(u):
+    return np.array([[0.0, -u[2], u[1]], [u[2], 0.0, -u[0]], [-u[1], u[0], 0.0]])
+
+
+def rot_y(angle):
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+
+
+def rod_poinsot(m, length, radius):
+    """K = ∫ρ X⊗X of a solid cylinder along the body z axis, about its centre (kg·m²)."""
+    return np.diag([m * radius**2 / 4, m * radius**2 / 4, m * length**2 / 12])
+
+
+def inertia_from_poinsot(K):
+    return np.trace(K) * np.eye(3) - K
+
+
+def compound_pendulum(m=1.0, length=1.0, radius=0.01):
+    """A rod hung from its top end by a hinge about the space y axis; at rest it hangs along −z."""
+    system = mb.System()
+    rod = system.add_body("rod", m, rod_poinsot(m, length, radius))
+    pivot_body = np.array([0.0, 0.0, length / 2])
+    system.add_hinge("pivot", rod, pivot_body, [0, 1, 0], mb.WORLD, [0, 0, 0], [0, 1, 0])
+    system.gravity = [0, 0, -G]
+    return system, pivot_body
+
+
+def pendulum_state(theta0, pivot_body):
+    R = rot_y(theta0)
+    return mb.State(bodies=[mb.BodyState(x_space=-R @ pivot_body, R_space_body=R)])
+
+
+def swing_angle(R):
+    """Angle of the rod (body z axis) from the downward vertical, about +y."""
+    return math.atan2(R[0, 2], R[2, 2])
+
+
+def test_compound_pendulum_period_and_constraints():
+    m, length, radius = 1.0, 1.0, 0.01
+    system, pivot_body = compound_pendulum(m, length, radius)
+    J = inertia_from_poinsot(rod_poinsot(m, length, radius))
+    d = length / 2
+    I_pivot = J[1, 1] + m * d**2  # parallel-axis theorem about the hinge axis
+    omega0 = math.sqrt(m * G * d / I_pivot)
+    theta0 = 0.02
+    # Small-oscillation period with the first amplitude correction (1 + θ0²/16) of the exact pendulum period:
+    # the next term, 11θ0⁴/3072 ≈ 6e-10, is below what the test resolves.
+    period = 2 * math.pi / omega0 * (1 + theta0**2 / 16)
+
+    h = 1e-3
+    state = pendulum_state(theta0, pivot_body)
+    mb.check_consistent(system, state)
+    rattle = mb.Rattle(system, h)
+    assert rattle.dt == h and rattle.uses_tree_solver
+
+    n_steps = int(3.2 * period / h)
+    angles = np.empty(n_steps + 1)
+    angles[0] = swing_angle(state[0].R_space_body)
+    worst_gap = worst_orth = worst_reported = 0.0
+    for k in range(1, n_steps + 1):
+        rattle.step(state)
+        R = state[0].R_space_body
+        angles[k] = swing_angle(R)
+        # Independent check of the constraints in NumPy: the hinge point stays at the origin, R stays orthogonal.
+        worst_gap = max(worst_gap, np.linalg.norm(state[0].x_space + R @ pivot_body))
+        worst_orth = max(worst_orth, np.linalg.norm(R.T @ R - np.eye(3)))
+        v = mb.constraint_violation(system, state)
+        worst_reported = max(worst_reported, v.joint_gap, v.orthogonality, v.joint_angle)
+    assert state.time == pytest.approx(n_steps * h, rel=1e-12)
+    # RATTLE solves the constraints by Newton to 1e-13 of the length scale (0.5 m): round-off level.
+    assert worst_gap < 1e-12
+    assert worst_orth < 1e-12
+    assert worst_reported < 1e-12
+
+    # Downward zero crossings of θ(t), located by linear interpolation (θ is ≈ sinusoidal, so the
+    # interpolation error at a crossing, where θ'' = 0, is O(h³) relative: negligible).
+    idx = np.nonzero((angles[:-1] > 0) & (angles[1:] <= 0))[0]
+    crossings = (idx + angles[idx] / (angles[idx] - angles[idx + 1])) * h
+    assert len(crossings) >= 3
+    measured = np.diff(crossings).mean()
+    # RATTLE is second order: its phase error on a harmonic oscillator is (ω h)²/24 ≈ 6e-7 relative at
+    # ω ≈ 3.8 rad/s, h = 1e-3. Tolerance 3e-6: five times that, and far below the θ0²/16 = 2.5e-5 correction
+    # (so the test also sees whether the amplitude dependence is right).
+    assert measured == pytest.approx(period, rel=3e-6)
+    # Energy: RATTLE is symplectic, the energy error stays O(h²) bounded (relative to the releasable energy).
+    e_release = m * G * d * (1 - math.cos(theta0))
+    e_now = mb.total_energy(system, state)
+    e_start = mb.total_energy(system, pendulum_state(theta0, pivot_body))
+    assert abs(e_now - e_start) < 1e-5 * e_release
+
+
+def test_rattle_steps_many_at_once_like_one_at_a_time():
+    system, pivot_body = compound_pendulum()
+    a, b = pendulum_state(0.3, pivot_body), pendulum_state(0.3, pivot_body)
+    ra, rb = mb.Rattle(system, 2e-3), mb.Rattle(system, 2e-3)
+    ra.step(a, steps=50)
+    for _ in range(50):
+        rb.step(b)
+    np.testing.assert_array_equal(a.R_space_body, b.R_space_body)
+    np.testing.assert_array_equal(a.x_space, b.x_space)
+    assert a.time == b.time
+
+
+def test_free_body_lambda_equals_single_body_formula():
+    rng = np.random.default_rng(7)
+    A = rng.normal(size=(3, 3))
+    Q, _ = np.linalg.qr(A)
+    Q *= np.sign(np.linalg.det(Q))
+    K = Q @ np.diag([0.3, 0.7, 1.1]) @ Q.T  # a general (non-diagonal) Poinsot tensor, kg·m²
+    K = (K + K.T) / 2
+    system = mb.System()
+    system.add_body("free", 2.0, K)
+    R = rot_y(0.4) @ Q
+    omega = np.array([1.3, -0.4, 2.1])
+    state = mb.State(bodies=[mb.BodyState(x_space=[1, 2, 3], R_space_body=R, v_space=[0.1, 0, 0],
+                                          omega_body=omega)])
+    exact = mb.exact_multipliers(system, state)
+
+    # Oracle in NumPy: Euler's equations J ω̇ = −ω × Jω (no torque), Λ = (j(ω)² + j(ω̇)) K (ERRATA.md).
+    J = inertia_from_poinsot(K)
+    omega_dot = np.linalg.solve(J, -np.cross(omega, J @ omega))
+    Lam = (hat(omega) @ hat(omega) + hat(omega_dot)) @ K
+    scale = np.linalg.norm(omega) ** 2 * np.linalg.norm(K)
+    # One dense solve in double precision: error a few ulps of the terms, 1e-13 relative leaves a margin.
+    np.testing.assert_allclose(exact.omega_dot_body[0], omega_dot, rtol=0, atol=1e-13 * np.linalg.norm(omega) ** 2)
+    np.testing.assert_allclose(exact.Lambda_body[0], Lam, rtol=0, atol=1e-13 * scale)
+    # Λ is symmetric (it multiplies the symmetric constraint RᵀR = I), and a free body has no joints.
+    np.testing.assert_allclose(Lam, Lam.T, atol=1e-13 * scale)
+    assert exact.Lambda_body.shape == (1, 3, 3)
+    assert exact.joint_force_space.shape == (0, 3)
+    np.testing.assert_allclose(exact.acceleration_space, np.zeros((1, 3)), atol=1e-15)
+    # Free motion conserves both momenta, here read from the bindings and compared with NumPy.
+    np.testing.assert_allclose(mb.linear_momentum(system, state), 2.0 * np.array([0.1, 0, 0]), rtol=1e-15)
+    L = np.cross([1, 2, 3], 2.0 * np.array([0.1, 0, 0])) + R @ J @ omega
+    np.testing.assert_allclose(mb.angular_momentum(system, state), L, rtol=1e-14, atol=1e-14)
+
+
+def test_hanging_pendulum_joint_reaction_is_the_weight():
+    """At rest, hanging, the hinge carries the weight: force on the rod = +m g ẑ (Newton's first law)."""
+    system, pivot_body = compound_pendulum(m=1.5)
+    exact = mb.exact_multipliers(system, pendulum_state(0.0, pivot_body))
+    np.testing.assert_allclose(exact.joint_force_space[0], [0, 0, 1.5 * G], atol=1e-12)
+    np.testing.assert_allclose(exact.joint_torque_space[0], np.zeros(3), atol=1e-12)
+
+
+def test_double_pendulum_scenario(tmp_path):
+    path = SOURCE_DIR / "examples" / "multibody" / "double_pendulum.toml"
+    assert mb.is_multibody_scenario(str(path))
+    scenario = mb.load_scenario(str(path))
+    assert scenario.system.body_names == ["upper", "lower"]
+    assert scenario.system.joint_names == ["pivot", "elbow"]
+    np.testing.assert_array_equal(scenario.system.gravity, [0, 0, -G])
+    scenario.duration = 2.0  # a shorter run keeps the suite fast; the example runs 10 s
+    csv = tmp_path / "trajectory.csv"
+    report = io.StringIO()
+    summary = mb.run_scenario(scenario, trajectory_csv=str(csv), report=report)
+    assert summary.steps == round(scenario.duration / scenario.dt)
+    # Joint gaps and orthogonality at round-off (Newton to 1e-13 of the 1 m length scale).
+    assert summary.max_joint_gap < 1e-12
+    assert summary.max_orthogonality < 1e-12
+    # Energy error of a second-order symplectic method, O(h²), relative to the releasable energy m g l ≈ 30 J.
+    assert summary.max_energy_error < 1e-4 * 3 * G
+    assert summary.tree_solver
+    assert report.getvalue().strip()
+    rows = np.loadtxt(csv, delimiter=",", skiprows=1, ndmin=2)
+    assert rows.shape[1] == 1 + 13 * 2
+    # The initial state the file gives satisfies the joints (velocities projected by the loader).
+    mb.check_consistent(scenario.system, scenario.initial)
+    v = mb.constraint_violation(scenario.system, scenario.initial)
+    assert v.joint_velocity < 1e-12
+
+
+def test_parse_scenario_from_text():
+    text = (SOURCE_DIR / "examples" / "multibody" / "compound_pendulum.toml").read_text(encoding="utf-8")
+    scenario = mb.parse_scenario(text, "compound_pendulum.toml")
+    assert scenario.system.body_count == 1 and scenario.system.joint_count == 1
+    assert len(scenario.initial) == 1
+
+
+def test_bad_input_raises_value_error_with_the_library_message():
+    system = mb.System()
+    with pytest.raises(ValueError, match=r"^multibody body 'rod': mass: got -1 kg, expected a finite number > 0$"):
+        system.add_body("rod", -1.0, np.eye(3))
+    with pytest.raises(ValueError, match=r"multibody body 'plate'.*expected K positive semi-definite"):
+        system.add_body("plate", 1.0, np.diag([1.0, 1.0, -0.5]))
+    rod = system.add_body("rod", 1.0, rod_poinsot(1.0, 1.0, 0.01))
+    with pytest.raises(ValueError, match=r"multibody joint 'j': body b: body index 3 out of range"):
+        system.add_ball("j", rod, [0, 0, 0.5], 3, [0, 0, 0])
+    with pytest.raises(ValueError, match=r"multibody joint 'h': axis a: axis .* is zero"):
+        system.add_hinge("h", "rod", [0, 0, 0.5], [0, 0, 0], "world", [0, 0, 0], [0, 1, 0])
+    with pytest.raises(ValueError, match=r"^multibody: body 'stick' not found; expected 'world' or one of the 1 bodies$"):
+        system.add_ball("k", "stick", [0, 0, 0.5])
+    with pytest.raises(ValueError, match=r"point_a: expected an array of shape \(3,\), got shape \(2,\)"):
+        system.add_ball("k", rod, [0, 0])
+    with pytest.raises(TypeError, match=r"body_a: expected a body index \(int\) or a body name \(str\)"):
+        system.add_ball("k", 1.5, [0, 0, 0])
+    with pytest.raises(ValueError, match=r"^multibody: time step dt: got 0 s, expected a finite number > 0$"):
+        mb.Rattle(system, 0.0)
+    with pytest.raises(ValueError, match=r"^multibody: state has 0 bodies; expected 1$"):
+        mb.Rattle(system, 1e-3).step(mb.State())
+    with pytest.raises(ValueError, match=r"scenario"):
+        mb.parse_scenario("[[bodies]]\nname = 'a'\nmass = -1\n", "bad.toml")
+
+
+def test_state_views_and_copies():
+    system, pivot_body = compound_pendulum()
+    state = pendulum_state(0.1, pivot_body)
+    state[0].omega_body = [0, 2.0, 0]  # edits the State through the view
+    np.testing.assert_array_equal(state.omega_body, [[0, 2.0, 0]])
+    copy = state.bodies
+    copy[0].omega_body = [0, 0, 0]  # a copy: the State is unchanged
+    np.testing.assert_array_equal(state.omega_body, [[0, 2.0, 0]])
+    assert len(state) == 1 and state.x_space.shape == (1, 3) and state.R_space_body.shape == (1, 3, 3)
+    assert "multibody" in poinsot.__all__
