@@ -279,6 +279,8 @@ from poinsot import inertia as inertia
 
 from poinsot import analysis as analysis
 
+from poinsot import multibody as multibody
+
 def _simulate(*args: Any, **kwargs: Any) -> dict: ...
 
 def _run_scenario(scenario: Scenario, out_dir: str) -> Tuple[str, str]: ...

@@ -44,6 +44,9 @@ def body_of(doc):
     (lambda: poinsot.inertia.combine, "inertia_combine"),
     (lambda: poinsot.analysis.lambda_from_state, "analysis_lambda_from_state"),
     (lambda: poinsot.load_scenario, "io_load_scenario"),
+    (lambda: poinsot.multibody.System.add_hinge, "multibody_System_add_hinge"),
+    (lambda: poinsot.multibody.Rattle.step, "multibody_Rattle_step"),
+    (lambda: poinsot.multibody.run_scenario, "multibody_run_scenario"),
 ])
 def test_docstring_is_the_header_doc_comment(header_docs, obj, key):
     _, docs = header_docs

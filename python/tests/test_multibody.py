@@ -98,6 +98,10 @@ def test_compound_pendulum_period_and_constraints():
     # ω ≈ 3.8 rad/s, h = 1e-3. Tolerance 3e-6: five times that, and far below the θ0²/16 = 2.5e-5 correction
     # (so the test also sees whether the amplitude dependence is right).
     assert measured == pytest.approx(period, rel=3e-6)
+    # Sharper: Störmer–Verlet/RATTLE on a harmonic oscillator has cos(ω̃h) = 1 − (ωh)²/2, i.e. a period
+    # shorter by (ωh)²/24 + O(h⁴). With that leading term removed the residual is O(h⁴) and O(θ0²(ωh)²),
+    # both ≈ 1e-10 here (measured 2e-10): an error of the wrong order or sign in the integrator fails this.
+    assert measured == pytest.approx(period * (1 - (omega0 * h) ** 2 / 24), rel=1e-8)
     # Energy: RATTLE is symplectic, the energy error stays O(h²) bounded (relative to the releasable energy).
     e_release = m * G * d * (1 - math.cos(theta0))
     e_now = mb.total_energy(system, state)
