@@ -371,7 +371,8 @@ void bind_rattle(py::module_& m) {
       .def(
           "step",
           [](mb::Rattle& r, mb::State& state, long steps) {
-            if (steps < 1) throw InvalidInput("steps: " + std::to_string(steps) + " must be >= 1");
+            if (steps < 1)
+              throw InvalidInput("steps: got " + std::to_string(steps) + ", expected an integer >= 1");
             py::gil_scoped_release release;  // no Python callbacks in the multibody layer
             for (long i = 0; i < steps; ++i)
               r.step(state);

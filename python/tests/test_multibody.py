@@ -218,6 +218,8 @@ def test_bad_input_raises_value_error_with_the_library_message():
         mb.Rattle(system, 0.0)
     with pytest.raises(ValueError, match=r"^multibody: state has 0 bodies; expected 1$"):
         mb.Rattle(system, 1e-3).step(mb.State())
+    with pytest.raises(ValueError, match=r"^steps: got 0, expected an integer >= 1$"):
+        mb.Rattle(system, 1e-3).step(mb.State(bodies=[mb.BodyState()]), steps=0)
     with pytest.raises(ValueError, match=r"scenario"):
         mb.parse_scenario("[[bodies]]\nname = 'a'\nmass = -1\n", "bad.toml")
 
