@@ -121,6 +121,20 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
     }
   };
   const DenseContext dense{&integrator, &flips};
+  // After every step from `prev` to s: a finite state, the invariant errors, and a flip located inside the
+  // step by root finding on the dense output, or on a cubic Hermite interpolant for methods without one.
+  const auto after_step = [&](const State& prev) {
+    require_finite_state(integrator, s, result.steps);
+    invariants.record(s, result.errors);
+    if (!locate) return;
+    const double c0 = flips.component(prev);
+    const double c1 = flips.component(s);
+    if (!FlipDetector::sign_change(c0, c1)) return;
+    result.flip_times.push_back(
+        integrator.has_dense_output()
+            ? locate_sign_change(&dense_component, &dense, prev.t, s.t, c0, c1)
+            : FlipDetector::hermite_root(prev.t, s.t, c0, c1, flips.rate(prev), flips.rate(s)));
+  };
 
   if (!emit(s)) return finish();
   long long next = 1;  // index of the next sample
@@ -134,15 +148,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
       const StepResult r = take_step(s, last ? remaining : h);
       if (last && r.dt_taken == remaining) s.t = options.t_end;
       h = r.dt_next;
-      require_finite_state(integrator, s, result.steps);
-      invariants.record(s, result.errors);
-      if (locate) {
-        const double c0 = flips.component(prev);
-        const double c1 = flips.component(s);
-        if (FlipDetector::sign_change(c0, c1)) {
-          result.flip_times.push_back(locate_sign_change(&dense_component, &dense, prev.t, s.t, c0, c1));
-        }
-      }
+      after_step(prev);
       while (next <= n_intervals && sample_time(next) <= s.t) {
         const double ts = sample_time(next);
         ++next;
@@ -165,18 +171,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
       const State prev = s;
       take_step(s, hh);
       if (k == n - 1) s.t = b;
-      require_finite_state(integrator, s, result.steps);
-      invariants.record(s, result.errors);
-      if (locate) {
-        const double c0 = flips.component(prev);
-        const double c1 = flips.component(s);
-        if (FlipDetector::sign_change(c0, c1)) {
-          result.flip_times.push_back(
-              integrator.has_dense_output()
-                  ? locate_sign_change(&dense_component, &dense, prev.t, s.t, c0, c1)
-                  : FlipDetector::hermite_root(prev.t, s.t, c0, c1, flips.rate(prev), flips.rate(s)));
-        }
-      }
+      after_step(prev);
     }
     if (!emit(s)) return finish();
   }
