@@ -282,8 +282,7 @@ double Dop853Integrator::nominal_step() const {
 StepResult Dop853Integrator::step(State& state, double dt) {
   Impl& m = *impl_;
   if (!m.resume.matches(state)) {
-    const Quat q = so3::quaternion_from_rotation(state.R);
-    m.y << q.w(), q.x(), q.y(), q.z(), state.omega_body;
+    m.y = detail::vec7_of(state);
     m.k0_valid = false;
   }
   const double t = state.t;

@@ -13,6 +13,7 @@
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/state.hpp"
 #include "poinsot/dynamics/torque.hpp"
+#include "poinsot/so3/quaternion.hpp"
 
 namespace poinsot::dynamics::detail {
 
@@ -83,6 +84,15 @@ inline void reorthogonalize(Mat3& R) {
   R -= 0.5 * (R * E);
 }
 inline constexpr int kReorthogonalizeEvery = 16;
+
+/// y = (q, ω) of a State: the canonical unit quaternion of R (Shepperd) and the body angular velocity
+/// (rad/s).
+inline Vec7 vec7_of(const State& s) {
+  const Quat q = so3::quaternion_from_rotation(s.R);
+  Vec7 y;
+  y << q.w(), q.x(), q.y(), q.z(), s.omega_body;
+  return y;
+}
 
 /// Keeps the integrator's own representation of the state between steps (a quaternion, a momentum in the
 /// principal frame, ...) and tells whether the State handed to the next step is the one it produced, so that

@@ -70,8 +70,7 @@ StepResult Rk4Integrator::step(State& state, double dt) {
   Impl& m = *impl_;
   detail::Vec7& y = m.y;
   if (!m.resume.matches(state)) {
-    const Quat q = so3::quaternion_from_rotation(state.R);
-    y << q.w(), q.x(), q.y(), q.z(), state.omega_body;
+    y = detail::vec7_of(state);
   }
   const double t = state.t;
   const double h = dt;
