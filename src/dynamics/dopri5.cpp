@@ -108,17 +108,7 @@ StepResult Dopri5Integrator::step(State& state, double dt) {
       m.has_step = true;
       m.y = y1;
       m.k1 = k7;
-      const double qn = m.y.head<4>().norm();
-      if (std::abs(qn - 1.0) > 1e-8) {  // keep |q| near 1 (R(q) does not depend on it; rtol does)
-        m.y.head<4>() /= qn;
-        m.k1_valid = false;
-      } else {
-        m.k1_valid = true;
-      }
-      state.t = t + h;
-      state.R = detail::rotation_of(m.y);
-      state.omega_body = m.y.tail<3>();
-      m.resume.remember(state);
+      m.k1_valid = detail::accept_step(m.y, t + h, state, m.resume);
       return {h, h_next, rejected};
     }
     ++rejected;

@@ -7,6 +7,7 @@
 //
 // The state vector is y = (q_w, q_x, q_y, q_z, ω1, ω2, ω3). The quaternion ODE is linear and homogeneous in
 // q, so a drift of |q| does not change the rotation R(q/|q|): the integrators normalise on output.
+#include <cmath>
 #include <memory>
 
 #include "poinsot/core/types.hpp"
@@ -108,5 +109,20 @@ struct ResumeCheck {
     valid = true;
   }
 };
+
+/// Ends an accepted step of a Runge–Kutta method on y = (q, ω): renormalises q when |q| has drifted from 1 by
+/// more than 1e-8 (R(q) does not depend on |q|, but the tolerance scaling does), writes t, R(q) and ω into
+/// `state` and remembers it. Returns false when q was rescaled, i.e. a first-same-as-last derivative no
+/// longer matches y.
+inline bool accept_step(Vec7& y, double t, State& state, ResumeCheck& resume) {
+  const double qn = y.head<4>().norm();
+  const bool unchanged = std::abs(qn - 1.0) <= 1e-8;
+  if (!unchanged) y.head<4>() /= qn;
+  state.t = t;
+  state.R = rotation_of(y);
+  state.omega_body = y.tail<3>();
+  resume.remember(state);
+  return unchanged;
+}
 
 }  // namespace poinsot::dynamics::detail
