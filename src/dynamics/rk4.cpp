@@ -1,7 +1,5 @@
 #include "poinsot/dynamics/rk4.hpp"
 
-#include <array>
-
 #include "euler_rhs.hpp"
 #include "poinsot/core/check.hpp"
 #include "poinsot/so3/quaternion.hpp"
@@ -9,38 +7,37 @@
 namespace poinsot::dynamics {
 namespace {
 
-using Arr7 = std::array<double, 7>;
+/// ẏ of the torque-free body in a principal body frame, y = (q, ω), q̇ = ½ q ⊗ (0, ω), ω̇_i = g_i ω_j ω_k with
+/// g_i = (I_j − I_k)/I_i: the hot path, in scalars so that the compiler keeps everything in registers.
+struct FreePrincipalRhs {
+  double g1, g2, g3;
+  inline void operator()(const double* y, double* d) const {
+    const double w1 = y[4], w2 = y[5], w3 = y[6];
+    d[0] = -0.5 * (y[1] * w1 + y[2] * w2 + y[3] * w3);
+    d[1] = 0.5 * (y[0] * w1 + y[2] * w3 - y[3] * w2);
+    d[2] = 0.5 * (y[0] * w2 + y[3] * w1 - y[1] * w3);
+    d[3] = 0.5 * (y[0] * w3 + y[1] * w2 - y[2] * w1);
+    d[4] = g1 * w2 * w3;
+    d[5] = g2 * w3 * w1;
+    d[6] = g3 * w1 * w2;
+  }
+};
 
-/// ẏ of the torque-free body in a principal body frame, y = (q, ω): the hot path, on plain arrays.
-inline void free_principal_rhs(const Arr7& y, Arr7& d, const Vec3& g) {
-  const double w1 = y[4], w2 = y[5], w3 = y[6];
-  d[0] = -0.5 * (y[1] * w1 + y[2] * w2 + y[3] * w3);
-  d[1] = 0.5 * (y[0] * w1 + y[2] * w3 - y[3] * w2);
-  d[2] = 0.5 * (y[0] * w2 + y[3] * w1 - y[1] * w3);
-  d[3] = 0.5 * (y[0] * w3 + y[1] * w2 - y[2] * w1);
-  d[4] = g[0] * w2 * w3;
-  d[5] = g[1] * w3 * w1;
-  d[6] = g[2] * w1 * w2;
-}
-
-/// One classical RK4 step of the torque-free body in a principal frame, on values (nothing aliased).
-Arr7 free_principal_step(const Arr7 y, const double g1, const double g2, const double g3, const double h) {
-  const Vec3 g(g1, g2, g3);
-  Arr7 k1, k2, k3, k4, tmp;
-  free_principal_rhs(y, k1, g);
+/// One classical RK4 step of the torque-free body in a principal frame, in place on y = (q, ω).
+inline void free_principal_step(double* y, const FreePrincipalRhs& f, const double h) {
+  double k1[7], k2[7], k3[7], k4[7], tmp[7];
+  f(y, k1);
   for (int i = 0; i < 7; ++i)
     tmp[i] = y[i] + 0.5 * h * k1[i];
-  free_principal_rhs(tmp, k2, g);
+  f(tmp, k2);
   for (int i = 0; i < 7; ++i)
     tmp[i] = y[i] + 0.5 * h * k2[i];
-  free_principal_rhs(tmp, k3, g);
+  f(tmp, k3);
   for (int i = 0; i < 7; ++i)
     tmp[i] = y[i] + h * k3[i];
-  free_principal_rhs(tmp, k4, g);
-  Arr7 out;
+  f(tmp, k4);
   for (int i = 0; i < 7; ++i)
-    out[i] = y[i] + h / 6 * (k1[i] + 2 * (k2[i] + k3[i]) + k4[i]);
-  return out;
+    y[i] += h / 6 * (k1[i] + 2 * (k2[i] + k3[i]) + k4[i]);
 }
 
 }  // namespace
@@ -76,12 +73,7 @@ StepResult Rk4Integrator::step(State& state, double dt) {
   const double h = dt;
   const double h2 = 0.5 * h;
   if (m.fast) {
-    Arr7 y0;
-    for (int i = 0; i < 7; ++i)
-      y0[i] = y[i];
-    const Arr7 y1 = free_principal_step(y0, m.gyro[0], m.gyro[1], m.gyro[2], h);
-    for (int i = 0; i < 7; ++i)
-      y[i] = y1[i];
+    free_principal_step(y.data(), FreePrincipalRhs{m.gyro[0], m.gyro[1], m.gyro[2]}, h);
   } else {
     const detail::Vec7 k1 = m.f(t, y);
     const detail::Vec7 k2 = m.f(t + h2, y + h2 * k1);
