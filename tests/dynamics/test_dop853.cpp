@@ -13,14 +13,6 @@ namespace {
 
 using dynamics::Dop853Integrator;
 
-const RigidBody kBody = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
-State tumbling() {
-  State s;
-  s.R = so3::exp(Vec3(0.3, -0.2, 0.5));
-  s.omega_body = Vec3(1.0, 0.6, -0.8);
-  return s;
-}
-
 IntegratorOptions tolerances(double tol, double dt = 0.5) {
   IntegratorOptions o;
   o.rtol = tol;

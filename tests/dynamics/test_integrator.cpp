@@ -10,8 +10,6 @@
 namespace poinsot::test {
 namespace {
 
-const RigidBody kBody = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
-
 TEST(Integrator, DenseOutputOfAFixedStepMethodIsRefused) {
   const auto m = dynamics::make_integrator("rk4", kBody, TorqueModel::none());
   try {

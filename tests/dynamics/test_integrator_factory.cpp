@@ -10,8 +10,6 @@ namespace {
 
 using dynamics::make_integrator;
 
-const RigidBody kBody = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
-
 TEST(IntegratorFactory, CreatesEveryMethod) {
   struct Expect {
     const char* name;

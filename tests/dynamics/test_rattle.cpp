@@ -14,24 +14,6 @@ namespace {
 
 using dynamics::RattleIntegrator;
 
-const RigidBody kBody = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
-State tumbling() {
-  State s;
-  s.R = so3::exp(Vec3(0.3, -0.2, 0.5));
-  s.omega_body = Vec3(1.0, 0.6, -0.8);
-  return s;
-}
-
-double order_against_reference(const RigidBody& body, std::shared_ptr<const TorqueModel> tau, const State& s0,
-                               double T, long long n) {
-  const State ref = reference(body, tau, s0, T);
-  RattleIntegrator a(body, tau);
-  RattleIntegrator b(body, tau);
-  const double e1 = state_error(run_fixed(a, s0, T, n), ref);
-  const double e2 = state_error(run_fixed(b, s0, T, 2 * n), ref);
-  return measured_order(e1, e2);
-}
-
 /// Λ = (j(ω)² + j(ω̇))K with J ω̇ = τ − ω × Jω (ERRATA conventions).
 Mat3 exact_multiplier(const RigidBody& body, const TorqueModel& tau, const State& s) {
   const Vec3& w = s.omega_body;
@@ -53,16 +35,18 @@ double multiplier_error(const RigidBody& body, std::shared_ptr<const TorqueModel
 }
 
 TEST(Rattle, ConvergesAtOrderTwo) {
-  EXPECT_NEAR(order_against_reference(kBody, TorqueModel::none(), tumbling(), 2.0, 200), 2.0, 0.05);
+  EXPECT_NEAR(order_against_reference<RattleIntegrator>(kBody, TorqueModel::none(), tumbling(), 2.0, 200),
+              2.0, 0.05);
 }
 
 TEST(Rattle, ConvergesAtOrderTwoWithTorques) {
   const State s0 = tumbling();
-  EXPECT_NEAR(order_against_reference(kBody, TorqueModel::constant_space(Vec3(0.3, 0.1, -0.2)), s0, 2.0, 200),
+  EXPECT_NEAR(order_against_reference<RattleIntegrator>(
+                  kBody, TorqueModel::constant_space(Vec3(0.3, 0.1, -0.2)), s0, 2.0, 200),
               2.0, 0.05);
   const auto damping = TorqueModel::callback(
       [](double, const Mat3&, const Vec3& w) { return Vec3(-0.2 * w); }, true, "damping");
-  EXPECT_NEAR(order_against_reference(kBody, damping, s0, 2.0, 200), 2.0, 0.05);
+  EXPECT_NEAR(order_against_reference<RattleIntegrator>(kBody, damping, s0, 2.0, 200), 2.0, 0.05);
 }
 
 TEST(Rattle, MultiplierConvergesAtOrderTwo) {
@@ -90,7 +74,8 @@ TEST(Rattle, WorksForAPlaneLamina) {
   const RigidBody lamina = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
   ASSERT_NEAR(lamina.poinsot()(2, 2), 0.0, 1e-15);
   const State s0 = tumbling();
-  EXPECT_NEAR(order_against_reference(lamina, TorqueModel::none(), s0, 2.0, 200), 2.0, 0.05);
+  EXPECT_NEAR(order_against_reference<RattleIntegrator>(lamina, TorqueModel::none(), s0, 2.0, 200), 2.0,
+              0.05);
   RattleIntegrator m(lamina, TorqueModel::none());
   const State s = run_fixed(m, s0, 5.0, 1000);
   Mat3 lambda;
@@ -143,28 +128,12 @@ TEST(Rattle, AgreesWithTheAxisymmetricClosedForm) {
 }
 
 TEST(Rattle, HeavyTopEnergyStaysBounded) {
-  const RigidBody top =
-      RigidBody::from_principal_moments(Vec3(0.002, 0.002, 0.004)).with_pivot(1.0, Vec3(0, 0, 0.1));
-  const Vec3 g(0, 0, -9.81);
-  const auto gravity = TorqueModel::gravity(top, g);
-  State s;
-  s.R = so3::exp(Vec3(M_PI / 3, 0, 0));
-  s.omega_body = Vec3(0, 0, 50.0);
-  RattleIntegrator rattle(top, gravity);
-  const double E0 = dynamics::total_energy(top, s, g);
-  const int n = 10000;
-  double e_first = 0.0, e_all = 0.0;
-  for (int i = 0; i < n; ++i) {
-    rattle.step(s, 1e-3);
-    const double e = std::abs(dynamics::total_energy(top, s, g) - E0) / std::abs(E0);
-    if (i < n / 10) e_first = std::max(e_first, e);
-    e_all = std::max(e_all, e);
-  }
-  EXPECT_LT(e_all, 1.5 * e_first);
-  EXPECT_LT(e_all, 1e-3);
-  EXPECT_NEAR(order_against_reference(top, gravity,
-                                      State{0.0, so3::exp(Vec3(M_PI / 3, 0, 0)), Vec3(0, 0, 50)}, 0.5, 500),
-              2.0, 0.05);
+  const HeavyTopCase top;
+  const EnergyRun run = heavy_top_energy_run<RattleIntegrator>(top, 10000, 1e-3);
+  EXPECT_LT(run.all_max, 1.5 * run.first_tenth_max);
+  EXPECT_LT(run.all_max, 1e-3);
+  EXPECT_NEAR(order_against_reference<RattleIntegrator>(top.body, top.gravity, top.initial, 0.5, 500), 2.0,
+              0.05);
 }
 
 TEST(Rattle, ReportsANewtonFailureWithItsTime) {
@@ -182,20 +151,7 @@ TEST(Rattle, ReportsANewtonFailureWithItsTime) {
 }
 
 TEST(Rattle, NonPrincipalBodyFrameGivesTheSameMotion) {
-  // J = Q diag(1, 2, 3) Qᵀ in a body frame rotated by Q (the general, non-diagonal code path): R_b = R_p Qᵀ,
-  // ω_b = Q ω_p. Same method in another frame: equal to round-off.
-  const Mat3 Q = so3::exp(Vec3(0.4, -0.7, 0.2));
-  const RigidBody rotated = RigidBody::from_inertia(Q * Vec3(1.0, 2.0, 3.0).asDiagonal() * Q.transpose());
-  const State p0 = tumbling();
-  State b0 = p0;
-  b0.R = p0.R * Q.transpose();
-  b0.omega_body = Q * p0.omega_body;
-  dynamics::RattleIntegrator a(kBody, TorqueModel::none());
-  dynamics::RattleIntegrator b(rotated, TorqueModel::none());
-  const State p = run_fixed(a, p0, 3.0, 300);
-  const State q = run_fixed(b, b0, 3.0, 300);
-  EXPECT_LT(max_abs_diff(q.R, Mat3(p.R * Q.transpose())), 1e-12);
-  EXPECT_LT(max_abs_diff(q.omega_body, Vec3(Q * p.omega_body)), 1e-12);
+  expect_same_motion_in_a_rotated_body_frame<RattleIntegrator>();
 }
 
 }  // namespace

@@ -22,15 +22,7 @@ using dynamics::make_integrator;
 using dynamics::simulate;
 using dynamics::SimulationOptions;
 
-const RigidBody kBody = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
 const RigidBody kRacket = RigidBody::from_principal_moments(Vec3(0.00121, 0.01638, 0.01748));  // kg·m²
-
-State tumbling() {
-  State s;
-  s.R = so3::exp(Vec3(0.3, -0.2, 0.5));
-  s.omega_body = Vec3(1.0, 0.6, -0.8);
-  return s;
-}
 
 State racket_state() {
   State s;
