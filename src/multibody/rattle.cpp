@@ -442,6 +442,9 @@ const System& Rattle::system() const {
 bool Rattle::uses_tree_solver() const {
   return impl_->solver.is_tree();
 }
+KktMethod Rattle::kkt_method() const {
+  return impl_->solver.method();
+}
 int Rattle::last_iterations() const {
   return impl_->iterations;
 }

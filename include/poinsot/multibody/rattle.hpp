@@ -63,7 +63,8 @@ class Rattle {
   int order() const;  ///< 2 or 4 (RattleOptions::order)
   const System& system() const;
   bool uses_tree_solver() const;
-  int last_iterations() const;  ///< Newton iterations of the last step's position stages (all substeps)
+  KktMethod kkt_method() const;  ///< how the KKT systems are solved (kkt_solver.hpp)
+  int last_iterations() const;   ///< Newton iterations of the last step's position stages (all substeps)
   /// Multipliers of the last step's first position stage (at the start of the step, from λ = 2ν/h₀) and of
   /// its last velocity stage (at its end, λ = 2μ/h₁); h₀ = h₁ = h at order 2, γ₁h at order 4. Both
   /// approximate the exact multipliers to O(h); at order 2 their mean at the same time t_n (velocity stage of

@@ -22,6 +22,7 @@
 #include <iosfwd>
 #include <string>
 
+#include "poinsot/multibody/kkt_solver.hpp"
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/state.hpp"
 
@@ -33,6 +34,7 @@ struct Scenario {
   double dt = 1e-3;       ///< s
   double duration = 1.0;  ///< s
   int output_every = 10;  ///< steps between trajectory rows
+  int order = 2;          ///< RATTLE (2) or its fourth-order composition (4), rattle.hpp
 };
 
 /// True when the TOML file at `toml_path` has a `[[bodies]]` array (a multibody scenario). Throws
@@ -60,6 +62,7 @@ struct RunSummary {
   double mean_newton_iterations = 0.0;
   int max_newton_iterations = 0;
   bool tree_solver = true;
+  KktMethod kkt_method = KktMethod::tree;
   double cpu_seconds_per_step = 0.0;
 };
 
