@@ -215,14 +215,16 @@ struct Rattle::Impl {
             "multibody: at t = {} s body '{}' turns by h|ω| = {} rad in one step; expected < 1 (reduce dt)",
             time, bodies[i].name, std::sqrt(s2)));
       }
-      // Q = I + j(a) + j(a)²/(1 + c) with j(a)² = a aᵀ − |a|² I and 1 − |a|²/(1 + c) = c.
+      // Q = I + j(a) + j(a)²/(1 + c) with j(a)² = a aᵀ − |a|² I. The identity is kept apart from the small
+      // terms (not folded into c = 1 − |a|²/(1 + c)): c's rounding would then enter Q at full size, and its
+      // slowly varying sign makes RᵀR − I drift linearly (4e-11 after 10⁶ steps of a chain, against 2e-13).
       const double c = std::sqrt(1.0 - s2);
       const double inv = 1.0 / (1.0 + c);
       Mat3& Qi = Q[i];
       Qi.noalias() = inv * a * a.transpose();
-      Qi(0, 0) += c;
-      Qi(1, 1) += c;
-      Qi(2, 2) += c;
+      Qi(0, 0) = (Qi(0, 0) - inv * s2) + 1.0;
+      Qi(1, 1) = (Qi(1, 1) - inv * s2) + 1.0;
+      Qi(2, 2) = (Qi(2, 2) - inv * s2) + 1.0;
       Qi(1, 0) += a.z();
       Qi(0, 1) -= a.z();
       Qi(0, 2) += a.y();
