@@ -19,7 +19,8 @@
 
 namespace {
 
-/// The console reporter, remembering each (library, N, time per step) to fit the exponents at the end. With
+/// The console reporter, remembering each (library, N, CPU time per step: steadier than the real time on a
+/// shared machine) to fit the exponents at the end. With
 /// repetitions, the median of the repetitions is used; without, the single run.
 class ExponentReporter : public benchmark::ConsoleReporter {
  public:
@@ -31,14 +32,14 @@ class ExponentReporter : public benchmark::ConsoleReporter {
       if (run.error_occurred || run.run_name.args.empty() || (aggregate && run.aggregate_name != "median"))
         continue;
       Point& p = points_[run.run_name.function_name][std::stoll(run.run_name.args)];
-      if (aggregate || !p.from_median) p = {run.GetAdjustedRealTime(), aggregate};
+      if (aggregate || !p.from_median) p = {run.GetAdjustedCPUTime(), aggregate};
     }
     ConsoleReporter::ReportRuns(runs);
   }
 
   void Finalize() override {
     ConsoleReporter::Finalize();
-    std::printf("\nGrowth of the time per step, t = c N^p (least squares on log t, log N, N >= 16):\n");
+    std::printf("\nGrowth of the CPU time per step, t = c N^p (least squares on log t, log N, N >= 16):\n");
     for (const auto& [name, by_n] : points_) {
       double sx = 0, sy = 0, sxx = 0, sxy = 0;
       int k = 0;

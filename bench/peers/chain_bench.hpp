@@ -109,13 +109,16 @@ inline int chain_run_steps(int n) {
 /// Registers run_chain<Adapter> as "<name>/N/iterations:<chain_run_steps(N)>" for N = 1, 4, 16, 64, 256 up to
 /// max_n, in µs per step. The iteration count is fixed (so --benchmark_min_time does not apply); one family
 /// per N for that reason, and the growth exponent is fitted by bench_multibody_peers' reporter, not by BigO.
+/// From N = single_run_from_n on, one repetition whatever --benchmark_repetitions says (for runs of minutes).
 template <class Adapter>
-void register_chain(const std::string& name, int max_n = 256) {
-  for (int n = 1; n <= max_n; n *= 4)
-    benchmark::RegisterBenchmark(name.c_str(), run_chain<Adapter>)
-        ->Arg(n)
-        ->Iterations(chain_run_steps(n))
-        ->Unit(benchmark::kMicrosecond);
+void register_chain(const std::string& name, int max_n = 256, int single_run_from_n = 1 << 30) {
+  for (int n = 1; n <= max_n; n *= 4) {
+    auto* b = benchmark::RegisterBenchmark(name.c_str(), run_chain<Adapter>)
+                  ->Arg(n)
+                  ->Iterations(chain_run_steps(n))
+                  ->Unit(benchmark::kMicrosecond);
+    if (n >= single_run_from_n) b->Repetitions(1);
+  }
 }
 
 // One registration function per library, defined in chain_<library>.cpp and called from main when the library
