@@ -7,34 +7,17 @@
 
 #include <algorithm>
 #include <cmath>
-#include <string>
 
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/rattle.hpp"
+#include "rod_chain.hpp"
 
 namespace {
 
 using namespace poinsot;
 using namespace poinsot::multibody;
 
-System rod_chain(int n) {
-  System s;
-  const double m = 1.0, l = 1.0, r = 0.01;
-  const Mat3 K = Vec3(m * l * l / 12.0, m * r * r / 4.0, m * r * r / 4.0).asDiagonal();
-  for (int i = 0; i < n; ++i) {
-    std::string name("link");
-    name.append(std::to_string(i));
-    s.add_body(name, m, K);
-  }
-  s.add_ball("pivot", 0, Vec3(-l / 2, 0, 0), kWorld, Vec3::Zero());
-  for (int i = 1; i < n; ++i) {
-    std::string name("j");
-    name.append(std::to_string(i));
-    s.add_ball(name, i, Vec3(-l / 2, 0, 0), i - 1, Vec3(l / 2, 0, 0));
-  }
-  s.set_gravity(Vec3(0, 0, -9.81));
-  return s;
-}
+using bench::rod_chain;
 
 // One benchmark per method: RATTLE (order 2) and its fourth-order triple-jump composition.
 void rod_chain_steps(benchmark::State& bm, int order) {
@@ -42,10 +25,7 @@ void rod_chain_steps(benchmark::State& bm, int order) {
   RattleOptions options;
   options.order = order;
   const System system = rod_chain(n);
-  State released;
-  released.bodies.resize(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i)
-    released.bodies[static_cast<std::size_t>(i)].x_space = Vec3(i + 0.5, 0, 0);
+  const State released = bench::released_chain(n);
   State st = released;
   Rattle rattle(system, 1e-3, options);
   const double E0 = total_energy(system, st);
