@@ -173,10 +173,9 @@ BodyInertia from_shape(const Source& source, const Section& body, char default_a
     if (s.has(k)) sizes += fmt::format(" {} {} m", k, format_number(*s.number(k)));
   }
   out.description =
-      fmt::format("{}{}{}{}, mass {} kg (shape of the inertia layer, frame: its centre of mass and axes{})",
+      fmt::format("{}{}{}{}, mass {} kg (shape of the inertia layer, frame: its centre of mass and axes)",
                   spec.hollow ? "hollow " : "", type, sizes, has_axis ? fmt::format(" along {}", axis) : "",
-                  format_number(mp.mass),
-                  has_axis && axis != 'z' ? ", symmetry axis turned onto body " + std::string(1, axis) : "");
+                  format_number(mp.mass));
   return out;
 }
 
