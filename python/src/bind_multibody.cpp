@@ -374,14 +374,15 @@ void bind_observables(py::module_& m) {
 
 void bind_rattle(py::module_& m) {
   py::class_<mb::Rattle>(m, "Rattle", POINSOT_DOC(file_multibody_rattle))
-      .def(py::init([](const mb::System& s, double dt, double tolerance, int max_iterations) {
+      .def(py::init([](const mb::System& s, double dt, double tolerance, int max_iterations, int order) {
              mb::RattleOptions o;
              o.tolerance = tolerance;
              o.max_iterations = max_iterations;
+             o.order = order;
              return mb::Rattle(s, dt, o);
            }),
            py::arg("system"), py::arg("dt"), py::kw_only(), py::arg("tolerance") = 1e-13,
-           py::arg("max_iterations") = 50, POINSOT_DOC(multibody_Rattle_Rattle))
+           py::arg("max_iterations") = 50, py::arg("order") = 2, POINSOT_DOC(multibody_Rattle_Rattle))
       .def(
           "step",
           [](mb::Rattle& r, mb::State& state, long steps) {
@@ -393,6 +394,22 @@ void bind_rattle(py::module_& m) {
           },
           py::arg("state"), py::arg("steps") = 1, POINSOT_DOC(multibody_Rattle_step))
       .def_property_readonly("dt", &mb::Rattle::dt, "The step size, s.")
+      .def_property_readonly("order", &mb::Rattle::order,
+                             "2 (RATTLE) or 4 (RATTLE composed by the triple jump, three substeps).")
+      .def_property_readonly(
+          "kkt_solver",
+          [](const mb::Rattle& r) {
+            switch (r.kkt_method()) {
+              case mb::KktMethod::ball_chain:
+                return "ball_chain";
+              case mb::KktMethod::tree:
+                return "tree";
+              default:
+                return "sparse_lu";
+            }
+          },
+          "How the KKT systems are solved: 'ball_chain' (Schur complement on the joints, chains of ball "
+          "joints), 'tree' (Baraff's tree-order LDLᵀ) or 'sparse_lu' (closed loops).")
       .def_property_readonly("uses_tree_solver", &mb::Rattle::uses_tree_solver,
                              "True when the KKT solves use the O(N) tree factorisation.")
       .def_property_readonly("last_iterations", &mb::Rattle::last_iterations,
@@ -411,6 +428,7 @@ void bind_scenario(py::module_& m) {
       .def_readwrite("duration", &mb::Scenario::duration, POINSOT_DOC(multibody_Scenario_duration))
       .def_readwrite("output_every", &mb::Scenario::output_every,
                      POINSOT_DOC(multibody_Scenario_output_every))
+      .def_readwrite("order", &mb::Scenario::order, POINSOT_DOC(multibody_Scenario_order))
       .def_readwrite("source", &mb::Scenario::source, POINSOT_DOC(multibody_Scenario_source))
       .def_readwrite("title", &mb::Scenario::title, POINSOT_DOC(multibody_Scenario_title))
       .def_readwrite("body_descriptions", &mb::Scenario::body_descriptions,

@@ -8,6 +8,7 @@
 #include <Eigen/SparseCore>
 #include <Eigen/SparseLU>
 
+#include "ball_chain_solver.hpp"
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::multibody {
@@ -78,7 +79,7 @@ KktSolver::~KktSolver() = default;
 KktSolver::KktSolver(KktSolver&&) noexcept = default;
 KktSolver& KktSolver::operator=(KktSolver&&) noexcept = default;
 
-KktSolver::KktSolver(const System& system) : system_(&system) {
+KktSolver::KktSolver(const System& system, KktMethod method) : system_(&system) {
   const auto nj = static_cast<std::size_t>(system.joint_count());
   joint_offset_.resize(nj);
   for (std::size_t j = 0; j < nj; ++j) {
@@ -86,6 +87,18 @@ KktSolver::KktSolver(const System& system) : system_(&system) {
     rows_ += system.joints()[j].rows();
   }
   build_tree(system);
+  if (tree_ && (method == KktMethod::automatic || method == KktMethod::ball_chain)) {
+    chain_ = detail::BallChainSolver::make(system);
+  }
+  if (method == KktMethod::ball_chain && !chain_) {
+    throw InvalidInput(
+        "multibody: the ball-chain KKT solver needs only ball joints, at most two per body, and no loop");
+  }
+  if (method == KktMethod::tree && !tree_) {
+    throw InvalidInput("multibody: the tree KKT solver needs a system without closed loops");
+  }
+  if (method == KktMethod::sparse_lu) tree_ = false;
+  method_ = chain_ ? KktMethod::ball_chain : tree_ ? KktMethod::tree : KktMethod::sparse_lu;
   if (!tree_) {
     sparse_ = std::make_unique<Sparse>();
     const int n = 6 * system.body_count() + rows_;
@@ -184,6 +197,10 @@ void KktSolver::build_tree(const System& system) {
 }
 
 void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<JointJacobian>& G_b) {
+  if (chain_) {
+    chain_->factor(G_a, G_b);
+    return;
+  }
   const System& system = *system_;
   const int nb = system.body_count();
   if (!tree_) {
@@ -281,6 +298,10 @@ void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<
 }
 
 void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
+  if (chain_) {
+    chain_->solve(body, joint);
+    return;
+  }
   const int nb = system_->body_count();
   if (!tree_) {
     Sparse& sp = *sparse_;

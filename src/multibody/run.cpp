@@ -30,6 +30,17 @@ void write_row(std::ofstream& out, const State& st) {
   out << '\n';
 }
 
+const char* kkt_method_description(KktMethod method) {
+  switch (method) {
+    case KktMethod::ball_chain:
+      return "ball-chain Schur complement, block tridiagonal, O(N)";
+    case KktMethod::tree:
+      return "tree-order block LDLT (Baraff), O(N)";
+    default:
+      return "sparse LU (closed loops)";
+  }
+}
+
 void write_report(std::ostream& out, const Scenario& sc, const State& st, const RunSummary& s) {
   const System& sys = sc.system;
   out << "multibody run\n";
@@ -40,10 +51,10 @@ void write_report(std::ostream& out, const Scenario& sc, const State& st, const 
       out << fmt::format("  body '{}': {}\n", sys.bodies()[i].name, sc.body_descriptions[i]);
   }
   out << fmt::format("  bodies: {}, joints: {} ({} constraint rows), solver: {}\n", sys.body_count(),
-                     sys.joint_count(), sys.constraint_rows(),
-                     s.tree_solver ? "tree-order block LDLT, O(N)" : "sparse LU (closed loops)");
-  out << fmt::format("  dt: {} s, steps: {}, final time: {} s\n", format_number(sc.dt), s.steps,
-                     format_number(st.time));
+                     sys.joint_count(), sys.constraint_rows(), kkt_method_description(s.kkt_method));
+  out << fmt::format("  method: RATTLE{}, dt: {} s, steps: {}, final time: {} s\n",
+                     sc.order == 4 ? ", order 4 (triple-jump composition)" : ", order 2",
+                     format_number(sc.dt), s.steps, format_number(st.time));
   out << fmt::format("  energy: initial {} J, final {} J, max |E - E0| {} J\n",
                      format_number(s.energy_initial), format_number(s.energy_final),
                      format_number(s.max_energy_error));
@@ -73,10 +84,13 @@ void write_report(std::ostream& out, const Scenario& sc, const State& st, const 
 
 RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::string& trajectory_csv) {
   check_consistent(sc.system, sc.initial);
-  Rattle rattle(sc.system, sc.dt);
+  RattleOptions options;
+  options.order = sc.order;
+  Rattle rattle(sc.system, sc.dt, options);
   State st = sc.initial;
   RunSummary s;
   s.tree_solver = rattle.uses_tree_solver();
+  s.kkt_method = rattle.kkt_method();
   s.energy_initial = total_energy(sc.system, st);
   std::ofstream out;
   if (!trajectory_csv.empty()) {

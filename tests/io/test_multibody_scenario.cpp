@@ -95,6 +95,10 @@ axis_a = [0, 0, 1]
   EXPECT_EQ(sc.system.body_count(), 2);
   EXPECT_EQ(sc.system.joint_count(), 2);
   EXPECT_DOUBLE_EQ(sc.dt, 2e-3);
+  EXPECT_EQ(sc.order, 2);
+  EXPECT_EQ(
+      parse_multibody_scenario("[simulation]\norder = 4\n[[bodies]]\nmass = 1\ninertia = [1, 1, 1]\n").order,
+      4);
   // K of the box: m/12 diag(a², b², c²); K of "a" from J: tr(J)/2 − J.
   EXPECT_NEAR(sc.system.bodies()[1].poinsot(2, 2), 0.36 / 12, 1e-15);
   EXPECT_NEAR(sc.system.bodies()[0].poinsot(0, 0), 0.175, 1e-15);
@@ -137,6 +141,8 @@ TEST(MultibodyScenario, ErrorsNameTheFileTheEntryTheFieldTheValueAndTheExpectati
   expect_has(error_of("[simulation]\ndt = -1\n" + a), {"t.toml:2:6: [simulation] dt: got -1 s, expected"});
   expect_has(error_of("[simulation]\noutput_every = 2.5\n" + a),
              {"[simulation] output_every: got 2.5, expected an integer >= 1"});
+  expect_has(error_of("[simulation]\norder = 3\n" + a),
+             {"t.toml:2:9: [simulation] order: got 3, expected 2 (RATTLE) or 4"});
   expect_has(error_of(a + "colour = \"red\"\n"),
              {"t.toml:5:1: [bodies[0]] unknown key \"colour\"; valid keys:"});
   expect_has(error_of(a + "quaternion = [0, 0, 0, 0]\n"), {"[bodies[0]] quaternion: got a zero quaternion"});

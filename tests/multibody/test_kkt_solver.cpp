@@ -1,6 +1,8 @@
 // The tree-order factorisation and the sparse fallback against a dense LU of the assembled KKT matrix.
 #include "poinsot/multibody/kkt_solver.hpp"
 
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "poinsot/core/error.hpp"
@@ -57,9 +59,10 @@ Problem make_problem(const System& s, const KktSolver& solver) {
 }
 
 // Solves with the KktSolver and with a dense LU; returns the max difference relative to the solution's size.
-double solve_both(const System& s, bool expect_tree) {
-  KktSolver solver(s);
-  EXPECT_EQ(solver.is_tree(), expect_tree);
+double solve_both(const System& s, KktMethod expected, KktMethod forced = KktMethod::automatic) {
+  KktSolver solver(s, forced);
+  EXPECT_EQ(solver.method(), expected);
+  EXPECT_EQ(solver.is_tree(), expected != KktMethod::sparse_lu);
   const Problem p = make_problem(s, solver);
   solver.factor(p.Ga, p.Gb);
   const int nb = s.body_count();
@@ -81,8 +84,43 @@ double solve_both(const System& s, bool expect_tree) {
 // Round-off of a well-conditioned (random poses, unit masses) solve: a few hundred ulps.
 constexpr double kTol = 1e-11;
 
-TEST(KktSolver, ChainMatchesDenseLu) {
-  EXPECT_LT(solve_both(test::rod_chain(12, 1.0, 1.0, 0.1), true), kTol);
+TEST(KktSolver, ChainMatchesDenseLuByEveryMethod) {
+  const System s = test::rod_chain(12, 1.0, 1.0, 0.1);
+  EXPECT_LT(solve_both(s, KktMethod::ball_chain), kTol);
+  EXPECT_LT(solve_both(s, KktMethod::tree, KktMethod::tree), kTol);
+  EXPECT_LT(solve_both(s, KktMethod::sparse_lu, KktMethod::sparse_lu), kTol);
+}
+
+TEST(KktSolver, BallChainsOfEveryShapeMatchDenseLu) {
+  // Sides in both orders along the path, masses and lever arms over three decades, a floating chain (no world
+  // joint), a single free body and a chain hung by its middle link's end: every path the chain solver walks.
+  System s;
+  for (int i = 0; i < 6; ++i) {
+    const double m = std::pow(10.0, i % 3 - 1);
+    s.add_body_from_inertia(test::indexed("c", i), m, m * Vec3(0.15 + 0.01 * (i + 1), 0.2, 0.3).asDiagonal());
+  }
+  s.add_ball("w", 2, Vec3(0.1, 0, 0), kWorld, Vec3(1, 2, 3));
+  s.add_ball("a", 2, Vec3(-0.3, 0.1, 0), 1, Vec3(0.2, 0, 0.05));  // parent 2 on side a
+  s.add_ball("b", 0, Vec3(0.5, 0, 0), 1, Vec3(-0.5, 0, 0));
+  s.add_ball("c", 3, Vec3(0, 0.4, 0), 2, Vec3(0, 0, 0.2));  // 2 now has three joints: not a chain
+  {
+    KktSolver solver(s);
+    EXPECT_EQ(solver.method(), KktMethod::tree);
+    EXPECT_THROW(KktSolver(s, KktMethod::ball_chain), InvalidInput);
+  }
+  System chains;
+  for (int i = 0; i < 7; ++i) {
+    const double m = std::pow(10.0, i % 3 - 1);
+    chains.add_body_from_inertia(test::indexed("c", i), m,
+                                 m * Vec3(0.15 + 0.01 * (i + 1), 0.2, 0.3).asDiagonal());
+  }
+  chains.add_ball("b", 0, Vec3(0.5, 0, 0), 1, Vec3(-0.5, 0, 0));  // floating chain 0-1-2
+  chains.add_ball("a", 2, Vec3(-0.3, 0.1, 0), 1, Vec3(0.2, 0, 0.05));
+  chains.add_ball("w", 4, Vec3(0.1, 0, 0), kWorld, Vec3(1, 2, 3));  // 3 free; chain world-4-5-6
+  chains.add_ball("d", 4, Vec3(-0.1, 0.3, 0), 5, Vec3(0, 0, 0.2));
+  chains.add_ball("e", 6, Vec3(0.2, 0, 0.1), 5, Vec3(0, -0.4, 0));
+  EXPECT_LT(solve_both(chains, KktMethod::ball_chain), kTol);
+  EXPECT_LT(solve_both(chains, KktMethod::tree, KktMethod::tree), kTol);
 }
 
 TEST(KktSolver, BranchedTreeWithHingesAndWeldsMatchesDenseLu) {
@@ -96,7 +134,8 @@ TEST(KktSolver, BranchedTreeWithHingesAndWeldsMatchesDenseLu) {
   s.add_ball("j4", 0, Vec3(0, 0.2, 0.1), 4, Vec3(0, -0.2, 0));  // the parent as side a
   s.add_hinge("j5", 5, Vec3(0, 0.1, 0), Vec3(1, 0, 0), 4, Vec3(0.1, 0, 0), Vec3(0, 0, 1));
   s.add_ball("j6", 6, Vec3(0.1, 0, 0.1), 2, Vec3(0, 0, 0.3));
-  EXPECT_LT(solve_both(s, true), kTol);
+  EXPECT_LT(solve_both(s, KktMethod::tree), kTol);
+  EXPECT_THROW(KktSolver(s, KktMethod::ball_chain), InvalidInput);
 }
 
 TEST(KktSolver, FreeBodiesAndSeparateTreesMatchDenseLu) {
@@ -105,7 +144,8 @@ TEST(KktSolver, FreeBodiesAndSeparateTreesMatchDenseLu) {
   const int a = s.add_body_from_inertia("a", 1.0, Vec3(1, 2, 2).asDiagonal());
   const int b = s.add_body_from_inertia("b", 1.0, Vec3(1, 2, 2).asDiagonal());
   s.add_ball("ab", a, Vec3(0.5, 0, 0), b, Vec3(-0.5, 0, 0));
-  EXPECT_LT(solve_both(s, true), kTol);
+  EXPECT_LT(solve_both(s, KktMethod::ball_chain), kTol);
+  EXPECT_LT(solve_both(s, KktMethod::tree, KktMethod::tree), kTol);
 }
 
 TEST(KktSolver, ClosedLoopUsesSparseLuAndMatchesDenseLu) {
@@ -117,14 +157,15 @@ TEST(KktSolver, ClosedLoopUsesSparseLuAndMatchesDenseLu) {
   s.add_ball("j1", 1, Vec3(-0.5, 0, 0), 0, Vec3(0.5, 0, 0));
   s.add_ball("j2", 2, Vec3(-0.5, 0, 0), 1, Vec3(0.5, 0, 0));
   s.add_hinge("w3", 2, Vec3(0.5, 0, 0), Vec3(0, 0, 1), kWorld, Vec3(2.5, 0, 0), Vec3(0, 0, 1));
-  EXPECT_LT(solve_both(s, false), kTol);
+  EXPECT_LT(solve_both(s, KktMethod::sparse_lu), kTol);
+  EXPECT_THROW(KktSolver(s, KktMethod::tree), InvalidInput);
   // A ring of four bodies.
   System ring;
   for (int i = 0; i < 4; ++i)
     ring.add_body_from_inertia(test::indexed("r", i), 1.0, Vec3(1, 1, 1).asDiagonal());
   for (int i = 0; i < 4; ++i)
     ring.add_ball(test::indexed("j", i), i, Vec3(0.5, 0, 0), (i + 1) % 4, Vec3(-0.5, 0, 0));
-  EXPECT_LT(solve_both(ring, false), kTol);
+  EXPECT_LT(solve_both(ring, KktMethod::sparse_lu), kTol);
 }
 
 TEST(KktSolver, RedundantConstraintsAreReported) {

@@ -5,7 +5,8 @@
 /// with examples in examples/multibody/. Units SI throughout: kg, m, s, rad, kg·m², N, N·m.
 ///
 ///     title          optional one-line description
-///     [simulation]   dt (s), duration (s), output_every (steps), gravity = [x, y, z] (m/s²)
+///     [simulation]   dt (s), duration (s), output_every (steps), gravity = [x, y, z] (m/s²), order (2 or 4:
+///                    RATTLE or its fourth-order composition)
 ///     [[bodies]]     name; the inertia exactly as a single-body scenario's [body] gives it (one code path,
 ///                    docs/scenario.md): principal_moments / inertia (J, [Jxx, Jyy, Jzz] or 3×3) / poinsot
 ///                    (K) with mass (kg), or shape = { type, sizes, mass | density, axis }, or

@@ -17,6 +17,13 @@
 /// joints to the world in one part) are assembled into a sparse matrix and solved by Eigen's SparseLU (COLAMD
 /// ordering). The workspace is allocated once, in the constructor; factor() and solve() allocate nothing on
 /// trees.
+///
+/// Ball-joint chains (every joint a ball joint, every body with at most two joints: ropes, chains, pendulums,
+/// tops) take a faster route to the same solution: the bodies are eliminated first (M is block diagonal and
+/// constant), leaving the Schur complement G M⁻¹ Gᵀ on the joints, which is block tridiagonal with 3 × 3
+/// blocks along each chain, factored without fill (src/multibody/ball_chain_solver.hpp). On trees with
+/// branching bodies that order would fill in (a body with d joints couples them all), so Baraff's order is
+/// kept there.
 
 #include <memory>
 #include <vector>
@@ -28,15 +35,25 @@
 
 namespace poinsot::multibody {
 
+namespace detail {
+class BallChainSolver;
+}
+
+/// How the KKT system is solved: chosen from the system's structure (automatic), or forced (tests compare
+/// the methods with each other; a forced method the structure does not allow throws InvalidInput).
+enum class KktMethod { automatic, ball_chain, tree, sparse_lu };
+
 class KktSolver {
  public:
-  explicit KktSolver(const System& system);
+  explicit KktSolver(const System& system, KktMethod method = KktMethod::automatic);
   ~KktSolver();
   KktSolver(KktSolver&&) noexcept;
   KktSolver& operator=(KktSolver&&) noexcept;
 
-  /// True when the O(N) tree factorisation is used, false for the sparse LU fallback.
-  bool is_tree() const { return tree_; }
+  /// True when an O(N) factorisation is used (ball chain or tree), false for the sparse LU fallback.
+  bool is_tree() const { return method_ != KktMethod::sparse_lu; }
+  /// The method in use (never automatic).
+  KktMethod method() const { return method_; }
   /// Offset of joint j's rows in the stacked constraint vector.
   int joint_offset(int j) const { return joint_offset_[static_cast<std::size_t>(j)]; }
   int constraint_rows() const { return rows_; }
@@ -69,6 +86,8 @@ class KktSolver {
 
   const System* system_;
   bool tree_ = true;
+  KktMethod method_ = KktMethod::tree;
+  std::unique_ptr<detail::BallChainSolver> chain_;
   int rows_ = 0;
   std::vector<int> joint_offset_;
   std::vector<Node> nodes_;  // bodies 0..N−1, then joints

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "poinsot/multibody/kkt_solver.hpp"
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/state.hpp"
 
@@ -21,6 +22,7 @@ struct Scenario {
   double dt = 1e-3;       ///< s
   double duration = 1.0;  ///< s
   int output_every = 10;  ///< steps between trajectory rows
+  int order = 2;          ///< RATTLE (2) or its fourth-order composition (4), rattle.hpp
   std::string source;     ///< the file it came from (or a name), for the report; may be empty
   std::string title;      ///< an optional one-line description, for the report
   /// Per body (system order), how its inertia was given and where its centre of mass lies in the frame of
@@ -43,6 +45,7 @@ struct RunSummary {
   double mean_newton_iterations = 0.0;
   int max_newton_iterations = 0;
   bool tree_solver = true;
+  KktMethod kkt_method = KktMethod::tree;
   double cpu_seconds_per_step = 0.0;
 };
 
