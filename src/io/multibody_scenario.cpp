@@ -87,6 +87,12 @@ struct Reader {
   Vec3 to_model(int body, const Vec3& p) const {
     return body == kWorld ? p : Vec3(p - com[static_cast<std::size_t>(body)]);
   }
+  /// The point `key` of `body` for the model; omitted, the body's centre of mass (the origin of space for
+  /// the world).
+  Vec3 point(const Section& f, std::string_view key, int body) const {
+    const auto p = f.vec3(key);
+    return p ? to_model(body, *p) : Vec3::Zero();
+  }
   int body_ref(const Section& f, std::string_view key, bool world_allowed,
                const std::string& fallback) const {
     if (!f.has(key) && fallback.empty()) f.require(key, "the name of a body");
@@ -156,7 +162,7 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
     const int b = r.body_ref(f, "body_b", true, "world");
     const multibody::BodyState& sa = r.side(a);
     const multibody::BodyState& sb = r.side(b);
-    const Vec3 pa = r.to_model(a, f.vec3("point_a").value_or(Vec3::Zero()));
+    const Vec3 pa = r.point(f, "point_a", a);
     // Default far point: where the near point is at t = 0, in b's frame (from its centre of mass).
     const Vec3 pb =
         f.has("point_b")
@@ -186,8 +192,8 @@ void read_loads(Reader& r, const Section& top, const toml::table& root) {
       s.name = f.string("name").value_or(fmt::format("spring{}", k));
       s.body_a = r.body_ref(f, "body_a", false, "");
       s.body_b = r.body_ref(f, "body_b", true, "world");
-      s.point_a = r.to_model(s.body_a, f.vec3("point_a").value_or(Vec3::Zero()));
-      s.point_b = r.to_model(s.body_b, f.vec3("point_b").value_or(Vec3::Zero()));
+      s.point_a = r.point(f, "point_a", s.body_a);
+      s.point_b = r.point(f, "point_b", s.body_b);
       s.stiffness = f.number("stiffness").value_or(0.0);
       s.damping = f.number("damping").value_or(0.0);
       s.rest_length = f.number("rest_length").value_or(0.0);
@@ -200,8 +206,7 @@ void read_loads(Reader& r, const Section& top, const toml::table& root) {
                       {"body", "force", "point"}, &(*forces)[k]);
       const int body = r.body_ref(f, "body", false, "");
       f.require("force", "[x, y, z] (N, space frame)");
-      const multibody::ConstantForce force{body, *f.vec3("force"),
-                                           r.to_model(body, f.vec3("point").value_or(Vec3::Zero()))};
+      const multibody::ConstantForce force{body, *f.vec3("force"), r.point(f, "point", body)};
       located(f, "force", [&] {
         r.sc.system.add_force(force);
         return 0;

@@ -331,6 +331,33 @@ TEST(MultibodyScenario, MeshBodyHasTheInertiaLayersMassPropertiesAndPointsInTheM
   expect_has(sc.body_descriptions[0], {"l_bracket.obj", "centre of mass", "mesh frame"});
 }
 
+TEST(MultibodyScenario, OmittedPointsAreTheCentreOfMassGivenOnesAreInTheBodysFrame) {
+  // A free mesh body pushed by a constant force: without a point the force acts at the centre of mass (no
+  // rotation, ẍ = F/m exactly under RATTLE); at the mesh's origin (0, 0, 0) it also turns the body, with
+  // the torque (0 − c) × F about the centre of mass.
+  const std::string body =
+      "[[bodies]]\nname = \"b\"\nmesh = { file = \"meshes/l_bracket.obj\", density = 2700.0 }\n";
+  const auto at_com = parse_multibody_scenario(body + "[[forces]]\nbody = \"b\"\nforce = [0, 0.01, 0]\n",
+                                               "t.toml", kExamples);
+  const auto at_origin = parse_multibody_scenario(
+      body + "[[forces]]\nbody = \"b\"\nforce = [0, 0.01, 0]\npoint = [0, 0, 0]\n", "t.toml", kExamples);
+  const Vec3 c = at_com.initial.bodies[0].x_space;  // position 0, R = I: the centre of mass at c
+  EXPECT_EQ(at_com.system.forces()[0].point_body, Vec3::Zero());
+  EXPECT_EQ(at_origin.system.forces()[0].point_body, Vec3(-c));
+  const auto a = trajectory(at_com, 100);
+  EXPECT_EQ(a.back().bodies[0].omega_body, Vec3::Zero());
+  // Verlet is exact for a constant acceleration: x = c + F t²/(2m) at t = 0.1 s, to round-off.
+  const Vec3 x = c + Vec3(0, 0.01, 0) * (0.01 / (2 * at_com.system.bodies()[0].mass));
+  EXPECT_LE((a.back().bodies[0].x_space - x).norm(), 1e-15);
+  const auto b = trajectory(at_origin, 100);
+  // Euler's equation at t = 0: J ω̇ = (−c) × F, z component only (F = 0.01 N along y; ω̇ ≈ 1 rad/s²).
+  const Vec3 torque = Vec3(-c).cross(Vec3(0, 0.01, 0));
+  const Vec3 omega_dot = at_origin.system.bodies()[0].inertia_inverse * torque;
+  // After 0.1 s the rate is ω̇ t to first order: the body has turned by ω̇ t²/2 ≈ 5e-3 rad (the space-fixed
+  // force turns by as much in the body frame) and ω × Jω is of relative size ω t ≈ 1e-2 at most.
+  EXPECT_NEAR(b.back().bodies[0].omega_body.z(), 0.1 * omega_dot.z(), 1e-2 * std::abs(0.1 * omega_dot.z()));
+}
+
 TEST(MultibodyScenario, MeshPendulumHasTheCompoundPendulumPeriod) {
   // T = 2π √(I_pivot / (m g d)) with I_pivot about the hinge through the hole (parallel-axis theorem on
   // the two boxes) and d = |c − pivot|. RATTLE's period error is O(h²): for the Störmer-Verlet scheme on

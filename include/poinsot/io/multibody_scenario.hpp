@@ -29,7 +29,9 @@
 /// tensor, a frame at the centre of mass. Every point of a body (joint points, spring ends, force points) is
 /// given in that frame, as a user of the mesh reads them off the mesh; the model (multibody/model.hpp) gets
 /// them relative to the centre of mass (p − c), and the body's centre of mass starts at position + R c.
-/// Points on the world are in the space frame.
+/// An omitted point of a body (point_a, a spring's end, a force's point) is its centre of mass, as in the
+/// files written before meshes; an omitted point_b of a joint is where point_a is at t = 0. Points on the
+/// world are in the space frame (an omitted one is the origin).
 ///
 /// Initial velocities are projected onto the joint constraints (least kinetic-energy change), so a scenario
 /// may give only the velocities it cares about.
