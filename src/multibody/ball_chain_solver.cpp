@@ -178,21 +178,20 @@ void BallChainSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
     if (p + 1 < links_.size() && links_[p + 1].shared_side >= 0) y.noalias() -= links_[p + 1].Lt * y_[p + 1];
     y_[p] = y;
   }
-  // x = M⁻¹ (r − Gᵀ y).
+  // x = M⁻¹ (r − Gᵀ y) = t − Σ_sides (±y/m, Xᵀ y) with X = Gω J⁻¹ (J symmetric).
+  for (std::size_t i = 0; i < bodies.size(); ++i)
+    body[i] = t_[i];
   for (std::size_t p = 0; p < links_.size(); ++p) {
     const Link& link = links_[p];
     const Vec3& y = y_[p];
     joint.segment<3>(3 * link.joint) = y;
     for (const Side& side : link.sides) {
       if (side.body == kWorld) continue;
-      Vec6& r = body[static_cast<std::size_t>(side.body)];
-      r.head<3>() -= side.sign * y;
-      r.tail<3>().noalias() -= side.G_omega.transpose() * y;
+      const auto b = static_cast<std::size_t>(side.body);
+      Vec6& x = body[b];
+      x.head<3>() -= (side.sign * inverse_mass_[b]) * y;
+      x.tail<3>().noalias() -= side.X.transpose() * y;
     }
-  }
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    body[i].head<3>() *= inverse_mass_[i];
-    body[i].tail<3>() = bodies[i].inertia_inverse * body[i].tail<3>();
   }
 }
 

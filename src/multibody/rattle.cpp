@@ -379,6 +379,13 @@ struct Rattle::Impl {
       std::copy(start.begin(), start.end(), state.bodies.begin());
       state.time = t0;
       factored = false;
+      steps_taken = 0;  // no multipliers from a failed step
+      for (Multipliers* m : {&stage1, &stage2}) {
+        std::fill(m->Lambda_body.begin(), m->Lambda_body.end(), Mat3::Zero());
+        std::fill(m->joint_force_space.begin(), m->joint_force_space.end(), Vec3::Zero());
+        std::fill(m->joint_torque_space.begin(), m->joint_torque_space.end(), Vec3::Zero());
+      }
+      stage1_ready = stage2_ready = true;
       throw;
     }
     // The substeps' sizes add up to h only to round-off: land the time exactly on t₀ + h.

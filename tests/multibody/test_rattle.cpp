@@ -275,20 +275,25 @@ TEST(Rattle, AFailedStepLeavesTheStateAsItWas) {
   // A spin that is fine for the first substep of order 4 (γ₁h|ω| < 1) but not for the middle one
   // (|γ₂|h|ω| > 1): the step fails after a substep has moved the state, and must undo it.
   System s;
-  s.add_body_from_inertia("spinner", 1.0, Vec3(1, 1, 1).asDiagonal());
+  s.add_body_from_inertia("spinner", 1.0, Vec3(1, 2, 2.5).asDiagonal());
   State st;
   st.bodies.resize(1);
   const double h = 0.1;
-  st.bodies[0].omega_body = Vec3(0, 0, 7.0);  // γ₁h|ω| = 0.94, |γ₂|h|ω| = 1.19
+  st.bodies[0].omega_body = Vec3(0.1, 0.2, 1.0);
   RattleOptions options;
   options.order = 4;
   Rattle rattle(s, h, options);
+  rattle.step(st);  // a good step: its multipliers are those of a spinning body, Λ = (j(ω)² + j(ω̇))K ≠ 0
+  EXPECT_GT(rattle.velocity_stage().Lambda_body[0].norm(), 0.1);
+  st.bodies[0].omega_body = Vec3(0, 0, 7.0);  // γ₁h|ω| = 0.95, |γ₂|h|ω| = 1.19
   const State before = st;
   EXPECT_THROW(rattle.step(st), ComputationFailed);
   EXPECT_EQ(st.time, before.time);
   EXPECT_EQ(st.bodies[0].R_space_body, before.bodies[0].R_space_body);
   EXPECT_EQ(st.bodies[0].omega_body, before.bodies[0].omega_body);
   EXPECT_EQ(st.bodies[0].x_space, before.bodies[0].x_space);
+  EXPECT_EQ(rattle.velocity_stage().Lambda_body[0], Mat3::Zero());  // none from a failed step
+  EXPECT_EQ(rattle.position_stage().Lambda_body[0], Mat3::Zero());
 }
 
 TEST(Rattle, RejectsAnOrderItDoesNotHave) {
