@@ -14,6 +14,8 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 #include <fmt/format.h>
@@ -25,6 +27,7 @@
 #include "poinsot/io/report.hpp"
 #include "poinsot/io/run.hpp"
 #include "poinsot/io/scenario.hpp"
+#include "poinsot/io/scenario_file.hpp"
 #include "poinsot/io/summary.hpp"
 #include "poinsot/multibody/scenario.hpp"
 
@@ -171,8 +174,7 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
 /// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE on the constrained system, the
 /// trajectory of every body in trajectory.csv, the report (energy, constraint violation, reactions, each
 /// body's Λ) on stdout and in report.txt, and summary.json.
-void run_multibody(const RunCliOptions& o) {
-  multibody::Scenario mb = multibody::load_scenario(o.scenario);
+void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
   if (!o.method.empty() && o.method != "rattle") {
     throw InvalidInput(
         fmt::format("--method: got \"{}\" for the multibody scenario {}; expected rattle (the only "
@@ -225,17 +227,12 @@ void run_multibody(const RunCliOptions& o) {
 }
 
 void run(RunCliOptions& o) {
-  bool multibody_file = false;
-  try {
-    multibody_file = multibody::is_multibody_scenario(o.scenario);
-  } catch (const InvalidInput&) {
-    // Unreadable or not TOML: the single-body loader below reports it (with line and column).
-  }
-  if (multibody_file) {
-    run_multibody(o);
+  io::AnyScenario any = io::load_any_scenario(o.scenario);  // the file is parsed once, either kind
+  if (auto* mb = std::get_if<multibody::Scenario>(&any)) {
+    run_multibody(o, std::move(*mb));
     return;
   }
-  io::Scenario sc = io::load_scenario(o.scenario);
+  io::Scenario& sc = std::get<io::Scenario>(any);
   io::ScenarioOverrides ov;
   ov.method = o.method;
   ov.has_dt = o.dt_opt->count() > 0;

@@ -109,7 +109,11 @@ class RunSummary:
     def tree_solver(self) -> bool: ...
 
 class Scenario:
-    """Multibody scenario files (TOML) and the driver that runs them: the entry point of `poinsot run` for files with a `[[bodies]]` array."""
+    """A multibody scenario (a System, its initial State, the step and the output rate) and the driver that runs it: the multibody half of `poinsot run`."""
+    @property
+    def body_descriptions(self) -> List[str]: ...
+    @body_descriptions.setter
+    def body_descriptions(self, value: Any) -> None: ...
     @property
     def dt(self) -> float: ...
     @dt.setter
@@ -131,9 +135,17 @@ class Scenario:
     @output_every.setter
     def output_every(self, value: Any) -> None: ...
     @property
+    def source(self) -> str: ...
+    @source.setter
+    def source(self, value: Any) -> None: ...
+    @property
     def system(self) -> System: ...
     @system.setter
     def system(self, value: Any) -> None: ...
+    @property
+    def title(self) -> str: ...
+    @title.setter
+    def title(self, value: Any) -> None: ...
 
 class State:
     """The mutable state of a multibody system: per body the position of the centre of mass x (space frame, m), the rotation R (body → space), the velocity v = ẋ (space frame, m/s) and the body-frame angular velocity ω (rad/s, Ṙ = R j(ω)), plus the time t (s)."""
@@ -170,6 +182,8 @@ class System:
         """Adds a body of mass `mass` (kg) and Poinsot tensor `poinsot_com_body` = K about its centre of mass (body frame, kg·m²)."""
     def add_body_from_inertia(self, name: str, mass: float, inertia_com_body: numpy.typing.ArrayLike) -> int:
         """Same with the classical inertia tensor J about the centre of mass (body frame, kg·m²): K = tr(J)/2·I − J."""
+    def add_body_from_mass_properties(self, name: str, mass_properties: _core.inertia.MassProperties) -> int:
+        """Adds a body from the inertia layer's MassProperties (a shape, a mesh, a composite: poinsot.inertia): its mass (kg) and J about its centre of mass (kg·m²), in the axes of the frame F they were given in."""
     def add_force(self, body: object, force_space: numpy.typing.ArrayLike, point_body: numpy.typing.ArrayLike = ...) -> None:
         """A constant force (space frame, N) applied at a point of a body (body frame, m from the centre of mass)."""
     def add_hinge(self, name: str, body_a: object, point_a: numpy.typing.ArrayLike, axis_a: numpy.typing.ArrayLike, body_b: object, point_b: numpy.typing.ArrayLike, axis_b: numpy.typing.ArrayLike) -> int:
@@ -218,7 +232,7 @@ def exact_multipliers(system: System, state: State) -> ExactMultipliers:
     """The exact multipliers of the continuous equations at `state` (index-1 form: the constraint accelerations g̈ = 0 with the velocity-product terms), together with the accelerations: `acceleration_space[i]` (m/s²) and `omega_dot_body[i]` (rad/s²)."""
 
 def is_multibody_scenario(toml_path: str) -> bool:
-    """True when the TOML file at `toml_path` has a `[[bodies]]` array (a multibody scenario)."""
+    """True when the TOML file at `path` is a multibody scenario (its top level has `bodies`)."""
 
 def kinetic_energy(system: System, state: State) -> float:
     """Σ ½ m |v|² + ½ ωᵀ J ω (J), equal to ½ m|ẋ|² + ½ tr(Ṙ K Ṙᵀ) in the 12 coordinates."""
@@ -227,10 +241,10 @@ def linear_momentum(system: System, state: State) -> numpy.typing.NDArray[numpy.
     """Σ m v, space frame, kg·m/s."""
 
 def load_scenario(toml_path: str) -> Scenario:
-    """Reads and validates a scenario."""
+    """Reads and validates a multibody scenario file (relative files from its folder)."""
 
-def parse_scenario(toml_text: str, source_name: str = ...) -> Scenario:
-    """Same from TOML text; `source_name` is used in messages."""
+def parse_scenario(toml_text: str, source_name: str = ..., base_dir: str = ...) -> Scenario:
+    """Parses and validates a multibody scenario."""
 
 def potential_energy(system: System, state: State) -> float:
     """Potential energy (J) of gravity (−Σ m g·x), of the springs (Σ ½ k (ℓ − ℓ₀)²) and of the constant forces (−Σ f·(x + R X))."""

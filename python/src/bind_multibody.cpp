@@ -14,6 +14,9 @@
 #include "docstrings.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/inertia/mass_properties.hpp"
+#include "poinsot/io/multibody_scenario.hpp"
+#include "poinsot/io/scenario_file.hpp"
 #include "poinsot/multibody/loads.hpp"
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/multipliers.hpp"
@@ -120,6 +123,17 @@ void bind_system(py::module_& m) {
           },
           py::arg("name"), py::arg("mass"), py::arg("inertia_com_body"),
           POINSOT_DOC(multibody_System_add_body_from_inertia))
+      .def(
+          "add_body_from_mass_properties",
+          [](mb::System& s, const std::string& name, const inertia::MassProperties& p) {
+            return s.add_body_from_inertia(name, p.mass, p.inertia_com);
+          },
+          py::arg("name"), py::arg("mass_properties"),
+          "Adds a body from the inertia layer's MassProperties (a shape, a mesh, a composite: "
+          "poinsot.inertia): its mass (kg) and J about its centre of mass (kg·m²), in the axes of the frame "
+          "F they were given in. The body's frame has F's axes and its origin at the centre of mass: its "
+          "x_space is the centre of mass, and a point p given in F is p − center_of_mass in the body frame. "
+          "Returns the body's index.")
       .def(
           "add_ball",
           [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, const py::object& b,
@@ -414,12 +428,22 @@ void bind_scenario(py::module_& m) {
       .def_readwrite("duration", &mb::Scenario::duration, POINSOT_DOC(multibody_Scenario_duration))
       .def_readwrite("output_every", &mb::Scenario::output_every,
                      POINSOT_DOC(multibody_Scenario_output_every))
-      .def_readwrite("order", &mb::Scenario::order, POINSOT_DOC(multibody_Scenario_order));
-  m.def("is_multibody_scenario", &mb::is_multibody_scenario, py::arg("toml_path"),
-        POINSOT_DOC(multibody_is_multibody_scenario));
-  m.def("load_scenario", &mb::load_scenario, py::arg("toml_path"), POINSOT_DOC(multibody_load_scenario));
-  m.def("parse_scenario", &mb::parse_scenario, py::arg("toml_text"), py::arg("source_name") = "<string>",
-        POINSOT_DOC(multibody_parse_scenario));
+      .def_readwrite("order", &mb::Scenario::order, POINSOT_DOC(multibody_Scenario_order))
+      .def_readwrite("source", &mb::Scenario::source, POINSOT_DOC(multibody_Scenario_source))
+      .def_readwrite("title", &mb::Scenario::title, POINSOT_DOC(multibody_Scenario_title))
+      .def_readwrite("body_descriptions", &mb::Scenario::body_descriptions,
+                     POINSOT_DOC(multibody_Scenario_body_descriptions));
+  m.def("is_multibody_scenario", &io::is_multibody_scenario, py::arg("toml_path"),
+        POINSOT_DOC(io_is_multibody_scenario));
+  m.def("load_scenario", &io::load_multibody_scenario, py::arg("toml_path"),
+        POINSOT_DOC(io_load_multibody_scenario));
+  m.def(
+      "parse_scenario",
+      [](const std::string& text, const std::string& source, const std::string& base_dir) {
+        return io::parse_multibody_scenario(text, source, base_dir);
+      },
+      py::arg("toml_text"), py::arg("source_name") = "<string>", py::arg("base_dir") = "",
+      POINSOT_DOC(io_parse_multibody_scenario));
   m.def("project_velocities", &mb::project_velocities, py::arg("system"), py::arg("state"),
         POINSOT_DOC(multibody_project_velocities));
 

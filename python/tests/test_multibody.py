@@ -224,6 +224,32 @@ def test_parse_scenario_from_text():
     assert len(scenario.initial) == 1
 
 
+def test_mesh_body_from_a_scenario_and_from_mass_properties():
+    """A body given by a mesh in a scenario file (relative to base_dir) is the inertia layer's mesh body; the same
+    body added from the inertia layer's MassProperties has the same mass and J, and a joint point read off the
+    mesh (its frame) is where the mesh says."""
+    examples = SOURCE_DIR / "examples"
+    text = """
+[[bodies]]
+name = "bracket"
+mesh = { file = "meshes/l_bracket.obj", density = 2700.0 }
+[[joints]]
+type = "ball"
+body_a = "bracket"
+point_a = [0.015, 0.065, 0.01]
+"""
+    scenario = mb.parse_scenario(text, "s.toml", str(examples))
+    props = poinsot.inertia.mesh(str(examples / "meshes" / "l_bracket.obj"), density=2700.0)
+    system = mb.System()
+    system.add_body_from_mass_properties("bracket", props)
+    assert system.masses[0] == scenario.system.masses[0] == props.mass
+    np.testing.assert_allclose(system.inertia_tensors[0], props.inertia_com, rtol=0, atol=1e-18)
+    np.testing.assert_allclose(scenario.system.inertia_tensors[0], props.inertia_com, rtol=0, atol=1e-18)
+    assert "l_bracket.obj" in scenario.body_descriptions[0]
+    # position = 0 and R = I place the mesh frame on space: the centre of mass starts at c.
+    np.testing.assert_allclose(scenario.initial.x_space[0], props.center_of_mass, atol=1e-15)
+
+
 def test_bad_input_raises_value_error_with_the_library_message():
     system = mb.System()
     with pytest.raises(ValueError, match=r"^multibody body 'rod': mass: got -1 kg, expected a finite number > 0$"):
@@ -247,8 +273,8 @@ def test_bad_input_raises_value_error_with_the_library_message():
         mb.Rattle(system, 1e-3).step(mb.State())
     with pytest.raises(ValueError, match=r"^steps: got 0, expected an integer >= 1$"):
         mb.Rattle(system, 1e-3).step(mb.State(bodies=[mb.BodyState()]), steps=0)
-    with pytest.raises(ValueError, match=r"scenario"):
-        mb.parse_scenario("[[bodies]]\nname = 'a'\nmass = -1\n", "bad.toml")
+    with pytest.raises(ValueError, match=r"^bad\.toml:3:8: \[bodies\[0\]\] mass: got -1 kg, expected a number > 0$"):
+        mb.parse_scenario("[[bodies]]\nname = 'a'\nmass = -1\ninertia = [1, 1, 1]\n", "bad.toml")
 
 
 def test_state_views_and_copies():

@@ -18,6 +18,7 @@
 #include "poinsot/so3/projection.hpp"
 #include "poinsot/so3/quaternion.hpp"
 #include "scenario_body.hpp"
+#include "scenario_table.hpp"
 #include "toml_fields.hpp"
 
 namespace poinsot::io {
@@ -43,51 +44,34 @@ struct BodyPart {
 
 BodyPart read_body(const Source& src, const toml::table& root, std::string_view base_dir) {
   const Section s(src, root["body"].as_table(), "body",
-                  {"principal_moments", "inertia", "shape", "mesh", "mass", "pivot_to_com", "pivot"});
-  const auto how =
-      s.exactly_one({"principal_moments", "inertia", "shape", "mesh"}, "the inertia (one way to give it)");
-  std::optional<dynamics::RigidBody> body;
-  std::string description;
-  std::optional<double> shape_mass;
-  Vec3 com = Vec3::Zero();  // in the frame the body was given in
-  if (how == "principal_moments") {
-    const Vec3 m = *s.vec3(how);
-    body = located(s, how, [&] { return dynamics::RigidBody::from_principal_moments(m); });
-    description = fmt::format("principal moments {} kg·m²", format_vector(m));
-  } else if (how == "inertia") {
-    const Mat3 J = *s.mat3(how);
-    body = located(s, how, [&] { return dynamics::RigidBody::from_inertia(J); });
-    description = fmt::format("inertia tensor {} kg·m² about the centre of mass", format_matrix(J));
-  } else {
-    const toml::table* t = s.table(how);
-    const detail::BodyInertia b = how == "shape" ? detail::body_from_shape(src, *t, s.node(how))
-                                                 : detail::body_from_mesh(src, *t, s.node(how), base_dir);
-    body = located(s, how, [&] { return dynamics::RigidBody::from_inertia(b.inertia_com); });
-    description = b.description;
-    shape_mass = b.mass;
-    com = b.com;
-  }
-  const auto mass = s.number("mass");
+                  {"principal_moments", "inertia", "poinsot", "shape", "mesh", "composite", "mass",
+                   "pivot_to_com", "pivot"});
+  const detail::BodyInertia b = detail::read_body_inertia(src, s, base_dir, 'z');
+  const std::string& how = b.how;
+  std::optional<dynamics::RigidBody> body = located(s, how, [&] {
+    return how == "principal_moments" ? dynamics::RigidBody::from_principal_moments(b.inertia_com.diagonal())
+                                      : dynamics::RigidBody::from_inertia(b.inertia_com);
+  });
+  std::string description = b.description;
+  // An explicit tensor takes [body] mass only for a top; a shape, mesh or composite always has a mass.
+  const bool explicit_tensor = how == "principal_moments" || how == "inertia" || how == "poinsot";
   if (s.has("pivot") && s.has("pivot_to_com")) {
     s.fail("pivot",
            "given with [body] pivot_to_com; expected one of them (pivot: the point, pivot_to_com: the "
            "vector from it to the centre of mass)");
   }
   std::optional<Vec3> d = s.vec3("pivot_to_com");
-  if (const auto p = s.vec3("pivot")) d = Vec3(com - *p);
+  if (const auto p = s.vec3("pivot")) d = Vec3(b.com - *p);
   const std::string_view pivot_key = s.has("pivot") ? "pivot" : "pivot_to_com";
-  if (shape_mass && mass) {
-    s.fail("mass", fmt::format("got {} kg, but the {} already gives the mass ({} kg); remove [body] mass",
-                               format_number(*mass), how, format_number(*shape_mass)));
-  }
-  if (mass && !d)
+  if (explicit_tensor && b.mass && !d)
     s.fail("mass", "given without a pivot; a top needs [body] mass and pivot_to_com (or neither)");
-  if (d && !mass && !shape_mass) {
+  if (d && !b.mass) {
     s.fail(pivot_key, "given without [body] mass; a top needs [body] mass and pivot_to_com (or neither)");
   }
   if (d) {
-    const double m = mass ? *mass : *shape_mass;
-    if (!(m > 0.0)) s.fail(mass ? "mass" : how, fmt::format("got {} kg, expected > 0", format_number(m)));
+    const double m = *b.mass;
+    if (!(m > 0.0))
+      s.fail(explicit_tensor ? "mass" : how, fmt::format("got {} kg, expected > 0", format_number(m)));
     body = located(s, pivot_key, [&] { return body->with_pivot(m, *d); });
     description += fmt::format("; held at a fixed pivot, mass {} kg, pivot to centre of mass {} m",
                                format_number(m), format_vector(*d));
@@ -176,16 +160,11 @@ void check_method(const Scenario& sc, std::string_view method, std::string_view 
   }
 }
 
-Scenario parse_scenario(std::string_view text, std::string_view source, std::string_view base_dir) {
+namespace detail {
+
+Scenario single_scenario_from_table(const toml::table& root, std::string_view source,
+                                    std::string_view base_dir) {
   const Source src{std::string(source)};
-  toml::table root;
-  try {
-    root = toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    const auto& where = e.source().begin;
-    throw InvalidInput(
-        fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column, e.description()));
-  }
   const Section top(src, &root, "top level", {"title", "body", "initial", "torque", "integrator", "output"});
   for (const char* key : {"body", "initial", "torque", "integrator", "output"})
     top.table(key);
@@ -253,16 +232,15 @@ Scenario parse_scenario(std::string_view text, std::string_view source, std::str
   return sc;
 }
 
+}  // namespace detail
+
+Scenario parse_scenario(std::string_view text, std::string_view source, std::string_view base_dir) {
+  return detail::single_scenario_from_table(detail::parse_toml(text, source), source, base_dir);
+}
+
 Scenario load_scenario(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InvalidInput(fmt::format("scenario: cannot read \"{}\": {}; expected a readable TOML file", path,
-                                   std::strerror(errno)));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
   const std::filesystem::path p(path);
-  Scenario sc = parse_scenario(text.str(), path, p.parent_path().string());
+  Scenario sc = parse_scenario(detail::read_text_file(path), path, p.parent_path().string());
   sc.name = p.stem().string();
   return sc;
 }

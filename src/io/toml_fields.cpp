@@ -1,7 +1,11 @@
 // Typed, located access to the keys of a TOML table (see toml_fields.hpp).
 #include "toml_fields.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -9,6 +13,27 @@
 #include "poinsot/core/format.hpp"
 
 namespace poinsot::io::detail {
+
+toml::table parse_toml(std::string_view text, std::string_view source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    const auto& where = e.source().begin;
+    throw InvalidInput(
+        fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column, e.description()));
+  }
+}
+
+std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw InvalidInput(fmt::format("scenario: cannot read \"{}\": {}; expected a readable TOML file", path,
+                                   std::strerror(errno)));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
 
 std::string location(const Source& source, const toml::node* node) {
   if (node != nullptr) {

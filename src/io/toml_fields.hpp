@@ -24,6 +24,12 @@ struct Source {
   std::string name;  ///< path or "<string>"
 };
 
+/// Parses TOML text; a syntax error is an InvalidInput `SOURCE:LINE:COLUMN: TOML syntax error: ...`.
+toml::table parse_toml(std::string_view text, std::string_view source);
+
+/// The whole content of a text file; InvalidInput `scenario: cannot read "PATH": REASON; ...` otherwise.
+std::string read_text_file(const std::string& path);
+
 /// "SOURCE:LINE:COLUMN: " for a node (or "SOURCE: " when the node has no position).
 std::string location(const Source& source, const toml::node* node);
 

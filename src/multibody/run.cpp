@@ -44,6 +44,12 @@ const char* kkt_method_description(KktMethod method) {
 void write_report(std::ostream& out, const Scenario& sc, const State& st, const RunSummary& s) {
   const System& sys = sc.system;
   out << "multibody run\n";
+  if (!sc.title.empty()) out << fmt::format("  {}\n", sc.title);
+  if (!sc.source.empty()) out << fmt::format("  scenario: {}\n", sc.source);
+  for (std::size_t i = 0; i < sc.body_descriptions.size() && i < sys.bodies().size(); ++i) {
+    if (!sc.body_descriptions[i].empty())
+      out << fmt::format("  body '{}': {}\n", sys.bodies()[i].name, sc.body_descriptions[i]);
+  }
   out << fmt::format("  bodies: {}, joints: {} ({} constraint rows), solver: {}\n", sys.body_count(),
                      sys.joint_count(), sys.constraint_rows(), kkt_method_description(s.kkt_method));
   out << fmt::format("  method: RATTLE{}, dt: {} s, steps: {}, final time: {} s\n",
@@ -127,11 +133,6 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
   s.energy_final = total_energy(sc.system, st);
   if (report != nullptr) write_report(*report, sc, st, s);
   return s;
-}
-
-int run_file(const std::string& toml_path, std::ostream& report, const std::string& trajectory_csv) {
-  run_scenario(load_scenario(toml_path), &report, trajectory_csv);
-  return 0;
 }
 
 }  // namespace poinsot::multibody

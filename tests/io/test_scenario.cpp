@@ -154,7 +154,7 @@ TEST(Scenario, SyntaxErrorGivesLineAndColumn) {
 TEST(Scenario, UnknownKeyIsNamedWithTheValidOnes) {
   const std::string m = error_of(replace(kMinimal, "principal_moments", "principal_moment"));
   expect_has(m, {"s.toml:3:1:", "[body] unknown key \"principal_moment\"",
-                 "valid keys: principal_moments, inertia, shape, mesh"});
+                 "valid keys: principal_moments, inertia, poinsot, shape, mesh, composite, mass"});
   expect_has(error_of(std::string(kMinimal) + "[integrater]\nmethod = \"rk4\"\n"),
              {"unknown key \"integrater\"", "integrator"});
 }

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/inertia/body_file.hpp"
 #include "poinsot/inertia/mass_properties.hpp"
 #include "poinsot/inertia/shapes.hpp"
 #include "poinsot/io/scenario.hpp"
@@ -101,6 +102,44 @@ TEST(ScenarioBody, MeshMistakesAreNamed) {
   expect_has(error_of(scenario_with_body("mesh = { density = 1000 }")), {"[body.mesh] file: missing"});
   expect_has(error_of(scenario_with_body("mesh = { file = \"meshes/l_bracket.obj\", density = -1 }")),
              {"[body.mesh] density: got -1, expected a number > 0"});
+}
+
+}  // namespace
+}  // namespace poinsot::io
+
+namespace poinsot::io {
+namespace {
+
+TEST(ScenarioBody, TheSameKeysAsAMultibodyBody) {
+  // The reader is shared with multibody files: explicit K, J as its diagonal, a shape's axis, the mass on the
+  // body, a composite body file.
+  const Scenario k = parse_scenario(scenario_with_body("poinsot = [1.0, 1.5, 2.5]"));
+  EXPECT_EQ(k.body.inertia(), Vec3(4.0, 3.5, 2.5).asDiagonal().toDenseMatrix());  // J = tr(K) I − K
+  const Scenario d = parse_scenario(scenario_with_body("inertia = [1, 2, 3]"));
+  EXPECT_EQ(d.body.inertia(), Vec3(1, 2, 3).asDiagonal().toDenseMatrix());
+  // A cylinder along x: J = diag(m r²/2, m(3r² + l²)/12, same) [MK].
+  const double m = 2.0, r = 0.1, l = 0.5;
+  const Scenario c =
+      parse_scenario(scenario_with_body("shape = { type = \"cylinder\", radius = 0.1, length = 0.5, axis = "
+                                        "\"x\" }\nmass = 2\npivot = [0, 0, 0]"));
+  const Vec3 J(m * r * r / 2, m * (3 * r * r + l * l) / 12, m * (3 * r * r + l * l) / 12);
+  EXPECT_LE(test::max_abs_diff(c.body.inertia_com(), J.asDiagonal().toDenseMatrix()),
+            4 * test::kEps * J.norm());
+  EXPECT_NE(c.body_description.find("along x"), std::string::npos);
+  // The flywheel body file of the inertia layer's tests: its mass properties, centre of mass off the origin.
+  const Scenario w = parse_scenario(scenario_with_body("composite = { file = \"wheel.toml\" }"), "b.toml",
+                                    POINSOT_SOURCE_DIR "/tests/data/inertia");
+  const inertia::BodyFileResult wheel =
+      inertia::load_body_file(POINSOT_SOURCE_DIR "/tests/data/inertia/wheel.toml");
+  EXPECT_LE(test::max_abs_diff(w.body.inertia_com(), wheel.body.inertia_com),
+            4 * test::kEps * wheel.body.inertia_com.norm());
+  expect_has(w.body_description, {"composite", "wheel.toml", "2 parts, 1 voids"});
+  expect_has(error_of(scenario_with_body("composite = { file = \"wheel.toml\", density = 2 }")),
+             {"[body.composite] unknown key \"density\"; valid keys: file"});
+  expect_has(error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1] }")),
+             {"[body.shape] mass: missing; expected mass (kg) or density in the table, or [body] mass"});
+  expect_has(error_of(scenario_with_body("inertia = [1, 2, 3]\nmass = 1")),
+             {"[body] mass: given without a pivot"});
 }
 
 }  // namespace

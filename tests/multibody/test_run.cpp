@@ -13,12 +13,28 @@
 namespace poinsot::multibody {
 namespace {
 
-const std::string kExamples = std::string(POINSOT_SOURCE_DIR) + "/examples/multibody/";
+/// examples/multibody/compound_pendulum.toml built directly: a rod (1 kg, 1 m, radius 1 cm, along body x)
+/// hinged at one end about space y, released 0.3 rad from the vertical (the file is read in tests/io).
+Scenario compound_pendulum() {
+  const double m = 1, l = 1, r = 0.01, th = 0.3;
+  Scenario sc;
+  sc.system.add_body("rod", m, Vec3(m * l * l / 12, m * r * r / 4, m * r * r / 4).asDiagonal());
+  sc.system.set_gravity(Vec3(0, 0, -9.81));
+  BodyState b;
+  b.R_space_body = Eigen::AngleAxisd(std::numbers::pi / 2 + th, Vec3::UnitY()).toRotationMatrix();
+  b.x_space = b.R_space_body * Vec3(l / 2, 0, 0);  // the pivot at the origin
+  sc.initial.bodies.push_back(b);
+  sc.system.add_hinge("pivot", 0, Vec3(-l / 2, 0, 0), Vec3::UnitY(), kWorld, Vec3::Zero(), Vec3::UnitY());
+  sc.dt = 1e-3;
+  return sc;
+}
 
 TEST(Run, CompoundPendulumExampleHasTheTextbookPeriod) {
   // The example starts at 0.3 rad: the period is T0 (1 + θ0²/16 + 11 θ0⁴/3072 + ...) (Jacobi elliptic
   // series), 2π √(I/(m g d)) (1.005653...) — checked here to 1e-4 with the half-period from the CSV.
-  Scenario sc = load_scenario(kExamples + "compound_pendulum.toml");
+  Scenario sc = compound_pendulum();
+  sc.title = "compound pendulum of the test";
+  sc.body_descriptions = {"solid cylinder along x"};
   sc.duration = 1.0;
   sc.output_every = 1;
   const std::string csv = testing::TempDir() + "/compound.csv";
@@ -43,15 +59,19 @@ TEST(Run, CompoundPendulumExampleHasTheTextbookPeriod) {
   EXPECT_NEAR(crossing, T / 4, 1e-4 * T);  // from −0.3 rad to the bottom: a quarter period
   EXPECT_NE(report.str().find("joint 'pivot': reaction force"), std::string::npos);
   EXPECT_NE(report.str().find("body 'rod'"), std::string::npos);
+  EXPECT_NE(report.str().find("  compound pendulum of the test\n"), std::string::npos);
+  EXPECT_NE(report.str().find("body 'rod': solid cylinder along x\n"), std::string::npos);
 }
 
 TEST(Run, FailureKeepsTheRowsWritten) {
   // A spin far too fast for the step: h|ω| ≥ 1 stops the run with ComputationFailed; the CSV keeps its header
   // and the initial row.
-  Scenario sc = parse_scenario(
-      "[simulation]\ndt = 0.1\nduration = 1\n[[bodies]]\nname = \"a\"\nmass = 1\n"
-      "inertia = [1, 2, 3]\nomega_body = [0, 0, 20]\n",
-      "fast.toml");
+  Scenario sc;
+  sc.system.add_body_from_inertia("a", 1.0, Vec3(1, 2, 3).asDiagonal());
+  sc.initial.bodies.resize(1);
+  sc.initial.bodies[0].omega_body = Vec3(0, 0, 20);
+  sc.dt = 0.1;
+  sc.duration = 1.0;
   const std::string csv = testing::TempDir() + "/fast.csv";
   EXPECT_THROW(run_scenario(sc, nullptr, csv), ComputationFailed);
   std::ifstream in(csv);

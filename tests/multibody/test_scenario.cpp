@@ -1,112 +1,77 @@
-// Scenario files: parsing, defaults, error messages, the example files, and the run driver's outputs.
+// scenario.hpp: the projection of initial velocities onto the joints (the files are read in the io layer,
+// tests/io/test_multibody_scenario.cpp; the run driver is tests/multibody/test_run.cpp).
 #include "poinsot/multibody/scenario.hpp"
 
-#include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <numbers>
-#include <sstream>
-
-#include "poinsot/core/error.hpp"
+#include "multibody_fixtures.hpp"
+#include "poinsot/multibody/constraints.hpp"
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot_test.hpp"
 
 namespace poinsot::multibody {
 namespace {
 
-const std::string kExamples = std::string(POINSOT_SOURCE_DIR) + "/examples/multibody/";
-
-std::string error_of(const std::string& text) {
-  try {
-    parse_scenario(text, "t.toml");
-  } catch (const InvalidInput& e) {
-    return e.what();
+/// The kinetic-energy inner product of two sets of body velocities: Σ m vᵢ·uᵢ + ωᵢ·J ωᵢ'.
+double energy_product(const System& s, const State& a, const State& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+    const Body& body = s.bodies()[i];
+    sum += body.mass * a.bodies[i].v_space.dot(b.bodies[i].v_space) +
+           a.bodies[i].omega_body.dot(body.inertia * b.bodies[i].omega_body);
   }
-  return "";
+  return sum;
 }
 
-TEST(Scenario, ParsesBodiesJointsAndDefaults) {
-  const Scenario sc = parse_scenario(R"(
-[simulation]
-dt = 2e-3
-duration = 0.5
-gravity = [0, 0, -9.81]
-[[bodies]]
-name = "a"
-mass = 2
-inertia = [0.1, 0.2, 0.25]
-position = [1, 0, 0]
-[[bodies]]
-name = "b"
-mass = 1
-shape = { type = "box", size = [0.2, 0.4, 0.6] }
-position = [1, 1, 0]
-velocity = [0, 0, 5]
-[[joints]]
-type = "ball"
-body_a = "a"
-point_a = [0, 0.5, 0]
-body_b = "b"
-[[joints]]
-type = "hinge"
-body_a = "a"
-point_a = [-1, 0, 0]
-axis_a = [0, 0, 1]
-)",
-                                     "t.toml");
-  EXPECT_EQ(sc.system.body_count(), 2);
-  EXPECT_EQ(sc.system.joint_count(), 2);
-  EXPECT_DOUBLE_EQ(sc.dt, 2e-3);
-  // K of the box: m/12 diag(a², b², c²); K of "a" from J: tr(J)/2 − J.
-  EXPECT_NEAR(sc.system.bodies()[1].poinsot(2, 2), 0.36 / 12, 1e-15);
-  EXPECT_NEAR(sc.system.bodies()[0].poinsot(0, 0), 0.175, 1e-15);
-  // point_b defaulted to where point_a is at t = 0, in b's frame: (1, 0.5, 0) − (1, 1, 0).
-  EXPECT_LT((sc.system.joints()[0].point_b - Vec3(0, -0.5, 0)).norm(), 1e-15);
-  check_consistent(sc.system, sc.initial);
-  // The initial velocities were projected onto the joints: ġ = 0.
-  EXPECT_LT(constraint_violation(sc.system, sc.initial).joint_velocity, 1e-14);
-  EXPECT_GT(sc.initial.bodies[1].v_space.norm(), 0.1);  // but not zeroed: b may still move about the joints
-}
-
-TEST(Scenario, ErrorsNameTheFileTheEntryAndTheField) {
-  EXPECT_EQ(error_of("[[bodies]]\nname = \"a\"\nmass = -1\ninertia = [1, 1, 1]\n"),
-            "scenario t.toml: bodies[0].mass: -1 kg must be > 0");
-  EXPECT_NE(error_of("[[bodies]]\nmass = 1\n").find("bodies[0].inertia: give exactly one of"),
-            std::string::npos);
-  EXPECT_NE(
-      error_of("[[bodies]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 1]\n[[joints]]\ntype = \"slider\"\n"
-               "body_a = \"a\"\n")
-          .find("joints[0].type: 'slider' is not a joint type"),
-      std::string::npos);
-  EXPECT_NE(error_of("[[bodies]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 1]\n[[joints]]\ntype = \"ball\"\n"
-                     "body_a = \"nobody\"\n")
-                .find("joints[0].body_a: no body named 'nobody'"),
-            std::string::npos);
-  EXPECT_NE(error_of("[[bodies]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 5]\n").find("bodies[0]"),
-            std::string::npos);  // J violates the triangle inequality: K not positive semi-definite
-  EXPECT_NE(error_of("x = [1,\n").find("scenario t.toml: line"), std::string::npos);
-  EXPECT_NE(error_of("[simulation]\ndt = 1e-3\n").find("bodies: missing"), std::string::npos);
-  EXPECT_THROW(load_scenario("/nonexistent/file.toml"), InvalidInput);
-}
-
-TEST(Scenario, EveryExampleLoadsAndRuns) {
-  int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(kExamples)) {
-    if (entry.path().extension() != ".toml") continue;
-    ++count;
-    SCOPED_TRACE(entry.path().string());
-    EXPECT_TRUE(is_multibody_scenario(entry.path().string()));
-    Scenario sc = load_scenario(entry.path().string());
-    sc.duration = 50 * sc.dt;  // a smoke run; the physics is tested elsewhere
-    const RunSummary s = run_scenario(sc, nullptr, "");
-    EXPECT_EQ(s.steps, 50);
-    EXPECT_LT(s.max_joint_gap, 1e-12);
-    EXPECT_LT(s.max_joint_angle, 1e-12);
-    if (sc.system.torques().empty()) {  // a constant couple does work and has no potential
-      EXPECT_LT(s.max_energy_error, 1e-4 * std::max(1.0, std::abs(s.energy_initial)));
-    }
+State with_velocities(State st, int seed) {
+  for (std::size_t i = 0; i < st.bodies.size(); ++i) {
+    const double k = static_cast<double>(seed) + static_cast<double>(i);
+    st.bodies[i].v_space = Vec3(std::sin(k), std::cos(2 * k), 0.5 * std::sin(3 * k + 1));
+    st.bodies[i].omega_body = Vec3(std::cos(k + 2), 0.3 * std::sin(5 * k), std::cos(7 * k));
   }
-  EXPECT_EQ(count, 5);
+  return st;
+}
+
+State difference(const State& a, const State& b) {
+  State d = a;
+  for (std::size_t i = 0; i < a.bodies.size(); ++i) {
+    d.bodies[i].v_space -= b.bodies[i].v_space;
+    d.bodies[i].omega_body -= b.bodies[i].omega_body;
+  }
+  return d;
+}
+
+TEST(ProjectVelocities, IsTheKineticEnergyOrthogonalProjectionOntoTheJoints) {
+  // Oracle: the least-kinetic-energy-change projection P onto {G v = 0} is characterised by (1) P v is
+  // admissible, (2) v − P v is M-orthogonal to every admissible velocity, (3) P P v = P v.
+  const int n = 4;
+  const System s = test::rod_chain(n);
+  const State v0 = with_velocities(test::rod_chain_state(n), 1);
+  State p = v0;
+  project_velocities(s, p);
+  EXPECT_LT(constraint_violation(s, p).joint_velocity, 1e-14);
+  State u = with_velocities(test::rod_chain_state(n), 7);  // another admissible velocity
+  project_velocities(s, u);
+  const double scale = std::sqrt(energy_product(s, v0, v0) * energy_product(s, u, u));
+  // One KKT solve: round-off of order 1e-16 of the energy scale, times the condition of the chain.
+  EXPECT_LT(std::abs(energy_product(s, difference(v0, p), u)), 1e-13 * scale);
+  State pp = p;
+  project_velocities(s, pp);
+  for (int i = 0; i < n; ++i) {
+    const auto iu = static_cast<std::size_t>(i);
+    EXPECT_LT((pp.bodies[iu].v_space - p.bodies[iu].v_space).norm(), 1e-13);
+    EXPECT_LT((pp.bodies[iu].omega_body - p.bodies[iu].omega_body).norm(), 1e-13);
+  }
+  // The projection loses kinetic energy, never gains it (Pythagoras in the energy metric).
+  EXPECT_LE(energy_product(s, p, p), energy_product(s, v0, v0));
+}
+
+TEST(ProjectVelocities, LeavesAFreeSystemAlone) {
+  System s;
+  s.add_body_from_inertia("a", 2.0, Vec3(1, 2, 3).asDiagonal());
+  State st = with_velocities(test::rod_chain_state(1), 3);
+  const State before = st;
+  project_velocities(s, st);
+  EXPECT_EQ(st.bodies[0].v_space, before.bodies[0].v_space);
+  EXPECT_EQ(st.bodies[0].omega_body, before.bodies[0].omega_body);
 }
 
 }  // namespace

@@ -1,26 +1,12 @@
 #pragma once
 /// @file scenario.hpp
-/// Multibody scenario files (TOML) and the driver that runs them: the entry point of `poinsot run` for files
-/// with a `[[bodies]]` array. The format is documented in docs/multibody.md, with examples in
-/// examples/multibody/. Units SI throughout.
-///
-///     [simulation]   dt (s), duration (s), output_every (steps), gravity = [x, y, z] (m/s²)
-///     [[bodies]]     name, mass (kg), one of inertia (J, kg·m²: [Jxx, Jyy, Jzz] or 3×3) / poinsot (K) /
-///                    shape = { type = "rod"|"cylinder"|"box"|"sphere", length, radius, size, axis },
-///                    position (m), rotation ({ axis, angle } rad, or quaternion = [w, x, y, z], or matrix),
-///                    velocity (m/s), omega_body (rad/s, body frame)
-///     [[joints]]     name, type = "ball"|"hinge"|"weld", body_a, point_a (body a frame), body_b (default
-///                    "world"), point_b (body b or space frame; default: where point_a is at t = 0),
-///                    axis_a, axis_b (hinge; axis_b defaults to axis_a carried by the initial rotations)
-///     [[springs]]    body_a, point_a, body_b, point_b, stiffness (N/m), damping (N·s/m), rest_length (m)
-///     [[forces]]     body, force (N, space), point (m, body frame)
-///     [[torques]]    body, torque (N·m), frame = "space"|"body"
-///
-/// Initial velocities are projected onto the joint constraints (least kinetic-energy change), so a scenario
-/// may give only the velocities it cares about.
+/// A multibody scenario (a System, its initial State, the step and the output rate) and the driver that runs
+/// it: the multibody half of `poinsot run`. The files are read in the io layer (io/multibody_scenario.hpp,
+/// the format in docs/multibody.md, examples in examples/multibody/). Units SI throughout.
 
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "poinsot/multibody/kkt_solver.hpp"
 #include "poinsot/multibody/model.hpp"
@@ -28,6 +14,8 @@
 
 namespace poinsot::multibody {
 
+/// A multibody scenario ready to run: the model, the initial state (velocities already projected onto the
+/// joints), the step (s), the duration (s) and the output rate. Each body's `x_space` is its centre of mass.
 struct Scenario {
   System system;
   State initial;
@@ -35,17 +23,12 @@ struct Scenario {
   double duration = 1.0;  ///< s
   int output_every = 10;  ///< steps between trajectory rows
   int order = 2;          ///< RATTLE (2) or its fourth-order composition (4), rattle.hpp
+  std::string source;     ///< the file it came from (or a name), for the report; may be empty
+  std::string title;      ///< an optional one-line description, for the report
+  /// Per body (system order), how its inertia was given and where its centre of mass lies in the frame of
+  /// its file, for the report; may be empty.
+  std::vector<std::string> body_descriptions;
 };
-
-/// True when the TOML file at `toml_path` has a `[[bodies]]` array (a multibody scenario). Throws
-/// InvalidInput when the file cannot be read or parsed.
-bool is_multibody_scenario(const std::string& toml_path);
-
-/// Reads and validates a scenario. Throws InvalidInput with a one-line message naming the file, the entry and
-/// the field (e.g. `scenario chain.toml: bodies[2].mass: -1 kg must be > 0`).
-Scenario load_scenario(const std::string& toml_path);
-/// Same from TOML text; `source_name` is used in messages.
-Scenario parse_scenario(const std::string& toml_text, const std::string& source_name);
 
 /// Projects every body's velocity onto the joint constraints, G v = 0, minimising the change of kinetic
 /// energy (one KKT solve, kkt_solver.hpp).
@@ -67,12 +50,11 @@ struct RunSummary {
 };
 
 /// Integrates the scenario with RATTLE (rattle.hpp). Writes a CSV trajectory to `trajectory_csv` unless it is
-/// empty (columns: t, then per body x y z qw qx qy qz vx vy vz wx wy wz) and a human-readable report to
-/// `report` unless null (energy, momenta, constraint violation, joint reactions and each body's Λ at the
-/// end). On a ComputationFailed the rows already written stay in the file and the exception propagates.
+/// empty (columns: t, then per body x y z qw qx qy qz vx vy vz wx wy wz: the centre of mass (m), the rotation
+/// body → space as a quaternion, the velocity of the centre of mass (m/s), ω in the body frame (rad/s)) and a
+/// human-readable report to `report` unless null (energy, momenta, constraint violation, joint reactions and
+/// each body's Λ at the end). On a ComputationFailed the rows already written stay in the file and the
+/// exception propagates.
 RunSummary run_scenario(const Scenario& scenario, std::ostream* report, const std::string& trajectory_csv);
-
-/// `poinsot run` entry: load_scenario + run_scenario. Returns 0.
-int run_file(const std::string& toml_path, std::ostream& report, const std::string& trajectory_csv);
 
 }  // namespace poinsot::multibody
