@@ -219,7 +219,8 @@ void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
   j["orthogonality_error_max"] = s.max_orthogonality;
   j["newton_iterations_mean"] = s.mean_newton_iterations;
   j["newton_iterations_max"] = s.max_newton_iterations;
-  j["solver"] = s.tree_solver ? "tree (Baraff, linear time)" : "sparse LU (closed loops)";
+  j["order"] = mb.order;
+  j["solver"] = multibody::kkt_method_name(s.kkt_method);  // ball_chain, tree or sparse_lu
   j["cpu_seconds_per_step"] = s.cpu_seconds_per_step;
   const std::string summary = j.dump(2) + "\n";
   io::write_file_atomic(dir + "/summary.json", summary);

@@ -397,17 +397,7 @@ void bind_rattle(py::module_& m) {
       .def_property_readonly("order", &mb::Rattle::order,
                              "2 (RATTLE) or 4 (RATTLE composed by the triple jump, three substeps).")
       .def_property_readonly(
-          "kkt_solver",
-          [](const mb::Rattle& r) {
-            switch (r.kkt_method()) {
-              case mb::KktMethod::ball_chain:
-                return "ball_chain";
-              case mb::KktMethod::tree:
-                return "tree";
-              default:
-                return "sparse_lu";
-            }
-          },
+          "kkt_solver", [](const mb::Rattle& r) { return mb::kkt_method_name(r.kkt_method()); },
           "How the KKT systems are solved: 'ball_chain' (Schur complement on the joints, chains of ball "
           "joints), 'tree' (Baraff's tree-order LDLᵀ) or 'sparse_lu' (closed loops).")
       .def_property_readonly("uses_tree_solver", &mb::Rattle::uses_tree_solver,

@@ -75,6 +75,19 @@ struct KktSolver::Sparse {
   bool analysed = false;
 };
 
+const char* kkt_method_name(KktMethod method) {
+  switch (method) {
+    case KktMethod::ball_chain:
+      return "ball_chain";
+    case KktMethod::tree:
+      return "tree";
+    case KktMethod::sparse_lu:
+      return "sparse_lu";
+    default:
+      return "automatic";
+  }
+}
+
 KktSolver::~KktSolver() = default;
 KktSolver::KktSolver(KktSolver&&) noexcept = default;
 KktSolver& KktSolver::operator=(KktSolver&&) noexcept = default;

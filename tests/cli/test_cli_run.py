@@ -258,6 +258,7 @@ def test_multibody_scenario_runs_through_poinsot_run(cli, source_dir, tmp_path):
     summary = json.loads((out / "summary.json").read_text())
     assert json.loads(r.stdout) == summary
     assert summary["kind"] == "multibody" and summary["bodies"] == 2
+    assert summary["order"] == 2 and summary["solver"] == "ball_chain"  # two ball joints in a chain
     assert summary["steps"] == round(1 / summary["dt"])
     assert summary["joint_gap_max"] < 1e-12
     assert summary["orthogonality_error_max"] < 1e-12
@@ -266,6 +267,22 @@ def test_multibody_scenario_runs_through_poinsot_run(cli, source_dir, tmp_path):
     rows = (out / "trajectory.csv").read_text().strip().splitlines()
     assert len(rows) > 10
     assert (out / "report.txt").read_text().startswith("multibody run")
+
+
+def test_multibody_order_four_cuts_the_falling_chains_energy_error(cli, source_dir, tmp_path):
+    """[simulation] order = 4 runs RATTLE's triple-jump composition: the 16-link chain's energy error over its
+    first 2 s of fall is O(h⁴) instead of O(h²): measured 6.0e-5 J against 1.6e-2 J (of 1256 J releasable)."""
+    text = (source_dir / "examples" / "multibody" / "chain16.toml").read_text()
+    errors = {}
+    for order in (2, 4):
+        scenario = tmp_path / f"chain_order{order}.toml"
+        scenario.write_text(text.replace("[simulation]\n", f"[simulation]\norder = {order}\n", 1))
+        r = cli("run", scenario, "--t-end", "2", "--out", tmp_path / f"o{order}", "--json")
+        assert r.returncode == 0, r.stderr
+        summary = json.loads(r.stdout)
+        assert summary["order"] == order and summary["joint_gap_max"] < 1e-12
+        errors[order] = summary["energy_abs_error_max"]
+    assert errors[4] < errors[2] / 50
 
 
 def test_multibody_scenario_rejects_other_methods(cli, source_dir, tmp_path):

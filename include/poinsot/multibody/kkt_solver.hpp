@@ -42,6 +42,8 @@ class BallChainSolver;
 /// How the KKT system is solved: chosen from the system's structure (automatic), or forced (tests compare
 /// the methods with each other; a forced method the structure does not allow throws InvalidInput).
 enum class KktMethod { automatic, ball_chain, tree, sparse_lu };
+/// "automatic", "ball_chain", "tree" or "sparse_lu" (the names used by the CLI's JSON and by Python).
+const char* kkt_method_name(KktMethod method);
 
 class KktSolver {
  public:
