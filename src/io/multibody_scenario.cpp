@@ -24,16 +24,6 @@ using detail::Section;
 using detail::Source;
 using multibody::kWorld;
 
-/// Re-throws an InvalidInput from a lower layer with the place in the file and the key in front.
-template <class F>
-auto located(const Section& section, std::string_view key, F&& f) {
-  try {
-    return f();
-  } catch (const InvalidInput& e) {
-    section.fail(key, e.what());
-  }
-}
-
 Mat3 read_rotation(const Source& src, const Section& b) {
   if (b.has("quaternion") && b.has("rotation"))
     b.fail("quaternion", "given with rotation; expected one of them (the body's orientation)");

@@ -27,16 +27,6 @@ namespace {
 using detail::Section;
 using detail::Source;
 
-/// Re-throws an InvalidInput from a lower layer with the place in the file and the key in front.
-template <class F>
-auto located(const Section& section, std::string_view key, F&& f) {
-  try {
-    return f();
-  } catch (const InvalidInput& e) {
-    section.fail(key, e.what());
-  }
-}
-
 struct BodyPart {
   dynamics::RigidBody body;
   std::string description;

@@ -37,15 +37,6 @@ const std::map<std::string, std::vector<std::string_view>, std::less<>>& shape_k
   return keys;
 }
 
-template <class F>
-auto located(const Section& s, std::string_view key, F&& f) {
-  try {
-    return f();
-  } catch (const InvalidInput& e) {
-    s.fail(key, e.what());
-  }
-}
-
 /// The amount of matter of a shape or mesh table: its `mass` or `density` (exactly one, > 0), or else the
 /// body's `mass`. Returns (given as a mass, value).
 std::pair<bool, double> amount_of_matter(const Section& table, const Section& body) {

@@ -15,6 +15,7 @@
 #endif
 #include <toml++/toml.h>
 
+#include "poinsot/core/error.hpp"
 #include "poinsot/core/types.hpp"
 
 namespace poinsot::io::detail {
@@ -81,5 +82,16 @@ std::string join(std::initializer_list<std::string_view> items);
 
 /// The text form of a node's value for messages (`"abc"`, `1.5`, `[1, 2]`, `a table`).
 std::string describe(const toml::node& node);
+
+/// Runs f(); an InvalidInput from a lower layer (a constructor's validation) is re-thrown with the place in
+/// the file and the key in front, through section.fail.
+template <class F>
+auto located(const Section& section, std::string_view key, F&& f) {
+  try {
+    return f();
+  } catch (const InvalidInput& e) {
+    section.fail(key, e.what());
+  }
+}
 
 }  // namespace poinsot::io::detail

@@ -37,11 +37,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-void expect_has(const std::string& message, std::initializer_list<std::string> pieces) {
-  for (const auto& p : pieces) {
-    EXPECT_NE(message.find(p), std::string::npos) << "expected \"" << p << "\" in: " << message;
-  }
-}
+using test::expect_has;
 
 std::string vec(const Vec3& v) {
   return fmt::format("[{:.17g}, {:.17g}, {:.17g}]", v.x(), v.y(), v.z());

@@ -14,11 +14,7 @@ namespace poinsot::io {
 namespace {
 
 /// Expects every piece in the message (gmock is not linked into the layer tests).
-void expect_has(const std::string& message, std::initializer_list<std::string> pieces) {
-  for (const auto& p : pieces) {
-    EXPECT_NE(message.find(p), std::string::npos) << "expected \"" << p << "\" in: " << message;
-  }
-}
+using test::expect_has;
 
 const char* kMinimal = R"(
 [body]

@@ -27,11 +27,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-void expect_has(const std::string& message, std::initializer_list<std::string> pieces) {
-  for (const auto& p : pieces) {
-    EXPECT_NE(message.find(p), std::string::npos) << "expected \"" << p << "\" in: " << message;
-  }
-}
+using test::expect_has;
 
 TEST(ScenarioBody, BoxShapeIsTheInertiaLayersBox) {
   const Scenario sc =

@@ -1,9 +1,12 @@
 #pragma once
 // Test helpers shared by every layer's tests: tolerances scaled by the problem's magnitude (as MuJoCo's test
-// utilities do), a reproducible random source, and random rotations uniform on SO(3).
+// utilities do), a reproducible random source, random rotations uniform on SO(3), and a check of error
+// messages.
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <random>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -50,6 +53,13 @@ inline Mat3 random_rotation() {
 template <class A, class B>
 double max_abs_diff(const A& a, const B& b) {
   return (a - b).cwiseAbs().maxCoeff();
+}
+
+/// EXPECTs every piece to occur in `message` (the parts of a one-line error: file, key, value, expectation).
+inline void expect_has(const std::string& message, std::initializer_list<std::string> pieces) {
+  for (const auto& p : pieces) {
+    EXPECT_NE(message.find(p), std::string::npos) << "expected \"" << p << "\" in: " << message;
+  }
 }
 
 }  // namespace poinsot::test
