@@ -2,6 +2,7 @@
 # Installs every Debian 12 package poinsot needs to build, test, benchmark and plot.
 # Idempotent: packages already present are skipped, and apt-get runs only when something is missing.
 # Run as root (or with sudo available). Nothing is downloaded from outside Debian's archive.
+# Extra Debian packages given as arguments are installed the same way (scripts/bench-peers.sh passes the peers).
 set -euo pipefail
 
 packages=(
@@ -12,6 +13,7 @@ packages=(
   libassimp-dev libgtest-dev libgmock-dev libbenchmark-dev
   # Python module, its tests and the plots
   python3 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest
+  "$@"
 )
 
 missing=()
