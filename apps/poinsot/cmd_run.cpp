@@ -172,20 +172,15 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
 }
 
 /// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE on the constrained system, the
-/// trajectory of every body in trajectory.csv, the report (energy, constraint violation, reactions, each
-/// body's Λ) on stdout and in report.txt, and summary.json.
+/// trajectory of every body in trajectory.csv, the energy, momenta and constraint violation at the same rows
+/// in diagnostics.csv, the report (energy, constraint violation, reactions, each body's Λ) on stdout and in
+/// report.txt, summary.json, and with --plot the figures paths.png, energy.png and constraints.png.
 void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
   if (!o.method.empty() && o.method != "rattle") {
     throw InvalidInput(
         fmt::format("--method: got \"{}\" for the multibody scenario {}; expected rattle (the only "
                     "multibody integrator)",
                     o.method, o.scenario));
-  }
-  if (o.plot) {
-    throw InvalidInput(
-        fmt::format("--plot: the multibody scenario {} has no figures yet; expected a single-body "
-                    "scenario (the trajectory is in trajectory.csv)",
-                    o.scenario));
   }
   if (o.dt_opt->count() > 0) {
     require_positive("--dt", o.dt, "s");
@@ -202,7 +197,8 @@ void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
   const std::string dir = o.out.empty() ? std::filesystem::path(o.scenario).stem().string() + "-run" : o.out;
   io::prepare_output_dir(dir);  // before anything is simulated
   std::ostringstream report;
-  const multibody::RunSummary s = multibody::run_scenario(mb, &report, dir + "/trajectory.csv");
+  const multibody::RunSummary s =
+      multibody::run_scenario(mb, &report, dir + "/trajectory.csv", dir + "/diagnostics.csv");
   io::write_file_atomic(dir + "/report.txt", report.str());
   nlohmann::ordered_json j;
   j["scenario"] = o.scenario;
@@ -225,6 +221,7 @@ void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
   const std::string summary = j.dump(2) + "\n";
   io::write_file_atomic(dir + "/summary.json", summary);
   fmt::print("{}", o.json ? summary : report.str());
+  if (o.plot) make_plots(dir, o.json);  // paths.png, energy.png, constraints.png
 }
 
 void run(RunCliOptions& o) {

@@ -252,7 +252,7 @@ def potential_energy(system: System, state: State) -> float:
 def project_velocities(system: System, state: State) -> None:
     """Projects every body's velocity onto the joint constraints, G v = 0, minimising the change of kinetic energy (one KKT solve, kkt_solver.hpp)."""
 
-def run_scenario(scenario: Scenario, trajectory_csv: str = ..., report: object = ...) -> RunSummary:
+def run_scenario(scenario: Scenario, trajectory_csv: str = ..., report: object = ..., diagnostics_csv: str = ...) -> RunSummary:
     """Integrates the scenario with RATTLE (rattle.hpp)."""
 
 def total_energy(system: System, state: State) -> float:

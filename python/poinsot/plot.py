@@ -16,6 +16,14 @@ reads ``DIR/trajectory.csv`` and ``DIR/summary.json`` (written by ``poinsot run`
 - ``top.png`` (tops only): the tip of the figure axis seen from above (along the vertical −g, or along L for a
   free symmetric top), showing precession and nutation.
 
+A multibody run (summary.json ``"kind": "multibody"``, with ``DIR/diagnostics.csv``) gets instead:
+
+- ``paths.png``: each body's centre of mass (m) in the x–z and x–y planes (equal axes), start and end marked;
+- ``energy.png``: the energy error (E − E0)/E_scale against time, E_scale the energy the motion moves around
+  (the largest kinetic energy or change of potential energy over the run), above the kinetic and potential
+  energies (J);
+- ``constraints.png``: the largest joint gap (m), joint angle error and |RᵀR − I| against time, log scale.
+
 Only NumPy and Matplotlib are imported (not the compiled ``poinsot._core``), so this module runs from a
 build of the command-line tool alone. ``poinsot run --plot`` calls it.
 """
@@ -25,7 +33,7 @@ import json
 import sys
 from pathlib import Path
 
-__all__ = ["load_run", "plot_run", "main"]
+__all__ = ["load_run", "load_multibody_run", "plot_run", "main"]
 
 ZERO_FLOOR = 1e-17  # where exact zeros are drawn on the log-scale error plot
 
@@ -247,6 +255,139 @@ def _plot_top(plt, cols, summary, out):
     plt.close(fig)
 
 
+def _read_csv(path):
+    """Columns (dict name -> numpy array) of a CSV whose first line is the header."""
+    import numpy as np
+
+    with open(path, encoding="utf-8") as f:
+        names = f.readline().strip().split(",")
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {name: data[:, i] for i, name in enumerate(names)}
+
+
+def load_multibody_run(folder):
+    """Returns (trajectory columns, diagnostics columns, summary dict, body names) of a multibody run folder
+    (trajectory.csv: t, then per body NAME.x ... NAME.wz; diagnostics.csv: include/poinsot/multibody/
+    scenario.hpp)."""
+    folder = Path(folder)
+    traj = _read_csv(folder / "trajectory.csv")
+    diag = _read_csv(folder / "diagnostics.csv")
+    with open(folder / "summary.json", encoding="utf-8") as f:
+        summary = json.load(f)
+    bodies = [name[: -len(".x")] for name in traj if name.endswith(".x")]
+    return traj, diag, summary, bodies
+
+
+def _multibody_title(summary):
+    name = Path(str(summary.get("scenario", "multibody run"))).stem
+    return f"{name} (RATTLE order {summary.get('order', 2)}, dt = {summary['dt']:g} s)"
+
+
+def _plot_paths(plt, traj, bodies, summary, out):
+    import numpy as np
+
+    fig, axes = plt.subplots(1, 2, figsize=(12, 5.6), constrained_layout=True)
+    colors = plt.get_cmap("viridis")(np.linspace(0.0, 0.9, len(bodies))) if len(bodies) > 10 else None
+    for ax, (a, b) in zip(axes, (("x", "z"), ("x", "y"))):
+        for i, name in enumerate(bodies):
+            c = colors[i] if colors is not None else f"C{i}"
+            u, v = traj[f"{name}.{a}"], traj[f"{name}.{b}"]
+            ax.plot(u, v, color=c, lw=1.2, label=name if len(bodies) <= 10 else None)
+            ax.plot(u[0], v[0], "o", color=c, ms=4)
+            ax.plot(u[-1], v[-1], "s", color=c, ms=4)
+        ax.set_aspect("equal", adjustable="datalim")
+        ax.set_xlabel(f"{a} (m)")
+        ax.set_ylabel(f"{b} (m)")
+        ax.set_title(f"{a}–{b} projection (o: start, ■: end)", fontsize=10)
+        ax.grid(alpha=0.3)
+    if len(bodies) <= 10:
+        axes[0].legend(loc="best", fontsize=9, title="centre of mass of")
+    else:
+        axes[0].text(0.02, 0.02, f"{len(bodies)} bodies, coloured in file order", transform=axes[0].transAxes,
+                     fontsize=9)
+    fig.suptitle(f"Centre-of-mass paths: {_multibody_title(summary)}", fontsize=12)
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+
+
+def energy_scale(diag):
+    """The energy the motion moves around (J): the largest kinetic energy or |V − V(0)| over the rows. The zero
+    of the potential is arbitrary, so |E0| is no scale (it can be 0 or huge); this is the issue's
+    "releasable energy". |E0| when both are 0 (a body at rest), 1 J if that is 0 too."""
+    import numpy as np
+
+    V = diag["potential"]
+    scale = max(float(np.max(np.abs(diag["kinetic"]))), float(np.max(np.abs(V - V[0]))))
+    if scale == 0.0:
+        scale = abs(float(diag["energy"][0])) or 1.0
+    return scale
+
+
+def _plot_energy(plt, diag, summary, out):
+    import numpy as np
+
+    t = diag["t"]
+    scale = energy_scale(diag)
+    fig, (ax, ax2) = plt.subplots(2, 1, figsize=(9, 7), sharex=True, constrained_layout=True)
+    ax.plot(t, diag["energy_error"] / scale, color="C3", lw=1.2)
+    ax.axhline(0.0, color="0.4", lw=0.8)
+    ax.set_ylabel("(E − E₀) / E_scale (dimensionless)")
+    worst = float(np.max(np.abs(diag["energy_error"]))) / scale
+    ax.set_title(f"Energy error: E₀ = {diag['energy'][0]:.6g} J, E_scale = {scale:.4g} J (largest T or |V − V₀|), "
+                 f"max |E − E₀| / E_scale = {worst:.3g}", fontsize=10)
+    ax.grid(alpha=0.3)
+    ax2.plot(t, diag["kinetic"], color="C0", lw=1.2, label="kinetic T")
+    ax2.plot(t, diag["potential"], color="C1", lw=1.2, label="potential V")
+    ax2.plot(t, diag["energy"], color="k", lw=1.0, ls="--", label="total E = T + V")
+    ax2.set_xlabel("time t (s)")
+    ax2.set_ylabel("energy (J)")
+    ax2.grid(alpha=0.3)
+    ax2.legend(loc="best", fontsize=9)
+    fig.suptitle(f"Energy: {_multibody_title(summary)}", fontsize=12)
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+
+
+def _plot_constraints(plt, diag, summary, out):
+    import numpy as np
+
+    t = diag["t"]
+    fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True, constrained_layout=True)
+    for ax, key, label, color in ((axes[0], "joint_gap", "largest joint gap (m)", "C0"),
+                                  (axes[1], "joint_angle", "largest joint angle error\n(dimensionless ≈ rad)", "C1"),
+                                  (axes[2], "orthogonality", "max |RᵀR − I|\n(dimensionless)", "C2")):
+        ax.semilogy(t, np.maximum(np.abs(diag[key]), ZERO_FLOOR), color=color, lw=1.2)
+        if key == "joint_gap":  # a length: RATTLE's Newton tolerance, not ε, is the reference
+            ax.axhline(1e-12, color="0.4", lw=0.8, ls=":", label="1e-12 m (tested bound)")
+        else:
+            ax.axhline(np.finfo(float).eps, color="0.4", lw=0.8, ls="--", label="machine epsilon 2.2e-16")
+        ax.legend(loc="lower right", fontsize=8)
+        ax.set_ylim(bottom=ZERO_FLOOR / 2)
+        ax.set_ylabel(label)
+        ax.grid(alpha=0.3, which="both")
+        if not np.any(diag[key]):
+            why = " (no hinge or weld joint)" if key == "joint_angle" else ""
+            ax.text(0.02, 0.85, f"exactly 0 at every row{why}", transform=ax.transAxes, fontsize=9)
+    axes[2].set_xlabel("time t (s)")
+    fig.suptitle(f"Constraint violation: {_multibody_title(summary)}\n(exact zeros drawn at {ZERO_FLOOR:g})",
+                 fontsize=12)
+    fig.savefig(out, dpi=120)
+    plt.close(fig)
+
+
+def _plot_multibody_run(plt, folder):
+    traj, diag, summary, bodies = load_multibody_run(folder)
+    if len(diag["t"]) < 2:
+        raise ValueError(f"plot: {folder / 'diagnostics.csv'} has {len(diag['t'])} rows; expected at least 2")
+    written = []
+    for name, draw in (("paths.png", lambda o: _plot_paths(plt, traj, bodies, summary, o)),
+                       ("energy.png", lambda o: _plot_energy(plt, diag, summary, o)),
+                       ("constraints.png", lambda o: _plot_constraints(plt, diag, summary, o))):
+        draw(folder / name)
+        written.append(folder / name)
+    return written
+
+
 def plot_run(folder):
     """Draws the figures of a run folder; returns the list of PNG paths written."""
     import matplotlib
@@ -255,6 +396,9 @@ def plot_run(folder):
     import matplotlib.pyplot as plt
 
     folder = Path(folder)
+    with open(folder / "summary.json", encoding="utf-8") as f:
+        if json.load(f).get("kind") == "multibody":
+            return _plot_multibody_run(plt, folder)
     cols, summary = load_run(folder)
     if len(cols["t"]) < 2:
         raise ValueError(f"plot: {folder / 'trajectory.csv'} has {len(cols['t'])} rows; expected at least 2")

@@ -462,18 +462,19 @@ void bind_scenario(py::module_& m) {
       });
   m.def(
       "run_scenario",
-      [](const mb::Scenario& sc, const std::string& trajectory_csv, const py::object& report) {
+      [](const mb::Scenario& sc, const std::string& trajectory_csv, const py::object& report,
+         const std::string& diagnostics_csv) {
         std::ostringstream text;
         mb::RunSummary summary;
         {
           py::gil_scoped_release release;
-          summary = mb::run_scenario(sc, report.is_none() ? nullptr : &text, trajectory_csv);
+          summary = mb::run_scenario(sc, report.is_none() ? nullptr : &text, trajectory_csv, diagnostics_csv);
         }
         if (!report.is_none()) report.attr("write")(text.str());
         return summary;
       },
       py::arg("scenario"), py::arg("trajectory_csv") = "", py::arg("report") = py::none(),
-      POINSOT_DOC(multibody_run_scenario));
+      py::arg("diagnostics_csv") = "", POINSOT_DOC(multibody_run_scenario));
 }
 
 }  // namespace

@@ -217,6 +217,37 @@ def test_double_pendulum_scenario(tmp_path):
     assert v.joint_velocity < 1e-12
 
 
+def test_diagnostics_csv_and_the_multibody_figures(tmp_path):
+    """run_scenario(diagnostics_csv=...) writes E, T, V, momenta and constraint violation at the trajectory's rows;
+    with a row every step its largest |E − E0| is the summary's max_energy_error and its first energy the
+    initial state's total_energy. poinsot.plot draws the multibody figures from such a folder (with the
+    summary.json fields `poinsot run` writes)."""
+    import json
+
+    pytest.importorskip("matplotlib")
+    scenario = mb.load_scenario(str(SOURCE_DIR / "examples" / "multibody" / "double_pendulum.toml"))
+    scenario.duration = 0.5
+    scenario.output_every = 1
+    folder = tmp_path / "run"
+    folder.mkdir()
+    summary = mb.run_scenario(scenario, trajectory_csv=str(folder / "trajectory.csv"),
+                              diagnostics_csv=str(folder / "diagnostics.csv"))
+    with open(folder / "diagnostics.csv", encoding="utf-8") as f:
+        names = f.readline().strip().split(",")
+    d = dict(zip(names, np.loadtxt(folder / "diagnostics.csv", delimiter=",", skiprows=1, ndmin=2).T))
+    assert len(d["t"]) == summary.steps + 1
+    assert d["energy"][0] == mb.total_energy(scenario.system, scenario.initial)
+    assert np.abs(d["energy_error"]).max() == summary.max_energy_error > 0
+    np.testing.assert_allclose(d["energy"], d["kinetic"] + d["potential"], rtol=1e-14, atol=1e-14)
+    assert d["joint_gap"].max() < 1e-12 and d["orthogonality"].max() < 1e-12
+    (folder / "summary.json").write_text(json.dumps(
+        {"scenario": "double_pendulum.toml", "kind": "multibody", "dt": scenario.dt, "order": scenario.order}))
+    figures = poinsot.plot.plot_run(folder)
+    assert sorted(p.name for p in figures) == ["constraints.png", "energy.png", "paths.png"]
+    for p in figures:
+        assert p.stat().st_size > 1000 and p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
 def test_parse_scenario_from_text():
     text = (SOURCE_DIR / "examples" / "multibody" / "compound_pendulum.toml").read_text(encoding="utf-8")
     scenario = mb.parse_scenario(text, "compound_pendulum.toml")

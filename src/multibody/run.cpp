@@ -9,6 +9,7 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/multibody/loads.hpp"
 #include "poinsot/multibody/multipliers.hpp"
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/rattle.hpp"
@@ -28,6 +29,25 @@ void write_row(std::ofstream& out, const State& st) {
         b.v_space.z(), b.omega_body.x(), b.omega_body.y(), b.omega_body.z());
   }
   out << '\n';
+}
+
+/// The columns of diagnostics.csv (scenario.hpp documents them).
+constexpr const char* kDiagnosticsHeader =
+    "t,energy,energy_error,kinetic,potential,linear_momentum,L_space_x,L_space_y,L_space_z,joint_gap,"
+    "joint_angle,orthogonality\n";
+
+/// One row of diagnostics.csv: E = T + V summed as total_energy does (observables.cpp), so that
+/// energy_error is the quantity RunSummary::max_energy_error takes the maximum of.
+void write_diagnostics_row(std::ofstream& out, const System& sys, const State& st, double energy_initial) {
+  const double T = kinetic_energy(sys, st);
+  const double V = potential_energy(sys, st.bodies);
+  const double E = T + V;
+  const Vec3 L = angular_momentum(sys, st);
+  const ConstraintViolation v = constraint_violation(sys, st);
+  out << fmt::format(
+      "{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n",
+      st.time, E, E - energy_initial, T, V, linear_momentum(sys, st).norm(), L.x(), L.y(), L.z(), v.joint_gap,
+      v.joint_angle, v.orthogonality);
 }
 
 const char* kkt_method_description(KktMethod method) {
@@ -82,7 +102,8 @@ void write_report(std::ostream& out, const Scenario& sc, const State& st, const 
 
 }  // namespace
 
-RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::string& trajectory_csv) {
+RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::string& trajectory_csv,
+                        const std::string& diagnostics_csv) {
   check_consistent(sc.system, sc.initial);
   RattleOptions options;
   options.order = sc.order;
@@ -106,6 +127,14 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
     out << '\n';
     write_row(out, st);
   }
+  std::ofstream diag;
+  if (!diagnostics_csv.empty()) {
+    diag.open(diagnostics_csv);
+    if (!diag)
+      throw InvalidInput(fmt::format("multibody: cannot write the diagnostics to '{}'", diagnostics_csv));
+    diag << kDiagnosticsHeader;
+    write_diagnostics_row(diag, sc.system, st, s.energy_initial);
+  }
   const long steps = std::lround(sc.duration / sc.dt);
   long iterations = 0;
   const std::clock_t c0 = std::clock();
@@ -114,6 +143,7 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
       rattle.step(st);
     } catch (const ComputationFailed&) {
       if (out.is_open()) out.flush();
+      if (diag.is_open()) diag.flush();
       throw;
     }
     iterations += rattle.last_iterations();
@@ -124,7 +154,10 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
     s.max_orthogonality = std::max(s.max_orthogonality, v.orthogonality);
     s.max_energy_error =
         std::max(s.max_energy_error, std::abs(total_energy(sc.system, st) - s.energy_initial));
-    if (out.is_open() && ((n + 1) % sc.output_every == 0 || n + 1 == steps)) write_row(out, st);
+    if ((n + 1) % sc.output_every == 0 || n + 1 == steps) {
+      if (out.is_open()) write_row(out, st);
+      if (diag.is_open()) write_diagnostics_row(diag, sc.system, st, s.energy_initial);
+    }
   }
   s.steps = steps;
   s.cpu_seconds_per_step =

@@ -269,6 +269,38 @@ def test_multibody_scenario_runs_through_poinsot_run(cli, source_dir, tmp_path):
     assert (out / "report.txt").read_text().startswith("multibody run")
 
 
+def test_multibody_plot_and_diagnostics(cli, source_dir, tmp_path):
+    """--plot on a multibody run draws paths.png, energy.png and constraints.png; diagnostics.csv has one row per
+    trajectory row (here every step, --sample-dt = dt) and its energy_error column reaches the summary's
+    energy_abs_error_max, which the C++ run takes over every step by a separate path (RunSummary): the same
+    number to round-off."""
+    out = tmp_path / "dp"
+    r = cli("run", source_dir / "examples" / "multibody" / "double_pendulum.toml", "--t-end", "1", "--plot",
+            "--sample-dt", "0.001", "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert "plot: wrote" in r.stdout
+    for name in ("paths.png", "energy.png", "constraints.png"):
+        data = (out / name).read_bytes()
+        assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 10000, name
+    summary = json.loads((out / "summary.json").read_text())
+    lines = (out / "diagnostics.csv").read_text().splitlines()
+    names = lines[0].split(",")
+    assert names == ["t", "energy", "energy_error", "kinetic", "potential", "linear_momentum", "L_space_x",
+                     "L_space_y", "L_space_z", "joint_gap", "joint_angle", "orthogonality"]
+    rows = [dict(zip(names, map(float, line.split(",")))) for line in lines[1:]]
+    traj = (out / "trajectory.csv").read_text().splitlines()[1:]
+    assert len(rows) == len(traj) == summary["steps"] + 1
+    assert [row["t"] for row in rows] == [float(line.split(",")[0]) for line in traj]
+    assert rows[0]["t"] == 0.0 and rows[0]["energy_error"] == 0.0 and rows[0]["joint_gap"] < 1e-12
+    assert rows[0]["energy"] == summary["energy_initial"] and rows[-1]["energy"] == summary["energy_final"]
+    worst = max(abs(row["energy_error"]) for row in rows)
+    assert summary["energy_abs_error_max"] > 0
+    assert worst == pytest.approx(summary["energy_abs_error_max"], rel=1e-14, abs=0)
+    for row in rows:
+        assert row["energy"] == pytest.approx(row["kinetic"] + row["potential"], rel=1e-14, abs=1e-14)
+        assert row["joint_gap"] < 1e-12 and row["orthogonality"] < 1e-12
+
+
 def test_multibody_order_four_cuts_the_falling_chains_energy_error(cli, source_dir, tmp_path):
     """[simulation] order = 4 runs RATTLE's triple-jump composition: the 16-link chain's energy error over its
     first 2 s of fall is O(h⁴) instead of O(h²): measured 6.0e-5 J against 1.6e-2 J (of 1256 J releasable)."""

@@ -5,6 +5,8 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/scenario.hpp"
@@ -63,9 +65,105 @@ TEST(Run, CompoundPendulumExampleHasTheTextbookPeriod) {
   EXPECT_NE(report.str().find("body 'rod': solid cylinder along x\n"), std::string::npos);
 }
 
+/// The rows of a CSV file after its header, as numbers.
+std::vector<std::vector<double>> read_rows(const std::string& path, std::string& header) {
+  std::ifstream in(path);
+  std::getline(in, header);
+  std::vector<std::vector<double>> rows;
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::istringstream fields(line);
+    std::string f;
+    while (std::getline(fields, f, ','))
+      row.push_back(std::stod(f));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(Run, DiagnosticsRowsAreTheObservablesOfTheTrajectoryRows) {
+  // The compound pendulum pushed (ω projected onto the hinge's axis), 503 steps written every 7 (the
+  // last row is the final step, not a multiple of 7). Each diagnostics row is checked against the trajectory
+  // row of the same index, through formulas written out here for the rod (not the library's observables):
+  // T = ½ m|v|² + ½ Σ J_k ω_k², V = m g z, p = m|v|, L = x × m v + R J ω, the gap |x + R (−l/2, 0, 0)| of the
+  // pivot at the origin. v, ω and x are printed with 17 digits (exact round trip), so T and V agree to the
+  // last bits (1e-14 relative: a sum of three terms); R comes back through the printed quaternion, off by
+  // ~1e-16, which bounds the difference in L (~1e-15 kg·m²/s) and the gap (~1e-16 m): 1e-13 leaves margin.
+  Scenario sc = compound_pendulum();
+  sc.initial.bodies[0].omega_body = Vec3(0.4, 2.0, -0.3);
+  project_velocities(sc.system, sc.initial);
+  sc.duration = 0.503;
+  sc.output_every = 7;
+  const std::string traj_csv = testing::TempDir() + "/diag_traj.csv";
+  const std::string diag_csv = testing::TempDir() + "/diag_diag.csv";
+  const RunSummary s = run_scenario(sc, nullptr, traj_csv, diag_csv);
+  std::string traj_header, diag_header;
+  const auto traj = read_rows(traj_csv, traj_header);
+  const auto diag = read_rows(diag_csv, diag_header);
+  EXPECT_EQ(diag_header,
+            "t,energy,energy_error,kinetic,potential,linear_momentum,L_space_x,L_space_y,L_space_z,joint_gap,"
+            "joint_angle,orthogonality");
+  ASSERT_EQ(traj.size(), 1u + 503u / 7u + 1u);
+  ASSERT_EQ(diag.size(), traj.size());
+  const double m = 1, l = 1, r = 0.01, g = 9.81;
+  const Vec3 K(m * l * l / 12, m * r * r / 4, m * r * r / 4);  // compound_pendulum()'s Poinsot tensor
+  const Vec3 J = Vec3::Constant(K.sum()) - K;                  // J = tr(K) I − K, about the centre of mass
+  const double E0 = diag[0][1];
+  double max_error = 0;
+  for (std::size_t k = 0; k < diag.size(); ++k) {
+    const std::vector<double>& a = traj[k];
+    const std::vector<double>& d = diag[k];
+    ASSERT_EQ(a.size(), 14u);
+    ASSERT_EQ(d.size(), 12u);
+    const Vec3 x(a[1], a[2], a[3]), v(a[8], a[9], a[10]), w(a[11], a[12], a[13]);
+    const Mat3 R = Quat(a[4], a[5], a[6], a[7]).toRotationMatrix();
+    const double T = 0.5 * m * v.squaredNorm() + 0.5 * w.dot(J.cwiseProduct(w));
+    const double V = m * g * x.z();
+    const Vec3 L = x.cross(m * v) + R * J.cwiseProduct(w);
+    EXPECT_EQ(d[0], a[0]);
+    EXPECT_NEAR(d[3], T, 1e-14 * (T + 1));
+    EXPECT_NEAR(d[4], V, 1e-14 * (std::abs(V) + 1));
+    EXPECT_NEAR(d[1], T + V, 1e-14 * (T + std::abs(V) + 1));
+    EXPECT_DOUBLE_EQ(d[2], d[1] - E0);
+    EXPECT_NEAR(d[5], m * v.norm(), 1e-14);
+    EXPECT_NEAR(d[6], L.x(), 1e-13);
+    EXPECT_NEAR(d[7], L.y(), 1e-13);
+    EXPECT_NEAR(d[8], L.z(), 1e-13);
+    EXPECT_NEAR(d[9], (x + R * Vec3(-l / 2, 0, 0)).norm(), 1e-13);
+    EXPECT_LT(d[10], 1e-12);  // hinge angle: RATTLE holds the constraints to round-off (rattle.hpp)
+    EXPECT_LT(d[11], 1e-12);
+    max_error = std::max(max_error, std::abs(d[2]));
+  }
+  EXPECT_EQ(diag[0][2], 0.0);
+  // The summary's maximum is over every step, the rows over every 7th: never above it; and RATTLE's energy
+  // error on the swing is O(h²), not zero.
+  EXPECT_LE(max_error, s.max_energy_error);
+  EXPECT_GT(max_error, 0.0);
+}
+
+TEST(Run, DiagnosticsEveryStepReachTheSummarysEnergyError) {
+  // With a row every step, the column's largest |E − E0| is the summary's max_energy_error: the same doubles
+  // (E = T + V, observables.cpp) printed with 17 digits, which round-trip exactly.
+  Scenario sc = compound_pendulum();
+  sc.duration = 0.2;
+  sc.output_every = 1;
+  const std::string diag_csv = testing::TempDir() + "/diag_every.csv";
+  const RunSummary s = run_scenario(sc, nullptr, "", diag_csv);
+  std::string header;
+  const auto diag = read_rows(diag_csv, header);
+  ASSERT_EQ(diag.size(), 201u);
+  double max_error = 0;
+  for (const auto& d : diag)
+    max_error = std::max(max_error, std::abs(d[2]));
+  EXPECT_GT(s.max_energy_error, 0.0);
+  EXPECT_EQ(max_error, s.max_energy_error);
+  EXPECT_DOUBLE_EQ(diag.back()[1], s.energy_final);
+}
+
 TEST(Run, FailureKeepsTheRowsWritten) {
-  // A spin far too fast for the step: h|ω| ≥ 1 stops the run with ComputationFailed; the CSV keeps its header
-  // and the initial row.
+  // A spin far too fast for the step: h|ω| ≥ 1 stops the run with ComputationFailed; both CSVs keep their
+  // header and the initial row.
   Scenario sc;
   sc.system.add_body_from_inertia("a", 1.0, Vec3(1, 2, 3).asDiagonal());
   sc.initial.bodies.resize(1);
@@ -73,13 +171,19 @@ TEST(Run, FailureKeepsTheRowsWritten) {
   sc.dt = 0.1;
   sc.duration = 1.0;
   const std::string csv = testing::TempDir() + "/fast.csv";
-  EXPECT_THROW(run_scenario(sc, nullptr, csv), ComputationFailed);
+  const std::string diag_csv = testing::TempDir() + "/fast_diagnostics.csv";
+  EXPECT_THROW(run_scenario(sc, nullptr, csv, diag_csv), ComputationFailed);
   std::ifstream in(csv);
   std::string header, row;
   std::getline(in, header);
   std::getline(in, row);
   EXPECT_EQ(header.substr(0, 6), "t,a.x,");
   EXPECT_EQ(row.substr(0, 2), "0,");
+  std::ifstream din(diag_csv);
+  std::getline(din, header);
+  std::getline(din, row);
+  EXPECT_EQ(header.substr(0, 16), "t,energy,energy_");
+  EXPECT_EQ(row.substr(0, 8), "0,600,0,");  // t = 0, E0 = ½ J₃ ω₃² = ½ · 3 · 20² J, E − E0 = 0
 }
 
 }  // namespace

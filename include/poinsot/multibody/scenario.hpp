@@ -53,8 +53,19 @@ struct RunSummary {
 /// empty (columns: t, then per body x y z qw qx qy qz vx vy vz wx wy wz: the centre of mass (m), the rotation
 /// body → space as a quaternion, the velocity of the centre of mass (m/s), ω in the body frame (rad/s)) and a
 /// human-readable report to `report` unless null (energy, momenta, constraint violation, joint reactions and
-/// each body's Λ at the end). On a ComputationFailed the rows already written stay in the file and the
-/// exception propagates.
-RunSummary run_scenario(const Scenario& scenario, std::ostream* report, const std::string& trajectory_csv);
+/// each body's Λ at the end).
+///
+/// Writes the conserved quantities and the constraint violation to `diagnostics_csv` unless it is empty, one
+/// row per trajectory row (t = 0, every `output_every` steps and the last step), columns:
+/// `t` (s), `energy` E = T + V (J, observables.hpp), `energy_error` E − E(0) (J; its largest magnitude over
+/// every step is RunSummary::max_energy_error), `kinetic` T (J), `potential` V (J, loads.hpp: gravity,
+/// springs, constant forces), `linear_momentum` |Σ m v| (kg·m/s), `L_space_x`, `L_space_y`, `L_space_z` the
+/// angular momentum about the space origin Σ (x × m v + R J ω) (kg·m²/s), `joint_gap` (m), `joint_angle`
+/// (dimensionless) and `orthogonality` max |RᵀR − I| (dimensionless), the maxima over joints and bodies of
+/// ConstraintViolation.
+///
+/// On a ComputationFailed the rows already written stay in both files and the exception propagates.
+RunSummary run_scenario(const Scenario& scenario, std::ostream* report, const std::string& trajectory_csv,
+                        const std::string& diagnostics_csv = "");
 
 }  // namespace poinsot::multibody
