@@ -5,9 +5,21 @@
 #include <algorithm>
 #include <cmath>
 
+#include <string>
+
 #include "euler_rhs.hpp"
+#include "poinsot/core/check.hpp"
+#include "poinsot/dynamics/integrator.hpp"
 
 namespace poinsot::dynamics::detail {
+
+/// The options an adaptive integrator needs: the largest step dt (s) and the tolerances, all > 0. `method`
+/// names the integrator in the message ("dopri5: rtol: got 0, expected a number > 0").
+inline void require_adaptive_options(const std::string& method, const IntegratorOptions& options) {
+  require_positive(method + ": dt", options.dt, "s");
+  require_positive(method + ": rtol", options.rtol);
+  require_positive(method + ": atol", options.atol);
+}
 
 /// Componentwise scale sk_i = atol + rtol · max(|y0_i|, |y1_i|).
 inline Vec7 error_scale(const Vec7& y0, const Vec7& y1, double rtol, double atol) {

@@ -268,9 +268,7 @@ void Dop853Integrator::Impl::prepare_dense() const {
 Dop853Integrator::Dop853Integrator(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
                                    const IntegratorOptions& options)
     : impl_(std::make_unique<Impl>(detail::EulerRhs(body, std::move(torque)), options)) {
-  require_positive("dop853: dt", options.dt, "s");
-  require_positive("dop853: rtol", options.rtol);
-  require_positive("dop853: atol", options.atol);
+  detail::require_adaptive_options("dop853", options);
 }
 
 Dop853Integrator::~Dop853Integrator() = default;

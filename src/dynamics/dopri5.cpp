@@ -51,9 +51,7 @@ struct Dopri5Integrator::Impl {
 Dopri5Integrator::Dopri5Integrator(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
                                    const IntegratorOptions& options)
     : impl_(std::make_unique<Impl>(detail::EulerRhs(body, std::move(torque)), options)) {
-  require_positive("dopri5: dt", options.dt, "s");
-  require_positive("dopri5: rtol", options.rtol);
-  require_positive("dopri5: atol", options.atol);
+  detail::require_adaptive_options("dopri5", options);
 }
 
 Dopri5Integrator::~Dopri5Integrator() = default;
