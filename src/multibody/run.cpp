@@ -141,6 +141,9 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
   for (long n = 0; n < steps; ++n) {
     try {
       rattle.step(st);
+      // Sample times t₀ + n h exactly, as the single-body runs have them (the integrator adds h each step,
+      // whose rounding would otherwise accumulate: 0.5000000000000002 s after 50 steps of 0.01 s).
+      st.time = sc.initial.time + static_cast<double>(n + 1) * sc.dt;
     } catch (const ComputationFailed&) {
       if (out.is_open()) out.flush();
       if (diag.is_open()) diag.flush();

@@ -161,6 +161,22 @@ TEST(Run, DiagnosticsEveryStepReachTheSummarysEnergyError) {
   EXPECT_DOUBLE_EQ(diag.back()[1], s.energy_final);
 }
 
+TEST(Run, SampleTimesAreExactMultiplesOfTheStep) {
+  // dt = 0.01 s has no exact binary form: adding it 50 times gives 0.5000000000000002, not 0.5.
+  Scenario sc = compound_pendulum();
+  sc.dt = 0.01;
+  sc.duration = 0.5;
+  sc.output_every = 1;
+  const std::string csv = testing::TempDir() + "/times.csv";
+  (void)run_scenario(sc, nullptr, csv);
+  std::string header;
+  const auto rows = read_rows(csv, header);
+  ASSERT_EQ(rows.size(), 51u);
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    EXPECT_EQ(rows[k][0], static_cast<double>(k) * 0.01) << "row " << k;
+  EXPECT_EQ(rows.back()[0], 0.5);
+}
+
 TEST(Run, FailureKeepsTheRowsWritten) {
   // A spin far too fast for the step: h|ω| ≥ 1 stops the run with ComputationFailed; both CSVs keep their
   // header and the initial row.
