@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
+#include "allocation_counter.hpp"
 #include "multibody_fixtures.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/observables.hpp"
@@ -299,6 +301,42 @@ TEST(Rattle, AFailedStepLeavesTheStateAsItWas) {
   EXPECT_EQ(st.bodies[0].x_space, before.bodies[0].x_space);
   EXPECT_EQ(rattle.velocity_stage().Lambda_body[0], Mat3::Zero());  // none from a failed step
   EXPECT_EQ(rattle.position_stage().Lambda_body[0], Mat3::Zero());
+}
+
+TEST(Rattle, StepsAllocateNothingOnTrees) {
+  // Both O(N) solvers (ball chain; Baraff's tree order, here with a hinge) and both orders: after the first
+  // step, stepping and reading the multipliers allocate nothing (the workspace is sized in the constructor).
+  System chain = test::rod_chain(6);
+  System tree = test::rod_chain(3);
+  tree.add_body("arm", 1.0, test::rod_poinsot(1.0, 1.0, 0.01));
+  tree.add_hinge("h", 3, Vec3(-0.5, 0, 0), Vec3(0, 1, 0), 1, Vec3(0, 0.1, 0), Vec3(0, 1, 0));
+  State tree_state = test::rod_chain_state(3);
+  tree_state.bodies.push_back(BodyState{});
+  tree_state.bodies[3].x_space = Vec3(2.0, 0.1, 0);  // the arm's end at link 1's point (1.5, 0.1, 0)
+  for (int order : {2, 4}) {
+    for (const auto& [system, start, method] :
+         {std::tuple{chain, test::rod_chain_state(6), KktMethod::ball_chain},
+          std::tuple{tree, tree_state, KktMethod::tree}}) {
+      RattleOptions options;
+      options.order = order;
+      const long long before_construction = poinsot::test::allocation_count();
+      Rattle rattle(system, 1e-3, options);
+      // The counter is live in this executable: the constructor sizes its workspace.
+      ASSERT_GT(poinsot::test::allocation_count(), before_construction);
+      ASSERT_EQ(rattle.kkt_method(), method);
+      State st = start;
+      rattle.step(st);
+      const long long before = poinsot::test::allocation_count();
+      for (int k = 0; k < 50; ++k) {
+        rattle.step(st);
+        (void)rattle.position_stage();
+        (void)rattle.velocity_stage();
+      }
+      EXPECT_EQ(poinsot::test::allocation_count() - before, 0)
+          << "order " << order << ", " << kkt_method_name(method);
+      EXPECT_LT(constraint_violation(system, st).joint_gap, 1e-12);
+    }
+  }
 }
 
 TEST(Rattle, RejectsAnOrderItDoesNotHave) {

@@ -1,6 +1,6 @@
-// Test support (not a test file): replaces the global operator new/delete of the dynamics test executable
-// by counting wrappers around malloc/free. Kept in its own translation unit so that no caller sees the
-// replacement inlined.
+// Test support (not a test file): replaces the global operator new/delete of the test executables that link
+// it (tests/CMakeLists.txt: dynamics, multibody) by counting wrappers around malloc/free. Kept in its own
+// translation unit so that no caller sees the replacement inlined.
 #include "allocation_counter.hpp"
 
 #include <atomic>
