@@ -88,6 +88,19 @@ const char* kkt_method_name(KktMethod method) {
   }
 }
 
+const char* kkt_method_description(KktMethod method) {
+  switch (method) {
+    case KktMethod::ball_chain:
+      return "ball-chain Schur complement, block tridiagonal, O(N)";
+    case KktMethod::tree:
+      return "tree-order block LDLT (Baraff), O(N)";
+    case KktMethod::sparse_lu:
+      return "sparse LU (closed loops)";
+    default:
+      return "chosen from the system's structure";
+  }
+}
+
 KktSolver::~KktSolver() = default;
 KktSolver::KktSolver(KktSolver&&) noexcept = default;
 KktSolver& KktSolver::operator=(KktSolver&&) noexcept = default;

@@ -50,17 +50,6 @@ void write_diagnostics_row(std::ofstream& out, const System& sys, const State& s
       v.joint_angle, v.orthogonality);
 }
 
-const char* kkt_method_description(KktMethod method) {
-  switch (method) {
-    case KktMethod::ball_chain:
-      return "ball-chain Schur complement, block tridiagonal, O(N)";
-    case KktMethod::tree:
-      return "tree-order block LDLT (Baraff), O(N)";
-    default:
-      return "sparse LU (closed loops)";
-  }
-}
-
 void write_report(std::ostream& out, const Scenario& sc, const State& st, const RunSummary& s) {
   const System& sys = sc.system;
   out << "multibody run\n";

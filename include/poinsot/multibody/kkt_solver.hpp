@@ -44,6 +44,8 @@ class BallChainSolver;
 enum class KktMethod { automatic, ball_chain, tree, sparse_lu };
 /// "automatic", "ball_chain", "tree" or "sparse_lu" (the names used by the CLI's JSON and by Python).
 const char* kkt_method_name(KktMethod method);
+/// A line for reports, e.g. "tree-order block LDLT (Baraff), O(N)".
+const char* kkt_method_description(KktMethod method);
 
 class KktSolver {
  public:
