@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "poinsot/multibody/observables.hpp"
+#include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"
 #include "rod_chain.hpp"
 
@@ -19,43 +20,54 @@ using namespace poinsot::multibody;
 
 using bench::rod_chain;
 
-// One benchmark per method: RATTLE (order 2) and its fourth-order triple-jump composition.
-void rod_chain_steps(benchmark::State& bm, int order) {
+// One benchmark per method: RATTLE (order 2), its fourth-order triple-jump composition, and the projected
+// RK4 (projected_rk4.hpp). `make` builds a fresh integrator (also to restart the chain every 5000 steps).
+template <class Make>
+void rod_chain_steps(benchmark::State& bm, Make make) {
   const int n = static_cast<int>(bm.range(0));
-  RattleOptions options;
-  options.order = order;
   const System system = rod_chain(n);
   const State released = bench::released_chain(n);
   State st = released;
-  Rattle rattle(system, 1e-3, options);
+  auto integrator = make(system);
   const double E0 = total_energy(system, st);
   double max_dE = 0.0, max_gap = 0.0;
   long steps = 0, iterations = 0;
   for (auto _ : bm) {
-    rattle.step(st);
+    integrator.step(st);
     ++steps;
-    iterations += rattle.last_iterations();
+    iterations += integrator.last_iterations();
     if (steps % 10 == 0) {  // sampled diagnostics, not timed (the whip's energy peak lasts ~20 steps)
       bm.PauseTiming();
       max_dE = std::max(max_dE, std::abs(total_energy(system, st) - E0));
       max_gap = std::max(max_gap, constraint_violation(system, st).joint_gap);
       if (steps % 5000 == 0) {
         st = released;
-        rattle = Rattle(system, 1e-3, options);
+        integrator = make(system);
       }
       bm.ResumeTiming();
     }
   }
   bm.counters["energy_err_rel"] = max_dE / (9.81 * n * n / 2.0);
   bm.counters["max_gap_m"] = max_gap;
+  // Newton iterations of the position stages (RATTLE) or of the joint projection (RK4), per step.
   bm.counters["newton_its"] = static_cast<double>(iterations) / static_cast<double>(std::max(1L, steps));
   bm.SetComplexityN(n);
 }
+auto rattle_of_order(int order) {
+  return [order](const System& system) {
+    RattleOptions options;
+    options.order = order;
+    return Rattle(system, 1e-3, options);
+  };
+}
 void BM_RodChainStep(benchmark::State& bm) {
-  rod_chain_steps(bm, 2);
+  rod_chain_steps(bm, rattle_of_order(2));
 }
 void BM_RodChainStepOrder4(benchmark::State& bm) {
-  rod_chain_steps(bm, 4);
+  rod_chain_steps(bm, rattle_of_order(4));
+}
+void BM_RodChainStepRk4(benchmark::State& bm) {
+  rod_chain_steps(bm, [](const System& system) { return ProjectedRk4(system, 1e-3); });
 }
 // N = 1, 4, 16, 64, 256 and the fitted growth.
 void chain_sizes(benchmark::internal::Benchmark* b) {
@@ -65,5 +77,6 @@ void chain_sizes(benchmark::internal::Benchmark* b) {
 }
 BENCHMARK(BM_RodChainStep)->Apply(chain_sizes);
 BENCHMARK(BM_RodChainStepOrder4)->Apply(chain_sizes);
+BENCHMARK(BM_RodChainStepRk4)->Apply(chain_sizes);
 
 }  // namespace

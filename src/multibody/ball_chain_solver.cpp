@@ -7,35 +7,64 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/so3/hat.hpp"
 
 namespace poinsot::multibody::detail {
 namespace {
 
-// A⁻¹ of a symmetric positive definite 3 × 3 matrix by Cholesky; false when a pivot falls below 1e-13 of its
-// diagonal entry (S singular to working accuracy: redundant constraints).
-bool spd_inverse3(const Mat3& A, Mat3& inv) {
-  const double d0 = A(0, 0);
-  if (!(d0 > 0.0)) return false;
-  const double l00 = std::sqrt(d0);
-  const double l10 = A(1, 0) / l00, l20 = A(2, 0) / l00;
-  const double d1 = A(1, 1) - l10 * l10;
-  if (!(d1 > 1e-13 * A(1, 1))) return false;
-  const double l11 = std::sqrt(d1);
-  const double l21 = (A(2, 1) - l20 * l10) / l11;
-  const double d2 = A(2, 2) - l20 * l20 - l21 * l21;
-  if (!(d2 > 1e-13 * A(2, 2))) return false;
-  const double l22 = std::sqrt(d2);
-  // M = L⁻¹ (lower triangular), A⁻¹ = Mᵀ M.
-  const double m00 = 1.0 / l00, m11 = 1.0 / l11, m22 = 1.0 / l22;
-  const double m10 = -l10 * m00 * m11;
-  const double m21 = -l21 * m11 * m22;
-  const double m20 = -(l20 * m00 + l21 * m10) * m22;
-  inv(0, 0) = m00 * m00 + m10 * m10 + m20 * m20;
-  inv(1, 0) = inv(0, 1) = m11 * m10 + m21 * m20;
-  inv(2, 0) = inv(0, 2) = m22 * m20;
-  inv(1, 1) = m11 * m11 + m21 * m21;
-  inv(2, 1) = inv(1, 2) = m22 * m21;
-  inv(2, 2) = m22 * m22;
+// A symmetric 3 × 3 matrix by its lower triangle, held in registers (the helpers below are forced inline so
+// that it stays there): the factorisation keeps its pivots in
+// scalars because writing a matrix entry by entry and reading it back by pairs stalls store forwarding
+// (which cost a third of the factorisation's time with Eigen's 3 × 3 temporaries).
+struct Sym3 {
+  double a, b, c, d, e, f;  // (0,0), (1,0), (2,0), (1,1), (2,1), (2,2)
+  Mat3 full() const { return (Mat3() << a, b, c, b, d, e, c, e, f).finished(); }
+};
+
+// S += A Bᵀ, lower triangle (A Bᵀ symmetric): 18 multiplications instead of 27.
+[[gnu::always_inline]] inline void add_ABt(Sym3& S, const Mat3& A, const Mat3& B) {
+  auto dot = [&](int r, int col) { return A(r, 0) * B(col, 0) + A(r, 1) * B(col, 1) + A(r, 2) * B(col, 2); };
+  S.a += dot(0, 0);
+  S.b += dot(1, 0);
+  S.c += dot(2, 0);
+  S.d += dot(1, 1);
+  S.e += dot(2, 1);
+  S.f += dot(2, 2);
+}
+
+// S −= Aᵀ B, lower triangle (AᵀB symmetric).
+[[gnu::always_inline]] inline void subtract_AtB(Sym3& S, const Mat3& A, const Mat3& B) {
+  auto dot = [&](int r, int col) { return A(0, r) * B(0, col) + A(1, r) * B(1, col) + A(2, r) * B(2, col); };
+  S.a -= dot(0, 0);
+  S.b -= dot(1, 0);
+  S.c -= dot(2, 0);
+  S.d -= dot(1, 1);
+  S.e -= dot(2, 1);
+  S.f -= dot(2, 2);
+}
+
+// out = D E with D symmetric, in scalars (D stays in registers).
+[[gnu::always_inline]] inline void symmetric_times(const Sym3& D, const Mat3& E, Mat3& out) {
+  for (int col = 0; col < 3; ++col) {
+    const double e0 = E(0, col), e1 = E(1, col), e2 = E(2, col);
+    out(0, col) = D.a * e0 + D.b * e1 + D.c * e2;
+    out(1, col) = D.b * e0 + D.d * e1 + D.e * e2;
+    out(2, col) = D.c * e0 + D.e * e1 + D.f * e2;
+  }
+}
+
+// A⁻¹ of a symmetric positive definite 3 × 3 matrix by its adjugate: one division, against Cholesky's three
+// square roots and three divisions in series (the factorisation's recurrence runs through this inverse from
+// joint to joint, so its latency counts). False when a leading minor is not positive to working accuracy
+// (Cholesky's pivots d₁ = minor₂/a and d₂ = det/minor₂ below 1e-13 of their diagonal entry): S singular,
+// redundant constraints.
+[[gnu::always_inline]] inline bool spd_inverse3(const Sym3& S, Sym3& inv) {
+  const double c00 = S.d * S.f - S.e * S.e, c10 = S.c * S.e - S.b * S.f, c20 = S.b * S.e - S.c * S.d;
+  const double c11 = S.a * S.f - S.c * S.c, c21 = S.b * S.c - S.a * S.e, c22 = S.a * S.d - S.b * S.b;
+  const double det = S.a * c00 + S.b * c10 + S.c * c20;
+  if (!(S.a > 0.0) || !(c22 > 1e-13 * S.a * S.d) || !(det > 1e-13 * S.f * c22)) return false;
+  const double r = 1.0 / det;
+  inv = {r * c00, r * c10, r * c20, r * c11, r * c21, r * c22};
   return true;
 }
 
@@ -120,35 +149,63 @@ std::unique_ptr<BallChainSolver> BallChainSolver::make(const System& system) {
 }
 
 void BallChainSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<JointJacobian>& G_b) {
+  factor_with([&](std::size_t j, int s) -> Mat3 { return (s == 0 ? G_a[j] : G_b[j]).block<3, 3>(0, 3); });
+}
+
+void BallChainSolver::factor_at(const std::vector<BodyState>& q) {
+  // Gω of the ball rows x_a + R_a A − x_b − R_b B: −R_a j(A) on side a, R_b j(B) on side b (constraints.hpp).
+  const auto& joints = system_->joints();
+  factor_with([&](std::size_t j, int s) -> Mat3 {
+    const Joint& joint = joints[j];
+    if (s == 0) return so3::times_hat(q[static_cast<std::size_t>(joint.body_a)].R_space_body, -joint.point_a);
+    return so3::times_hat(q[static_cast<std::size_t>(joint.body_b)].R_space_body, joint.point_b);
+  });
+}
+
+template <class OmegaBlock>
+void BallChainSolver::factor_with(OmegaBlock omega_block) {
   const auto& bodies = system_->bodies();
-  Link* previous = nullptr;
+  // The ω-blocks first, in a pass of their own: read back in the same iteration they were just written entry
+  // by entry, they stalled the loads that followed (store forwarding).
   for (Link& link : links_) {
+    for (int s = 0; s < 2; ++s) {
+      if (link.sides[s].body != kWorld)
+        link.sides[s].G_omega = omega_block(static_cast<std::size_t>(link.joint), s);
+    }
+  }
+  Sym3 D_inv_previous{};
+  for (std::size_t p = 0; p < links_.size(); ++p) {
+    Link& link = links_[p];
     const auto j = static_cast<std::size_t>(link.joint);
-    Mat3 S = Mat3::Zero();
+    Sym3 S{};  // S_pp, then the pivot D_p = S_pp − E_pᵀ D_{p−1}⁻¹ E_p
     for (int s = 0; s < 2; ++s) {
       Side& side = link.sides[s];
       if (side.body == kWorld) continue;
       const Body& b = bodies[static_cast<std::size_t>(side.body)];
-      side.G_omega = (s == 0 ? G_a[j] : G_b[j]).block<3, 3>(0, 3);
       side.X.noalias() = side.G_omega * b.inertia_inverse;
-      S.noalias() += side.X * side.G_omega.transpose();
-      S.diagonal().array() += inverse_mass_[static_cast<std::size_t>(side.body)];
+      add_ABt(S, side.X, side.G_omega);
+      const double inverse_mass = inverse_mass_[static_cast<std::size_t>(side.body)];
+      S.a += inverse_mass;
+      S.d += inverse_mass;
+      S.f += inverse_mass;
     }
     if (link.shared_side >= 0) {
       const Side& mine = link.sides[link.shared_side];
-      const Side& theirs = previous->sides[link.previous_side];
+      const Side& theirs = links_[p - 1].sides[link.previous_side];
       link.E.noalias() = theirs.X * mine.G_omega.transpose();
       link.E.diagonal().array() +=
           theirs.sign * mine.sign * inverse_mass_[static_cast<std::size_t>(mine.body)];
-      link.Lt.noalias() = previous->D_inv * link.E;
-      S.noalias() -= link.E.transpose() * link.Lt;
+      symmetric_times(D_inv_previous, link.E, link.Lt);
+      subtract_AtB(S, link.E, link.Lt);
     }
-    if (!spd_inverse3(S, link.D_inv)) {
+    Sym3 D_inv{};
+    if (!spd_inverse3(S, D_inv)) {
       throw ComputationFailed(
           fmt::format("multibody: singular pivot at joint '{}' (redundant or degenerate constraints)",
                       system_->joints()[j].name));
     }
-    previous = &link;
+    link.D_inv = D_inv.full();
+    D_inv_previous = D_inv;
   }
 }
 
@@ -158,7 +215,8 @@ void BallChainSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
     t_[i].head<3>() = inverse_mass_[i] * body[i].head<3>();
     t_[i].tail<3>().noalias() = bodies[i].inertia_inverse * body[i].tail<3>();
   }
-  // Forward: L y′ = G M⁻¹ r − s.
+  // Forward: L y′ = G M⁻¹ r − s; first G M⁻¹ r − s for every joint (independent), then the recurrence, with
+  // the previous joint's value carried in registers.
   for (std::size_t p = 0; p < links_.size(); ++p) {
     const Link& link = links_[p];
     Vec3 z = -joint.segment<3>(3 * link.joint);
@@ -168,15 +226,22 @@ void BallChainSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
       z += side.sign * t.head<3>();
       z.noalias() += side.G_omega * t.tail<3>();
     }
-    if (link.shared_side >= 0) z.noalias() -= link.Lt.transpose() * y_[p - 1];
     y_[p] = z;
   }
-  // Diagonal and backward: Lᵀ y = D⁻¹ y′.
-  for (std::size_t p = links_.size(); p-- > 0;) {
-    const Link& link = links_[p];
-    Vec3 y = link.D_inv * y_[p];
-    if (p + 1 < links_.size() && links_[p + 1].shared_side >= 0) y.noalias() -= links_[p + 1].Lt * y_[p + 1];
+  Vec3 previous = Vec3::Zero();
+  for (std::size_t p = 0; p < links_.size(); ++p) {
+    Vec3 y = y_[p];
+    if (links_[p].shared_side >= 0) y.noalias() -= links_[p].Lt.transpose() * previous;
     y_[p] = y;
+    previous = y;
+  }
+  // Diagonal and backward: Lᵀ y = D⁻¹ y′.
+  Vec3 next = Vec3::Zero();
+  for (std::size_t p = links_.size(); p-- > 0;) {
+    Vec3 y = links_[p].D_inv * y_[p];
+    if (p + 1 < links_.size() && links_[p + 1].shared_side >= 0) y.noalias() -= links_[p + 1].Lt * next;
+    y_[p] = y;
+    next = y;
   }
   // x = M⁻¹ (r − Gᵀ y) = t − Σ_sides (±y/m, Xᵀ y) with X = Gω J⁻¹ (J symmetric).
   for (std::size_t i = 0; i < bodies.size(); ++i)

@@ -32,11 +32,17 @@ class BallChainSolver {
   /// Factors S for the ball-joint Jacobians G_a[j], G_b[j] (3 rows each). Throws ComputationFailed when a
   /// pivot is singular.
   void factor(const std::vector<JointJacobian>& G_a, const std::vector<JointJacobian>& G_b);
+  /// Same with the Jacobians of the positions `q` computed here (no JointJacobian storage: the ω-blocks
+  /// ∓R j(X) are all a ball chain needs).
+  void factor_at(const std::vector<BodyState>& q);
   /// Solves in place: on entry body[i] = r_i and joint = s (3 rows per joint in joint order), on exit x, y.
   void solve(std::vector<Vec6>& body, Eigen::VectorXd& joint);
 
  private:
   explicit BallChainSolver(const System& system) : system_(&system) {}
+  // The factorisation with Gω of joint j's side s (0: a, 1: b) given by omega_block(j, s).
+  template <class OmegaBlock>
+  void factor_with(OmegaBlock omega_block);
 
   // One side of a joint in path order: the body, the sign of its translation block (+1 side a, −1 side b)
   // and Gω = the ω-block of G (3 × 3), with X = Gω J⁻¹ cached by factor().

@@ -5,8 +5,6 @@
 
 namespace poinsot::multibody {
 
-using so3::hat;
-
 const BodyState& world_body_state() {
   static const BodyState world{};
   return world;
@@ -25,17 +23,19 @@ JointVector joint_value(const Joint& joint, const BodyState& a, const BodyState&
 void joint_jacobians(const Joint& joint, const BodyState& a, const BodyState& b, JointJacobian& G_a,
                      JointJacobian& G_b) {
   const int rows = joint.rows();
-  G_a.setZero(rows, 6);
-  G_b.setZero(rows, 6);
-  G_a.block<3, 3>(0, 0) = Mat3::Identity();
-  G_a.block<3, 3>(0, 3) = -a.R_space_body * hat(joint.point_a);
+  G_a.resize(rows, 6);
+  G_b.resize(rows, 6);
+  G_a.block<3, 3>(0, 0).setIdentity();
+  G_a.block<3, 3>(0, 3) = -so3::times_hat(a.R_space_body, joint.point_a);
   G_b.block<3, 3>(0, 0) = -Mat3::Identity();
-  G_b.block<3, 3>(0, 3) = b.R_space_body * hat(joint.point_b);
+  G_b.block<3, 3>(0, 3) = so3::times_hat(b.R_space_body, joint.point_b);
   for (int k = 0; k < joint.perpendicular_count; ++k) {
     const auto ku = static_cast<std::size_t>(k);
     const Vec3 P = a.R_space_body * joint.p_a[ku];
     const Vec3 U = b.R_space_body * joint.u_b[ku];
     const Vec3 n = P.cross(U);
+    G_a.block<1, 3>(3 + k, 0).setZero();
+    G_b.block<1, 3>(3 + k, 0).setZero();
     G_a.block<1, 3>(3 + k, 3) = (a.R_space_body.transpose() * n).transpose();
     G_b.block<1, 3>(3 + k, 3) = -(b.R_space_body.transpose() * n).transpose();
   }
@@ -43,10 +43,12 @@ void joint_jacobians(const Joint& joint, const BodyState& a, const BodyState& b,
 
 JointVector joint_bias(const Joint& joint, const BodyState& a, const BodyState& b) {
   JointVector gamma(joint.rows());
-  const Mat3 wa = hat(a.omega_body);
-  const Mat3 wb = hat(b.omega_body);
-  gamma.head<3>() =
-      a.R_space_body * (wa * (wa * joint.point_a)) - b.R_space_body * (wb * (wb * joint.point_b));
+  // R j(ω)² A = R (ω × (ω × A)): cross products, not 3 × 3 products (this runs at every RK4 stage).
+  const Vec3& wa = a.omega_body;
+  const Vec3& wb = b.omega_body;
+  gamma.head<3>().noalias() = a.R_space_body * wa.cross(wa.cross(joint.point_a));
+  gamma.head<3>().noalias() -= b.R_space_body * wb.cross(wb.cross(joint.point_b));
+  if (joint.perpendicular_count == 0) return gamma;
   const Vec3 Oa = a.R_space_body * a.omega_body;
   const Vec3 Ob = b.R_space_body * b.omega_body;
   for (int k = 0; k < joint.perpendicular_count; ++k) {

@@ -131,6 +131,25 @@ KktSolver::KktSolver(const System& system, KktMethod method) : system_(&system) 
     sparse_->H.resize(n, n);
     sparse_->rhs.resize(n);
   }
+  if (!chain_) {
+    G_a_.resize(nj);
+    G_b_.resize(nj);
+  }
+}
+
+void KktSolver::factor_at(const std::vector<BodyState>& bodies) {
+  if (chain_) {
+    chain_->factor_at(bodies);
+    return;
+  }
+  const auto& joints = system_->joints();
+  for (std::size_t j = 0; j < joints.size(); ++j) {
+    const Joint& joint = joints[j];
+    const BodyState& b =
+        joint.body_b == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(joint.body_b)];
+    joint_jacobians(joint, bodies[static_cast<std::size_t>(joint.body_a)], b, G_a_[j], G_b_[j]);
+  }
+  factor(G_a_, G_b_);
 }
 
 void KktSolver::build_tree(const System& system) {

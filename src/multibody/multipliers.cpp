@@ -1,12 +1,56 @@
 // Exact multipliers of the continuous equations at a state (multipliers.hpp).
 #include "poinsot/multibody/multipliers.hpp"
 
+#include "acceleration_multipliers.hpp"
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/multibody/kkt_solver.hpp"
 #include "poinsot/multibody/loads.hpp"
 #include "poinsot/so3/hat.hpp"
 
 namespace poinsot::multibody {
+
+namespace detail {
+
+ExactMultipliers multipliers_from_accelerations(const System& system, const std::vector<BodyState>& bodies,
+                                                const std::vector<BodyLoads>& loads,
+                                                const std::vector<Vec6>& accelerations,
+                                                const Eigen::VectorXd& minus_lambda,
+                                                const KktSolver& solver) {
+  const auto nb = static_cast<std::size_t>(system.body_count());
+  const auto nj = static_cast<std::size_t>(system.joint_count());
+  const auto side = [&](int index) -> const BodyState& {
+    return index == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(index)];
+  };
+  ExactMultipliers out;
+  out.acceleration_space.resize(nb);
+  out.omega_dot_body.resize(nb);
+  out.Lambda_body.resize(nb);
+  out.joint_force_space.resize(nj);
+  out.joint_torque_space.resize(nj);
+  std::vector<Mat3> phi(nb);
+  for (std::size_t i = 0; i < nb; ++i) {
+    out.acceleration_space[i] = accelerations[i].head<3>();
+    out.omega_dot_body[i] = accelerations[i].tail<3>();
+    phi[i] = loads[i].phi_body;
+  }
+  for (std::size_t j = 0; j < nj; ++j) {
+    const Joint& joint = system.joints()[j];
+    const JointVector lambda = -minus_lambda.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
+    const JointLoads jl = joint_loads(joint, side(joint.body_a), side(joint.body_b), lambda);
+    out.joint_force_space[j] = jl.force_a_space;
+    out.joint_torque_space[j] = jl.torque_a_space;
+    phi[static_cast<std::size_t>(joint.body_a)] += jl.phi_a_body;
+    if (joint.body_b != kWorld) phi[static_cast<std::size_t>(joint.body_b)] += jl.phi_b_body;
+  }
+  for (std::size_t i = 0; i < nb; ++i) {
+    const Mat3 W = so3::hat(bodies[i].omega_body);
+    const Mat3 L = (W * W + so3::hat(out.omega_dot_body[i])) * system.bodies()[i].poinsot - phi[i];
+    out.Lambda_body[i] = 0.5 * (L + L.transpose());
+  }
+  return out;
+}
+
+}  // namespace detail
 
 ExactMultipliers exact_multipliers(const System& system, const State& state) {
   const auto nb = static_cast<std::size_t>(system.body_count());
@@ -34,33 +78,7 @@ ExactMultipliers exact_multipliers(const System& system, const State& state) {
     body_rhs[i] << loads[i].force_space, loads[i].torque_body - om.cross(b.inertia * om);
   }
   solver.solve(body_rhs, joint_rhs);  // [M Gᵀ; G 0][a; −λ] = [F; −γ]
-  ExactMultipliers out;
-  out.acceleration_space.resize(nb);
-  out.omega_dot_body.resize(nb);
-  out.Lambda_body.resize(nb);
-  out.joint_force_space.resize(nj);
-  out.joint_torque_space.resize(nj);
-  std::vector<Mat3> phi(nb);
-  for (std::size_t i = 0; i < nb; ++i) {
-    out.acceleration_space[i] = body_rhs[i].head<3>();
-    out.omega_dot_body[i] = body_rhs[i].tail<3>();
-    phi[i] = loads[i].phi_body;
-  }
-  for (std::size_t j = 0; j < nj; ++j) {
-    const Joint& joint = system.joints()[j];
-    const JointVector lambda = -joint_rhs.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
-    const JointLoads jl = joint_loads(joint, side(joint.body_a), side(joint.body_b), lambda);
-    out.joint_force_space[j] = jl.force_a_space;
-    out.joint_torque_space[j] = jl.torque_a_space;
-    phi[static_cast<std::size_t>(joint.body_a)] += jl.phi_a_body;
-    if (joint.body_b != kWorld) phi[static_cast<std::size_t>(joint.body_b)] += jl.phi_b_body;
-  }
-  for (std::size_t i = 0; i < nb; ++i) {
-    const Mat3 W = so3::hat(state.bodies[i].omega_body);
-    const Mat3 L = (W * W + so3::hat(out.omega_dot_body[i])) * system.bodies()[i].poinsot - phi[i];
-    out.Lambda_body[i] = 0.5 * (L + L.transpose());
-  }
-  return out;
+  return detail::multipliers_from_accelerations(system, state.bodies, loads, body_rhs, joint_rhs, solver);
 }
 
 }  // namespace poinsot::multibody

@@ -1,9 +1,14 @@
 #pragma once
 // Systems shared by the multibody tests: rods, chains, a body with a ball joint to the world.
+#include <cmath>
 #include <string>
+#include <utility>
+
+#include <Eigen/Geometry>
 
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/state.hpp"
+#include "poinsot/so3/hat.hpp"
 
 namespace poinsot::multibody::test {
 
@@ -48,5 +53,70 @@ inline State rod_chain_state(int n, double l = 1.0) {
     st.bodies[static_cast<std::size_t>(i)].x_space = Vec3((i + 0.5) * l, 0, 0);
   return st;
 }
+
+inline constexpr double kG = 9.81;  ///< m/s², the gravity of the fixtures below
+
+// The heavy top: one body with a ball joint to the world, against an independent RK4 integration of Euler's
+// equations about the pivot, J_p ω̇ + ω × J_p ω = d × m Rᵀg, Ṙ = R j(ω).
+struct Top {
+  double m = 2.0;
+  Mat3 J_com = Vec3(0.10, 0.14, 0.17).asDiagonal();
+  Vec3 A = Vec3(0, 0, -0.3);  // pivot in the body frame; d = −A from pivot to centre of mass
+  Mat3 R0 = Eigen::AngleAxisd(0.4, Vec3(1, 0.2, 0).normalized()).toRotationMatrix();
+  Vec3 omega0 = Vec3(0.5, -0.3, 3.0);
+};
+
+inline std::pair<Mat3, Vec3> top_reference(const Top& top, double T, int steps) {
+  const Vec3 d = -top.A;
+  const Mat3 Jp = top.J_com + top.m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+  const Mat3 Jp_inv = Jp.inverse();
+  const Vec3 g(0, 0, -kG);
+  auto f = [&](const Mat3& R, const Vec3& w, Mat3& dR, Vec3& dw) {
+    dR = R * so3::hat(w);
+    dw = Jp_inv * (d.cross(top.m * (R.transpose() * g)) - w.cross(Jp * w));
+  };
+  Mat3 R = top.R0;
+  Vec3 w = top.omega0;
+  const double h = T / steps;
+  for (int n = 0; n < steps; ++n) {
+    Mat3 k1R, k2R, k3R, k4R;
+    Vec3 k1w, k2w, k3w, k4w;
+    f(R, w, k1R, k1w);
+    f(R + 0.5 * h * k1R, w + 0.5 * h * k1w, k2R, k2w);
+    f(R + 0.5 * h * k2R, w + 0.5 * h * k2w, k3R, k3w);
+    f(R + h * k3R, w + h * k3w, k4R, k4w);
+    R += h / 6 * (k1R + 2 * k2R + 2 * k3R + k4R);
+    w += h / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
+  }
+  return {R, w};
+}
+
+// A uniform sphere (radius 0.1 m, mass 2 kg) on a massless rod of length ℓ from a ball joint, turning
+// steadily about the vertical at Ω² = g / (ℓ cos θ): the reaction on the body is F = m (Ω² ℓ sin θ
+// e_r(inward) + g ẑ), directed from the centre of mass to the pivot, |F| = m g / cos θ.
+struct Conical {
+  double m = 2.0, radius = 0.1, l = 0.7, theta = 0.5;
+  double Omega() const { return std::sqrt(kG / (l * std::cos(theta))); }
+  System system() const {
+    System s;
+    s.add_body("bob", m, (m * radius * radius / 5) * Mat3::Identity());  // K = m r²/5 I for a solid sphere
+    s.add_ball("pivot", 0, Vec3(0, 0, l), kWorld, Vec3::Zero());
+    s.set_gravity(Vec3(0, 0, -kG));
+    return s;
+  }
+  State state() const {
+    State st;
+    st.bodies.resize(1);
+    BodyState& b = st.bodies[0];
+    b.R_space_body = Eigen::AngleAxisd(theta, Vec3::UnitY()).toRotationMatrix();
+    b.x_space = -b.R_space_body * Vec3(0, 0, l);  // below the pivot, displaced towards −x
+    b.omega_body = b.R_space_body.transpose() * Vec3(0, 0, Omega());
+    b.v_space = Vec3(0, 0, Omega()).cross(b.x_space);
+    return st;
+  }
+  Vec3 reaction(const Vec3& x_com) const {  // centripetal m Ω² toward the axis plus the weight
+    return m * (-Omega() * Omega() * Vec3(x_com.x(), x_com.y(), 0) + Vec3(0, 0, kG));
+  }
+};
 
 }  // namespace poinsot::multibody::test

@@ -16,36 +16,8 @@ namespace {
 using poinsot::so3::hat;
 constexpr double kG = 9.81;
 
-// A uniform sphere (radius 0.1 m, mass 2 kg) on a massless rod of length ℓ from a ball joint, turning
-// steadily about the vertical at Ω² = g / (ℓ cos θ): the reaction on the body is F = m (Ω² ℓ sin θ
-// e_r(inward) + g ẑ), directed from the centre of mass to the pivot, |F| = m g / cos θ.
-struct Conical {
-  double m = 2.0, radius = 0.1, l = 0.7, theta = 0.5;
-  double Omega() const { return std::sqrt(kG / (l * std::cos(theta))); }
-  System system() const {
-    System s;
-    s.add_body("bob", m, (m * radius * radius / 5) * Mat3::Identity());  // K = m r²/5 I for a solid sphere
-    s.add_ball("pivot", 0, Vec3(0, 0, l), kWorld, Vec3::Zero());
-    s.set_gravity(Vec3(0, 0, -kG));
-    return s;
-  }
-  State state() const {
-    State st;
-    st.bodies.resize(1);
-    BodyState& b = st.bodies[0];
-    b.R_space_body = Eigen::AngleAxisd(theta, Vec3::UnitY()).toRotationMatrix();
-    b.x_space = -b.R_space_body * Vec3(0, 0, l);  // below the pivot, displaced towards −x
-    b.omega_body = b.R_space_body.transpose() * Vec3(0, 0, Omega());
-    b.v_space = Vec3(0, 0, Omega()).cross(b.x_space);
-    return st;
-  }
-  Vec3 reaction(const Vec3& x_com) const {  // centripetal m Ω² toward the axis plus the weight
-    return m * (-Omega() * Omega() * Vec3(x_com.x(), x_com.y(), 0) + Vec3(0, 0, kG));
-  }
-};
-
 TEST(Multipliers, ConicalPendulumReactionIsTheClosedForm) {
-  const Conical c;
+  const test::Conical c;
   const System s = c.system();
   const State st = c.state();
   check_consistent(s, st);
@@ -60,7 +32,7 @@ TEST(Multipliers, ConicalPendulumReactionIsTheClosedForm) {
 }
 
 TEST(Multipliers, ConicalPendulumStageReactionsTrackTheClosedFormAtSecondOrder) {
-  const Conical c;
+  const test::Conical c;
   const System s = c.system();
   auto max_error = [&](double h) {
     State st = c.state();

@@ -88,42 +88,7 @@ TEST(Rattle, WeldedPairSwingsLikeOneCompoundPendulum) {
   EXPECT_LT(constraint_violation(s, st).joint_angle, 1e-12);
 }
 
-// The heavy top: one body with a ball joint to the world, against an independent RK4 integration of Euler's
-// equations about the pivot, J_p ω̇ + ω × J_p ω = d × m Rᵀg, Ṙ = R j(ω).
-struct Top {
-  double m = 2.0;
-  Mat3 J_com = Vec3(0.10, 0.14, 0.17).asDiagonal();
-  Vec3 A = Vec3(0, 0, -0.3);  // pivot in the body frame; d = −A from pivot to centre of mass
-  Mat3 R0 = Eigen::AngleAxisd(0.4, Vec3(1, 0.2, 0).normalized()).toRotationMatrix();
-  Vec3 omega0 = Vec3(0.5, -0.3, 3.0);
-};
-
-std::pair<Mat3, Vec3> top_reference(const Top& top, double T, int steps) {
-  const Vec3 d = -top.A;
-  const Mat3 Jp = top.J_com + top.m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
-  const Mat3 Jp_inv = Jp.inverse();
-  const Vec3 g(0, 0, -kG);
-  auto f = [&](const Mat3& R, const Vec3& w, Mat3& dR, Vec3& dw) {
-    dR = R * hat(w);
-    dw = Jp_inv * (d.cross(top.m * (R.transpose() * g)) - w.cross(Jp * w));
-  };
-  Mat3 R = top.R0;
-  Vec3 w = top.omega0;
-  const double h = T / steps;
-  for (int n = 0; n < steps; ++n) {
-    Mat3 k1R, k2R, k3R, k4R;
-    Vec3 k1w, k2w, k3w, k4w;
-    f(R, w, k1R, k1w);
-    f(R + 0.5 * h * k1R, w + 0.5 * h * k1w, k2R, k2w);
-    f(R + 0.5 * h * k2R, w + 0.5 * h * k2w, k3R, k3w);
-    f(R + h * k3R, w + h * k3w, k4R, k4w);
-    R += h / 6 * (k1R + 2 * k2R + 2 * k3R + k4R);
-    w += h / 6 * (k1w + 2 * k2w + 2 * k3w + k4w);
-  }
-  return {R, w};
-}
-
-std::pair<Mat3, Vec3> top_multibody(const Top& top, double T, double h, int order = 2) {
+std::pair<Mat3, Vec3> top_multibody(const test::Top& top, double T, double h, int order = 2) {
   System s;
   s.add_body_from_inertia("top", top.m, top.J_com);
   s.add_ball("pivot", 0, top.A, kWorld, Vec3::Zero());
@@ -144,9 +109,9 @@ std::pair<Mat3, Vec3> top_multibody(const Top& top, double T, double h, int orde
 }
 
 TEST(Rattle, HeavyTopConvergesAtOrderTwoToTheSingleBodyTop) {
-  const Top top;
-  const double T = 2.0;                                      // about 3 nutation periods at this spin
-  const auto [R_ref, w_ref] = top_reference(top, T, 30000);  // RK4, h = 1e-4: error (ωh)⁴ ~ 1e-15
+  const test::Top top;
+  const double T = 2.0;                                            // about 3 nutation periods at this spin
+  const auto [R_ref, w_ref] = test::top_reference(top, T, 30000);  // RK4, h = 1e-4: error (ωh)⁴ ~ 1e-15
   double err[3];
   Mat3 R_h[3];
   const double hs[3] = {2e-3, 1e-3, 5e-4};
@@ -166,9 +131,9 @@ TEST(Rattle, HeavyTopConvergesAtOrderTwoToTheSingleBodyTop) {
 }
 
 TEST(Rattle, HeavyTopConvergesAtOrderFourToTheSingleBodyTop) {
-  const Top top;
+  const test::Top top;
   const double T = 2.0;
-  const auto [R_ref, w_ref] = top_reference(top, T, 30000);  // RK4, h = 1e-4: error ~ 1e-15
+  const auto [R_ref, w_ref] = test::top_reference(top, T, 30000);  // RK4, h = 1e-4: error ~ 1e-15
   double err[3];
   const double hs[3] = {4e-3, 2e-3, 1e-3};
   for (int k = 0; k < 3; ++k) {

@@ -65,6 +65,9 @@ class KktSolver {
   /// Factors the matrix for the Jacobians G_a[j], G_b[j] of every joint j. Throws ComputationFailed when a
   /// pivot is singular (redundant or degenerate constraints).
   void factor(const std::vector<JointJacobian>& G_a, const std::vector<JointJacobian>& G_b);
+  /// Same for the Jacobians at the positions of `bodies` (constraints.hpp joint_jacobians), computed here:
+  /// in place for ball chains, into storage allocated by the constructor otherwise (nothing is allocated).
+  void factor_at(const std::vector<BodyState>& bodies);
   /// Solves in place: on entry body[i] = r_i and joint = s (stacked rows), on exit x and y.
   void solve(std::vector<Vec6>& body, Eigen::VectorXd& joint);
 
@@ -97,6 +100,7 @@ class KktSolver {
   std::vector<Node> nodes_;  // bodies 0..N−1, then joints
   std::vector<int> order_;   // elimination order, children before parents
   std::vector<Vec6> work_;
+  std::vector<JointJacobian> G_a_, G_b_;  // factor_at's Jacobians (not for ball chains)
   std::unique_ptr<Sparse> sparse_;
 };
 

@@ -23,6 +23,17 @@ inline Mat3 hat(const Vec3& u) {
   return m;
 }
 
+/// `A j(u)` computed by columns, `A (u × e_k)`: 18 multiplications instead of the 27 of a 3 × 3 product (the
+/// multibody integrators form `Ṙ = R j(ω)` and the joint Jacobians `R j(X)` at every stage). Equal to
+/// `A * hat(u)` up to the rounding of the sums' order.
+inline Mat3 times_hat(const Mat3& A, const Vec3& u) {
+  Mat3 m;
+  m.col(0) = u.z() * A.col(1) - u.y() * A.col(2);
+  m.col(1) = u.x() * A.col(2) - u.z() * A.col(0);
+  m.col(2) = u.y() * A.col(0) - u.x() * A.col(1);
+  return m;
+}
+
 /// The inverse of hat on skew-symmetric matrices. For a general matrix it returns the vector of its
 /// skew-symmetric part, `vee((M − Mᵀ)/2)`, which is the least-squares inverse of hat.
 inline Vec3 vee(const Mat3& m) {

@@ -1,0 +1,24 @@
+// The multipliers of the continuous equations from a solved acceleration-level KKT system (private to the
+// multibody layer: exact_multipliers() and ProjectedRk4 share it).
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "poinsot/multibody/constraints.hpp"
+#include "poinsot/multibody/kkt_solver.hpp"
+#include "poinsot/multibody/loads.hpp"
+#include "poinsot/multibody/multipliers.hpp"
+
+namespace poinsot::multibody::detail {
+
+/// From the solution of `[M Gᵀ; G 0][(a, ω̇); −λ] = [(f, τ − ω × Jω); −γ]` at `bodies` (`accelerations[i]` =
+/// (a_i, ω̇_i), `minus_lambda` stacked by the solver's joint offsets) and the applied loads there: the joint
+/// reactions (constraints.hpp joint_loads) and Λ = sym((j(ω)² + j(ω̇)) K − Φ) (multipliers.hpp).
+ExactMultipliers multipliers_from_accelerations(const System& system, const std::vector<BodyState>& bodies,
+                                                const std::vector<BodyLoads>& loads,
+                                                const std::vector<Vec6>& accelerations,
+                                                const Eigen::VectorXd& minus_lambda, const KktSolver& solver);
+
+}  // namespace poinsot::multibody::detail
