@@ -171,15 +171,21 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
   }
 }
 
-/// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE on the constrained system, the
+/// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE (or the projected RK4, `method =
+/// "rk4"` or --method rk4) on the constrained system, the
 /// trajectory of every body in trajectory.csv, the energy, momenta and constraint violation at the same rows
 /// in diagnostics.csv, the report (energy, constraint violation, reactions, each body's Λ) on stdout and in
 /// report.txt, summary.json, and with --plot the figures paths.png, energy.png and constraints.png.
 void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
-  if (!o.method.empty() && o.method != "rattle") {
+  if (o.method == "rk4") {
+    mb.method = multibody::MultibodyMethod::projected_rk4;
+    mb.order = 4;
+  } else if (o.method == "rattle") {
+    mb.method = multibody::MultibodyMethod::rattle;
+  } else if (!o.method.empty()) {
     throw InvalidInput(
-        fmt::format("--method: got \"{}\" for the multibody scenario {}; expected rattle (the only "
-                    "multibody integrator)",
+        fmt::format("--method: got \"{}\" for the multibody scenario {}; expected rattle or rk4 (the "
+                    "multibody integrators)",
                     o.method, o.scenario));
   }
   if (o.dt_opt->count() > 0) {
@@ -215,6 +221,7 @@ void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
   j["orthogonality_error_max"] = s.max_orthogonality;
   j["newton_iterations_mean"] = s.mean_newton_iterations;
   j["newton_iterations_max"] = s.max_newton_iterations;
+  j["method"] = multibody::multibody_method_name(mb.method);  // rattle or rk4
   j["order"] = mb.order;
   j["solver"] = multibody::kkt_method_name(s.kkt_method);  // ball_chain, tree or sparse_lu
   j["cpu_seconds_per_step"] = s.cpu_seconds_per_step;
@@ -287,8 +294,9 @@ void register_run(CLI::App& app) {
   cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
   cmd->add_flag("--plot", o->plot, "also draw the figures (PNG, Matplotlib) into the output folder");
   cmd->add_flag("--quiet", o->quiet, "no progress bar");
-  cmd->add_option("--method", o->method,
-                  "override [integrator] method: exact, rk4, dopri5, dop853, dlm, rattle");
+  cmd->add_option(
+      "--method", o->method,
+      "override [integrator] method: exact, rk4, dopri5, dop853, dlm, rattle (multibody: rattle, rk4)");
   o->dt_opt = cmd->add_option("--dt", o->dt, "override [integrator] dt (s)");
   o->t_end_opt = cmd->add_option("--t-end", o->t_end, "override [output] t_end (s)");
   o->sample_dt_opt = cmd->add_option("--sample-dt", o->sample_dt, "override [output] sample_dt (s)");

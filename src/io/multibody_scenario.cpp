@@ -234,7 +234,7 @@ multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::
   sc.source = std::string(source);
   sc.title = top.string("title").value_or("");
   const Section sim(src, top.table("simulation"), "simulation",
-                    {"dt", "duration", "output_every", "gravity", "order"});
+                    {"dt", "duration", "output_every", "gravity", "method", "order"});
   const auto positive = [&](std::string_view key, double fallback) {
     const double x = sim.number(key).value_or(fallback);
     if (!(x > 0.0)) sim.fail(key, fmt::format("got {} s, expected a number > 0", format_number(x)));
@@ -248,6 +248,17 @@ multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::
   if (!(every >= 1.0 && every <= 1e9) || every != std::floor(every))
     sim.fail("output_every", fmt::format("got {}, expected an integer >= 1 (steps)", format_number(every)));
   sc.output_every = static_cast<int>(every);
+  const std::string method = sim.string("method").value_or("rattle");
+  if (method == "rk4") {
+    sc.method = multibody::MultibodyMethod::projected_rk4;
+    sc.order = 4;
+    if (sim.number("order"))
+      sim.fail("order", "applies to method = \"rattle\" only (the projected RK4 is of order 4)");
+  } else if (method != "rattle") {
+    sim.fail("method", fmt::format("got \"{}\", expected \"rattle\" (RATTLE, symplectic) or \"rk4\" (RK4 "
+                                   "projected onto the joints)",
+                                   method));
+  }
   const double order = sim.number("order").value_or(sc.order);
   if (order != 2.0 && order != 4.0) {
     sim.fail("order", fmt::format("got {}, expected 2 (RATTLE) or 4 (its triple-jump composition)",

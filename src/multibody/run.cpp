@@ -12,6 +12,7 @@
 #include "poinsot/multibody/loads.hpp"
 #include "poinsot/multibody/multipliers.hpp"
 #include "poinsot/multibody/observables.hpp"
+#include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"
 #include "poinsot/multibody/scenario.hpp"
 
@@ -61,8 +62,11 @@ void write_report(std::ostream& out, const Scenario& sc, const State& st, const 
   }
   out << fmt::format("  bodies: {}, joints: {} ({} constraint rows), solver: {}\n", sys.body_count(),
                      sys.joint_count(), sys.constraint_rows(), kkt_method_description(s.kkt_method));
-  out << fmt::format("  method: RATTLE{}, dt: {} s, steps: {}, final time: {} s\n",
-                     sc.order == 4 ? ", order 4 (triple-jump composition)" : ", order 2",
+  const bool rk4 = sc.method == MultibodyMethod::projected_rk4;
+  out << fmt::format("  method: {}, dt: {} s, steps: {}, final time: {} s\n",
+                     rk4             ? "RK4 projected onto the joints (order 4, not symplectic)"
+                     : sc.order == 4 ? "RATTLE, order 4 (triple-jump composition)"
+                                     : "RATTLE, order 2",
                      format_number(sc.dt), s.steps, format_number(st.time));
   out << fmt::format("  energy: initial {} J, final {} J, max |E - E0| {} J\n",
                      format_number(s.energy_initial), format_number(s.energy_final),
@@ -72,7 +76,7 @@ void write_report(std::ostream& out, const Scenario& sc, const State& st, const 
   out << fmt::format(
       "  constraint violation (max over the run): joint gap {} m, joint angle {}, |RᵀR − I| {}\n",
       format_number(s.max_joint_gap), format_number(s.max_joint_angle), format_number(s.max_orthogonality));
-  out << fmt::format("  Newton iterations per step: mean {}, max {}\n",
+  out << fmt::format("  {} per step: mean {}, max {}\n", rk4 ? "projection iterations" : "Newton iterations",
                      format_number(s.mean_newton_iterations, 3), s.max_newton_iterations);
   out << fmt::format("  cpu time per step: {} µs\n", format_number(1e6 * s.cpu_seconds_per_step, 3));
   const ExactMultipliers ex = exact_multipliers(sys, st);
@@ -89,18 +93,14 @@ void write_report(std::ostream& out, const Scenario& sc, const State& st, const 
   }
 }
 
-}  // namespace
-
-RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::string& trajectory_csv,
-                        const std::string& diagnostics_csv) {
-  check_consistent(sc.system, sc.initial);
-  RattleOptions options;
-  options.order = sc.order;
-  Rattle rattle(sc.system, sc.dt, options);
+// The run with either integrator (Rattle or ProjectedRk4: step, last_iterations, kkt_method).
+template <class Integrator>
+RunSummary run_with(const Scenario& sc, Integrator& integrator, std::ostream* report,
+                    const std::string& trajectory_csv, const std::string& diagnostics_csv) {
   State st = sc.initial;
   RunSummary s;
-  s.tree_solver = rattle.uses_tree_solver();
-  s.kkt_method = rattle.kkt_method();
+  s.kkt_method = integrator.kkt_method();
+  s.tree_solver = s.kkt_method != KktMethod::sparse_lu;
   s.energy_initial = total_energy(sc.system, st);
   std::ofstream out;
   if (!trajectory_csv.empty()) {
@@ -129,7 +129,7 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
   const std::clock_t c0 = std::clock();
   for (long n = 0; n < steps; ++n) {
     try {
-      rattle.step(st);
+      integrator.step(st);
       // Sample times t₀ + n h exactly, as the single-body runs have them (the integrator adds h each step,
       // whose rounding would otherwise accumulate: 0.5000000000000002 s after 50 steps of 0.01 s).
       st.time = sc.initial.time + static_cast<double>(n + 1) * sc.dt;
@@ -138,8 +138,8 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
       if (diag.is_open()) diag.flush();
       throw;
     }
-    iterations += rattle.last_iterations();
-    s.max_newton_iterations = std::max(s.max_newton_iterations, rattle.last_iterations());
+    iterations += integrator.last_iterations();
+    s.max_newton_iterations = std::max(s.max_newton_iterations, integrator.last_iterations());
     const ConstraintViolation v = constraint_violation(sc.system, st);
     s.max_joint_gap = std::max(s.max_joint_gap, v.joint_gap);
     s.max_joint_angle = std::max(s.max_joint_angle, v.joint_angle);
@@ -158,6 +158,21 @@ RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::str
   s.energy_final = total_energy(sc.system, st);
   if (report != nullptr) write_report(*report, sc, st, s);
   return s;
+}
+
+}  // namespace
+
+RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::string& trajectory_csv,
+                        const std::string& diagnostics_csv) {
+  check_consistent(sc.system, sc.initial);
+  if (sc.method == MultibodyMethod::projected_rk4) {
+    ProjectedRk4 rk4(sc.system, sc.dt);
+    return run_with(sc, rk4, report, trajectory_csv, diagnostics_csv);
+  }
+  RattleOptions options;
+  options.order = sc.order;
+  Rattle rattle(sc.system, sc.dt, options);
+  return run_with(sc, rattle, report, trajectory_csv, diagnostics_csv);
 }
 
 }  // namespace poinsot::multibody

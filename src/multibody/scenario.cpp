@@ -1,30 +1,20 @@
-// Projection of a scenario's initial velocities onto the joints (scenario.hpp).
+// Projection of a scenario's initial velocities onto the joints, and the names of the methods (scenario.hpp).
 #include "poinsot/multibody/scenario.hpp"
 
 #include <vector>
 
-#include "poinsot/multibody/constraints.hpp"
 #include "poinsot/multibody/kkt_solver.hpp"
 
 namespace poinsot::multibody {
-namespace {
 
-const BodyState& side(const State& st, int index) {
-  return index == kWorld ? world_body_state() : st.bodies[static_cast<std::size_t>(index)];
+const char* multibody_method_name(MultibodyMethod method) {
+  return method == MultibodyMethod::projected_rk4 ? "rk4" : "rattle";
 }
-
-}  // namespace
 
 void project_velocities(const System& system, State& state) {
   if (system.joint_count() == 0) return;
   KktSolver solver(system);
-  const auto nj = static_cast<std::size_t>(system.joint_count());
-  std::vector<JointJacobian> Ga(nj), Gb(nj);
-  for (std::size_t j = 0; j < nj; ++j) {
-    const Joint& joint = system.joints()[j];
-    joint_jacobians(joint, side(state, joint.body_a), side(state, joint.body_b), Ga[j], Gb[j]);
-  }
-  solver.factor(Ga, Gb);
+  solver.factor_at(state.bodies);
   std::vector<Vec6> body(state.bodies.size());
   for (std::size_t i = 0; i < body.size(); ++i) {
     const Body& b = system.bodies()[i];

@@ -14,6 +14,14 @@
 
 namespace poinsot::multibody {
 
+/// The integrator of a multibody run: RATTLE (rattle.hpp; symplectic, for long runs; order 2 or 4) or the
+/// projected classical RK4 (projected_rk4.hpp; fourth order, not symplectic, for accurate bounded runs and
+/// exact multipliers at every sample).
+enum class MultibodyMethod { rattle, projected_rk4 };
+/// "rattle" or "rk4": the names of scenario files' `[simulation] method`, of `poinsot run --method`, of
+/// summary.json and of Python.
+const char* multibody_method_name(MultibodyMethod method);
+
 /// A multibody scenario ready to run: the model, the initial state (velocities already projected onto the
 /// joints), the step (s), the duration (s) and the output rate. Each body's `x_space` is its centre of mass.
 struct Scenario {
@@ -22,9 +30,10 @@ struct Scenario {
   double dt = 1e-3;       ///< s
   double duration = 1.0;  ///< s
   int output_every = 10;  ///< steps between trajectory rows
-  int order = 2;          ///< RATTLE (2) or its fourth-order composition (4), rattle.hpp
-  std::string source;     ///< the file it came from (or a name), for the report; may be empty
-  std::string title;      ///< an optional one-line description, for the report
+  MultibodyMethod method = MultibodyMethod::rattle;
+  int order = 2;       ///< RATTLE (2) or its fourth-order composition (4), rattle.hpp; 4 for projected_rk4
+  std::string source;  ///< the file it came from (or a name), for the report; may be empty
+  std::string title;   ///< an optional one-line description, for the report
   /// Per body (system order), how its inertia was given and where its centre of mass lies in the frame of
   /// its file, for the report; may be empty.
   std::vector<std::string> body_descriptions;
@@ -42,18 +51,18 @@ struct RunSummary {
   double max_joint_gap = 0.0;                       ///< m
   double max_joint_angle = 0.0;                     ///< dimensionless
   double max_orthogonality = 0.0;                   ///< max |RᵀR − I|
-  double mean_newton_iterations = 0.0;
+  double mean_newton_iterations = 0.0;  ///< RATTLE's position stages, or RK4's joint projections, per step
   int max_newton_iterations = 0;
   bool tree_solver = true;
   KktMethod kkt_method = KktMethod::tree;
   double cpu_seconds_per_step = 0.0;
 };
 
-/// Integrates the scenario with RATTLE (rattle.hpp). Writes a CSV trajectory to `trajectory_csv` unless it is
-/// empty (columns: t, then per body x y z qw qx qy qz vx vy vz wx wy wz: the centre of mass (m), the rotation
-/// body → space as a quaternion, the velocity of the centre of mass (m/s), ω in the body frame (rad/s)) and a
-/// human-readable report to `report` unless null (energy, momenta, constraint violation, joint reactions and
-/// each body's Λ at the end).
+/// Integrates the scenario with its method (RATTLE, rattle.hpp, or the projected RK4, projected_rk4.hpp).
+/// Writes a CSV trajectory to `trajectory_csv` unless it is empty (columns: t, then per body x y z qw qx qy
+/// qz vx vy vz wx wy wz: the centre of mass (m), the rotation body → space as a quaternion, the velocity of
+/// the centre of mass (m/s), ω in the body frame (rad/s)) and a human-readable report to `report` unless null
+/// (energy, momenta, constraint violation, joint reactions and each body's Λ at the end).
 ///
 /// Writes the conserved quantities and the constraint violation to `diagnostics_csv` unless it is empty, one
 /// row per trajectory row (t = 0, every `output_every` steps and the last step), columns:
