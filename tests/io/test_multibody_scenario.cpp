@@ -92,9 +92,15 @@ axis_a = [0, 0, 1]
   EXPECT_EQ(sc.system.joint_count(), 2);
   EXPECT_DOUBLE_EQ(sc.dt, 2e-3);
   EXPECT_EQ(sc.order, 2);
+  EXPECT_EQ(sc.method, multibody::MultibodyMethod::rattle);
   EXPECT_EQ(
       parse_multibody_scenario("[simulation]\norder = 4\n[[bodies]]\nmass = 1\ninertia = [1, 1, 1]\n").order,
       4);
+  const multibody::Scenario rk4 =
+      parse_multibody_scenario("[simulation]\nmethod = \"rk4\"\n[[bodies]]\nmass = 1\ninertia = [1, 1, 1]\n");
+  EXPECT_EQ(rk4.method, multibody::MultibodyMethod::projected_rk4);
+  EXPECT_EQ(rk4.order, 4);
+  EXPECT_STREQ(multibody::multibody_method_name(rk4.method), "rk4");
   // K of the box: m/12 diag(a², b², c²); K of "a" from J: tr(J)/2 − J.
   EXPECT_NEAR(sc.system.bodies()[1].poinsot(2, 2), 0.36 / 12, 1e-15);
   EXPECT_NEAR(sc.system.bodies()[0].poinsot(0, 0), 0.175, 1e-15);
@@ -139,6 +145,10 @@ TEST(MultibodyScenario, ErrorsNameTheFileTheEntryTheFieldTheValueAndTheExpectati
              {"[simulation] output_every: got 2.5, expected an integer >= 1"});
   expect_has(error_of("[simulation]\norder = 3\n" + a),
              {"t.toml:2:9: [simulation] order: got 3, expected 2 (RATTLE) or 4"});
+  expect_has(error_of("[simulation]\nmethod = \"euler\"\n" + a),
+             {"t.toml:2:10: [simulation] method: got \"euler\", expected \"rattle\"", "or \"rk4\""});
+  expect_has(error_of("[simulation]\nmethod = \"rk4\"\norder = 2\n" + a),
+             {"t.toml:3:9: [simulation] order: applies to method = \"rattle\" only"});
   expect_has(error_of(a + "colour = \"red\"\n"),
              {"t.toml:5:1: [bodies[0]] unknown key \"colour\"; valid keys:"});
   expect_has(error_of(a + "quaternion = [0, 0, 0, 0]\n"), {"[bodies[0]] quaternion: got a zero quaternion"});

@@ -15,6 +15,19 @@ TEST(Hat, IsTheCrossProduct) {
   }
 }
 
+TEST(Hat, TimesHatIsTheProductWithHat) {
+  for (int i = 0; i < 2000; ++i) {
+    const Mat3 A = test::random_rotation() * test::uniform(0.1, 10.0);
+    const Vec3 u = test::random_vector(10.0);
+    // Column k of A j(u) is A (u × e_k), a sum of two products of entries ≤ 10 · 10 in both forms (the zero
+    // entry of hat(u) adds nothing): the two differ by a few ulp of 100.
+    EXPECT_LE(test::max_abs_diff(times_hat(A, u), A * hat(u)), 4 * kEps * 100.0);
+    // and it is A j(u) applied to any vector: A (u × v)
+    const Vec3 v = test::random_vector(1.0);
+    EXPECT_LE(test::max_abs_diff(times_hat(A, u) * v, A * u.cross(v)), 16 * kEps * 100.0);
+  }
+}
+
 TEST(Hat, IsSkewSymmetricAndVeeInvertsIt) {
   for (int i = 0; i < 2000; ++i) {
     const Vec3 u = test::random_vector(5.0);
