@@ -56,6 +56,54 @@ inline State rod_chain_state(int n, double l = 1.0) {
 
 inline constexpr double kG = 9.81;  ///< m/s², the gravity of the fixtures below
 
+/// A tree that is not a chain: three rods hung from the world (rod_chain(3)) and a fourth, the "arm", on a
+/// hinge about y from link 1's point (0, 0.1, 0); at rest, horizontal. Solved by Baraff's tree order.
+inline std::pair<System, State> hinge_tree() {
+  System tree = rod_chain(3);
+  tree.add_body("arm", 1.0, rod_poinsot(1.0, 1.0, 0.01));
+  tree.add_hinge("h", 3, Vec3(-0.5, 0, 0), Vec3(0, 1, 0), 1, Vec3(0, 0.1, 0), Vec3(0, 1, 0));
+  State st = rod_chain_state(3);
+  st.bodies.push_back(BodyState{});
+  st.bodies[3].x_space = Vec3(2.0, 0.1, 0);  // the arm's end at link 1's point (1.5, 0.1, 0)
+  return {tree, st};
+}
+
+/// A spatial four-bar: three bars (1 m, 1 kg) joined by ball joints, both ends held at fixed points of the
+/// world (a loop through the world: sparse LU), at rest, under an oblique gravity (0, −g, −3) m/s².
+inline std::pair<System, State> four_bar_loop() {
+  const double l = 1.0;
+  System s;
+  for (int i = 0; i < 3; ++i)
+    s.add_body(indexed("bar", i), 1.0, rod_poinsot(1.0, l, 0.02));
+  const Vec3 ends[4] = {Vec3(0, 0, 0), Vec3(0, -1, 0), Vec3(1, -1, 0),
+                        Vec3(1 + std::sqrt(0.5), std::sqrt(0.5) - 1, 0)};
+  s.add_ball("w0", 0, Vec3(-l / 2, 0, 0), kWorld, ends[0]);
+  s.add_ball("j1", 1, Vec3(-l / 2, 0, 0), 0, Vec3(l / 2, 0, 0));
+  s.add_ball("j2", 2, Vec3(-l / 2, 0, 0), 1, Vec3(l / 2, 0, 0));
+  s.add_ball("w3", 2, Vec3(l / 2, 0, 0), kWorld, ends[3]);
+  s.set_gravity(Vec3(0, -kG, -3.0));
+  State st;
+  st.bodies.resize(3);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Vec3 e = (ends[i + 1] - ends[i]).normalized();
+    st.bodies[i].R_space_body = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), e).toRotationMatrix();
+    st.bodies[i].x_space = 0.5 * (ends[i] + ends[i + 1]);
+  }
+  return {s, st};
+}
+
+/// A body of mass m on a spring of stiffness k (rest length 0) to the world origin, no gravity, released at
+/// rest from x = −0.1 m: x(t) = −0.1 cos(√(k/m) t).
+inline std::pair<System, State> spring_oscillator(double m, double k) {
+  System s;
+  s.add_body_from_inertia("mass", m, 0.01 * Mat3::Identity());
+  s.add_spring({"spring", 0, kWorld, Vec3::Zero(), Vec3::Zero(), k, 0.0, 0.0});
+  State st;
+  st.bodies.resize(1);
+  st.bodies[0].x_space = Vec3(-0.1, 0, 0);
+  return {s, st};
+}
+
 // The heavy top: one body with a ball joint to the world, against an independent RK4 integration of Euler's
 // equations about the pivot, J_p ω̇ + ω × J_p ω = d × m Rᵀg, Ṙ = R j(ω).
 struct Top {
@@ -65,6 +113,22 @@ struct Top {
   Mat3 R0 = Eigen::AngleAxisd(0.4, Vec3(1, 0.2, 0).normalized()).toRotationMatrix();
   Vec3 omega0 = Vec3(0.5, -0.3, 3.0);
 };
+
+/// The top as a multibody system: one body with a ball joint to the world at its pivot, and its initial
+/// state.
+inline std::pair<System, State> top_system(const Top& top) {
+  System s;
+  s.add_body_from_inertia("top", top.m, top.J_com);
+  s.add_ball("pivot", 0, top.A, kWorld, Vec3::Zero());
+  s.set_gravity(Vec3(0, 0, -kG));
+  State st;
+  st.bodies.resize(1);
+  st.bodies[0].R_space_body = top.R0;
+  st.bodies[0].x_space = -top.R0 * top.A;
+  st.bodies[0].omega_body = top.omega0;
+  st.bodies[0].v_space = top.R0 * top.omega0.cross(-top.A);
+  return {s, st};
+}
 
 inline std::pair<Mat3, Vec3> top_reference(const Top& top, double T, int steps) {
   const Vec3 d = -top.A;

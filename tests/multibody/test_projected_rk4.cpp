@@ -23,16 +23,7 @@ namespace {
 using test::kG;
 
 std::pair<Mat3, Vec3> top_rk4(const test::Top& top, double T, double h) {
-  System s;
-  s.add_body_from_inertia("top", top.m, top.J_com);
-  s.add_ball("pivot", 0, top.A, kWorld, Vec3::Zero());
-  s.set_gravity(Vec3(0, 0, -kG));
-  State st;
-  st.bodies.resize(1);
-  st.bodies[0].R_space_body = top.R0;
-  st.bodies[0].x_space = -top.R0 * top.A;
-  st.bodies[0].omega_body = top.omega0;
-  st.bodies[0].v_space = top.R0 * top.omega0.cross(-top.A);
+  auto [s, st] = test::top_system(top);
   ProjectedRk4 rk4(s, h);
   const int steps = static_cast<int>(std::lround(T / h));
   for (int n = 0; n < steps; ++n)
@@ -168,12 +159,7 @@ TEST(ProjectedRk4, SpringPeriodIsTheClosedForm) {
   // A body on a spring to the world (no joint, no gravity): x'' = −(k/m) x, period 2π √(m/k). RK4's phase
   // error is (ωh)⁴/120 ≈ 5e-12 at ω = 5 rad/s, h = 1e-3.
   const double m = 2.0, k = 50.0;
-  System s;
-  s.add_body_from_inertia("mass", m, 0.01 * Mat3::Identity());
-  s.add_spring({"spring", 0, kWorld, Vec3::Zero(), Vec3::Zero(), k, 0.0, 0.0});
-  State st;
-  st.bodies.resize(1);
-  st.bodies[0].x_space = Vec3(-0.1, 0, 0);
+  auto [s, st] = test::spring_oscillator(m, k);
   ProjectedRk4 rk4(s, 1e-3);
   const double period = 2 * std::numbers::pi * std::sqrt(m / k);
   // After exactly one period (rounded to the step) x returns to −0.1 cos(ω t).
@@ -187,30 +173,8 @@ TEST(ProjectedRk4, SpringPeriodIsTheClosedForm) {
 TEST(ProjectedRk4, HingesAndClosedLoopsUseTheirSolversAndHold) {
   // A tree with a hinge (Baraff's tree order) and a spatial four-bar (a loop through the world: sparse LU),
   // against RATTLE order 4 at a quarter of the step: they agree to the methods' O(h⁴) errors.
-  System tree = test::rod_chain(3);
-  tree.add_body("arm", 1.0, test::rod_poinsot(1.0, 1.0, 0.01));
-  tree.add_hinge("h", 3, Vec3(-0.5, 0, 0), Vec3(0, 1, 0), 1, Vec3(0, 0.1, 0), Vec3(0, 1, 0));
-  State tree_state = test::rod_chain_state(3);
-  tree_state.bodies.push_back(BodyState{});
-  tree_state.bodies[3].x_space = Vec3(2.0, 0.1, 0);
-  System loop;
-  for (int i = 0; i < 3; ++i)
-    loop.add_body(test::indexed("bar", i), 1.0, test::rod_poinsot(1.0, 1.0, 0.02));
-  const Vec3 ends[4] = {Vec3(0, 0, 0), Vec3(0, -1, 0), Vec3(1, -1, 0),
-                        Vec3(1 + std::sqrt(0.5), std::sqrt(0.5) - 1, 0)};
-  loop.add_ball("w0", 0, Vec3(-0.5, 0, 0), kWorld, ends[0]);
-  loop.add_ball("j1", 1, Vec3(-0.5, 0, 0), 0, Vec3(0.5, 0, 0));
-  loop.add_ball("j2", 2, Vec3(-0.5, 0, 0), 1, Vec3(0.5, 0, 0));
-  loop.add_ball("w3", 2, Vec3(0.5, 0, 0), kWorld, ends[3]);
-  loop.set_gravity(Vec3(0, -kG, -3.0));
-  State loop_state;
-  loop_state.bodies.resize(3);
-  for (std::size_t i = 0; i < 3; ++i) {
-    const Vec3 e = (ends[i + 1] - ends[i]).normalized();
-    loop_state.bodies[i].R_space_body =
-        Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), e).toRotationMatrix();
-    loop_state.bodies[i].x_space = 0.5 * (ends[i] + ends[i + 1]);
-  }
+  const auto [tree, tree_state] = test::hinge_tree();
+  const auto [loop, loop_state] = test::four_bar_loop();
   for (const auto& [system, start, method] :
        {std::tuple{tree, tree_state, KktMethod::tree}, std::tuple{loop, loop_state, KktMethod::sparse_lu}}) {
     const double h = 2e-3;
@@ -240,12 +204,7 @@ TEST(ProjectedRk4, HingesAndClosedLoopsUseTheirSolversAndHold) {
 }
 
 TEST(ProjectedRk4, StepsAllocateNothingOnTrees) {
-  System tree = test::rod_chain(3);
-  tree.add_body("arm", 1.0, test::rod_poinsot(1.0, 1.0, 0.01));
-  tree.add_hinge("h", 3, Vec3(-0.5, 0, 0), Vec3(0, 1, 0), 1, Vec3(0, 0.1, 0), Vec3(0, 1, 0));
-  State tree_state = test::rod_chain_state(3);
-  tree_state.bodies.push_back(BodyState{});
-  tree_state.bodies[3].x_space = Vec3(2.0, 0.1, 0);
+  const auto [tree, tree_state] = test::hinge_tree();
   for (const auto& [system, start] :
        {std::pair{test::rod_chain(6), test::rod_chain_state(6)}, std::pair{tree, tree_state}}) {
     const long long before_construction = poinsot::test::allocation_count();

@@ -89,16 +89,7 @@ TEST(Rattle, WeldedPairSwingsLikeOneCompoundPendulum) {
 }
 
 std::pair<Mat3, Vec3> top_multibody(const test::Top& top, double T, double h, int order = 2) {
-  System s;
-  s.add_body_from_inertia("top", top.m, top.J_com);
-  s.add_ball("pivot", 0, top.A, kWorld, Vec3::Zero());
-  s.set_gravity(Vec3(0, 0, -kG));
-  State st;
-  st.bodies.resize(1);
-  st.bodies[0].R_space_body = top.R0;
-  st.bodies[0].x_space = -top.R0 * top.A;
-  st.bodies[0].omega_body = top.omega0;
-  st.bodies[0].v_space = top.R0 * top.omega0.cross(-top.A);
+  auto [s, st] = test::top_system(top);
   RattleOptions options;
   options.order = order;
   Rattle rattle(s, h, options);
@@ -272,12 +263,7 @@ TEST(Rattle, StepsAllocateNothingOnTrees) {
   // Both O(N) solvers (ball chain; Baraff's tree order, here with a hinge) and both orders: after the first
   // step, stepping and reading the multipliers allocate nothing (the workspace is sized in the constructor).
   System chain = test::rod_chain(6);
-  System tree = test::rod_chain(3);
-  tree.add_body("arm", 1.0, test::rod_poinsot(1.0, 1.0, 0.01));
-  tree.add_hinge("h", 3, Vec3(-0.5, 0, 0), Vec3(0, 1, 0), 1, Vec3(0, 0.1, 0), Vec3(0, 1, 0));
-  State tree_state = test::rod_chain_state(3);
-  tree_state.bodies.push_back(BodyState{});
-  tree_state.bodies[3].x_space = Vec3(2.0, 0.1, 0);  // the arm's end at link 1's point (1.5, 0.1, 0)
+  const auto [tree, tree_state] = test::hinge_tree();
   for (int order : {2, 4}) {
     for (const auto& [system, start, method] :
          {std::tuple{chain, test::rod_chain_state(6), KktMethod::ball_chain},
@@ -359,24 +345,7 @@ TEST(Rattle, FreeSystemConservesMomentaExactly) {
 TEST(Rattle, ClosedLoopFallsBackToSparseLuAndHolds) {
   // A spatial four-bar: three bars joined by ball joints, both ends held at fixed points of the world (a loop
   // through the world), falling under an oblique gravity.
-  const double l = 1.0;
-  System s;
-  for (int i = 0; i < 3; ++i)
-    s.add_body(test::indexed("bar", i), 1.0, test::rod_poinsot(1.0, l, 0.02));
-  const Vec3 ends[4] = {Vec3(0, 0, 0), Vec3(0, -1, 0), Vec3(1, -1, 0),
-                        Vec3(1 + std::sqrt(0.5), std::sqrt(0.5) - 1, 0)};
-  s.add_ball("w0", 0, Vec3(-l / 2, 0, 0), kWorld, ends[0]);
-  s.add_ball("j1", 1, Vec3(-l / 2, 0, 0), 0, Vec3(l / 2, 0, 0));
-  s.add_ball("j2", 2, Vec3(-l / 2, 0, 0), 1, Vec3(l / 2, 0, 0));
-  s.add_ball("w3", 2, Vec3(l / 2, 0, 0), kWorld, ends[3]);
-  s.set_gravity(Vec3(0, -kG, -3.0));
-  State st;
-  st.bodies.resize(3);
-  for (std::size_t i = 0; i < 3; ++i) {
-    const Vec3 e = (ends[i + 1] - ends[i]).normalized();
-    st.bodies[i].R_space_body = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), e).toRotationMatrix();
-    st.bodies[i].x_space = 0.5 * (ends[i] + ends[i + 1]);
-  }
+  const auto [s, st] = test::four_bar_loop();
   check_consistent(s, st);
   EXPECT_FALSE(Rattle(s, 1e-3).uses_tree_solver());
   const RunStats a = run_and_watch(s, st, 1e-3, 3000 / test::kSlowdown);
@@ -388,12 +357,7 @@ TEST(Rattle, ClosedLoopFallsBackToSparseLuAndHolds) {
 TEST(Rattle, SpringOscillatorPeriodAndDampedPairMomentum) {
   // A body on a spring to the world (no gravity, rest length 0): x'' = −(k/m) x, period 2π √(m/k).
   const double m = 2.0, k = 50.0;
-  System s;
-  s.add_body_from_inertia("mass", m, 0.01 * Mat3::Identity());
-  s.add_spring({"spring", 0, kWorld, Vec3::Zero(), Vec3::Zero(), k, 0.0, 0.0});
-  State st;
-  st.bodies.resize(1);
-  st.bodies[0].x_space = Vec3(-0.1, 0, 0);
+  auto [s, st] = test::spring_oscillator(m, k);
   Rattle rattle(s, 1e-3);
   const double expected = 2 * std::numbers::pi * std::sqrt(m / k);
   // Phase error (ωh)²/24 ≈ 1e-6 at ω = 5 rad/s.
