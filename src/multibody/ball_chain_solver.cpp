@@ -2,7 +2,6 @@
 #include "ball_chain_solver.hpp"
 
 #include <array>
-#include <cmath>
 
 #include <fmt/format.h>
 
@@ -13,9 +12,9 @@ namespace poinsot::multibody::detail {
 namespace {
 
 // A symmetric 3 × 3 matrix by its lower triangle, held in registers (the helpers below are forced inline so
-// that it stays there): the factorisation keeps its pivots in
-// scalars because writing a matrix entry by entry and reading it back by pairs stalls store forwarding
-// (which cost a third of the factorisation's time with Eigen's 3 × 3 temporaries).
+// that it stays there). The factorisation keeps its pivots in scalars because a matrix written entry by entry
+// and read back by pairs stalls store forwarding, which perf showed on the loads after Eigen's 3 × 3
+// temporaries.
 struct Sym3 {
   double a, b, c, d, e, f;  // (0,0), (1,0), (2,0), (1,1), (2,1), (2,2)
   Mat3 full() const { return (Mat3() << a, b, c, b, d, e, c, e, f).finished(); }
