@@ -10,8 +10,9 @@
 // with M = blockdiag(m I₃, J) constant and inverted once. Numbering the joints along each path makes S block
 // tridiagonal with 3 × 3 blocks: a ball joint's rows are G = ±[I, −R j(A)], so
 // S_kk = Σ_sides (1/m) I + R j(A) J⁻¹ j(A)ᵀ Rᵀ and S_{k,k+1} couples the two joints of the body they share.
-// Its block LDLᵀ factorisation (no fill) costs one 3 × 3 Cholesky per joint, against a 6 × 6 and a 3 × 3 per
-// link for Baraff's ordering of the same tree (the elimination order differs, the solution is the same).
+// Its block LDLᵀ factorisation (no fill) costs one 3 × 3 inversion (adjugate) per joint, against a 6 × 6 and
+// a 3 × 3 per link for Baraff's ordering of the same tree (the elimination order differs, the solution is the
+// same).
 
 #include <memory>
 #include <vector>
