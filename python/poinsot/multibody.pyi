@@ -60,6 +60,23 @@ class Multipliers:
     @property
     def joint_torque_space(self) -> numpy.typing.NDArray[numpy.float64]: ...
 
+class ProjectedRk4:
+    """The classical fourth-order Runge–Kutta method on the index-1 form of the multibody equations, projected back onto the constraints after every step: the accurate, short-horizon alternative to RATTLE (rattle.hpp)."""
+    def __init__(self, system: System, dt: float, *, tolerance: float = ..., max_iterations: int = ...) -> None:
+        """The integrator keeps a copy of `system`."""
+    @property
+    def dt(self) -> float: ...
+    @property
+    def kkt_solver(self) -> str: ...
+    @property
+    def last_iterations(self) -> int: ...
+    @property
+    def multipliers(self) -> ExactMultipliers: ...
+    @property
+    def order(self) -> int: ...
+    def step(self, state: State, steps: int = ...) -> None:
+        """Advances `state` by one step dt."""
+
 class Rattle:
     """RATTLE (Andersen 1983; Hairer, Lubich & Wanner, Geometric Numerical Integration, VII.1.4) for the constrained system in the 12 coordinates per body (x, R) with the constant mass matrix blockdiag(m I, K ⊗ I) (model.hpp)."""
     def __init__(self, system: System, dt: float, *, tolerance: float = ..., max_iterations: int = ..., order: int = ...) -> None:
@@ -126,6 +143,10 @@ class Scenario:
     def initial(self) -> State: ...
     @initial.setter
     def initial(self, value: Any) -> None: ...
+    @property
+    def method(self) -> str: ...
+    @method.setter
+    def method(self, value: Any) -> None: ...
     @property
     def order(self) -> int: ...
     @order.setter
@@ -253,7 +274,7 @@ def project_velocities(system: System, state: State) -> None:
     """Projects every body's velocity onto the joint constraints, G v = 0, minimising the change of kinetic energy (one KKT solve, kkt_solver.hpp)."""
 
 def run_scenario(scenario: Scenario, trajectory_csv: str = ..., report: object = ..., diagnostics_csv: str = ...) -> RunSummary:
-    """Integrates the scenario with RATTLE (rattle.hpp)."""
+    """Integrates the scenario with its method (RATTLE, rattle.hpp, or the projected RK4, projected_rk4.hpp)."""
 
 def total_energy(system: System, state: State) -> float:
     """kinetic_energy + potential_energy (loads.hpp), J."""

@@ -1,8 +1,8 @@
 // Bindings of the multibody layer as the submodule poinsot.multibody: the model (System), the state, the
-// RATTLE integrator, the exact multipliers, the observables and the scenario files. Bodies are named by
-// index or by name ("world" or poinsot.multibody.WORLD for the fixed frame). Per-body results are NumPy
-// arrays with the body index first: x (N, 3), R (N, 3, 3), Λ (N, 3, 3). Docstrings come from the headers'
-// doc comments through the generated docstrings.hpp (python/tools/gen_docstrings.py).
+// integrators (RATTLE, the projected RK4), the exact multipliers, the observables and the scenario files.
+// Bodies are named by index or by name ("world" or poinsot.multibody.WORLD for the fixed frame). Per-body
+// results are NumPy arrays with the body index first: x (N, 3), R (N, 3, 3), Λ (N, 3, 3). Docstrings come
+// from the headers' doc comments through the generated docstrings.hpp (python/tools/gen_docstrings.py).
 #include <pybind11/stl.h>
 
 #include <sstream>
@@ -21,6 +21,7 @@
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/multipliers.hpp"
 #include "poinsot/multibody/observables.hpp"
+#include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"
 #include "poinsot/multibody/scenario.hpp"
 #include "poinsot/multibody/state.hpp"
@@ -410,6 +411,50 @@ void bind_rattle(py::module_& m) {
                              POINSOT_DOC(multibody_Rattle_position_stage));
 }
 
+void bind_projected_rk4(py::module_& m) {
+  py::class_<mb::ProjectedRk4>(m, "ProjectedRk4", POINSOT_DOC(file_multibody_projected_rk4))
+      .def(py::init([](const mb::System& s, double dt, double tolerance, int max_iterations) {
+             mb::ProjectedRk4Options o;
+             o.tolerance = tolerance;
+             o.max_iterations = max_iterations;
+             return mb::ProjectedRk4(s, dt, o);
+           }),
+           py::arg("system"), py::arg("dt"), py::kw_only(), py::arg("tolerance") = 1e-13,
+           py::arg("max_iterations") = 20, POINSOT_DOC(multibody_ProjectedRk4_ProjectedRk4))
+      .def(
+          "step",
+          [](mb::ProjectedRk4& r, mb::State& state, long steps) {
+            if (steps < 1)
+              throw InvalidInput("steps: got " + std::to_string(steps) + ", expected an integer >= 1");
+            py::gil_scoped_release release;  // no Python callbacks in the multibody layer
+            for (long i = 0; i < steps; ++i)
+              r.step(state);
+          },
+          py::arg("state"), py::arg("steps") = 1, POINSOT_DOC(multibody_ProjectedRk4_step))
+      .def_property_readonly("dt", &mb::ProjectedRk4::dt, "The step size, s.")
+      .def_property_readonly(
+          "order", [](const mb::ProjectedRk4&) { return 4; },
+          "4: the classical Runge–Kutta method (global error O(h⁴)).")
+      .def_property_readonly(
+          "kkt_solver", [](const mb::ProjectedRk4& r) { return mb::kkt_method_name(r.kkt_method()); },
+          "How the KKT systems are solved: 'ball_chain' (Schur complement on the joints, chains of ball "
+          "joints), 'tree' (Baraff's tree-order LDLᵀ) or 'sparse_lu' (closed loops).")
+      .def_property_readonly("last_iterations", &mb::ProjectedRk4::last_iterations,
+                             POINSOT_DOC(multibody_ProjectedRk4_last_iterations))
+      // A copy: the integrator's own storage changes at the next step.
+      .def_property_readonly(
+          "multipliers", [](const mb::ProjectedRk4& r) { return mb::ExactMultipliers(r.multipliers()); },
+          POINSOT_DOC(multibody_ProjectedRk4_multipliers));
+}
+
+mb::MultibodyMethod method_from_name(const std::string& name) {
+  if (name == "rk4") return mb::MultibodyMethod::projected_rk4;
+  if (name == "rattle") return mb::MultibodyMethod::rattle;
+  throw InvalidInput("Scenario.method: got \"" + name +
+                     "\", expected \"rattle\" (RATTLE, symplectic) or \"rk4\" (RK4 projected onto the "
+                     "joints)");
+}
+
 void bind_scenario(py::module_& m) {
   py::class_<mb::Scenario>(m, "Scenario", POINSOT_DOC(file_multibody_scenario))
       .def_readwrite("system", &mb::Scenario::system, "The model.")
@@ -418,6 +463,15 @@ void bind_scenario(py::module_& m) {
       .def_readwrite("duration", &mb::Scenario::duration, POINSOT_DOC(multibody_Scenario_duration))
       .def_readwrite("output_every", &mb::Scenario::output_every,
                      POINSOT_DOC(multibody_Scenario_output_every))
+      .def_property(
+          "method", [](const mb::Scenario& sc) { return std::string(mb::multibody_method_name(sc.method)); },
+          [](mb::Scenario& sc, const std::string& name) {
+            sc.method = method_from_name(name);
+            if (sc.method == mb::MultibodyMethod::projected_rk4) sc.order = 4;
+          },
+          "The integrator of run_scenario: 'rattle' (RATTLE, symplectic, for long runs; order 2 or 4) or "
+          "'rk4' (the classical RK4 projected onto the joints, ProjectedRk4; order 4, not symplectic). "
+          "Setting 'rk4' sets order to 4; setting 'rattle' keeps order.")
       .def_readwrite("order", &mb::Scenario::order, POINSOT_DOC(multibody_Scenario_order))
       .def_readwrite("source", &mb::Scenario::source, POINSOT_DOC(multibody_Scenario_source))
       .def_readwrite("title", &mb::Scenario::title, POINSOT_DOC(multibody_Scenario_title))
@@ -487,6 +541,7 @@ void bind_multibody(py::module_& parent) {
   bind_multipliers(m);
   bind_observables(m);
   bind_rattle(m);
+  bind_projected_rk4(m);
   bind_scenario(m);
 }
 

@@ -46,6 +46,7 @@ def body_of(doc):
     (lambda: poinsot.load_scenario, "io_load_scenario"),
     (lambda: poinsot.multibody.System.add_hinge, "multibody_System_add_hinge"),
     (lambda: poinsot.multibody.Rattle.step, "multibody_Rattle_step"),
+    (lambda: poinsot.multibody.ProjectedRk4.step, "multibody_ProjectedRk4_step"),
     (lambda: poinsot.multibody.run_scenario, "multibody_run_scenario"),
 ])
 def test_docstring_is_the_header_doc_comment(header_docs, obj, key):
@@ -59,6 +60,8 @@ def test_class_and_property_docs_come_from_the_headers(header_docs):
     assert poinsot.RigidBody.__doc__ == docs["file_dynamics_rigid_body"]
     assert body_of(poinsot.RigidBody.principal_moments.__doc__).strip() == docs[
         "dynamics_RigidBody_principal_moments"]
+    assert poinsot.multibody.ProjectedRk4.__doc__ == docs["file_multibody_projected_rk4"]
+    assert poinsot.multibody.ProjectedRk4.multipliers.__doc__ == docs["multibody_ProjectedRk4_multipliers"]
 
 
 def test_generated_header_is_current(header_docs):

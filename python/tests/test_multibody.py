@@ -318,3 +318,189 @@ def test_state_views_and_copies():
     np.testing.assert_array_equal(state.omega_body, [[0, 2.0, 0]])
     assert len(state) == 1 and state.x_space.shape == (1, 3) and state.R_space_body.shape == (1, 3, 3)
     assert "multibody" in poinsot.__all__
+
+
+# ---- ProjectedRk4: the classical RK4 projected onto the joints ---------------------------------------------------
+
+
+def falling_chain(links=3, length=1.0):
+    """Rods (1 kg, 1 m, along body x) joined end to end by ball joints, the first hung from the origin; released
+    horizontal along +x with a sideways spin on the last link (velocities projected onto the joints), so the fall
+    is three-dimensional. Returns the system and a consistent state."""
+    system = mb.System()
+    for i in range(links):
+        system.add_body(f"link{i}", 1.0, np.diag([length**2 / 12, 1e-4 / 4, 1e-4 / 4]))
+    system.add_ball("pivot", 0, [-length / 2, 0, 0], mb.WORLD, [0, 0, 0])
+    for i in range(1, links):
+        system.add_ball(f"j{i}", i, [-length / 2, 0, 0], i - 1, [length / 2, 0, 0])
+    system.gravity = [0, 0, -G]
+    bodies = [mb.BodyState(x_space=[(i + 0.5) * length, 0, 0]) for i in range(links)]
+    bodies[-1].omega_body = [0.0, 0.5, 2.0]
+    bodies[-1].v_space = [0.0, 1.0, 0.0]
+    state = mb.State(bodies=bodies)
+    mb.project_velocities(system, state)
+    mb.check_consistent(system, state)
+    return system, state
+
+
+def joint_gaps(system, state, links):
+    """Independent NumPy check of the ball joints: |x_a + R_a p_a − x_b − R_b p_b| per joint (m)."""
+    x, R = state.x_space, state.R_space_body
+    half = np.array([0.5, 0, 0])
+    gaps = [np.linalg.norm(x[0] - R[0] @ half)]
+    gaps += [np.linalg.norm(x[i] - R[i] @ half - x[i - 1] - R[i - 1] @ half) for i in range(1, links)]
+    return np.array(gaps)
+
+
+def test_projected_rk4_properties_and_many_steps_at_once():
+    system, pivot_body = compound_pendulum()
+    rk4 = mb.ProjectedRk4(system, 2e-3)
+    assert (rk4.dt, rk4.order, rk4.kkt_solver) == (2e-3, 4, "tree")  # a hinge: Baraff's tree solver
+    assert mb.ProjectedRk4(falling_chain()[0], 1e-3).kkt_solver == "ball_chain"
+    # No step yet: no multipliers (empty arrays, one row per body / joint once a step is taken).
+    assert rk4.multipliers.Lambda_body.shape == (0, 3, 3) and rk4.multipliers.joint_force_space.shape == (0, 3)
+    a, b = pendulum_state(0.3, pivot_body), pendulum_state(0.3, pivot_body)
+    rk4.step(a, steps=50)
+    other = mb.ProjectedRk4(system, 2e-3)
+    for _ in range(50):
+        other.step(b)
+    np.testing.assert_array_equal(a.R_space_body, b.R_space_body)
+    np.testing.assert_array_equal(a.x_space, b.x_space)
+    assert a.time == b.time == pytest.approx(0.1, abs=1e-15)
+    assert rk4.multipliers.Lambda_body.shape == (1, 3, 3)
+    # At h = 10 ms the RK4 step leaves an O(h⁵) gap (~1e-10 m) above the 1e-13 tolerance, and each projection
+    # iteration gains about (hω)² ≈ 2e-3: one or two iterations a step (measured: always 1). At h = 2 ms the gap
+    # is often already below the tolerance (0 or 1 measured), so the count is checked at 10 ms.
+    coarse = mb.ProjectedRk4(system, 1e-2)
+    c = pendulum_state(0.3, pivot_body)
+    for _ in range(50):
+        coarse.step(c)
+        assert 1 <= coarse.last_iterations <= 2
+
+
+def test_projected_rk4_multipliers_are_the_exact_multipliers_of_the_state_it_reached():
+    system, state = falling_chain()
+    h = 1e-3
+    rk4 = mb.ProjectedRk4(system, h)
+    for _ in range(3):
+        rk4.step(state, steps=99)  # 0.1 s of fall per round: the chain swings down and bends
+        v_before, w_before = state.v_space, state.omega_body
+        rk4.step(state)
+        got = rk4.multipliers
+        want = mb.exact_multipliers(system, state)  # a fresh KKT factorisation at the same state
+        # Both solve the same KKT system at the same state (the integrator from its last factorisation,
+        # exact_multipliers from its own): equal to round-off, a few ulps of the largest entry times the chain's
+        # condition; 1e-12 of each array's largest entry leaves a margin (measured: bitwise equal).
+        for name in ("Lambda_body", "joint_force_space", "joint_torque_space", "acceleration_space",
+                     "omega_dot_body"):
+            g, w = getattr(got, name), getattr(want, name)
+            assert g.shape == w.shape, name
+            np.testing.assert_allclose(g, w, rtol=0, atol=1e-12 * max(np.abs(w).max(), 1.0), err_msg=name)
+        # Newton on the whole chain (three 1 kg links): the pivot's reaction plus the weight is Σ m a
+        # (round-off of the 3 g ≈ 29 N terms, measured 1.2e-16 relative).
+        np.testing.assert_allclose(got.joint_force_space[0] + 3.0 * np.array([0, 0, -G]),
+                                   got.acceleration_space.sum(axis=0), rtol=0, atol=1e-13 * 3 * G)
+        # The accelerations are the trajectory's: central differences of v and ω (body frame) over the steps
+        # before and after, exact to O(h²) (h²/6 |d³v/dt³| with ω ≈ 5 rad/s: ~1e-5 relative) plus RK4's O(h⁴)
+        # error over two steps; measured ≤ 6e-6 (a) and 1.3e-5 (ω̇) of the largest entry, bound 1e-4.
+        state_after = mb.State(time=state.time, bodies=state.bodies)
+        mb.ProjectedRk4(system, h).step(state_after)
+        a_fd = (state_after.v_space - v_before) / (2 * h)
+        w_fd = (state_after.omega_body - w_before) / (2 * h)
+        np.testing.assert_allclose(got.acceleration_space, a_fd, rtol=0,
+                                   atol=1e-4 * np.abs(a_fd).max())
+        np.testing.assert_allclose(got.omega_dot_body, w_fd, rtol=0, atol=1e-4 * np.abs(w_fd).max())
+
+
+def test_projected_rk4_is_fourth_order():
+    """Halving h divides the error at t = 0.5 s by 2⁴ = 16. Reference: RATTLE order 4 at h = 1.25e-4 s (it
+    differs from the same at 2.5e-4 s by 1.4e-12, measured), far below RK4's errors at h = 1e-2 and 5e-3."""
+    system, state0 = falling_chain()
+    t_end = 0.5
+
+    def positions(integrator, h):
+        s = mb.State(time=state0.time, bodies=state0.bodies)
+        integrator.step(s, steps=round(t_end / h))
+        return np.concatenate([s.x_space.ravel(), s.R_space_body.ravel()])
+
+    ref = positions(mb.Rattle(system, 1.25e-4, order=4), 1.25e-4)
+    errors = [np.abs(positions(mb.ProjectedRk4(system, h), h) - ref).max() for h in (1e-2, 5e-3)]
+    ratio = errors[0] / errors[1]
+    # Measured errors 2.7e-7 and 1.7e-8 (m, and entries of R; ratio 15.9; 15.6 from 2e-2 to 1e-2); 16 ± 4 allows
+    # the O(h⁵) term at hω ≤ 0.05 (ω ≤ 4.6 rad/s during the fall).
+    assert 12 < ratio < 20, (errors, ratio)
+
+
+def test_projected_rk4_keeps_the_joints_closed_to_round_off():
+    system, state = falling_chain()
+    rk4 = mb.ProjectedRk4(system, 2e-3)
+    scale = system.length_scale()
+    for _ in range(5):
+        rk4.step(state, steps=40)
+        v = mb.constraint_violation(system, state)
+        # The projection iterates until every gap is below 1e-13 × the length scale (0.5 m here); the
+        # library's measure and the NumPy one (another evaluation order) may differ by a few ulps of the 1.5 m
+        # chain, hence 2e-13 (measured 5.6e-16 × scale for both).
+        assert v.joint_gap < 2e-13 * scale
+        assert joint_gaps(system, state, 3).max() < 2e-13 * scale
+        # Newton–Schulz stops at |RᵀR − I| ≤ 1e-15; the joint projection's exact rotations add a few ulps
+        # (measured 2.2e-16).
+        assert v.orthogonality < 1e-14
+        # The velocities are projected exactly onto the joints (one linear solve): round-off of |v| ≤ 5 m/s
+        # (measured 5e-16 m/s).
+        assert v.joint_velocity < 1e-13 * 5
+
+
+COMPOUND_PENDULUM_WITH_METHOD = "[simulation]\nmethod = \"{}\"\n"
+
+
+def test_run_scenario_with_method_rk4():
+    text = (SOURCE_DIR / "examples" / "multibody" / "compound_pendulum.toml").read_text(encoding="utf-8")
+    rk4 = mb.parse_scenario(text.replace("[simulation]\n", COMPOUND_PENDULUM_WITH_METHOD.format("rk4"), 1), "p.toml")
+    rattle = mb.parse_scenario(text, "p.toml")
+    assert (rk4.method, rk4.order) == ("rk4", 4) and (rattle.method, rattle.order) == ("rattle", 2)
+    summaries = {}
+    for name, scenario in (("rk4", rk4), ("rattle", rattle)):
+        scenario.duration = 1.0
+        summaries[name] = mb.run_scenario(scenario)
+    s4, s2 = summaries["rk4"], summaries["rattle"]
+    assert s4.steps == s2.steps == 1000
+    # RATTLE's O(h²) energy error at ωh ≈ 4e-3 against RK4's O(h⁴) (plus the projections, which never add
+    # kinetic energy): measured 8.2e-7 J against 5.8e-13 J (|E| ≈ 4.7 J); 1e4 leaves a margin of 100.
+    assert s4.max_energy_error < s2.max_energy_error / 1e4
+    # Gaps at the projection tolerance 1e-13 × 0.5 m, as the library measures them (measured 6.1e-14 m; RATTLE's
+    # 6.7e-14 m); 2e-13 m allows a few ulps of the 1 m rod more. Orthogonality measured 1e-15.
+    assert s4.max_joint_gap < 2e-13 and s4.max_orthogonality < 1e-14
+    # The property sets the method as the file does: the same run, bit for bit.
+    rattle.method = "rk4"
+    assert rattle.order == 4
+    again = mb.run_scenario(rattle)
+    assert (again.max_energy_error, again.energy_final) == (s4.max_energy_error, s4.energy_final)
+    rattle.method = "rattle"
+    assert (rattle.method, rattle.order) == ("rattle", 4)  # order is kept: RATTLE's composition from here
+
+
+def test_projected_rk4_bad_arguments_name_the_field():
+    system, pivot_body = compound_pendulum()
+    with pytest.raises(ValueError, match=r"^multibody: time step dt: got 0 s, expected a finite number > 0$"):
+        mb.ProjectedRk4(system, 0.0)
+    with pytest.raises(ValueError, match=r"^multibody: time step dt: got -0\.001 s"):
+        mb.ProjectedRk4(system, -1e-3)
+    with pytest.raises(ValueError, match=r"^multibody: projection tolerance: got 0"):
+        mb.ProjectedRk4(system, 1e-3, tolerance=0.0)
+    with pytest.raises(ValueError, match=r"^multibody: max_iterations 0 must be >= 1$"):
+        mb.ProjectedRk4(system, 1e-3, max_iterations=0)
+    rk4 = mb.ProjectedRk4(system, 1e-3)
+    with pytest.raises(ValueError, match=r"^steps: got 0, expected an integer >= 1$"):
+        rk4.step(pendulum_state(0.1, pivot_body), steps=0)
+    with pytest.raises(ValueError, match=r"^multibody: state has 0 bodies; expected 1$"):
+        rk4.step(mb.State())
+    scenario = mb.parse_scenario("[[bodies]]\nname = 'a'\nmass = 1\ninertia = [1, 1, 1]\n", "ok.toml")
+    with pytest.raises(ValueError, match=r'^Scenario\.method: got "euler", expected "rattle" .* or "rk4" '):
+        scenario.method = "euler"
+    assert scenario.method == "rattle"  # unchanged by the refused value
+    base = "[simulation]\n{}\n[[bodies]]\nname = 'a'\nmass = 1\ninertia = [1, 1, 1]\n"
+    with pytest.raises(ValueError, match=r'^bad\.toml:2:10: \[simulation\] method: got "euler", expected "rattle"'):
+        mb.parse_scenario(base.format('method = "euler"'), "bad.toml")
+    with pytest.raises(ValueError, match=r"^bad\.toml:.*\[simulation\] order: applies to method = \"rattle\" only"):
+        mb.parse_scenario(base.format('method = "rk4"\norder = 2'), "bad.toml")
