@@ -60,8 +60,8 @@ class ProjectedRk4 {
   double dt() const;
   const System& system() const;
   KktMethod kkt_method() const;  ///< how the KKT systems are solved (kkt_solver.hpp)
-  int last_iterations()
-      const;  ///< joint projection iterations of the last step (0: RK4 landed within tolerance)
+  /// Joint projection iterations of the last step (0 when the RK4 step already landed within the tolerance).
+  int last_iterations() const;
   /// The exact multipliers of the continuous equations (joint reactions, each body's Λ, the accelerations)
   /// at the state the last step produced, as exact_multipliers() gives them (to round-off): the next step's
   /// first stage. Computed on first access after a step. Empty before the first step.
