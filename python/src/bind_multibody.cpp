@@ -373,6 +373,19 @@ void bind_observables(py::module_& m) {
         POINSOT_DOC(multibody_check_consistent));
 }
 
+// `steps` steps of a multibody integrator (Rattle, ProjectedRk4) with the GIL released.
+template <class Integrator>
+void step_many(Integrator& integrator, mb::State& state, long steps) {
+  if (steps < 1) throw InvalidInput("steps: got " + std::to_string(steps) + ", expected an integer >= 1");
+  py::gil_scoped_release release;  // no Python callbacks in the multibody layer
+  for (long i = 0; i < steps; ++i)
+    integrator.step(state);
+}
+
+constexpr const char* kKktSolverDoc =
+    "How the KKT systems are solved: 'ball_chain' (Schur complement on the joints, chains of ball joints), "
+    "'tree' (Baraff's tree-order LDLᵀ) or 'sparse_lu' (closed loops).";
+
 void bind_rattle(py::module_& m) {
   py::class_<mb::Rattle>(m, "Rattle", POINSOT_DOC(file_multibody_rattle))
       .def(py::init([](const mb::System& s, double dt, double tolerance, int max_iterations, int order) {
@@ -384,23 +397,14 @@ void bind_rattle(py::module_& m) {
            }),
            py::arg("system"), py::arg("dt"), py::kw_only(), py::arg("tolerance") = 1e-13,
            py::arg("max_iterations") = 50, py::arg("order") = 2, POINSOT_DOC(multibody_Rattle_Rattle))
-      .def(
-          "step",
-          [](mb::Rattle& r, mb::State& state, long steps) {
-            if (steps < 1)
-              throw InvalidInput("steps: got " + std::to_string(steps) + ", expected an integer >= 1");
-            py::gil_scoped_release release;  // no Python callbacks in the multibody layer
-            for (long i = 0; i < steps; ++i)
-              r.step(state);
-          },
-          py::arg("state"), py::arg("steps") = 1, POINSOT_DOC(multibody_Rattle_step))
+      .def("step", &step_many<mb::Rattle>, py::arg("state"), py::arg("steps") = 1,
+           POINSOT_DOC(multibody_Rattle_step))
       .def_property_readonly("dt", &mb::Rattle::dt, "The step size, s.")
       .def_property_readonly("order", &mb::Rattle::order,
                              "2 (RATTLE) or 4 (RATTLE composed by the triple jump, three substeps).")
       .def_property_readonly(
           "kkt_solver", [](const mb::Rattle& r) { return mb::kkt_method_name(r.kkt_method()); },
-          "How the KKT systems are solved: 'ball_chain' (Schur complement on the joints, chains of ball "
-          "joints), 'tree' (Baraff's tree-order LDLᵀ) or 'sparse_lu' (closed loops).")
+          kKktSolverDoc)
       .def_property_readonly("uses_tree_solver", &mb::Rattle::uses_tree_solver,
                              "True when the KKT solves use the O(N) tree factorisation.")
       .def_property_readonly("last_iterations", &mb::Rattle::last_iterations,
@@ -421,24 +425,15 @@ void bind_projected_rk4(py::module_& m) {
            }),
            py::arg("system"), py::arg("dt"), py::kw_only(), py::arg("tolerance") = 1e-13,
            py::arg("max_iterations") = 20, POINSOT_DOC(multibody_ProjectedRk4_ProjectedRk4))
-      .def(
-          "step",
-          [](mb::ProjectedRk4& r, mb::State& state, long steps) {
-            if (steps < 1)
-              throw InvalidInput("steps: got " + std::to_string(steps) + ", expected an integer >= 1");
-            py::gil_scoped_release release;  // no Python callbacks in the multibody layer
-            for (long i = 0; i < steps; ++i)
-              r.step(state);
-          },
-          py::arg("state"), py::arg("steps") = 1, POINSOT_DOC(multibody_ProjectedRk4_step))
+      .def("step", &step_many<mb::ProjectedRk4>, py::arg("state"), py::arg("steps") = 1,
+           POINSOT_DOC(multibody_ProjectedRk4_step))
       .def_property_readonly("dt", &mb::ProjectedRk4::dt, "The step size, s.")
       .def_property_readonly(
           "order", [](const mb::ProjectedRk4&) { return 4; },
           "4: the classical Runge–Kutta method (global error O(h⁴)).")
       .def_property_readonly(
           "kkt_solver", [](const mb::ProjectedRk4& r) { return mb::kkt_method_name(r.kkt_method()); },
-          "How the KKT systems are solved: 'ball_chain' (Schur complement on the joints, chains of ball "
-          "joints), 'tree' (Baraff's tree-order LDLᵀ) or 'sparse_lu' (closed loops).")
+          kKktSolverDoc)
       .def_property_readonly("last_iterations", &mb::ProjectedRk4::last_iterations,
                              POINSOT_DOC(multibody_ProjectedRk4_last_iterations))
       // A copy: the integrator's own storage changes at the next step.
