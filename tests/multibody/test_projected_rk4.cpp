@@ -88,7 +88,7 @@ TEST(ProjectedRk4, ConstraintsStayAtRoundOffAndEnergyAtOrderFour) {
   const double E0 = total_energy(s, st);
   double max_dE = 0, max_gap = 0, max_ortho = 0, max_velocity = 0;
   ProjectedRk4 rk4(s, 1e-3);
-  for (int k = 0; k < 2000 / test::kSlowdown; ++k) {
+  for (int k = 0; k < 2000; ++k) {  // 2 s under sanitizers too (17 s there): 0.4 s fall short of the floor
     rk4.step(st);
     const ConstraintViolation v = constraint_violation(s, st);
     max_gap = std::max(max_gap, v.joint_gap);
