@@ -11,6 +11,25 @@ namespace poinsot::multibody {
 
 namespace detail {
 
+void acceleration_rhs(const System& system, const std::vector<BodyState>& bodies, const KktSolver& solver,
+                      std::vector<BodyLoads>& loads, std::vector<Vec6>& body, Eigen::VectorXd& joint) {
+  applied_loads(system, bodies, loads);
+  body.resize(bodies.size());
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    const Vec3& om = bodies[i].omega_body;
+    body[i].head<3>() = loads[i].force_space;
+    body[i].tail<3>() = loads[i].torque_body - om.cross(system.bodies()[i].inertia * om);
+  }
+  joint.resize(system.constraint_rows());
+  for (std::size_t j = 0; j < system.joints().size(); ++j) {
+    const Joint& jt = system.joints()[j];
+    const BodyState& b =
+        jt.body_b == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(jt.body_b)];
+    joint.segment(solver.joint_offset(static_cast<int>(j)), jt.rows()) =
+        -joint_bias(jt, bodies[static_cast<std::size_t>(jt.body_a)], b);  // G a = −γ
+  }
+}
+
 ExactMultipliers multipliers_from_accelerations(const System& system, const std::vector<BodyState>& bodies,
                                                 const std::vector<BodyLoads>& loads,
                                                 const std::vector<Vec6>& accelerations,
@@ -53,30 +72,12 @@ ExactMultipliers multipliers_from_accelerations(const System& system, const std:
 }  // namespace detail
 
 ExactMultipliers exact_multipliers(const System& system, const State& state) {
-  const auto nb = static_cast<std::size_t>(system.body_count());
-  const auto nj = static_cast<std::size_t>(system.joint_count());
-  const auto side = [&](int index) -> const BodyState& {
-    return index == kWorld ? world_body_state() : state.bodies[static_cast<std::size_t>(index)];
-  };
   KktSolver solver(system);
-  std::vector<JointJacobian> Ga(nj), Gb(nj);
-  Eigen::VectorXd joint_rhs(system.constraint_rows());
-  for (std::size_t j = 0; j < nj; ++j) {
-    const Joint& joint = system.joints()[j];
-    joint_jacobians(joint, side(joint.body_a), side(joint.body_b), Ga[j], Gb[j]);
-    // G a = −γ
-    joint_rhs.segment(solver.joint_offset(static_cast<int>(j)), joint.rows()) =
-        -joint_bias(joint, side(joint.body_a), side(joint.body_b));
-  }
-  solver.factor(Ga, Gb);
+  solver.factor_at(state.bodies);
   std::vector<BodyLoads> loads;
-  applied_loads(system, state.bodies, loads);
-  std::vector<Vec6> body_rhs(nb);
-  for (std::size_t i = 0; i < nb; ++i) {
-    const Body& b = system.bodies()[i];
-    const Vec3& om = state.bodies[i].omega_body;
-    body_rhs[i] << loads[i].force_space, loads[i].torque_body - om.cross(b.inertia * om);
-  }
+  std::vector<Vec6> body_rhs;
+  Eigen::VectorXd joint_rhs;
+  detail::acceleration_rhs(system, state.bodies, solver, loads, body_rhs, joint_rhs);
   solver.solve(body_rhs, joint_rhs);  // [M Gᵀ; G 0][a; −λ] = [F; −γ]
   return detail::multipliers_from_accelerations(system, state.bodies, loads, body_rhs, joint_rhs, solver);
 }

@@ -70,18 +70,7 @@ struct ProjectedRk4::Impl {
 
   // The right-hand side [(f, τ − ω × Jω); −γ] of the acceleration-level KKT system at q (loads kept).
   void acceleration_rhs(const std::vector<BodyState>& q) {
-    applied_loads(system, q, loads);
-    const auto& bodies = system.bodies();
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      const Vec3& om = q[i].omega_body;
-      rhs_body[i].head<3>() = loads[i].force_space;
-      rhs_body[i].tail<3>() = loads[i].torque_body - om.cross(bodies[i].inertia * om);
-    }
-    for (std::size_t j = 0; j < system.joints().size(); ++j) {
-      const Joint& joint = system.joints()[j];
-      rhs_joint.segment(solver.joint_offset(static_cast<int>(j)), joint.rows()) =
-          -joint_bias(joint, q[static_cast<std::size_t>(joint.body_a)], side(q, joint.body_b));
-    }
+    detail::acceleration_rhs(system, q, solver, loads, rhs_body, rhs_joint);
   }
 
   // Accelerations at q into rhs_body (and −λ into rhs_joint): one factorisation and one solve.
