@@ -8,6 +8,8 @@ namespace poinsot::cli {
 
 void register_version(CLI::App& app);
 void register_rotation(CLI::App& app);
+// hidden `completion bash|commands`: walks the app when it runs, so register it with the others
+void register_completion(CLI::App& app);
 
 // inertia (issue 3)
 void register_inertia(CLI::App& app);

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
                "poinsot"};
   app.require_subcommand(1);
   poinsot::cli::register_version(app);
+  poinsot::cli::register_completion(app);
   poinsot::cli::register_rotation(app);
 
   // inertia (issue 3)
