@@ -39,6 +39,9 @@ extern char** environ;
 #ifndef POINSOT_PYTHON_SOURCE_DIR
 #define POINSOT_PYTHON_SOURCE_DIR ""
 #endif
+#ifndef POINSOT_PYTHON_INSTALL_REL  // the installed package, relative to the installed tool's folder
+#define POINSOT_PYTHON_INSTALL_REL ""
+#endif
 #ifndef POINSOT_PYTHON_EXECUTABLE
 #define POINSOT_PYTHON_EXECUTABLE "/usr/bin/python3"
 #endif
@@ -126,14 +129,23 @@ std::string env_or(const char* name, const char* fallback) {
 }
 
 /// Runs python/poinsot/plot.py on the run folder, with PYTHONPATH pointing at the build's python folder
-/// (POINSOT_PYTHON_DIR, overridden by the environment variable of the same name). Its output goes to
-/// stderr when stdout carries JSON.
+/// (POINSOT_PYTHON_DIR, overridden by the environment variable of the same name), or, for an installed tool
+/// whose build folder is gone, at the package installed beside it (<bindir>/POINSOT_PYTHON_INSTALL_REL). Its
+/// output goes to stderr when stdout carries JSON.
 void make_plots(const std::string& dir, bool stdout_is_json) {
   namespace fs = std::filesystem;
   const std::string python = env_or("POINSOT_PYTHON", POINSOT_PYTHON_EXECUTABLE);
-  const std::string pydir = env_or("POINSOT_PYTHON_DIR", POINSOT_PYTHON_DIR);
+  std::string pydir = env_or("POINSOT_PYTHON_DIR", POINSOT_PYTHON_DIR);
   std::string script = (fs::path(pydir) / "poinsot" / "plot.py").string();
   if (!fs::exists(script)) script = (fs::path(POINSOT_PYTHON_SOURCE_DIR) / "poinsot" / "plot.py").string();
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  const fs::path installed = (self.parent_path() / POINSOT_PYTHON_INSTALL_REL).lexically_normal();
+  if (!fs::exists(script) && !ec && *POINSOT_PYTHON_INSTALL_REL != '\0' &&
+      fs::exists(installed / "poinsot" / "plot.py")) {
+    pydir = installed.string();
+    script = (installed / "poinsot" / "plot.py").string();
+  }
   if (!fs::exists(script)) {
     throw ComputationFailed(
         fmt::format("plot: cannot find poinsot/plot.py under \"{}\"; set POINSOT_PYTHON_DIR "
