@@ -85,15 +85,17 @@ missing = [n for n in need if n not in names] + ([] if any(n.startswith("poinsot
 sys.exit(f"missing in the wheel: {missing}" if missing else 0)
 EOF
 
-  /usr/bin/python3 -m venv --system-site-packages "$work/venv-wheel"
-  "$work/venv-wheel/bin/pip" install -q --no-index "$wheel"
+  # --without-pip: the venv's `python -m pip` is Debian's pip, seen through --system-site-packages (the
+  # same pip 23.0.1 that ensurepip would copy in, 14 s saved per venv).
+  /usr/bin/python3 -m venv --system-site-packages --without-pip "$work/venv-wheel"
+  "$work/venv-wheel/bin/python" -m pip install -q --no-index "$wheel"
   phase "installed the wheel into a fresh venv"
   check_example "$work/venv-wheel/bin/python" "$work/outside"
   check_installed "$work/venv-wheel/bin/python"
   phase "the example ran from $work/outside with the wheel's module"
 
-  /usr/bin/python3 -m venv --system-site-packages "$work/venv-pip"
-  "$work/venv-pip/bin/pip" install -q --no-build-isolation . >"$work/pip.log" 2>&1 ||
+  /usr/bin/python3 -m venv --system-site-packages --without-pip "$work/venv-pip"
+  "$work/venv-pip/bin/python" -m pip install -q --no-build-isolation . >"$work/pip.log" 2>&1 ||
     { tail -n 30 "$work/pip.log"; fail "pip install --no-build-isolation ."; }
   phase "pip install --no-build-isolation . into a fresh venv"
   check_installed "$work/venv-pip/bin/python"
