@@ -165,7 +165,9 @@ test_deb() {
 
   chroot "$root" /bin/bash -euo pipefail -c "
     mkdir -p /tmp/run && cd /tmp/run
-    poinsot run /usr/share/doc/poinsot/examples/tennis_racket.toml --plot --quiet | tail -n 12 | sed 's/^/  | /'
+    poinsot run /usr/share/doc/poinsot/examples/tennis_racket.toml --plot --quiet > report.txt
+    grep -A 3 '^  flips of the intermediate axis' report.txt | sed 's/^/  | /'
+    grep -q '^  flips of the intermediate axis .*: 7\$' report.txt
     test \"\$(python3 -c 'import poinsot; print(poinsot.__version__)')\" = $version
     python3 -c 'import poinsot; print(\"  | python3 -c import poinsot:\", poinsot.__version__, poinsot.__file__)'
     test -s tennis_racket-run/summary.json && test -s tennis_racket-run/omega.png
