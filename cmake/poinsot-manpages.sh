@@ -11,7 +11,7 @@ help2man=$2
 out=$3
 
 version=$("$exe" --version | sed 's/^poinsot //')
-work="$out.tmp"
+work="${out:?}.tmp"
 rm -rf "$work"
 mkdir -p "$work/bin"
 "$exe" completion commands >"$work/commands"
@@ -37,7 +37,7 @@ while IFS="$tab" read -r path description; do
   page "poinsot-$(echo "$path" | tr ' ' '-')" "$path" "$description" ".BR poinsot (1)"
 done <"$work/commands"
 
-rm -rf "$work/bin" "$work"/*.h2m "$work/commands"
+rm -rf "${work:?}/bin" "$work"/*.h2m "$work/commands"
 rm -rf "$out"
 mv "$work" "$out"
-echo "man pages: $(ls "$out" | wc -l) written to $out"
+echo "man pages: $(find "$out" -name "*.1.gz" | wc -l) written to $out"

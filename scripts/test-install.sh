@@ -22,7 +22,6 @@
 #   POINSOT_DEBIAN_MIRROR    the archive debootstrap reads (default http://deb.debian.org/debian).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-src=$PWD
 what="${1:-all}"
 case "$what" in wheel | deb | all) ;; *)
   echo "test-install: expected wheel, deb or all, got \"$what\"" >&2
@@ -57,7 +56,7 @@ version=$(sed -n 's/^project(poinsot VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)
 check_example() {  # check_example PYTHON FOLDER
   local out
   out=$(cd "$2" && "$1" examples/python/tennis_racket.py)
-  echo "$out" | sed 's/^/  | /'
+  sed 's/^/  | /' <<<"$out"
   grep -q "^poinsot $version: " <<<"$out" || fail "the example did not print poinsot $version"
   grep -q "^flips of the intermediate axis: 7," <<<"$out" || fail "the example did not find 7 flips"
   # largest difference from the exact solution: below 1e-9 (the exact method, round-off only)
