@@ -176,7 +176,7 @@ def test_a_bad_callback_result_says_what_was_expected():
 
 
 def test_errors_are_value_errors_with_poinsots_message():
-    with pytest.raises(ValueError, match='unknown method "rk5"'):
+    with pytest.raises(ValueError, match='method: got "rk5", expected one of ' + ", ".join(poinsot.METHODS)):
         poinsot.simulate(body=BODY, omega_body=W0, method="rk5")
     with pytest.raises(ValueError, match=r'unknown key "t_edn"; valid keys: t_end, sample_dt, dir'):
         poinsot.simulate({"body": {"principal_moments": BODY}, "initial": {"omega_body": W0},
