@@ -72,20 +72,20 @@ struct AdaptiveLoop {
   std::string_view name;  ///< for messages
   EulerRhs f;
   IntegratorOptions opt;
-  Vec7 y = Vec7::Zero();   ///< the state reached, as the method integrates it
-  Vec7 y1 = Vec7::Zero();  ///< the attempt's result (before the quaternion is renormalised)
+  Vec7 y = Vec7::Zero();  ///< the state reached, as the method integrates it
   bool fsal_valid = false;
   ResumeCheck resume;
   StepController control;
 
   /// One accepted step of at most min(dt, opt.dt) s from `state`. `fsal` is the method's storage of
-  /// f(t, y), the first stage, recomputed only when the state is not the one the last step produced.
-  /// `attempt(t, y, h)` computes y1 and returns the scaled error (≤ 1: accepted); `accept(t, y, h)`, called
-  /// once per accepted step before y becomes y1, keeps what dense output needs and stores f(t + h, y1) in
-  /// `fsal`. Rejected attempts are retried with the controller's smaller step. Throws InvalidInput for dt ≤ 0
-  /// and ComputationFailed when rejections shrink the step below 1e-14·max(1, |t|) s.
+  /// f(t, y), the first stage, recomputed only when the state is not the one the last step produced; `y1`
+  /// its storage of the attempt's result. `attempt(t, y, h)` computes y1 and returns the scaled error (≤ 1:
+  /// accepted); `accept(t, y, h)`, called once per accepted step before y becomes y1, keeps what dense output
+  /// needs and stores f(t + h, y1) in `fsal`. Rejected attempts are retried with the controller's smaller
+  /// step. Throws InvalidInput for dt ≤ 0 and ComputationFailed when rejections shrink the step below
+  /// 1e-14·max(1, |t|) s.
   template <class Attempt, class Accept>
-  StepResult step(State& state, double dt, Vec7& fsal, Attempt&& attempt, Accept&& accept) {
+  StepResult step(State& state, double dt, Vec7& fsal, const Vec7& y1, Attempt&& attempt, Accept&& accept) {
     if (!resume.matches(state)) {
       y = vec7_of(state);
       fsal_valid = false;

@@ -242,7 +242,7 @@ struct Dop853Integrator::Impl {
       if (s < kStages) {
         k[s] = loop.f(t + C[s] * h, y + h * acc);
       } else {
-        loop.y1 = y + h * acc;
+        y_new = y + h * acc;
       }
     }
     Vec7 err5 = Vec7::Zero();
@@ -251,7 +251,7 @@ struct Dop853Integrator::Impl {
       err5 += E5[j] * k[j];
       err3 += E3[j] * k[j];
     }
-    const Vec7 sk = detail::error_scale(y, loop.y1, loop.opt.rtol, loop.opt.atol);
+    const Vec7 sk = detail::error_scale(y, y_new, loop.opt.rtol, loop.opt.atol);
     const double n5 = err5.cwiseQuotient(sk).squaredNorm();
     const double n3 = err3.cwiseQuotient(sk).squaredNorm();
     double deno = n5 + 0.01 * n3;
@@ -261,10 +261,9 @@ struct Dop853Integrator::Impl {
 
   /// Keeps the stages of the accepted step for dense output and its FSAL stage f(t + h, y1) as the next k[0].
   void accept(double t, const Vec7& y, double h) {
-    k[kStages] = loop.f(t + h, loop.y1);
+    k[kStages] = loop.f(t + h, y_new);
     k_last = k;
     y_old = y;
-    y_new = loop.y1;
     t_old = t;
     h_old = h;
     has_step = true;
@@ -314,7 +313,7 @@ double Dop853Integrator::nominal_step() const {
 StepResult Dop853Integrator::step(State& state, double dt) {
   Impl& m = *impl_;
   return m.loop.step(
-      state, dt, m.k[0], [&m](double t, const Vec7& y, double h) { return m.attempt(t, y, h); },
+      state, dt, m.k[0], m.y_new, [&m](double t, const Vec7& y, double h) { return m.attempt(t, y, h); },
       [&m](double t, const Vec7& y, double h) { m.accept(t, y, h); });
 }
 

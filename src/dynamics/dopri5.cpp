@@ -38,6 +38,7 @@ struct Dopri5Integrator::Impl {
       : loop("dopri5", std::move(rhs), o, detail::StepController{0.2 - 0.04 * 0.75, 0.04, 10.0, 5.0}) {}
   detail::AdaptiveLoop loop;
   std::array<Vec7, 7> k{};      // the stages of the attempt; k[0] = f(t, y) (first same as last)
+  Vec7 y1 = Vec7::Zero();       // the attempt's result
   std::array<Vec7, 5> rcont{};  // dense output coefficients of the last step
   double t_old = 0.0;
   double h_old = 0.0;
@@ -52,16 +53,16 @@ struct Dopri5Integrator::Impl {
     k[3] = f(t + c4 * h, y + h * (a41 * k1 + a42 * k[1] + a43 * k[2]));
     k[4] = f(t + c5 * h, y + h * (a51 * k1 + a52 * k[1] + a53 * k[2] + a54 * k[3]));
     k[5] = f(t + h, y + h * (a61 * k1 + a62 * k[1] + a63 * k[2] + a64 * k[3] + a65 * k[4]));
-    loop.y1 = y + h * (a71 * k1 + a73 * k[2] + a74 * k[3] + a75 * k[4] + a76 * k[5]);
-    k[6] = f(t + h, loop.y1);
+    y1 = y + h * (a71 * k1 + a73 * k[2] + a74 * k[3] + a75 * k[4] + a76 * k[5]);
+    k[6] = f(t + h, y1);
     const Vec7 e = h * (e1 * k1 + e3 * k[2] + e4 * k[3] + e5 * k[4] + e6 * k[5] + e7 * k[6]);
-    const Vec7 sk = detail::error_scale(y, loop.y1, loop.opt.rtol, loop.opt.atol);
+    const Vec7 sk = detail::error_scale(y, y1, loop.opt.rtol, loop.opt.atol);
     return std::sqrt(e.cwiseQuotient(sk).squaredNorm() / 7.0);
   }
 
   /// Keeps the dense output of the accepted step and the first stage of the next.
   void accept(double t, const Vec7& y, double h) {
-    const Vec7 ydiff = loop.y1 - y;
+    const Vec7 ydiff = y1 - y;
     const Vec7 bspl = h * k[0] - ydiff;
     rcont[0] = y;
     rcont[1] = ydiff;
@@ -88,7 +89,7 @@ double Dopri5Integrator::nominal_step() const {
 StepResult Dopri5Integrator::step(State& state, double dt) {
   Impl& m = *impl_;
   return m.loop.step(
-      state, dt, m.k[0], [&m](double t, const Vec7& y, double h) { return m.attempt(t, y, h); },
+      state, dt, m.k[0], m.y1, [&m](double t, const Vec7& y, double h) { return m.attempt(t, y, h); },
       [&m](double t, const Vec7& y, double h) { m.accept(t, y, h); });
 }
 
