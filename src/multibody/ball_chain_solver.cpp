@@ -214,8 +214,9 @@ void BallChainSolver::factor_with(OmegaBlock omega_block) {
 
 void BallChainSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
   const auto& bodies = system_->bodies();
-  POINSOT_ASSERT(body.size() == bodies.size() && joint.size() == 3 * static_cast<Eigen::Index>(links_.size()),
-                 "right-hand side sized for the factored system: 6 per body, 3 per ball joint");
+  POINSOT_ASSERT(
+      body.size() == bodies.size() && joint.size() == 3 * static_cast<Eigen::Index>(system_->joint_count()),
+      "right-hand side sized for the factored system: 6 per body, 3 per ball joint");
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     t_[i].head<3>() = inverse_mass_[i] * body[i].head<3>();
     t_[i].tail<3>().noalias() = bodies[i].inertia_inverse * body[i].tail<3>();
