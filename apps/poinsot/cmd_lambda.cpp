@@ -15,6 +15,7 @@
 #include "poinsot/analysis/lambda_report.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/dynamics/methods.hpp"
 #include "poinsot/io/scenario.hpp"
 
 namespace poinsot::cli {
@@ -31,7 +32,7 @@ struct LambdaOptions {
   double t_end = 10.0;
   double dt = 1e-3;
   double sample_dt = 0.01;
-  std::string method = "rattle";
+  std::string method{dynamics::kDefaultLambdaMethod};
   double volume = 0.0;
   bool json = false;
 };
@@ -220,8 +221,9 @@ void register_lambda(CLI::App& app) {
   auto* dt = cmd->add_option("--dt", opts->dt, "integrator step (s, default 1e-3)");
   auto* sample_dt =
       cmd->add_option("--sample-dt", opts->sample_dt, "interval between checked states (s, default 0.01)");
-  auto* method =
-      cmd->add_option("--method", opts->method, "rk4, dopri5, dop853, dlm, rattle (default), exact");
+  auto* method = cmd->add_option(
+      "--method", opts->method,
+      fmt::format("integrator: {} (default {})", dynamics::method_names(), dynamics::kDefaultLambdaMethod));
   cmd->add_option("--volume", opts->volume, "body volume (m³) for the mean stress (default: unknown)");
   cmd->add_flag("--json", opts->json, "print one JSON object (keys in docs/lambda.md)");
   cmd->callback([opts, t_end, dt, sample_dt, method] {

@@ -24,11 +24,13 @@
 #include "commands.hpp"
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/methods.hpp"
 #include "poinsot/io/report.hpp"
 #include "poinsot/io/run.hpp"
 #include "poinsot/io/scenario.hpp"
 #include "poinsot/io/scenario_file.hpp"
 #include "poinsot/io/summary.hpp"
+#include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/scenario.hpp"
 
 extern char** environ;
@@ -183,22 +185,15 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
   }
 }
 
-/// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE (or the projected RK4, `method =
-/// "rk4"` or --method rk4) on the constrained system, the
-/// trajectory of every body in trajectory.csv, the energy, momenta and constraint violation at the same rows
-/// in diagnostics.csv, the report (energy, constraint violation, reactions, each body's Λ) on stdout and in
-/// report.txt, summary.json, and with --plot the figures paths.png, energy.png and constraints.png.
+/// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): its method (multibody/methods.hpp;
+/// `[simulation] method` or --method) on the constrained system, the trajectory of every body in
+/// trajectory.csv, the energy, momenta and constraint violation at the same rows in diagnostics.csv, the
+/// report (energy, constraint violation, reactions, each body's Λ) on stdout and in report.txt, summary.json,
+/// and with --plot the figures paths.png, energy.png and constraints.png.
 void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
-  if (o.method == "rk4") {
-    mb.method = multibody::MultibodyMethod::projected_rk4;
-    mb.order = 4;
-  } else if (o.method == "rattle") {
-    mb.method = multibody::MultibodyMethod::rattle;
-  } else if (!o.method.empty()) {
-    throw InvalidInput(
-        fmt::format("--method: got \"{}\" for the multibody scenario {}; expected rattle or rk4 (the "
-                    "multibody integrators)",
-                    o.method, o.scenario));
+  if (!o.method.empty()) {
+    mb.method = multibody::parse_multibody_method(o.method, "--method");
+    mb.order = multibody::order_for_method(mb.method, mb.order);
   }
   if (o.dt_opt->count() > 0) {
     require_positive("--dt", o.dt, "s");
@@ -306,9 +301,9 @@ void register_run(CLI::App& app) {
   cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
   cmd->add_flag("--plot", o->plot, "also draw the figures (PNG, Matplotlib) into the output folder");
   cmd->add_flag("--quiet", o->quiet, "no progress bar");
-  cmd->add_option(
-      "--method", o->method,
-      "override [integrator] method: exact, rk4, dopri5, dop853, dlm, rattle (multibody: rattle, rk4)");
+  cmd->add_option("--method", o->method,
+                  fmt::format("override [integrator] method: {} (multibody: {})", dynamics::method_names(),
+                              multibody::multibody_method_names()));
   o->dt_opt = cmd->add_option("--dt", o->dt, "override [integrator] dt (s)");
   o->t_end_opt = cmd->add_option("--t-end", o->t_end, "override [output] t_end (s)");
   o->sample_dt_opt = cmd->add_option("--sample-dt", o->sample_dt, "override [output] sample_dt (s)");

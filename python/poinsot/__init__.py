@@ -7,16 +7,24 @@ they say "throws InvalidInput" or "ComputationFailed", Python raises ``ValueErro
 message). Arrays are NumPy float64; vectors have shape (3,), matrices (3, 3), quaternions (w, x, y, z).
 Conventions: ``R`` maps body to space, ``omega_body`` is the body-frame angular velocity, SI units.
 
+The integration methods: ``METHODS`` (name → ``MethodInfo``: order, what it preserves, whether it takes a
+torque, a description), ``DEFAULT_METHOD`` (simulate, scenario files), ``DEFAULT_LAMBDA_METHOD``
+(``analysis.lambda_report``); ``multibody.METHODS`` and ``multibody.DEFAULT_METHOD`` for coupled bodies.
+
 Submodules: ``so3`` (rotations), ``inertia`` (mass properties), ``analysis`` (Λ and the constraint stress),
 ``multibody`` (coupled bodies and joints integrated by RATTLE, their multipliers, scenario files), ``plot``
 (the figures of a run folder, Matplotlib: ``poinsot.plot.plot_run(folder)``).
 """
 from . import _core
 from ._core import (
+    DEFAULT_LAMBDA_METHOD,
+    DEFAULT_METHOD,
+    METHODS,
     ExactFreeBody,
     FreeBodyTheory,
     HeavyTop,
     Integrator,
+    MethodInfo,
     RigidBody,
     Scenario,
     State,
@@ -65,6 +73,10 @@ __all__ = [
     "validate_state",
     "Integrator",
     "make_integrator",
+    "METHODS",
+    "MethodInfo",
+    "DEFAULT_METHOD",
+    "DEFAULT_LAMBDA_METHOD",
     "ExactFreeBody",
     "FreeBodyTheory",
     "free_body_theory",

@@ -84,6 +84,27 @@ class Integrator:
     def step(self, state: State, dt: float) -> dict:
         """Advances `state` by one step of at most `dt` seconds (exactly dt for fixed-step methods)."""
 
+class MethodInfo:
+    """One registry entry."""
+    def __repr__(self) -> str:
+        ...
+    @property
+    def adaptive(self) -> bool: ...
+    @property
+    def dense_output(self) -> bool: ...
+    @property
+    def description(self) -> str: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def order(self) -> int: ...
+    @property
+    def preserves(self) -> List[str]: ...
+    @property
+    def symplectic(self) -> bool: ...
+    @property
+    def takes_torque(self) -> bool: ...
+
 class RigidBody:
     """The constant model of a rotating rigid body: its inertia and, for a heavy top, its mass and the vector from the fixed pivot to the centre of mass."""
     def __repr__(self) -> str:
@@ -245,7 +266,7 @@ def load_scenario(path: str) -> Scenario:
     """Reads and validates a scenario file."""
 
 def make_integrator(name: str, body: RigidBody, torque: object = ..., *, dt: float = ..., rtol: float = ..., atol: float = ..., newton_tolerance: float = ..., newton_max_iterations: int = ...) -> Integrator:
-    """Creates the named integrator for a body and a torque."""
+    """Creates the integrator of the registry (methods.hpp) named `name` for a body and a torque (null: none)."""
 
 def parse_scenario(text: str, source: str = ..., base_dir: str = ...) -> Scenario:
     """Parses and validates scenario text."""
@@ -270,6 +291,12 @@ def total_energy(body: RigidBody, state: State, gravity_space: numpy.typing.Arra
 
 def validate_state(state: State, what: str = ...) -> None:
     """Throws InvalidInput unless R is a rotation (‖RᵀR − I‖_F ≤ 1e-9 after the caller's projection) and the state is finite."""
+
+DEFAULT_LAMBDA_METHOD: str
+
+DEFAULT_METHOD: str
+
+METHODS: dict
 
 __version__: str
 

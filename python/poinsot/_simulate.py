@@ -14,7 +14,7 @@ import numpy as np
 
 from . import _core
 
-DEFAULT_METHOD = "dop853"  # the scenario files' default ([integrator] method)
+DEFAULT_METHOD = _core.DEFAULT_METHOD  # the scenario files' default ([integrator] method), from the registry
 
 
 @dataclass(frozen=True)
@@ -165,7 +165,7 @@ def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, ome
       ``quaternion`` (w, x, y, z) (default: identity);
     - ``torque``: None, a ``poinsot.TorqueModel``, or a Python callable ``tau(t, R, omega_body) -> (3,)``
       returning the body-frame torque (N·m) (called with the GIL held at every stage of every step);
-    - ``method``: "exact", "rk4", "dopri5", "dop853" (default), "dlm", "rattle"; ``dt`` (s), ``rtol``,
+    - ``method``: a name of ``poinsot.METHODS`` ({methods}; default {default}); ``dt`` (s), ``rtol``,
       ``atol``, ``newton_tolerance``, ``newton_max_iterations`` as in IntegratorOptions;
     - ``t_end`` (s), ``sample_dt`` (s), ``locate_flips`` as in SimulationOptions. ``keep_samples=False``
       keeps no trajectory (only the summary), for long runs.
@@ -212,6 +212,9 @@ def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, ome
                           keep_samples)
     theory = _theory(parts["body"], parts["initial"], out.pop("torque_is_zero"))
     return SimulationResult(body=parts["body"], torque_model=parts.get("torque"), **out, **theory)
+
+
+simulate.__doc__ = simulate.__doc__.format(methods=", ".join(_core.METHODS), default=DEFAULT_METHOD)
 
 
 def _theory(body: Any, initial: Any, torque_free: bool) -> dict:

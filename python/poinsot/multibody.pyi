@@ -51,6 +51,23 @@ class ExactMultipliers:
     @property
     def omega_dot_body(self) -> numpy.typing.NDArray[numpy.float64]: ...
 
+class MethodInfo:
+    """One registry entry."""
+    def __repr__(self) -> str:
+        ...
+    @property
+    def description(self) -> str: ...
+    @property
+    def max_order(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def order(self) -> int: ...
+    @property
+    def preserves(self) -> List[str]: ...
+    @property
+    def symplectic(self) -> bool: ...
+
 class Multipliers:
     """The Lagrange multipliers of a multibody system: each body's orthogonality multiplier Λ and each joint's reaction, from the integrator's two stages or exactly at a given state."""
     @property
@@ -278,3 +295,9 @@ def run_scenario(scenario: Scenario, trajectory_csv: str = ..., report: object =
 
 def total_energy(system: System, state: State) -> float:
     """kinetic_energy + potential_energy (loads.hpp), J."""
+
+DEFAULT_METHOD: str
+
+METHODS: dict
+
+WORLD: int

@@ -374,7 +374,8 @@ void bind_analysis(py::module_& parent) {
         d["text"] = analysis::format_lambda_report(r);
         return d;
       },
-      py::arg("body"), py::arg("initial"), py::kw_only(), py::arg("method") = "rk4",
+      py::arg("body"), py::arg("initial"), py::kw_only(),
+      py::arg("method") = std::string(dynamics::kDefaultLambdaMethod),
       py::arg("dt") = dynamics::IntegratorOptions{}.dt, py::arg("rtol") = dynamics::IntegratorOptions{}.rtol,
       py::arg("atol") = dynamics::IntegratorOptions{}.atol, py::arg("t_end") = 10.0,
       py::arg("sample_dt") = 0.01, py::arg("torque") = py::none(), py::arg("volume_m3") = 0.0,

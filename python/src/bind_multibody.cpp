@@ -18,6 +18,7 @@
 #include "poinsot/io/multibody_scenario.hpp"
 #include "poinsot/io/scenario_file.hpp"
 #include "poinsot/multibody/loads.hpp"
+#include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/multipliers.hpp"
 #include "poinsot/multibody/observables.hpp"
@@ -442,12 +443,41 @@ void bind_projected_rk4(py::module_& m) {
           POINSOT_DOC(multibody_ProjectedRk4_multipliers));
 }
 
-mb::MultibodyMethod method_from_name(const std::string& name) {
-  if (name == "rk4") return mb::MultibodyMethod::projected_rk4;
-  if (name == "rattle") return mb::MultibodyMethod::rattle;
-  throw InvalidInput("Scenario.method: got \"" + name +
-                     "\", expected \"rattle\" (RATTLE, symplectic) or \"rk4\" (RK4 projected onto the "
-                     "joints)");
+/// poinsot.multibody.MethodInfo, METHODS (name → entry) and DEFAULT_METHOD: the registry of methods.hpp.
+void bind_methods(py::module_& m) {
+  using mb::MultibodyMethodInfo;
+  py::class_<MultibodyMethodInfo>(m, "MethodInfo", POINSOT_DOC(multibody_MultibodyMethodInfo))
+      .def_property_readonly(
+          "name", [](const MultibodyMethodInfo& i) { return std::string(i.name); },
+          POINSOT_DOC(multibody_MultibodyMethodInfo_name))
+      .def_readonly("order", &MultibodyMethodInfo::order, POINSOT_DOC(multibody_MultibodyMethodInfo_order))
+      .def_readonly("max_order", &MultibodyMethodInfo::max_order,
+                    POINSOT_DOC(multibody_MultibodyMethodInfo_max_order))
+      .def_readonly("symplectic", &MultibodyMethodInfo::symplectic,
+                    POINSOT_DOC(multibody_MultibodyMethodInfo_symplectic))
+      .def_property_readonly(
+          "preserves",
+          [](const MultibodyMethodInfo& i) {
+            std::vector<std::string> out;
+            if (i.preserves.orthogonality) out.emplace_back("orthogonality");
+            if (i.preserves.joints) out.emplace_back("joints");
+            if (i.preserves.momentum) out.emplace_back("momentum");
+            return out;
+          },
+          (std::string("What it keeps, among orthogonality, joints, momentum. ") +
+           POINSOT_DOC(multibody_MultibodyPreserved))
+              .c_str())
+      .def_property_readonly(
+          "description", [](const MultibodyMethodInfo& i) { return std::string(i.description); },
+          POINSOT_DOC(multibody_MultibodyMethodInfo_description))
+      .def("__repr__", [](const MultibodyMethodInfo& i) {
+        return "MethodInfo(" + std::string(i.name) + ", order " + std::to_string(i.order) + ")";
+      });
+  py::dict methods;
+  for (const MultibodyMethodInfo& i : mb::multibody_methods())
+    methods[py::str(std::string(i.name))] = py::cast(&i, py::return_value_policy::reference);
+  m.attr("METHODS") = methods;
+  m.attr("DEFAULT_METHOD") = std::string(mb::multibody_method_name(mb::kDefaultMultibodyMethod));
 }
 
 void bind_scenario(py::module_& m) {
@@ -461,12 +491,14 @@ void bind_scenario(py::module_& m) {
       .def_property(
           "method", [](const mb::Scenario& sc) { return std::string(mb::multibody_method_name(sc.method)); },
           [](mb::Scenario& sc, const std::string& name) {
-            sc.method = method_from_name(name);
-            if (sc.method == mb::MultibodyMethod::projected_rk4) sc.order = 4;
+            sc.method = mb::parse_multibody_method(name, "Scenario.method");
+            sc.order = mb::order_for_method(sc.method, sc.order);
           },
-          "The integrator of run_scenario: 'rattle' (RATTLE, symplectic, for long runs; order 2 or 4) or "
-          "'rk4' (the classical RK4 projected onto the joints, ProjectedRk4; order 4, not symplectic). "
-          "Setting 'rk4' sets order to 4; setting 'rattle' keeps order.")
+          (std::string("The integrator of run_scenario, a name of multibody.METHODS (") +
+           mb::multibody_method_names() +
+           "). Setting it keeps order when the method offers it, else sets the method's order (rk4: 4). " +
+           POINSOT_DOC(multibody_MultibodyMethod))
+              .c_str())
       .def_readwrite("order", &mb::Scenario::order, POINSOT_DOC(multibody_Scenario_order))
       .def_readwrite("source", &mb::Scenario::source, POINSOT_DOC(multibody_Scenario_source))
       .def_readwrite("title", &mb::Scenario::title, POINSOT_DOC(multibody_Scenario_title))
@@ -538,6 +570,7 @@ void bind_multibody(py::module_& parent) {
   bind_rattle(m);
   bind_projected_rk4(m);
   bind_scenario(m);
+  bind_methods(m);
 }
 
 }  // namespace poinsot::python

@@ -14,6 +14,7 @@
 #include "poinsot/dynamics/exact_free_body.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/methods.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/dynamics/state.hpp"
@@ -355,10 +356,52 @@ void bind_exact(py::module_& m) {
       py::keep_alive<0, 2>(), POINSOT_DOC(dynamics_make_integrator));
 }
 
+/// poinsot.MethodInfo and poinsot.METHODS (name → entry, the registry's order), DEFAULT_METHOD and
+/// DEFAULT_LAMBDA_METHOD: the registry of methods.hpp.
+void bind_methods(py::module_& m) {
+  using dynamics::MethodInfo;
+  py::class_<MethodInfo>(m, "MethodInfo", POINSOT_DOC(dynamics_MethodInfo))
+      .def_property_readonly(
+          "name", [](const MethodInfo& i) { return std::string(i.name); },
+          POINSOT_DOC(dynamics_MethodInfo_name))
+      .def_readonly("order", &MethodInfo::order, POINSOT_DOC(dynamics_MethodInfo_order))
+      .def_readonly("adaptive", &MethodInfo::adaptive, POINSOT_DOC(dynamics_MethodInfo_adaptive))
+      .def_readonly("dense_output", &MethodInfo::dense_output, "Offers dense output inside its last step.")
+      .def_readonly("takes_torque", &MethodInfo::takes_torque, POINSOT_DOC(dynamics_MethodInfo_takes_torque))
+      .def_readonly("symplectic", &MethodInfo::symplectic, POINSOT_DOC(dynamics_MethodInfo_symplectic))
+      .def_property_readonly(
+          "preserves",
+          [](const MethodInfo& i) {
+            std::vector<std::string> out;
+            if (i.preserves.energy) out.emplace_back("energy");
+            if (i.preserves.L_space) out.emplace_back("L_space");
+            if (i.preserves.L_body_norm) out.emplace_back("L_body_norm");
+            if (i.preserves.orthogonality) out.emplace_back("orthogonality");
+            return out;
+          },
+          (std::string(
+               "The invariants kept to round-off, among energy, L_space, L_body_norm, orthogonality. ") +
+           POINSOT_DOC(dynamics_Preserved))
+              .c_str())
+      .def_property_readonly(
+          "description", [](const MethodInfo& i) { return std::string(i.description); },
+          POINSOT_DOC(dynamics_MethodInfo_description))
+      .def("__repr__", [](const MethodInfo& i) {
+        return "MethodInfo(" + std::string(i.name) + ", order " + std::to_string(i.order) + ")";
+      });
+  py::dict methods;
+  for (const MethodInfo& i : dynamics::methods())
+    methods[py::str(std::string(i.name))] = py::cast(&i, py::return_value_policy::reference);
+  m.attr("METHODS") = methods;
+  m.attr("DEFAULT_METHOD") = std::string(dynamics::kDefaultMethod);
+  m.attr("DEFAULT_LAMBDA_METHOD") = std::string(dynamics::kDefaultLambdaMethod);
+}
+
 }  // namespace
 
 void bind_simulate(py::module_& m) {
   bind_exact(m);
+  bind_methods(m);
   m.def(
       "_simulate",
       [](const RigidBody& body, const State& initial, const py::object& torque, const std::string& method,

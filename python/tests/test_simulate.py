@@ -176,7 +176,7 @@ def test_a_bad_callback_result_says_what_was_expected():
 
 
 def test_errors_are_value_errors_with_poinsots_message():
-    with pytest.raises(ValueError, match='unknown method "rk5"'):
+    with pytest.raises(ValueError, match='method: got "rk5", expected one of ' + ", ".join(poinsot.METHODS)):
         poinsot.simulate(body=BODY, omega_body=W0, method="rk5")
     with pytest.raises(ValueError, match=r'unknown key "t_edn"; valid keys: t_end, sample_dt, dir'):
         poinsot.simulate({"body": {"principal_moments": BODY}, "initial": {"omega_body": W0},
@@ -229,3 +229,27 @@ def test_ctrl_c_interrupts_a_long_run():
                              keep_samples=False)  # 1e9 steps: minutes, unless interrupted
     finally:
         timer.cancel()
+
+
+def test_the_registry_of_methods_is_the_one_make_integrator_reads():
+    body = poinsot.RigidBody.from_principal_moments([1.0, 2.0, 3.0])
+    assert list(poinsot.METHODS) == ["exact", "rk4", "dopri5", "dop853", "dlm", "rattle"]
+    for name, info in poinsot.METHODS.items():
+        integ = poinsot.make_integrator(name, body)
+        assert (info.name, info.order) == (integ.name, integ.order)
+        assert set(info.preserves) <= {"energy", "L_space", "L_body_norm", "orthogonality"}
+        assert info.description
+    assert poinsot.METHODS["dlm"].symplectic and not poinsot.METHODS["exact"].takes_torque
+    assert poinsot.DEFAULT_METHOD == "dop853" and poinsot.DEFAULT_LAMBDA_METHOD == "rattle"
+    assert poinsot.simulate(body=body, omega_body=W0, t_end=0.1).method == poinsot.DEFAULT_METHOD
+    assert ", ".join(poinsot.METHODS) in poinsot.simulate.__doc__
+    mb = poinsot.multibody
+    assert list(mb.METHODS) == ["rattle", "rk4"] and mb.DEFAULT_METHOD == "rattle"
+    assert (mb.METHODS["rattle"].order, mb.METHODS["rattle"].max_order, mb.METHODS["rk4"].order) == (2, 4, 4)
+    assert "momentum" in mb.METHODS["rattle"].preserves and "momentum" not in mb.METHODS["rk4"].preserves
+
+
+def test_lambda_report_defaults_to_the_registrys_lambda_method():
+    body = poinsot.RigidBody.from_principal_moments([1.0, 2.0, 3.0])
+    rep = poinsot.analysis.lambda_report(body, poinsot.State(omega_body=[0.4, -0.3, 2.0]), t_end=0.2)
+    assert rep["method"] == poinsot.DEFAULT_LAMBDA_METHOD

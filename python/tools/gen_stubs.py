@@ -127,6 +127,10 @@ def module_stub(module, local: str) -> str:
         obj = getattr(module, n)
         if type(obj).__name__ == "builtin_function_or_method":
             lines.append("\n".join(_function(obj, n, local, "")) + "\n")
+    for n in names:  # constants: poinsot.METHODS, DEFAULT_METHOD, multibody.WORLD, ...
+        obj = getattr(module, n)
+        if isinstance(obj, (bool, int, float, str, dict)):
+            lines.append(f"{n}: {type(obj).__name__}\n")
     if not local:
         lines.append("__version__: str\n")
         for sub in ("so3", "inertia", "analysis", "multibody"):

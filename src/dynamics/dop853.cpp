@@ -218,15 +218,11 @@ constexpr std::array<Row, 4> D = [] {
 }  // namespace
 
 struct Dop853Integrator::Impl {
-  Impl(detail::EulerRhs rhs, const IntegratorOptions& o) : f(std::move(rhs)), opt(o) {}
-  detail::EulerRhs f;
-  IntegratorOptions opt;
-  Vec7 y = Vec7::Zero();
+  Impl(detail::EulerRhs rhs, const IntegratorOptions& o)
+      : loop("dop853", std::move(rhs), o, detail::StepController{1.0 / 8.0, 0.0, 6.0, 1.0 / 0.333}) {}
+  detail::AdaptiveLoop loop;
   std::array<Vec7, kExtended> k{};  // k[0] = f(t, y) of the next step (FSAL) once a step is accepted
-  bool k0_valid = false;
-  detail::ResumeCheck resume;
-  detail::StepController control{1.0 / 8.0, 0.0, 6.0, 1.0 / 0.333};
-  // Dense output of the last accepted step: its stages, start, size and the interpolation coefficients.
+  // Dense output of the last accepted step: its stages, start, end, size and the interpolation coefficients.
   std::array<Vec7, kExtended> k_last{};
   Vec7 y_old = Vec7::Zero();
   Vec7 y_new = Vec7::Zero();
@@ -235,6 +231,45 @@ struct Dop853Integrator::Impl {
   bool has_step = false;
   mutable bool dense_ready = false;
   mutable std::array<Vec7, 8> rcont{};
+
+  /// One attempt of step h from (t, y): stages 1..11, then y1 (row 12 of A is b); the scaled error of
+  /// Hairer's combined 5th- and 3rd-order estimators.
+  double attempt(double t, const Vec7& y, double h) {
+    for (int s = 1; s <= kStages; ++s) {
+      Vec7 acc = Vec7::Zero();
+      for (int j = 0; j < s; ++j)
+        if (A[s][j] != 0.0) acc += A[s][j] * k[j];
+      if (s < kStages) {
+        k[s] = loop.f(t + C[s] * h, y + h * acc);
+      } else {
+        y_new = y + h * acc;
+      }
+    }
+    Vec7 err5 = Vec7::Zero();
+    Vec7 err3 = Vec7::Zero();
+    for (int j = 0; j < kStages; ++j) {
+      err5 += E5[j] * k[j];
+      err3 += E3[j] * k[j];
+    }
+    const Vec7 sk = detail::error_scale(y, y_new, loop.opt.rtol, loop.opt.atol);
+    const double n5 = err5.cwiseQuotient(sk).squaredNorm();
+    const double n3 = err3.cwiseQuotient(sk).squaredNorm();
+    double deno = n5 + 0.01 * n3;
+    if (!(deno > 0.0)) deno = 1.0;
+    return std::abs(h) * n5 / std::sqrt(7.0 * deno);
+  }
+
+  /// Keeps the stages of the accepted step for dense output and its FSAL stage f(t + h, y1) as the next k[0].
+  void accept(double t, const Vec7& y, double h) {
+    k[kStages] = loop.f(t + h, y_new);
+    k_last = k;
+    y_old = y;
+    t_old = t;
+    h_old = h;
+    has_step = true;
+    dense_ready = false;
+    k[0] = k[kStages];
+  }
 
   void prepare_dense() const;
 };
@@ -248,7 +283,7 @@ void Dop853Integrator::Impl::prepare_dense() const {
     Vec7 acc = Vec7::Zero();
     for (int j = 0; j < s; ++j)
       if (A[s][j] != 0.0) acc += A[s][j] * kk[j];
-    kk[s] = f(t_old + C[s] * h, y_old + h * acc);
+    kk[s] = loop.f(t_old + C[s] * h, y_old + h * acc);
   }
   const Vec7 ydiff = y_new - y_old;
   const Vec7 bspl = h * kk[0] - ydiff;
@@ -267,78 +302,19 @@ void Dop853Integrator::Impl::prepare_dense() const {
 
 Dop853Integrator::Dop853Integrator(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
                                    const IntegratorOptions& options)
-    : impl_(std::make_unique<Impl>(detail::EulerRhs(body, std::move(torque)), options)) {
-  detail::require_adaptive_options("dop853", options);
-}
+    : impl_(std::make_unique<Impl>(detail::EulerRhs(body, std::move(torque)), options)) {}
 
 Dop853Integrator::~Dop853Integrator() = default;
 
 double Dop853Integrator::nominal_step() const {
-  return impl_->opt.dt;
+  return impl_->loop.opt.dt;
 }
 
 StepResult Dop853Integrator::step(State& state, double dt) {
   Impl& m = *impl_;
-  if (!m.resume.matches(state)) {
-    m.y = detail::vec7_of(state);
-    m.k0_valid = false;
-  }
-  const double t = state.t;
-  const Vec7 y = m.y;
-  auto& k = m.k;
-  if (!m.k0_valid) k[0] = m.f(t, y);
-  double h = std::min(dt, m.opt.dt);
-  if (!(h > 0.0)) {
-    throw InvalidInput(fmt::format("dop853: step dt = {} s at t = {} s; expected dt > 0", h, t));
-  }
-  int rejected = 0;
-  for (;;) {
-    if (rejected > 0 && !(h > 1e-14 * std::max(1.0, std::abs(t)))) {
-      throw ComputationFailed(fmt::format(
-          "dop853: step size {:.3g} s too small at t = {} s after {} rejections; expected a step that "
-          "meets rtol = {:.3g}, atol = {:.3g} (stiff or singular motion?)",
-          h, t, rejected, m.opt.rtol, m.opt.atol));
-    }
-    for (int s = 1; s <= kStages; ++s) {  // stages 1..11, then s = 12 gives y1 (row 12 of A is b)
-      Vec7 acc = Vec7::Zero();
-      for (int j = 0; j < s; ++j)
-        if (A[s][j] != 0.0) acc += A[s][j] * k[j];
-      if (s < kStages) {
-        k[s] = m.f(t + C[s] * h, y + h * acc);
-      } else {
-        m.y_new = y + h * acc;
-      }
-    }
-    const Vec7& y1 = m.y_new;
-    Vec7 err5 = Vec7::Zero();
-    Vec7 err3 = Vec7::Zero();
-    for (int j = 0; j < kStages; ++j) {
-      err5 += E5[j] * k[j];
-      err3 += E3[j] * k[j];
-    }
-    const Vec7 sk = detail::error_scale(y, y1, m.opt.rtol, m.opt.atol);
-    const double n5 = err5.cwiseQuotient(sk).squaredNorm();
-    const double n3 = err3.cwiseQuotient(sk).squaredNorm();
-    double deno = n5 + 0.01 * n3;
-    if (!(deno > 0.0)) deno = 1.0;
-    const double err = std::abs(h) * n5 / std::sqrt(7.0 * deno);
-    if (err <= 1.0 && y1.allFinite()) {
-      k[kStages] = m.f(t + h, y1);
-      const double h_next = std::min(m.control.accept(h, err), m.opt.dt);
-      m.k_last = k;
-      m.y_old = y;
-      m.t_old = t;
-      m.h_old = h;
-      m.has_step = true;
-      m.dense_ready = false;
-      m.y = y1;
-      k[0] = k[kStages];
-      m.k0_valid = detail::accept_step(m.y, t + h, state, m.resume);
-      return {h, h_next, rejected};
-    }
-    ++rejected;
-    h = m.control.reject(h, err);
-  }
+  return m.loop.step(
+      state, dt, m.k[0], m.y_new, [&m](double t, const Vec7& y, double h) { return m.attempt(t, y, h); },
+      [&m](double t, const Vec7& y, double h) { m.accept(t, y, h); });
 }
 
 State Dop853Integrator::dense_output(double t) const {

@@ -34,84 +34,63 @@ constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700
 }  // namespace
 
 struct Dopri5Integrator::Impl {
-  Impl(detail::EulerRhs rhs, const IntegratorOptions& o) : f(std::move(rhs)), opt(o) {}
-  detail::EulerRhs f;
-  IntegratorOptions opt;
-  Vec7 y = Vec7::Zero();
-  Vec7 k1 = Vec7::Zero();  // f(t, y), first stage of the next step (FSAL)
-  bool k1_valid = false;
-  detail::ResumeCheck resume;
-  detail::StepController control{0.2 - 0.04 * 0.75, 0.04, 10.0, 5.0};
+  Impl(detail::EulerRhs rhs, const IntegratorOptions& o)
+      : loop("dopri5", std::move(rhs), o, detail::StepController{0.2 - 0.04 * 0.75, 0.04, 10.0, 5.0}) {}
+  detail::AdaptiveLoop loop;
+  std::array<Vec7, 7> k{};      // the stages of the attempt; k[0] = f(t, y) (first same as last)
+  Vec7 y1 = Vec7::Zero();       // the attempt's result
   std::array<Vec7, 5> rcont{};  // dense output coefficients of the last step
   double t_old = 0.0;
   double h_old = 0.0;
   bool has_step = false;
+
+  /// One attempt of step h from (t, y): the stages k[1..6], y1 and k[6] = f(t + h, y1); the scaled error.
+  double attempt(double t, const Vec7& y, double h) {
+    const detail::EulerRhs& f = loop.f;
+    const Vec7& k1 = k[0];
+    k[1] = f(t + c2 * h, y + h * (a21 * k1));
+    k[2] = f(t + c3 * h, y + h * (a31 * k1 + a32 * k[1]));
+    k[3] = f(t + c4 * h, y + h * (a41 * k1 + a42 * k[1] + a43 * k[2]));
+    k[4] = f(t + c5 * h, y + h * (a51 * k1 + a52 * k[1] + a53 * k[2] + a54 * k[3]));
+    k[5] = f(t + h, y + h * (a61 * k1 + a62 * k[1] + a63 * k[2] + a64 * k[3] + a65 * k[4]));
+    y1 = y + h * (a71 * k1 + a73 * k[2] + a74 * k[3] + a75 * k[4] + a76 * k[5]);
+    k[6] = f(t + h, y1);
+    const Vec7 e = h * (e1 * k1 + e3 * k[2] + e4 * k[3] + e5 * k[4] + e6 * k[5] + e7 * k[6]);
+    const Vec7 sk = detail::error_scale(y, y1, loop.opt.rtol, loop.opt.atol);
+    return std::sqrt(e.cwiseQuotient(sk).squaredNorm() / 7.0);
+  }
+
+  /// Keeps the dense output of the accepted step and the first stage of the next.
+  void accept(double t, const Vec7& y, double h) {
+    const Vec7 ydiff = y1 - y;
+    const Vec7 bspl = h * k[0] - ydiff;
+    rcont[0] = y;
+    rcont[1] = ydiff;
+    rcont[2] = bspl;
+    rcont[3] = ydiff - h * k[6] - bspl;
+    rcont[4] = h * (d1 * k[0] + d3 * k[2] + d4 * k[3] + d5 * k[4] + d6 * k[5] + d7 * k[6]);
+    t_old = t;
+    h_old = h;
+    has_step = true;
+    k[0] = k[6];
+  }
 };
 
 Dopri5Integrator::Dopri5Integrator(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
                                    const IntegratorOptions& options)
-    : impl_(std::make_unique<Impl>(detail::EulerRhs(body, std::move(torque)), options)) {
-  detail::require_adaptive_options("dopri5", options);
-}
+    : impl_(std::make_unique<Impl>(detail::EulerRhs(body, std::move(torque)), options)) {}
 
 Dopri5Integrator::~Dopri5Integrator() = default;
 
 double Dopri5Integrator::nominal_step() const {
-  return impl_->opt.dt;
+  return impl_->loop.opt.dt;
 }
 
 StepResult Dopri5Integrator::step(State& state, double dt) {
   Impl& m = *impl_;
-  if (!m.resume.matches(state)) {
-    m.y = detail::vec7_of(state);
-    m.k1_valid = false;
-  }
-  const double t = state.t;
-  const Vec7& y = m.y;
-  if (!m.k1_valid) m.k1 = m.f(t, y);
-  const Vec7& k1 = m.k1;
-  double h = std::min(dt, m.opt.dt);
-  if (!(h > 0.0)) {
-    throw InvalidInput(fmt::format("dopri5: step dt = {} s at t = {} s; expected dt > 0", h, t));
-  }
-  int rejected = 0;
-  for (;;) {
-    if (rejected > 0 && !(h > 1e-14 * std::max(1.0, std::abs(t)))) {
-      throw ComputationFailed(fmt::format(
-          "dopri5: step size {:.3g} s too small at t = {} s after {} rejections; expected a step that "
-          "meets rtol = {:.3g}, atol = {:.3g} (stiff or singular motion?)",
-          h, t, rejected, m.opt.rtol, m.opt.atol));
-    }
-    const Vec7 k2 = m.f(t + c2 * h, y + h * (a21 * k1));
-    const Vec7 k3 = m.f(t + c3 * h, y + h * (a31 * k1 + a32 * k2));
-    const Vec7 k4 = m.f(t + c4 * h, y + h * (a41 * k1 + a42 * k2 + a43 * k3));
-    const Vec7 k5 = m.f(t + c5 * h, y + h * (a51 * k1 + a52 * k2 + a53 * k3 + a54 * k4));
-    const Vec7 k6 = m.f(t + h, y + h * (a61 * k1 + a62 * k2 + a63 * k3 + a64 * k4 + a65 * k5));
-    const Vec7 y1 = y + h * (a71 * k1 + a73 * k3 + a74 * k4 + a75 * k5 + a76 * k6);
-    const Vec7 k7 = m.f(t + h, y1);
-    const Vec7 e = h * (e1 * k1 + e3 * k3 + e4 * k4 + e5 * k5 + e6 * k6 + e7 * k7);
-    const Vec7 sk = detail::error_scale(y, y1, m.opt.rtol, m.opt.atol);
-    const double err = std::sqrt(e.cwiseQuotient(sk).squaredNorm() / 7.0);
-    if (err <= 1.0 && y1.allFinite()) {
-      const double h_next = std::min(m.control.accept(h, err), m.opt.dt);
-      const Vec7 ydiff = y1 - y;
-      const Vec7 bspl = h * k1 - ydiff;
-      m.rcont[0] = y;
-      m.rcont[1] = ydiff;
-      m.rcont[2] = bspl;
-      m.rcont[3] = ydiff - h * k7 - bspl;
-      m.rcont[4] = h * (d1 * k1 + d3 * k3 + d4 * k4 + d5 * k5 + d6 * k6 + d7 * k7);
-      m.t_old = t;
-      m.h_old = h;
-      m.has_step = true;
-      m.y = y1;
-      m.k1 = k7;
-      m.k1_valid = detail::accept_step(m.y, t + h, state, m.resume);
-      return {h, h_next, rejected};
-    }
-    ++rejected;
-    h = m.control.reject(h, err);
-  }
+  return m.loop.step(
+      state, dt, m.k[0], m.y1, [&m](double t, const Vec7& y, double h) { return m.attempt(t, y, h); },
+      [&m](double t, const Vec7& y, double h) { m.accept(t, y, h); });
 }
 
 State Dopri5Integrator::dense_output(double t) const {

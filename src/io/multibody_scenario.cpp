@@ -248,16 +248,19 @@ multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::
   if (!(every >= 1.0 && every <= 1e9) || every != std::floor(every))
     sim.fail("output_every", fmt::format("got {}, expected an integer >= 1 (steps)", format_number(every)));
   sc.output_every = static_cast<int>(every);
-  const std::string method = sim.string("method").value_or("rattle");
-  if (method == "rk4") {
-    sc.method = multibody::MultibodyMethod::projected_rk4;
-    sc.order = 4;
-    if (sim.number("order"))
-      sim.fail("order", "applies to method = \"rattle\" only (the projected RK4 is of order 4)");
-  } else if (method != "rattle") {
-    sim.fail("method", fmt::format("got \"{}\", expected \"rattle\" (RATTLE, symplectic) or \"rk4\" (RK4 "
-                                   "projected onto the joints)",
-                                   method));
+  if (const auto method = sim.string("method")) {
+    try {
+      sc.method = multibody::parse_multibody_method(*method, sim.label("method"));
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(detail::location(src, sim.node("method")) + e.what());
+    }
+  }
+  const multibody::MultibodyMethodInfo& info = multibody::multibody_method_info(sc.method);
+  sc.order = info.order;
+  if (info.max_order == info.order && sim.number("order")) {
+    sim.fail("order", fmt::format("applies to method = \"{}\" only (the {} is of order {})",
+                                  multibody::multibody_method_name(multibody::MultibodyMethod::rattle),
+                                  info.label, info.order));
   }
   const double order = sim.number("order").value_or(sc.order);
   if (order != 2.0 && order != 4.0) {

@@ -134,19 +134,15 @@ double positive(const Section& s, std::string_view key, std::string_view unit) {
 }  // namespace
 
 void check_method(const Scenario& sc, std::string_view method, std::string_view what) {
-  bool known = false;
-  std::string valid;
-  for (const auto& m : kMethods) {
-    known = known || m == method;
-    valid += (valid.empty() ? "" : ", ") + std::string(m);
-  }
-  if (!known) throw InvalidInput(fmt::format("{}: got \"{}\", expected one of {}", what, method, valid));
-  if (method == "exact" && (!sc.torque->is_zero() || sc.body.has_pivot())) {
-    throw InvalidInput(
-        fmt::format("{}: got \"exact\", which solves the torque-free body only, but [torque] type is "
-                    "\"{}\"{}; expected one "
-                    "of rk4, dopri5, dop853, dlm, rattle",
-                    what, sc.torque_type, sc.body.has_pivot() ? " and the body has a pivot" : ""));
+  const dynamics::MethodInfo& info = dynamics::method_info(method, what);
+  if (!info.takes_torque && (!sc.torque->is_zero() || sc.body.has_pivot())) {
+    std::string with_torque;
+    for (const dynamics::MethodInfo& m : dynamics::methods())
+      if (m.takes_torque) with_torque += (with_torque.empty() ? "" : ", ") + std::string(m.name);
+    throw InvalidInput(fmt::format(
+        "{}: got \"{}\", which solves the torque-free body only, but [torque] type is \"{}\"{}; "
+        "expected one of {}",
+        what, method, sc.torque_type, sc.body.has_pivot() ? " and the body has a pivot" : "", with_torque));
   }
 }
 
@@ -203,7 +199,7 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
 
   // [integrator]
   const Section in(src, root["integrator"].as_table(), "integrator", {"method", "dt", "rtol", "atol"});
-  sc.method = in.string("method").value_or("dop853");
+  sc.method = in.string("method").value_or(std::string(dynamics::kDefaultMethod));
   try {
     check_method(sc, sc.method, in.label("method"));
   } catch (const InvalidInput& e) {

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "poinsot/core/assert.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/so3/hat.hpp"
 
@@ -152,6 +153,7 @@ void BallChainSolver::factor(const std::vector<JointJacobian>& G_a, const std::v
 }
 
 void BallChainSolver::factor_at(const std::vector<BodyState>& q) {
+  POINSOT_ASSERT(q.size() == system_->bodies().size(), "one state per body of the system");
   // Gω of the ball rows x_a + R_a A − x_b − R_b B: −R_a j(A) on side a, R_b j(B) on side b (constraints.hpp).
   const auto& joints = system_->joints();
   factor_with([&](std::size_t j, int s) -> Mat3 {
@@ -189,6 +191,8 @@ void BallChainSolver::factor_with(OmegaBlock omega_block) {
       S.f += inverse_mass;
     }
     if (link.shared_side >= 0) {
+      POINSOT_ASSERT(p > 0 && link.previous_side >= 0 && link.previous_side < 2,
+                     "a link shares a body with the link before it");
       const Side& mine = link.sides[link.shared_side];
       const Side& theirs = links_[p - 1].sides[link.previous_side];
       link.E.noalias() = theirs.X * mine.G_omega.transpose();
@@ -210,6 +214,9 @@ void BallChainSolver::factor_with(OmegaBlock omega_block) {
 
 void BallChainSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
   const auto& bodies = system_->bodies();
+  POINSOT_ASSERT(
+      body.size() == bodies.size() && joint.size() == 3 * static_cast<Eigen::Index>(system_->joint_count()),
+      "right-hand side sized for the factored system: 6 per body, 3 per ball joint");
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     t_[i].head<3>() = inverse_mass_[i] * body[i].head<3>();
     t_[i].tail<3>().noalias() = bodies[i].inertia_inverse * body[i].tail<3>();

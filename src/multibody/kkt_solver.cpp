@@ -9,6 +9,7 @@
 #include <Eigen/SparseLU>
 
 #include "ball_chain_solver.hpp"
+#include "poinsot/core/assert.hpp"
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::multibody {
@@ -138,6 +139,8 @@ KktSolver::KktSolver(const System& system, KktMethod method) : system_(&system) 
 }
 
 void KktSolver::factor_at(const std::vector<BodyState>& bodies) {
+  POINSOT_ASSERT(bodies.size() == static_cast<std::size_t>(system_->body_count()),
+                 "one state per body of the system");
   if (chain_) {
     chain_->factor_at(bodies);
     return;
@@ -343,6 +346,8 @@ void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<
 }
 
 void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
+  POINSOT_ASSERT(body.size() == static_cast<std::size_t>(system_->body_count()) && joint.size() == rows_,
+                 "right-hand side sized for the factored system: 6 per body, one per constraint row");
   if (chain_) {
     chain_->solve(body, joint);
     return;
@@ -363,6 +368,7 @@ void KktSolver::solve(std::vector<Vec6>& body, Eigen::VectorXd& joint) {
     work_[static_cast<std::size_t>(i)] = body[static_cast<std::size_t>(i)];
   for (int j = 0; j < system_->joint_count(); ++j) {
     const int dim = nodes_[static_cast<std::size_t>(nb + j)].dim;
+    POINSOT_ASSERT(dim >= 0 && dim <= 6 && joint_offset(j) + dim <= rows_, "joint rows inside the vector");
     work_[static_cast<std::size_t>(nb + j)].head(dim) = joint.segment(joint_offset(j), dim);
     work_[static_cast<std::size_t>(nb + j)].tail(6 - dim).setZero();
   }

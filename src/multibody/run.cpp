@@ -93,9 +93,8 @@ void write_report(std::ostream& out, const Scenario& sc, const State& st, const 
   }
 }
 
-// The run with either integrator (Rattle or ProjectedRk4: step, last_iterations, kkt_method).
-template <class Integrator>
-RunSummary run_with(const Scenario& sc, Integrator& integrator, std::ostream* report,
+// The run with the scenario's method (methods.hpp: step, last_iterations, kkt_method).
+RunSummary run_with(const Scenario& sc, MultibodyIntegrator& integrator, std::ostream* report,
                     const std::string& trajectory_csv, const std::string& diagnostics_csv) {
   State st = sc.initial;
   RunSummary s;
@@ -165,14 +164,8 @@ RunSummary run_with(const Scenario& sc, Integrator& integrator, std::ostream* re
 RunSummary run_scenario(const Scenario& sc, std::ostream* report, const std::string& trajectory_csv,
                         const std::string& diagnostics_csv) {
   check_consistent(sc.system, sc.initial);
-  if (sc.method == MultibodyMethod::projected_rk4) {
-    ProjectedRk4 rk4(sc.system, sc.dt);
-    return run_with(sc, rk4, report, trajectory_csv, diagnostics_csv);
-  }
-  RattleOptions options;
-  options.order = sc.order;
-  Rattle rattle(sc.system, sc.dt, options);
-  return run_with(sc, rattle, report, trajectory_csv, diagnostics_csv);
+  const auto integrator = multibody_method_info(sc.method).make(sc.system, sc.dt, sc.order);
+  return run_with(sc, *integrator, report, trajectory_csv, diagnostics_csv);
 }
 
 }  // namespace poinsot::multibody

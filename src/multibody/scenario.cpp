@@ -1,4 +1,4 @@
-// Projection of a scenario's initial velocities onto the joints, and the names of the methods (scenario.hpp).
+// Projection of a scenario's initial velocities onto the joints (scenario.hpp).
 #include "poinsot/multibody/scenario.hpp"
 
 #include <vector>
@@ -6,10 +6,6 @@
 #include "poinsot/multibody/kkt_solver.hpp"
 
 namespace poinsot::multibody {
-
-const char* multibody_method_name(MultibodyMethod method) {
-  return method == MultibodyMethod::projected_rk4 ? "rk4" : "rattle";
-}
 
 void project_velocities(const System& system, State& state) {
   if (system.joint_count() == 0) return;

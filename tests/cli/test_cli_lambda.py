@@ -154,3 +154,11 @@ def test_scenario_file_and_body_flags_together_are_an_error(cli, source_dir):
     assert r.returncode == 2
     assert r.stdout == ""
     assert "expected one or the other" in r.stderr
+
+
+def test_default_method_is_rattle_as_in_the_library_and_python(cli):
+    # The default is stated once (dynamics::kDefaultLambdaMethod); analyse_lambda and Python read the same one.
+    d = run_json(cli, "--moments", 1, 2, 3, "--omega0", 0.4, 1.0, -0.6, "--t-end", 0.2)
+    assert d["method"] == "rattle" and d["integrator_multiplier"] is not None
+    r = cli("lambda", "--help")
+    assert "exact, rk4, dopri5, dop853, dlm, rattle (default rattle)" in r.stdout

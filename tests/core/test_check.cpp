@@ -6,14 +6,7 @@
 namespace poinsot {
 namespace {
 
-std::string message_of(auto&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
+using test::message_of;
 
 TEST(Check, MessagesNameTheFieldTheValueAndWhatWasExpected) {
   EXPECT_EQ(message_of([] { require_positive("box: mass", -2.0, "kg"); }),

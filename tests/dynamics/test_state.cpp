@@ -90,13 +90,8 @@ TEST(State, ValidationNamesTheSource) {
   State s;
   EXPECT_NO_THROW(dynamics::validate_state(s, "initial state"));
   s.R(0, 1) = 0.01;
-  try {
-    dynamics::validate_state(s, "initial state");
-    FAIL();
-  } catch (const InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find("initial state: R is not a rotation"), std::string::npos)
-        << e.what();
-  }
+  POINSOT_EXPECT_THROWS_MESSAGE(dynamics::validate_state(s, "initial state"), InvalidInput,
+                                "initial state: R is not a rotation");
   State n;
   n.omega_body.x() = std::nan("");
   EXPECT_THROW(dynamics::validate_state(n, "x"), InvalidInput);

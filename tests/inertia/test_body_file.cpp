@@ -22,12 +22,7 @@ using test::kEps;
 using test::max_abs_diff;
 
 std::string message_of(const std::string& toml) {
-  try {
-    parse_body(toml);
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "no throw";
+  return test::message_of([&] { parse_body(toml); });
 }
 
 TEST(BodyFile, TwoHalvesMakeABox) {

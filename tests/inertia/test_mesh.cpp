@@ -15,14 +15,7 @@ namespace {
 using test::kEps;
 using test::max_abs_diff;
 
-std::string message_of(const auto& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "no throw";
-}
+using test::message_of;
 
 TEST(Mesh, BoxIsExact) {
   const Vec3 size(0.3, 0.1, 0.02);

@@ -179,14 +179,7 @@ TEST(Shapes, MassAndDensityAgree) {
 }
 
 TEST(Shapes, BadSizesAreRejectedWithTheirName) {
-  auto message = [](auto f) {
-    try {
-      f();
-    } catch (const InvalidInput& e) {
-      return std::string(e.what());
-    }
-    return std::string("no throw");
-  };
+  auto message = [](auto f) { return test::message_of(f); };
   EXPECT_NE(message([] { box(1.0, Vec3(1, -2, 1)); }).find("box: size y"), std::string::npos);
   EXPECT_NE(message([] { solid_sphere(0.0, 1.0); }).find("sphere: mass"), std::string::npos);
   EXPECT_NE(message([] { cylinder(1.0, 1.0, 1.0, 1.0); }).find("inner radius 1 m"), std::string::npos);

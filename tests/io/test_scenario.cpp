@@ -27,15 +27,7 @@ t_end = 5
 
 /// The message of the InvalidInput that parsing `text` throws (fails the test when nothing is thrown).
 std::string error_of(const std::string& text) {
-  try {
-    (void)parse_scenario(text, "s.toml");
-  } catch (const InvalidInput& e) {
-    const std::string m = e.what();
-    EXPECT_EQ(m.find('\n'), std::string::npos) << "the message must be one line: " << m;
-    return m;
-  }
-  ADD_FAILURE() << "expected InvalidInput for:\n" << text;
-  return "";
+  return test::message_of([&] { (void)parse_scenario(text, "s.toml"); }, text);
 }
 
 std::string replace(std::string text, const std::string& from, const std::string& to) {
@@ -251,12 +243,8 @@ TEST(Scenario, OverridesAreValidatedLikeTheFile) {
 }
 
 TEST(Scenario, MissingFileIsNamed) {
-  try {
-    (void)load_scenario("/nonexistent/poinsot/s.toml");
-    FAIL();
-  } catch (const InvalidInput& e) {
-    expect_has(std::string(e.what()), {"cannot read \"/nonexistent/poinsot/s.toml\""});
-  }
+  POINSOT_EXPECT_THROWS_MESSAGE((void)load_scenario("/nonexistent/poinsot/s.toml"), InvalidInput,
+                                "cannot read \"/nonexistent/poinsot/s.toml\"");
 }
 
 TEST(Scenario, LoadNamesTheScenarioAfterItsFile) {

@@ -18,13 +18,8 @@ std::string scenario_with_body(const std::string& body) {
 }
 
 std::string error_of(const std::string& text) {
-  try {
-    (void)parse_scenario(text, "b.toml", POINSOT_SOURCE_DIR "/examples");
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected InvalidInput for:\n" << text;
-  return "";
+  return test::message_of([&] { (void)parse_scenario(text, "b.toml", POINSOT_SOURCE_DIR "/examples"); },
+                          text);
 }
 
 using test::expect_has;

@@ -6,18 +6,13 @@
 #include <string>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::io::detail {
 namespace {
 
 std::string message(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected InvalidInput";
-  return "";
+  return test::message_of(f);
 }
 
 TEST(TomlFields, NumbersVectorsAndMatricesWithTheirPlace) {

@@ -11,12 +11,7 @@ namespace poinsot::multibody {
 namespace {
 
 std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return poinsot::test::message_of(f);
 }
 
 TEST(Model, BodiesAreValidated) {

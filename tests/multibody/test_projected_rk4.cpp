@@ -238,15 +238,7 @@ TEST(ProjectedRk4, AFailedStepLeavesTheStateAsItWasAndBadInputIsRefused) {
   EXPECT_EQ(st.bodies[0].omega_body, before.bodies[0].omega_body);
   EXPECT_TRUE(rk4.multipliers().Lambda_body.empty());  // none from a failed step
 
-  auto message_of = [](auto&& f) -> std::string {
-    try {
-      f();
-    } catch (const InvalidInput& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no InvalidInput";
-    return "";
-  };
+  using poinsot::test::message_of;
   poinsot::test::expect_has(message_of([&] { ProjectedRk4(s, 0.0); }), {"dt", "0"});
   ProjectedRk4Options bad;
   bad.max_iterations = 0;

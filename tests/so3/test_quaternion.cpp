@@ -69,13 +69,8 @@ TEST(Quaternion, BadInputIsRejectedWithAClearMessage) {
   EXPECT_THROW(rotation_from_quaternion(Quat(0, 0, 0, 0)), InvalidInput);
   EXPECT_THROW(rotation_from_quaternion(Quat(1, std::nan(""), 0, 0)), InvalidInput);
   EXPECT_THROW(quaternion_from_rotation(Mat3::Constant(1.0)), InvalidInput);
-  try {
-    rotation_from_quaternion(Quat(0, 0, 0, 0));
-    FAIL();
-  } catch (const InvalidInput& e) {
-    EXPECT_EQ(std::string(e.what()),
-              "quaternion: got (0, 0, 0, 0), expected a non-zero quaternion (w, x, y, z)");
-  }
+  EXPECT_EQ(test::message_of([] { rotation_from_quaternion(Quat(0, 0, 0, 0)); }),
+            "quaternion: got (0, 0, 0, 0), expected a non-zero quaternion (w, x, y, z)");
 }
 
 }  // namespace

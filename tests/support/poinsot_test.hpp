@@ -1,24 +1,42 @@
 #pragma once
 // Test helpers shared by every layer's tests: tolerances scaled by the problem's magnitude (as MuJoCo's test
-// utilities do), a reproducible random source, random rotations uniform on SO(3), and a check of error
-// messages.
+// utilities do), a random source seeded per test, random rotations uniform on SO(3), matrix comparisons
+// (absolute and relative) and checks of thrown one-line error messages.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <initializer_list>
 #include <limits>
 #include <random>
+#include <sstream>
 #include <string>
+#include <string_view>
 
 #include <gtest/gtest.h>
 
+#include "poinsot/core/error.hpp"
 #include "poinsot/core/types.hpp"
 
 namespace poinsot::test {
 
 inline constexpr double kEps = std::numeric_limits<double>::epsilon();  // 2.22e-16
 
-/// A random engine with a fixed seed, so a failure is reproducible.
+/// The random engine of the running test, seeded from the test's full name (FNV-1a of "Suite.Name", mixed
+/// with a fixed constant): each test draws the same numbers whatever the other tests, their order or
+/// --gtest_filter, so a failure is reproducible by running that test alone. Reseeded when the running test
+/// changes (outside a test: the seed of the empty name).
 inline std::mt19937_64& rng() {
-  static std::mt19937_64 engine(20261121);
+  static std::mt19937_64 engine;
+  static std::string seeded_for = "\x01";  // no test's name
+  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = info != nullptr ? std::string(info->test_suite_name()) + "." + info->name() : "";
+  if (name != seeded_for) {
+    std::uint64_t h = 14695981039346656037ull;
+    for (const char c : name)
+      h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    engine.seed(h ^ 20261121u);
+    seeded_for = std::move(name);
+  }
   return engine;
 }
 
@@ -62,9 +80,50 @@ inline void expect_has(const std::string& message, std::initializer_list<std::st
   }
 }
 
+/// The message of the exception of type E that `f()` throws; a test failure (and "") when it throws
+/// nothing. An exception of another type propagates (gtest reports it). Also EXPECTs the message to be one
+/// line, as every poinsot error is.
+template <class E = InvalidInput, class F>
+std::string message_of(F&& f, std::string_view what = "the statement") {
+  try {
+    f();
+  } catch (const E& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << "a message of more than one line: " << message;
+    return message;
+  }
+  ADD_FAILURE() << "expected " << what << " to throw";
+  return "";
+}
+
+/// Absolute comparison of two matrices (or vectors) of the same shape: max |a − b| ≤ tol.
+template <class A, class B>
+::testing::AssertionResult matrix_near(const A& a, const B& b, double tol) {
+  const double d = (a - b).cwiseAbs().maxCoeff();
+  if (d <= tol) return ::testing::AssertionSuccess();
+  std::ostringstream out;
+  out.precision(17);
+  out << "max |a - b| = " << d << " > " << tol << "\na =\n" << a << "\nb =\n" << b;
+  return ::testing::AssertionFailure() << out.str();
+}
+
+/// Relative comparison: max |a − b| ≤ rtol · max |b| (the reference's largest entry sets the scale; an
+/// all-zero reference requires a == b).
+template <class A, class B>
+::testing::AssertionResult matrix_rel_near(const A& a, const B& b, double rtol) {
+  return matrix_near(a, b, rtol * b.cwiseAbs().maxCoeff());
+}
+
 }  // namespace poinsot::test
 
-/// EXPECT that |a − b| ≤ tol · max(1, |scale|): an absolute tolerance for quantities of order one, a relative
-/// one for larger ones.
-#define POINSOT_EXPECT_SCALED_NEAR(a, b, tol, scale) \
-  EXPECT_LE(std::abs((a) - (b)), (tol)*std::max(1.0, std::abs(scale)))
+/// EXPECT that `statement` throws EXCEPTION whose one-line message contains each of the given pieces:
+/// POINSOT_EXPECT_THROWS_MESSAGE(f(x), InvalidInput, "x: got -1", "expected a number > 0").
+#define POINSOT_EXPECT_THROWS_MESSAGE(statement, exception, ...) \
+  ::poinsot::test::expect_has(                                   \
+      ::poinsot::test::message_of<exception>([&] { (void)(statement); }, #statement), {__VA_ARGS__})
+
+/// EXPECT max |a − b| ≤ tol (absolute), printing both on failure.
+#define POINSOT_EXPECT_MATRIX_NEAR(a, b, tol) EXPECT_TRUE(::poinsot::test::matrix_near((a), (b), (tol)))
+/// EXPECT max |a − b| ≤ rtol · max |b| (relative to the reference b), printing both on failure.
+#define POINSOT_EXPECT_MATRIX_REL_NEAR(a, b, rtol) \
+  EXPECT_TRUE(::poinsot::test::matrix_rel_near((a), (b), (rtol)))

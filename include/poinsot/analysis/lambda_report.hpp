@@ -13,6 +13,7 @@
 
 #include "poinsot/analysis/lambda_tracker.hpp"
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/methods.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/dynamics/state.hpp"
@@ -21,7 +22,7 @@
 namespace poinsot::analysis {
 
 struct LambdaAnalysisOptions {
-  std::string method = "rk4";                           ///< rk4, dopri5, dop853, dlm, rattle, exact
+  std::string method{dynamics::kDefaultLambdaMethod};   ///< a name of the method registry (methods.hpp)
   dynamics::IntegratorOptions integrator;               ///< dt (s), tolerances
   double t_end = 10.0;                                  ///< s, the final time (> initial.t)
   double sample_dt = 0.01;                              ///< s, the interval between checked states

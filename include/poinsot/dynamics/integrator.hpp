@@ -5,13 +5,8 @@
 /// ones take at most that step, report the step taken and propose the next, and offer dense output inside the
 /// last step.
 ///
-/// Methods (each in its own file, with its order and what it preserves):
-///   rk4     classical Runge–Kutta on ω and the quaternion, renormalised each step   order 4
-///   dopri5  Dormand–Prince 5(4), adaptive, dense output                              order 5
-///   dop853  Hairer's DOP853 8(5,3), adaptive, dense output of order 7                 order 8
-///   dlm     Dullweber–Leimkuhler–McLachlan symplectic splitting                      order 2
-///   rattle  RATTLE / Moser–Veselov variational method for R̈K = RΛ, RᵀR = I          order 2
-///   exact   closed-form torque-free motion (Jacobi elliptic functions)               exact
+/// The methods, each in its own file with its order and what it preserves, are listed once, in the registry
+/// (methods.hpp), which make_integrator reads.
 
 #include <memory>
 #include <string>
@@ -43,7 +38,7 @@ struct StepResult {
 class Integrator {
  public:
   virtual ~Integrator() = default;
-  /// "rk4", "dopri5", "dop853", "dlm", "rattle", "exact".
+  /// The method's name in the registry (methods.hpp).
   virtual std::string_view name() const = 0;
   /// Order of accuracy in the step (0 for exact).
   virtual int order() const = 0;
@@ -66,8 +61,9 @@ class Integrator {
   virtual bool last_multiplier(Mat3& lambda_body) const;
 };
 
-/// Creates the named integrator for a body and a torque. Throws InvalidInput for an unknown name (listing the
-/// valid ones), invalid options, or "exact" with a non-zero torque.
+/// Creates the integrator of the registry (methods.hpp) named `name` for a body and a torque (null: none).
+/// Throws InvalidInput for an unknown name (listing the registry's names), invalid options, or a torque-free
+/// method (MethodInfo::takes_torque false, i.e. exact) with a non-zero torque. Defined in methods.cpp.
 std::unique_ptr<Integrator> make_integrator(std::string_view name, const RigidBody& body,
                                             std::shared_ptr<const TorqueModel> torque,
                                             const IntegratorOptions& options = {});

@@ -17,15 +17,13 @@
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/methods.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/dynamics/state.hpp"
 #include "poinsot/dynamics/torque.hpp"
 
 namespace poinsot::io {
-
-/// The integration methods a scenario may name (those of dynamics::make_integrator).
-inline constexpr std::string_view kMethods[] = {"exact", "rk4", "dopri5", "dop853", "dlm", "rattle"};
 
 /// A validated scenario: everything `poinsot run` needs.
 struct Scenario {
@@ -38,9 +36,9 @@ struct Scenario {
   std::string torque_type;       ///< "none", "gravity", "body", "space"
   std::shared_ptr<const dynamics::TorqueModel> torque;  ///< never null
   Vec3 gravity_space = Vec3::Zero();                    ///< m/s², space frame; zero unless gravity
-  std::string method;                                   ///< one of kMethods
-  dynamics::IntegratorOptions integrator;               ///< dt (s), rtol, atol
-  dynamics::SimulationOptions simulation;               ///< t_end (s), sample_dt (s)
+  std::string method;                      ///< a name of the method registry (dynamics/methods.hpp)
+  dynamics::IntegratorOptions integrator;  ///< dt (s), rtol, atol
+  dynamics::SimulationOptions simulation;  ///< t_end (s), sample_dt (s)
   std::string out_dir;  ///< [output] dir; empty: the CLI uses a folder named after the scenario
 };
 

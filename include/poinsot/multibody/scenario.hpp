@@ -9,18 +9,11 @@
 #include <vector>
 
 #include "poinsot/multibody/kkt_solver.hpp"
+#include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/state.hpp"
 
 namespace poinsot::multibody {
-
-/// The integrator of a multibody run: RATTLE (rattle.hpp; symplectic, for long runs; order 2 or 4) or the
-/// projected classical RK4 (projected_rk4.hpp; fourth order, not symplectic, for accurate bounded runs and
-/// exact multipliers at every sample).
-enum class MultibodyMethod { rattle, projected_rk4 };
-/// "rattle" or "rk4": the names of scenario files' `[simulation] method`, of `poinsot run --method`, of
-/// summary.json and of Python.
-const char* multibody_method_name(MultibodyMethod method);
 
 /// A multibody scenario ready to run: the model, the initial state (velocities already projected onto the
 /// joints), the step (s), the duration (s) and the output rate. Each body's `x_space` is its centre of mass.
@@ -30,7 +23,7 @@ struct Scenario {
   double dt = 1e-3;       ///< s
   double duration = 1.0;  ///< s
   int output_every = 10;  ///< steps between trajectory rows
-  MultibodyMethod method = MultibodyMethod::rattle;
+  MultibodyMethod method = kDefaultMultibodyMethod;
   int order = 2;       ///< RATTLE (2) or its fourth-order composition (4), rattle.hpp; 4 for projected_rk4
   std::string source;  ///< the file it came from (or a name), for the report; may be empty
   std::string title;   ///< an optional one-line description, for the report
