@@ -64,9 +64,9 @@ void bind_io(py::module_& m) {
             Scenario copy = s;
             io::ScenarioOverrides o;
             o.method = method;
-            if (!dt.is_none()) o.dt = dt.cast<double>(), o.has_dt = true;
-            if (!t_end.is_none()) o.t_end = t_end.cast<double>(), o.has_t_end = true;
-            if (!sample_dt.is_none()) o.sample_dt = sample_dt.cast<double>(), o.has_sample_dt = true;
+            if (!dt.is_none()) o.dt = dt.cast<double>();
+            if (!t_end.is_none()) o.t_end = t_end.cast<double>();
+            if (!sample_dt.is_none()) o.sample_dt = sample_dt.cast<double>();
             o.out_dir = out_dir;
             io::apply_overrides(copy, o);
             return copy;

@@ -11,34 +11,18 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
+#include "json_values.hpp"
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::io {
 namespace {
 
-using json = nlohmann::ordered_json;
-
-json vec(const Vec3& v) {
-  return json::array({v[0], v[1], v[2]});
-}
-
-json mat(const Mat3& m) {
-  json rows = json::array();
-  for (int i = 0; i < 3; ++i)
-    rows.push_back(json::array({m(i, 0), m(i, 1), m(i, 2)}));
-  return rows;
-}
-
-/// A finite number, or null (JSON has no NaN or infinity).
-json num(double x) {
-  return std::isfinite(x) ? json(x) : json(nullptr);
-}
-
-json opt(const std::optional<double>& x) {
-  return x ? num(*x) : json(nullptr);
-}
+using detail::json;
+using detail::mat;
+using detail::num;
+using detail::opt;
+using detail::vec;
 
 json state_json(const dynamics::State& s) {
   const Quat q = s.quaternion();
@@ -61,9 +45,9 @@ std::string summary_json(const RunSummary& s) {
   j["torque"] = s.torque;
   j["t_end"] = s.t_end;
   j["sample_dt"] = s.sample_dt;
-  j["status"] = !s.failure.empty() ? "failed" : (r.interrupted ? "interrupted" : "completed");
+  j["status"] = detail::run_status(s.failure, r.interrupted);
   j["interrupted"] = r.interrupted;
-  j["failure"] = s.failure.empty() ? json(nullptr) : json(s.failure);
+  j["failure"] = detail::text_or_null(s.failure);
   j["body"] = {{"description", s.body_description},
                {"principal_moments", vec(s.principal_moments)},
                {"inertia", mat(s.inertia)},
@@ -86,7 +70,7 @@ std::string summary_json(const RunSummary& s) {
           : json(nullptr);
   events["flip_interval_theory"] = opt(s.flip_interval_theory);
   events["period_theory"] = opt(s.period_theory);
-  events["free_body_regime"] = s.free_body_regime.empty() ? json(nullptr) : json(s.free_body_regime);
+  events["free_body_regime"] = detail::text_or_null(s.free_body_regime);
   json top = nullptr;
   if (s.top) {
     const auto& t = *s.top;
@@ -141,8 +125,8 @@ std::string summary_json(const RunSummary& s) {
   j["wall_time_s"] = r.wall_time_s;
   j["steps_per_second"] =
       r.wall_time_s > 0.0 ? num(static_cast<double>(r.steps) / r.wall_time_s) : json(nullptr);
-  j["files"] = {{"trajectory", s.trajectory_file.empty() ? json(nullptr) : json(s.trajectory_file)},
-                {"summary", s.summary_file.empty() ? json(nullptr) : json(s.summary_file)}};
+  j["files"] = {{"trajectory", detail::text_or_null(s.trajectory_file)},
+                {"summary", detail::text_or_null(s.summary_file)}};
   return j.dump(2) + "\n";
 }
 
