@@ -28,8 +28,8 @@ namespace {
 
 /// The JSON text of io/lambda_json.hpp as Python objects: the same keys and values as `poinsot lambda
 /// --json`.
-py::object from_json(const std::string& text) {
-  return py::module_::import("json").attr("loads")(text);
+py::dict from_json(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text).cast<py::dict>();
 }
 
 analysis::ClosedForm closed_form_of(const std::string& name) {
