@@ -9,6 +9,10 @@
 
 #include "poinsot/core/types.hpp"
 
+namespace poinsot::analysis {
+struct LambdaProperties;
+}
+
 namespace poinsot::io::detail {
 
 using json = nlohmann::ordered_json;
@@ -43,5 +47,8 @@ inline json text_or_null(const std::string& s) {
 inline const char* run_status(const std::string& failure, bool interrupted) {
   return !failure.empty() ? "failed" : (interrupted ? "interrupted" : "completed");
 }
+
+/// The properties of Λ along a run (the object of io::lambda_properties_json; lambda_json.cpp).
+json lambda_properties_value(const analysis::LambdaProperties& properties);
 
 }  // namespace poinsot::io::detail

@@ -46,7 +46,9 @@ json closed_form(const analysis::AxisymmetricCheck& c) {
           {"special_cases", special_cases(c.special_cases)}};
 }
 
-json properties(const analysis::LambdaProperties& p) {
+}  // namespace
+
+json detail::lambda_properties_value(const analysis::LambdaProperties& p) {
   json j;
   j["samples"] = p.samples;
   j["t_initial"] = p.t_initial;
@@ -74,8 +76,6 @@ json properties(const analysis::LambdaProperties& p) {
   return j;
 }
 
-}  // namespace
-
 std::string stress_summary_json(const analysis::StressSummary& s) {
   return stress(s).dump(2);
 }
@@ -90,7 +90,7 @@ std::string constraint_stress_json(const analysis::ConstraintStress& c) {
 }
 
 std::string lambda_properties_json(const analysis::LambdaProperties& p) {
-  return properties(p).dump(2);
+  return detail::lambda_properties_value(p).dump(2);
 }
 
 std::string lambda_report_json(const analysis::LambdaReport& r) {
@@ -104,7 +104,7 @@ std::string lambda_report_json(const analysis::LambdaReport& r) {
   j["sample_dt"] = r.sample_dt;
   j["steps"] = r.steps;
   j["volume"] = r.volume_m3;
-  j.update(properties(r.properties));  // its t_initial is the report's
+  j.update(detail::lambda_properties_value(r.properties));  // its t_initial is the report's
   j["invariant_errors"] = {{"energy_rel_max", num(r.invariant_errors.energy_rel_max)},
                            {"L_space_rel_max", num(r.invariant_errors.L_space_rel_max)},
                            {"L_norm_rel_max", num(r.invariant_errors.L_norm_rel_max)},

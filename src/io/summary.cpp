@@ -95,28 +95,12 @@ std::string summary_json(const RunSummary& s) {
   }
   j["events"] = events;
   j["top"] = top;
+  // Λ: the keys of `poinsot lambda --json` (lambda_json.hpp), and Λ(t0) under the name summary.json has
+  // always used.
   json lam = nullptr;
   if (s.lambda) {
-    const auto& p = *s.lambda;
-    lam = {{"lambda_initial_body", mat(p.lambda_initial)},
-           {"eigenvalues_initial", vec(p.eigenvalues_initial)},
-           {"eigenvalues_final", vec(p.eigenvalues_final)},
-           {"eigenvalue_max_variation", num(p.eigenvalue_max_variation)},
-           {"symmetry_error_max", num(p.symmetry_error_max)},
-           {"max_eigenvalue_max", num(p.max_eigenvalue_max)},
-           {"trace_plus_2T_max", num(p.trace_plus_2T_max)},
-           {"stress_integral_initial", mat(p.stress_initial.integral.tensor)},
-           {"closed_form", nullptr}};
-    if (p.closed_form) {
-      const auto& c = *p.closed_form;
-      lam["closed_form"] = {{"A", c.inertia.A},
-                            {"C", c.inertia.C},
-                            {"c1", c.c1},
-                            {"c2", c.c2},
-                            {"Delta", c.Delta},
-                            {"eigenvalues", vec(c.eigenvalues)},
-                            {"max_deviation", num(c.max_deviation)}};
-    }
+    lam = json{{"lambda_initial_body", mat(s.lambda->lambda_initial)}};
+    lam.update(detail::lambda_properties_value(*s.lambda));
   }
   j["lambda"] = lam;
   j["steps"] = r.steps;
