@@ -1,6 +1,7 @@
 // `poinsot lambda`: runs a rigid body and checks the theorems of Vallée & Dumitriu (2002) on the Lagrange
 // multipliers Λ along the run (analysis::analyse_lambda), printing a report or, with --json, one object
-// (keys in docs/lambda.md). The body, initial state, torque and integrator come from a scenario file
+// (io/lambda_json.hpp, keys in docs/lambda.md; the same text Python's poinsot.analysis.lambda_report reads).
+// The body, initial state, torque and integrator come from a scenario file
 // (`poinsot lambda SCENARIO.toml`, docs/scenario.md), or from flags: principal moments or axisymmetric (A, C,
 // k) and --omega0. Explicit --method, --dt, --t-end, --sample-dt override the scenario's values.
 #include <memory>
@@ -10,12 +11,12 @@
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "lambda_json.hpp"
 #include "poinsot/analysis/axisymmetric.hpp"
 #include "poinsot/analysis/lambda_report.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/dynamics/methods.hpp"
+#include "poinsot/io/lambda_json.hpp"
 #include "poinsot/io/scenario.hpp"
 
 namespace poinsot::cli {
@@ -39,26 +40,6 @@ struct LambdaOptions {
 
 Vec3 vec3(const std::vector<double>& v) {
   return Vec3(v[0], v[1], v[2]);
-}
-
-nlohmann::ordered_json vec_json(const Vec3& v) {
-  return nlohmann::ordered_json::array({v[0], v[1], v[2]});
-}
-
-nlohmann::ordered_json mat_json(const Mat3& m) {
-  auto out = nlohmann::ordered_json::array();
-  for (int i = 0; i < 3; ++i)
-    out.push_back(nlohmann::ordered_json::array({m(i, 0), m(i, 1), m(i, 2)}));
-  return out;
-}
-
-nlohmann::ordered_json stress_json(const analysis::StressSummary& s) {
-  nlohmann::ordered_json j;
-  j["tensor"] = mat_json(s.tensor);
-  j["principal"] = vec_json(s.principal);
-  j["tresca"] = s.tresca;
-  j["von_mises"] = s.von_mises;
-  return j;
 }
 
 dynamics::RigidBody make_body(const LambdaOptions& o) {
@@ -91,12 +72,9 @@ analysis::LambdaReport run_scenario(const LambdaOptions& o) {
   io::Scenario sc = io::load_scenario(o.scenario);
   io::ScenarioOverrides ov;
   if (o.has_method) ov.method = o.method;
-  ov.has_dt = o.has_dt;
-  ov.dt = o.dt;
-  ov.has_t_end = o.has_t_end;
-  ov.t_end = o.t_end;
-  ov.has_sample_dt = o.has_sample_dt;
-  ov.sample_dt = o.sample_dt;
+  if (o.has_dt) ov.dt = o.dt;
+  if (o.has_t_end) ov.t_end = o.t_end;
+  if (o.has_sample_dt) ov.sample_dt = o.sample_dt;
   io::apply_overrides(sc, ov);
   analysis::LambdaAnalysisOptions a;
   a.method = sc.method;
@@ -127,81 +105,13 @@ analysis::LambdaReport run_flags(const LambdaOptions& o) {
 void run(const LambdaOptions& o) {
   const analysis::LambdaReport report = o.scenario.empty() ? run_flags(o) : run_scenario(o);
   if (o.json) {
-    fmt::print("{}\n", lambda_report_json(report).dump(2));
+    fmt::print("{}\n", io::lambda_report_json(report));
   } else {
     fmt::print("{}", analysis::format_lambda_report(report));
   }
 }
 
 }  // namespace
-
-nlohmann::ordered_json lambda_report_json(const analysis::LambdaReport& r) {
-  const analysis::LambdaProperties& p = r.properties;
-  nlohmann::ordered_json j;
-  j["eigenvalues_initial"] = vec_json(p.eigenvalues_initial);
-  j["eigenvalues_final"] = vec_json(p.eigenvalues_final);
-  j["eigenvalue_max_variation"] = p.eigenvalue_max_variation;
-  j["symmetry_error_max"] = p.symmetry_error_max;
-  j["max_eigenvalue_max"] = p.max_eigenvalue_max;
-  j["trace_plus_2T_max"] = p.trace_plus_2T_max;
-  j["stress_integral_initial"] = mat_json(p.stress_initial.integral.tensor);
-  if (p.closed_form) {
-    const analysis::AxisymmetricCheck& c = *p.closed_form;
-    nlohmann::ordered_json cf;
-    cf["c1"] = c.c1;
-    cf["c2"] = c.c2;
-    cf["Delta"] = c.Delta;
-    cf["eigenvalues"] = vec_json(c.eigenvalues);
-    cf["max_deviation"] = c.max_deviation;
-    cf["A"] = c.inertia.A;
-    cf["C"] = c.inertia.C;
-    cf["k"] = vec_json(c.inertia.k);
-    cf["mu"] = c.mu;
-    cf["r"] = c.r;
-    cf["lambda1"] = c.lambda123[0];
-    cf["lambda2"] = c.lambda123[1];
-    cf["lambda3"] = c.lambda123[2];
-    cf["eigenvector_residual_max"] = c.eigenvector_residual_max;
-    cf["constant_matrix_deviation_max"] = c.constant_matrix_deviation_max;
-    const analysis::AxisymmetricSpecialCases& sc = c.special_cases;
-    cf["special_cases"] = {{"ball", sc.ball},
-                           {"flat", sc.flat},
-                           {"axial_spin", sc.axial_spin},
-                           {"equatorial_spin", sc.equatorial_spin},
-                           {"zero_discriminant", sc.zero_discriminant},
-                           {"zero_velocity", sc.zero_velocity}};
-    j["closed_form"] = cf;
-  } else {
-    j["closed_form"] = nullptr;
-  }
-  j["method"] = r.method;
-  j["torque"] = r.torque;
-  j["principal_moments"] = vec_json(r.principal_moments);
-  j["t_initial"] = r.t_initial;
-  j["t_end"] = r.t_end;
-  j["dt"] = r.dt;
-  j["sample_dt"] = r.sample_dt;
-  j["samples"] = p.samples;
-  j["steps"] = r.steps;
-  j["lambda_initial"] = mat_json(p.lambda_initial);
-  j["lambda_final"] = mat_json(p.lambda_final);
-  j["lambda_scale"] = p.lambda_scale;
-  if (p.has_integrator_multiplier) {
-    j["integrator_multiplier"] = {{"deviation_max", p.integrator_multiplier_deviation_max},
-                                  {"symmetry_error_max", p.integrator_multiplier_symmetry_error_max}};
-  } else {
-    j["integrator_multiplier"] = nullptr;
-  }
-  j["stress_initial"] = stress_json(p.stress_initial.integral);
-  j["volume"] = r.volume_m3;
-  j["mean_stress_initial"] = p.stress_initial.has_mean ? stress_json(p.stress_initial.mean) : nullptr;
-  j["von_mises_max"] = p.von_mises_max;
-  j["invariant_errors"] = {{"energy_rel_max", r.invariant_errors.energy_rel_max},
-                           {"L_space_rel_max", r.invariant_errors.L_space_rel_max},
-                           {"L_norm_rel_max", r.invariant_errors.L_norm_rel_max},
-                           {"orthogonality_max", r.invariant_errors.orthogonality_max}};
-  return j;
-}
 
 void register_lambda(CLI::App& app) {
   auto opts = std::make_shared<LambdaOptions>();

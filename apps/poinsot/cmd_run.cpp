@@ -12,19 +12,18 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <variant>
 #include <vector>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
-#include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/methods.hpp"
+#include "poinsot/io/multibody_run.hpp"
+#include "poinsot/io/multibody_scenario.hpp"
 #include "poinsot/io/report.hpp"
 #include "poinsot/io/run.hpp"
 #include "poinsot/io/scenario.hpp"
@@ -185,110 +184,73 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
   }
 }
 
-/// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): its method (multibody/methods.hpp;
-/// `[simulation] method` or --method) on the constrained system, the trajectory of every body in
-/// trajectory.csv, the energy, momenta and constraint violation at the same rows in diagnostics.csv, the
-/// report (energy, constraint violation, reactions, each body's Λ) on stdout and in report.txt, summary.json,
-/// and with --plot the figures paths.png, energy.png and constraints.png.
-void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
-  if (!o.method.empty()) {
-    mb.method = multibody::parse_multibody_method(o.method, "--method");
-    mb.order = multibody::order_for_method(mb.method, mb.order);
+/// Runs `run(options)` with the progress bar and the SIGINT/SIGTERM handlers: a signal makes
+/// options.stop_requested true, and the run stops at its next sample (io/run.hpp, io/multibody_run.hpp).
+template <class Options, class Run>
+auto run_guarded(const RunCliOptions& o, double t_end, Options& options, Run&& run) {
+  Progress progress(!o.quiet, t_end);
+  options.stop_requested = [] { return g_signal != 0; };
+  options.on_sample = [&progress](double t) { progress.update(t); };
+  SignalGuard guard;
+  try {
+    auto summary = run(options);
+    progress.finish();
+    return summary;
+  } catch (...) {
+    progress.finish();
+    throw;
   }
-  if (o.dt_opt->count() > 0) {
-    require_positive("--dt", o.dt, "s");
-    mb.dt = o.dt;
-  }
-  if (o.t_end_opt->count() > 0) {
-    require_positive("--t-end", o.t_end, "s");
-    mb.duration = o.t_end;
-  }
-  if (o.sample_dt_opt->count() > 0) {
-    require_positive("--sample-dt", o.sample_dt, "s");
-    mb.output_every = std::max(1, static_cast<int>(std::lround(o.sample_dt / mb.dt)));
-  }
-  const std::string dir = o.out.empty() ? std::filesystem::path(o.scenario).stem().string() + "-run" : o.out;
-  io::prepare_output_dir(dir);  // before anything is simulated
-  std::ostringstream report;
-  const multibody::RunSummary s =
-      multibody::run_scenario(mb, &report, dir + "/trajectory.csv", dir + "/diagnostics.csv");
-  io::write_file_atomic(dir + "/report.txt", report.str());
-  nlohmann::ordered_json j;
-  j["scenario"] = o.scenario;
-  j["kind"] = "multibody";
-  j["bodies"] = mb.system.body_count();
-  j["steps"] = s.steps;
-  j["dt"] = mb.dt;
-  j["t_end"] = mb.duration;
-  j["energy_initial"] = s.energy_initial;
-  j["energy_final"] = s.energy_final;
-  j["energy_abs_error_max"] = s.max_energy_error;
-  j["joint_gap_max"] = s.max_joint_gap;
-  j["joint_angle_error_max"] = s.max_joint_angle;
-  j["orthogonality_error_max"] = s.max_orthogonality;
-  j["newton_iterations_mean"] = s.mean_newton_iterations;
-  j["newton_iterations_max"] = s.max_newton_iterations;
-  j["method"] = multibody::multibody_method_name(mb.method);  // rattle or rk4
-  j["order"] = mb.order;
-  j["solver"] = multibody::kkt_method_name(s.kkt_method);  // ball_chain, tree or sparse_lu
-  j["cpu_seconds_per_step"] = s.cpu_seconds_per_step;
-  const std::string summary = j.dump(2) + "\n";
-  io::write_file_atomic(dir + "/summary.json", summary);
-  fmt::print("{}", o.json ? summary : report.str());
-  if (o.plot) make_plots(dir, o.json);  // paths.png, energy.png, constraints.png
 }
 
-void run(RunCliOptions& o) {
-  io::AnyScenario any = io::load_any_scenario(o.scenario);  // the file is parsed once, either kind
-  if (auto* mb = std::get_if<multibody::Scenario>(&any)) {
-    run_multibody(o, std::move(*mb));
-    return;
-  }
-  io::Scenario& sc = std::get<io::Scenario>(any);
-  io::ScenarioOverrides ov;
-  ov.method = o.method;
-  ov.has_dt = o.dt_opt->count() > 0;
-  ov.dt = o.dt;
-  ov.has_t_end = o.t_end_opt->count() > 0;
-  ov.t_end = o.t_end;
-  ov.has_sample_dt = o.sample_dt_opt->count() > 0;
-  ov.sample_dt = o.sample_dt;
-  ov.out_dir = o.out;
-  io::apply_overrides(sc, ov);
-  const std::string dir = sc.out_dir.empty() ? sc.name + "-run" : sc.out_dir;
-  io::prepare_output_dir(dir);  // before anything is simulated
-
-  Progress progress(!o.quiet, sc.simulation.t_end);
-  io::RunOptions ro;
-  ro.out_dir = dir;
-  ro.stop_requested = [] { return g_signal != 0; };
-  ro.on_sample = [&progress](double t) { progress.update(t); };
-  io::RunSummary summary = [&] {
-    SignalGuard guard;
-    try {
-      auto s = io::run_scenario(sc, ro);
-      progress.finish();
-      return s;
-    } catch (...) {
-      progress.finish();
-      throw;
-    }
-  }();
-  if (o.json) {
-    fmt::print("{}", io::summary_json(summary));
-  } else {
-    fmt::print("{}", io::format_report(summary));
-  }
+/// Prints what io/ produced (summary.json with --json, else the report); after a signal, says so and exits
+/// with 128 + the signal's number; else draws the plots with --plot.
+void finish(const RunCliOptions& o, const std::string& dir, const std::string& json,
+            const std::string& report, double t_final) {
+  fmt::print("{}", o.json ? json : report);
   std::fflush(stdout);
   if (g_signal != 0) {
     fmt::print(stderr, "poinsot: interrupted by signal {} at t = {} s; the files are complete up to there\n",
-               static_cast<int>(g_signal), summary.result.final_state.t);
+               static_cast<int>(g_signal), t_final);
     std::fflush(stderr);
     std::exit(128 + g_signal);
   }
-  if (o.plot) {
-    make_plots(dir, o.json);
+  if (o.plot) make_plots(dir, o.json);
+}
+
+/// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE or the projected RK4 on the
+/// constrained system, its files (io/multibody_run.hpp) and with --plot the figures paths.png, energy.png and
+/// constraints.png.
+void run_multibody(const RunCliOptions& o, const io::ScenarioOverrides& ov, multibody::Scenario mb) {
+  io::apply_overrides(mb, ov);
+  io::MultibodyRunOptions ro;
+  ro.out_dir = o.out.empty() ? std::filesystem::path(o.scenario).stem().string() + "-run" : o.out;
+  const io::MultibodyRunSummary s = run_guarded(o, mb.duration, ro, [&](const io::MultibodyRunOptions& r) {
+    return io::run_multibody_scenario(mb, r);
+  });
+  finish(o, ro.out_dir, io::multibody_summary_json(mb, s), io::format_multibody_report(mb, s),
+         s.run.final_state.time);
+}
+
+void run(RunCliOptions& o) {
+  io::ScenarioOverrides ov;
+  ov.method = o.method;
+  if (o.dt_opt->count() > 0) ov.dt = o.dt;
+  if (o.t_end_opt->count() > 0) ov.t_end = o.t_end;
+  if (o.sample_dt_opt->count() > 0) ov.sample_dt = o.sample_dt;
+  ov.out_dir = o.out;
+  io::AnyScenario any = io::load_any_scenario(o.scenario);  // the file is parsed once, either kind
+  if (auto* mb = std::get_if<multibody::Scenario>(&any)) {
+    run_multibody(o, ov, std::move(*mb));
+    return;
   }
+  io::Scenario& sc = std::get<io::Scenario>(any);
+  io::apply_overrides(sc, ov);
+  io::RunOptions ro;
+  ro.out_dir = sc.out_dir.empty() ? sc.name + "-run" : sc.out_dir;
+  io::prepare_output_dir(ro.out_dir);  // before anything is simulated
+  const io::RunSummary s = run_guarded(o, sc.simulation.t_end, ro,
+                                       [&](const io::RunOptions& r) { return io::run_scenario(sc, r); });
+  finish(o, ro.out_dir, io::summary_json(s), io::format_report(s), s.result.final_state.t);
 }
 
 }  // namespace

@@ -245,23 +245,31 @@ class RunResult:
 def run(scenario: Any, out_dir: str | os.PathLike | None = None, *, method: str | None = None,
         dt: float | None = None, t_end: float | None = None, sample_dt: float | None = None,
         plot: bool = False) -> RunResult:
-    """Runs a scenario as ``poinsot run SCENARIO [--out DIR] [--method ...]`` does: the same summary (the
-    dict of summary.json) and text report, and with ``out_dir`` the files trajectory.csv and summary.json
-    (for ``poinsot.plot``; ``plot=True`` draws the figures there, as ``--plot`` does, and lists them in
-    ``figures``). ``scenario``: a path, a dict with the file's layout, or a poinsot.Scenario."""
+    """Runs a scenario as ``poinsot run SCENARIO [--out DIR] [--method ...]`` does, through the same engine
+    (io/run.hpp, io/multibody_run.hpp): the same summary (the dict of summary.json) and text report, and with
+    ``out_dir`` the same files (for ``poinsot.plot``; ``plot=True`` draws the figures there, as ``--plot`` does,
+    and lists them in ``figures``). ``scenario``: a path (a single-body or a multibody file), a dict with the
+    single-body file's layout, a poinsot.Scenario or a poinsot.multibody.Scenario."""
     import json
 
     if isinstance(scenario, Mapping):
         scenario = _core.parse_scenario(scenario_toml(scenario), "<dict>", os.getcwd())
     elif isinstance(scenario, (str, os.PathLike)):
-        scenario = _core.load_scenario(os.fspath(scenario))
-    if not isinstance(scenario, _core.Scenario):
-        raise TypeError(f"scenario: expected a path, a dict or a poinsot.Scenario, got {type(scenario).__name__}")
-    scenario = scenario.with_overrides(method=method or "", dt=dt, t_end=t_end, sample_dt=sample_dt)
+        path = os.fspath(scenario)
+        multibody = _core.multibody.is_multibody_scenario(path)
+        scenario = (_core.multibody.load_scenario if multibody else _core.load_scenario)(path)
     folder = os.fspath(out_dir) if out_dir is not None else ""
     if plot and not folder:
         raise ValueError("plot: the figures are drawn from the run's files; expected an out_dir")
-    text, report = _core._run_scenario(scenario, folder)
+    if isinstance(scenario, _core.multibody.Scenario):
+        text, report = _core._run_multibody_scenario(scenario, folder, method=method or "", dt=dt, t_end=t_end,
+                                                     sample_dt=sample_dt)
+    elif isinstance(scenario, _core.Scenario):
+        scenario = scenario.with_overrides(method=method or "", dt=dt, t_end=t_end, sample_dt=sample_dt)
+        text, report = _core._run_scenario(scenario, folder)
+    else:
+        raise TypeError("scenario: expected a path, a dict, a poinsot.Scenario or a poinsot.multibody.Scenario, "
+                        f"got {type(scenario).__name__}")
     figures = []
     if plot:
         from . import plot as plotting

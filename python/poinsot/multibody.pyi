@@ -126,6 +126,10 @@ class RunSummary:
     @property
     def energy_initial(self) -> float: ...
     @property
+    def final_state(self) -> State: ...
+    @property
+    def interrupted(self) -> bool: ...
+    @property
     def max_energy_error(self) -> float: ...
     @property
     def max_joint_angle(self) -> float: ...
@@ -143,7 +147,7 @@ class RunSummary:
     def tree_solver(self) -> bool: ...
 
 class Scenario:
-    """A multibody scenario (a System, its initial State, the step and the output rate) and the driver that runs it: the multibody half of `poinsot run`."""
+    """A multibody scenario (a System, its initial State, the step and the output rate) and the loop that runs it, handing every output row to an observer."""
     @property
     def body_descriptions(self) -> List[str]: ...
     @body_descriptions.setter
@@ -290,8 +294,8 @@ def potential_energy(system: System, state: State) -> float:
 def project_velocities(system: System, state: State) -> None:
     """Projects every body's velocity onto the joint constraints, G v = 0, minimising the change of kinetic energy (one KKT solve, kkt_solver.hpp)."""
 
-def run_scenario(scenario: Scenario, trajectory_csv: str = ..., report: object = ..., diagnostics_csv: str = ...) -> RunSummary:
-    """Integrates the scenario with its method (RATTLE, rattle.hpp, or the projected RK4, projected_rk4.hpp)."""
+def run_scenario(scenario: Scenario, trajectory_csv: str = ..., report: object = ..., diagnostics_csv: str = ..., out_dir: str = ...) -> RunSummary:
+    """Runs the scenario into the files of `options` (see the file comment): every file of the run folder `out_dir` (none when empty), the trajectory and diagnostics CSV at `trajectory_csv` and `diagnostics_csv` when given (with or without a folder)."""
 
 def total_energy(system: System, state: State) -> float:
     """kinetic_energy + potential_energy (loads.hpp), J."""

@@ -17,6 +17,7 @@
 #include "poinsot/analysis/lambda_tracker.hpp"
 #include "poinsot/analysis/multipliers.hpp"
 #include "poinsot/analysis/stress.hpp"
+#include "poinsot/io/lambda_json.hpp"
 
 namespace poinsot::python {
 
@@ -25,78 +26,10 @@ using dynamics::State;
 
 namespace {
 
-py::dict stress_dict(const analysis::StressSummary& s) {
-  py::dict d;
-  d["tensor"] = from_mat3(s.tensor);
-  d["principal"] = from_vec3(s.principal);
-  d["principal_axes"] = from_mat3(s.principal_axes);
-  d["tresca"] = s.tresca;
-  d["von_mises"] = s.von_mises;
-  d["trace"] = s.trace;
-  return d;
-}
-
-py::dict constraint_stress_dict(const analysis::ConstraintStress& c) {
-  py::dict d;
-  d["integral"] = stress_dict(c.integral);
-  d["mean"] = c.has_mean ? py::object(stress_dict(c.mean)) : py::object(py::none());
-  return d;
-}
-
-py::dict special_cases_dict(const analysis::AxisymmetricSpecialCases& s) {
-  py::dict d;
-  d["ball"] = s.ball;
-  d["flat"] = s.flat;
-  d["axial_spin"] = s.axial_spin;
-  d["equatorial_spin"] = s.equatorial_spin;
-  d["zero_discriminant"] = s.zero_discriminant;
-  d["zero_velocity"] = s.zero_velocity;
-  return d;
-}
-
-py::dict properties_dict(const analysis::LambdaProperties& p) {
-  py::dict d;
-  d["samples"] = p.samples;
-  d["t_initial"] = p.t_initial;
-  d["t_final"] = p.t_final;
-  d["torque_free"] = p.torque_free;
-  d["lambda_initial"] = from_mat3(p.lambda_initial);
-  d["lambda_final"] = from_mat3(p.lambda_final);
-  d["eigenvalues_initial"] = from_vec3(p.eigenvalues_initial);
-  d["eigenvalues_final"] = from_vec3(p.eigenvalues_final);
-  d["lambda_scale"] = p.lambda_scale;
-  d["eigenvalue_max_variation"] = p.eigenvalue_max_variation;
-  d["symmetry_error_max"] = p.symmetry_error_max;
-  d["max_eigenvalue_max"] = p.max_eigenvalue_max;
-  d["trace_plus_2T_max"] = p.trace_plus_2T_max;
-  d["stress_initial"] = constraint_stress_dict(p.stress_initial);
-  d["von_mises_max"] = p.von_mises_max;
-  d["has_integrator_multiplier"] = p.has_integrator_multiplier;
-  d["integrator_multiplier_deviation_max"] = p.integrator_multiplier_deviation_max;
-  d["integrator_multiplier_symmetry_error_max"] = p.integrator_multiplier_symmetry_error_max;
-  if (p.closed_form) {
-    const auto& c = *p.closed_form;
-    py::dict cf;
-    cf["A"] = c.inertia.A;
-    cf["C"] = c.inertia.C;
-    cf["k"] = from_vec3(c.inertia.k);
-    cf["mu"] = c.mu;
-    cf["r"] = c.r;
-    cf["c1"] = c.c1;
-    cf["c2"] = c.c2;
-    cf["Delta"] = c.Delta;
-    cf["lambda123"] = from_vec3(c.lambda123);
-    cf["eigenvalues"] = from_vec3(c.eigenvalues);
-    cf["constant_matrix"] = from_mat3(c.constant_matrix);
-    cf["special_cases"] = special_cases_dict(c.special_cases);
-    cf["max_deviation"] = c.max_deviation;
-    cf["eigenvector_residual_max"] = c.eigenvector_residual_max;
-    cf["constant_matrix_deviation_max"] = c.constant_matrix_deviation_max;
-    d["closed_form"] = cf;
-  } else {
-    d["closed_form"] = py::none();
-  }
-  return d;
+/// The JSON text of io/lambda_json.hpp as Python objects: the same keys and values as `poinsot lambda
+/// --json`.
+py::dict from_json(const std::string& text) {
+  return py::module_::import("json").attr("loads")(text).cast<py::dict>();
 }
 
 analysis::ClosedForm closed_form_of(const std::string& name) {
@@ -231,17 +164,19 @@ void bind_analysis(py::module_& parent) {
       POINSOT_DOC(analysis_steady_spin_stress_integral_body));
   m.def(
       "summarize_stress",
-      [](ArrayLike T) { return stress_dict(analysis::summarize_stress(to_mat3(T, "tensor"))); },
+      [](ArrayLike T) {
+        return from_json(io::stress_summary_json(analysis::summarize_stress(to_mat3(T, "tensor"))));
+      },
       py::arg("tensor"),
       (std::string(POINSOT_DOC(analysis_StressSummary)) +
-       "\n\nReturns a dict: tensor, principal (ascending), principal_axes (columns), tresca, von_mises, "
-       "trace.")
+       "\n\nReturns a dict (io/lambda_json.hpp): tensor, principal (ascending), principal_axes (columns), "
+       "tresca, von_mises, trace; arrays as lists.")
           .c_str());
   m.def(
       "constraint_stress",
       [](ArrayLike L, ArrayLike R, double volume) {
-        return constraint_stress_dict(
-            analysis::constraint_stress(to_mat3(L, "lambda_body"), to_mat3(R, "R"), volume));
+        return from_json(io::constraint_stress_json(
+            analysis::constraint_stress(to_mat3(L, "lambda_body"), to_mat3(R, "R"), volume)));
       },
       py::arg("lambda_body"), py::arg("R"), py::arg("volume_m3") = 0.0,
       (std::string(POINSOT_DOC(analysis_constraint_stress)) +
@@ -293,7 +228,7 @@ void bind_analysis(py::module_& parent) {
           "eigenvalues", [](const AL& a) { return from_vec3(a.eigenvalues_sorted()); },
           POINSOT_DOC(analysis_AxisymmetricLambda_eigenvalues_sorted))
       .def_property_readonly(
-          "special_cases", [](const AL& a) { return special_cases_dict(a.special_cases()); },
+          "special_cases", [](const AL& a) { return from_json(io::special_cases_json(a.special_cases())); },
           POINSOT_DOC(analysis_AxisymmetricSpecialCases))
       .def_property_readonly("precession_rate", &AL::precession_rate,
                              POINSOT_DOC(analysis_AxisymmetricLambda_precession_rate))
@@ -327,14 +262,15 @@ void bind_analysis(py::module_& parent) {
         analysis::LambdaTracker tracker(body, tm, tr.state(0), o);
         for (py::ssize_t i = 1; i < tr.n; ++i)
           tracker.observe(tr.state(i));
-        return properties_dict(tracker.properties());
+        return from_json(io::lambda_properties_json(tracker.properties()));
       },
       py::arg("body"), py::arg("t"), py::arg("R"), py::arg("omega_body"), py::arg("torque") = py::none(),
       py::arg("volume_m3") = 0.0, py::arg("axisymmetry_tolerance") = 1e-12,
       (std::string("The properties of Λ checked along a sampled trajectory (t (n,), R (n, 3, 3), omega_body "
-                   "(n, 3)), as a dict with the keys of LambdaProperties (closed_form: a dict for an "
-                   "axisymmetric torque-free body, else None).\n\n") +
-       POINSOT_DOC(file_analysis_lambda_tracker))
+                   "(n, 3)), as a dict (arrays as lists) with the keys of `poinsot lambda --json` that "
+                   "describe the trajectory (closed_form: a dict for an axisymmetric torque-free body, else "
+                   "None):\n\n") +
+       POINSOT_DOC(io_lambda_properties_json) + "\n\n" + POINSOT_DOC(file_analysis_lambda_tracker))
           .c_str());
 
   m.def(
@@ -353,24 +289,7 @@ void bind_analysis(py::module_& parent) {
         o.volume_m3 = volume;
         o.axisymmetry_tolerance = axisymmetry_tolerance;
         const auto r = analysis::analyse_lambda(body, initial, o);  // with the GIL: a Python torque may run
-        py::dict d;
-        d["method"] = r.method;
-        d["torque"] = r.torque;
-        d["principal_moments"] = from_vec3(r.principal_moments);
-        d["t_initial"] = r.t_initial;
-        d["t_end"] = r.t_end;
-        d["sample_dt"] = r.sample_dt;
-        d["dt"] = r.dt;
-        d["volume_m3"] = r.volume_m3;
-        d["properties"] = properties_dict(r.properties);
-        d["steps"] = r.steps;
-        py::dict errors;
-        errors["energy_rel_max"] = r.invariant_errors.energy_rel_max;
-        errors["L_space_rel_max"] = r.invariant_errors.L_space_rel_max;
-        errors["L_norm_rel_max"] = r.invariant_errors.L_norm_rel_max;
-        errors["orthogonality_max"] = r.invariant_errors.orthogonality_max;
-        d["errors"] = errors;
-        d["wall_time_s"] = r.wall_time_s;
+        py::dict d = from_json(io::lambda_report_json(r));
         d["text"] = analysis::format_lambda_report(r);
         return d;
       },
@@ -381,11 +300,9 @@ void bind_analysis(py::module_& parent) {
       py::arg("sample_dt") = 0.01, py::arg("torque") = py::none(), py::arg("volume_m3") = 0.0,
       py::arg("axisymmetry_tolerance") = 1e-12,
       (std::string(POINSOT_DOC(analysis_analyse_lambda)) +
-       "\n\nThe engine of `poinsot lambda`. Returns a dict: method, torque, principal_moments, t_initial, "
-       "t_end, "
-       "sample_dt, dt, volume_m3, properties (as lambda_properties), steps, errors, wall_time_s, text (the "
-       "report).\n\n" +
-       POINSOT_DOC(file_analysis_lambda_report))
+       "\n\nThe engine of `poinsot lambda`. Returns the dict of `poinsot lambda --json` (the same JSON "
+       "text, arrays as lists) and `text`, the report it prints without --json:\n\n" +
+       POINSOT_DOC(io_lambda_report_json) + "\n\n" + POINSOT_DOC(file_analysis_lambda_report))
           .c_str());
 }
 

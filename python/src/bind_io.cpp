@@ -7,6 +7,8 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "docstrings.hpp"
+#include "poinsot/io/multibody_run.hpp"
+#include "poinsot/io/multibody_scenario.hpp"
 #include "poinsot/io/report.hpp"
 #include "poinsot/io/run.hpp"
 #include "poinsot/io/scenario.hpp"
@@ -15,6 +17,21 @@
 namespace poinsot::python {
 
 using io::Scenario;
+
+namespace {
+
+/// The keyword arguments of with_overrides and _run_multibody_scenario (None: unset), as the command line's.
+io::ScenarioOverrides overrides_of(const std::string& method, const py::object& dt, const py::object& t_end,
+                                   const py::object& sample_dt) {
+  io::ScenarioOverrides o;
+  o.method = method;
+  if (!dt.is_none()) o.dt = dt.cast<double>();
+  if (!t_end.is_none()) o.t_end = t_end.cast<double>();
+  if (!sample_dt.is_none()) o.sample_dt = sample_dt.cast<double>();
+  return o;
+}
+
+}  // namespace
 
 void bind_io(py::module_& m) {
   py::class_<Scenario>(m, "Scenario", POINSOT_DOC(file_io_scenario))
@@ -62,11 +79,7 @@ void bind_io(py::module_& m) {
           [](const Scenario& s, const std::string& method, py::object dt, py::object t_end,
              py::object sample_dt, const std::string& out_dir) {
             Scenario copy = s;
-            io::ScenarioOverrides o;
-            o.method = method;
-            if (!dt.is_none()) o.dt = dt.cast<double>(), o.has_dt = true;
-            if (!t_end.is_none()) o.t_end = t_end.cast<double>(), o.has_t_end = true;
-            if (!sample_dt.is_none()) o.sample_dt = sample_dt.cast<double>(), o.has_sample_dt = true;
+            io::ScenarioOverrides o = overrides_of(method, dt, t_end, sample_dt);
             o.out_dir = out_dir;
             io::apply_overrides(copy, o);
             return copy;
@@ -105,6 +118,27 @@ void bind_io(py::module_& m) {
       },
       py::arg("scenario"), py::arg("out_dir"),
       (std::string(POINSOT_DOC(io_run_scenario)) + "\n\n" + POINSOT_DOC(file_io_run)).c_str());
+
+  m.def(
+      "_run_multibody_scenario",
+      [](const multibody::Scenario& s, const std::string& out_dir, const std::string& method,
+         const py::object& dt, const py::object& t_end, const py::object& sample_dt) {
+        multibody::Scenario sc = s;
+        io::apply_overrides(sc, overrides_of(method, dt, t_end, sample_dt));
+        io::MultibodyRunOptions o;
+        o.out_dir = out_dir;
+        io::MultibodyRunSummary summary;
+        {
+          py::gil_scoped_release release;
+          summary = io::run_multibody_scenario(sc, o);
+        }
+        return py::make_tuple(io::multibody_summary_json(sc, summary),
+                              io::format_multibody_report(sc, summary));
+      },
+      py::arg("scenario"), py::arg("out_dir"), py::kw_only(), py::arg("method") = "",
+      py::arg("dt") = py::none(), py::arg("t_end") = py::none(), py::arg("sample_dt") = py::none(),
+      (std::string(POINSOT_DOC(io_run_multibody_scenario)) + "\n\n" + POINSOT_DOC(file_io_multibody_run))
+          .c_str());
 }
 
 }  // namespace poinsot::python

@@ -15,6 +15,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/inertia/mass_properties.hpp"
+#include "poinsot/io/multibody_run.hpp"
 #include "poinsot/io/multibody_scenario.hpp"
 #include "poinsot/io/scenario_file.hpp"
 #include "poinsot/multibody/loads.hpp"
@@ -535,6 +536,10 @@ void bind_scenario(py::module_& m) {
       .def_readonly("max_newton_iterations", &mb::RunSummary::max_newton_iterations)
       .def_readonly("tree_solver", &mb::RunSummary::tree_solver)
       .def_readonly("cpu_seconds_per_step", &mb::RunSummary::cpu_seconds_per_step)
+      .def_readonly("interrupted", &mb::RunSummary::interrupted,
+                    POINSOT_DOC(multibody_RunSummary_interrupted))
+      .def_readonly("final_state", &mb::RunSummary::final_state,
+                    POINSOT_DOC(multibody_RunSummary_final_state))
       .def("__repr__", [](const mb::RunSummary& r) {
         return "RunSummary(steps=" + std::to_string(r.steps) +
                ", max_energy_error=" + format_number(r.max_energy_error) +
@@ -544,18 +549,21 @@ void bind_scenario(py::module_& m) {
   m.def(
       "run_scenario",
       [](const mb::Scenario& sc, const std::string& trajectory_csv, const py::object& report,
-         const std::string& diagnostics_csv) {
-        std::ostringstream text;
-        mb::RunSummary summary;
+         const std::string& diagnostics_csv, const std::string& out_dir) {
+        io::MultibodyRunOptions options;
+        options.out_dir = out_dir;
+        options.trajectory_csv = trajectory_csv;
+        options.diagnostics_csv = diagnostics_csv;
+        io::MultibodyRunSummary summary;
         {
           py::gil_scoped_release release;
-          summary = mb::run_scenario(sc, report.is_none() ? nullptr : &text, trajectory_csv, diagnostics_csv);
+          summary = io::run_multibody_scenario(sc, options);
         }
-        if (!report.is_none()) report.attr("write")(text.str());
-        return summary;
+        if (!report.is_none()) report.attr("write")(io::format_multibody_report(sc, summary));
+        return summary.run;
       },
       py::arg("scenario"), py::arg("trajectory_csv") = "", py::arg("report") = py::none(),
-      py::arg("diagnostics_csv") = "", POINSOT_DOC(multibody_run_scenario));
+      py::arg("diagnostics_csv") = "", py::arg("out_dir") = "", POINSOT_DOC(io_run_multibody_scenario));
 }
 
 }  // namespace

@@ -81,13 +81,38 @@ def test_lambda_report_is_the_engine_of_poinsot_lambda():
     body = RigidBody.from_principal_moments([1.0, 1.0, 1.6])
     rep = analysis.lambda_report(body, State(omega_body=[0.4, -0.3, 2.0]), method="dop853", t_end=5.0,
                                  sample_dt=0.1)
-    props = rep["properties"]
-    assert rep["method"] == "dop853" and props["samples"] == 51
-    assert props["closed_form"]["max_deviation"] < 1e-9 and "Λ" in rep["text"]
+    assert rep["method"] == "dop853" and rep["samples"] == 51
+    assert rep["closed_form"]["max_deviation"] < 1e-9 and "Λ" in rep["text"]
     # with a Python torque (the GIL is held during the run)
     rep = analysis.lambda_report(body, State(omega_body=[0.4, -0.3, 2.0]), method="rk4", dt=1e-3, t_end=0.5,
                                  torque=lambda t, R, w: np.array([0.0, 0.0, 0.01]))
-    assert rep["properties"]["closed_form"] is None and not rep["properties"]["torque_free"]
+    assert rep["closed_form"] is None and not rep["torque_free"]
+
+
+@pytest.mark.parametrize("moments, method", [([1.0, 1.0, 1.6], "rattle"), ([2.0, 3.0, 4.0], "rk4")])
+def test_lambda_report_has_the_keys_and_values_of_the_command_line(cli_exe, moments, method):
+    """`poinsot lambda --json` and analysis.lambda_report are one serialiser (io/lambda_json.hpp): the same
+    keys and the same values, bit for bit (the run is deterministic, and JSON round-trips doubles); the
+    Python dict adds only `text`, the report the command prints without --json."""
+    import json
+    import subprocess
+
+    w0 = [0.4, -0.3, 2.0]
+    r = subprocess.run([cli_exe, "lambda", "--moments", *map(str, moments), "--omega0", *map(str, w0), "--method",
+                        method, "--dt", "1e-3", "--t-end", "0.5", "--sample-dt", "0.05", "--json"],
+                       capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    cli = json.loads(r.stdout)
+    rep = analysis.lambda_report(RigidBody.from_principal_moments(moments), State(omega_body=w0), method=method,
+                                 dt=1e-3, t_end=0.5, sample_dt=0.05)
+    text = rep.pop("text")
+    assert rep == cli
+    assert (cli["closed_form"] is not None) == (moments[0] == moments[1])
+    assert (cli["integrator_multiplier"] is not None) == (method == "rattle")
+    assert "Λ" in text
+    # lambda_properties gives the same keys for the properties of a trajectory.
+    props = analysis.lambda_properties(RigidBody.from_principal_moments(moments), [0.0], [np.eye(3)], [w0])
+    assert set(props) <= set(cli) and {"samples", "eigenvalues_initial", "closed_form"} <= set(props)
 
 
 def test_result_lambda_uses_the_runs_torque():

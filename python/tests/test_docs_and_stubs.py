@@ -47,7 +47,7 @@ def body_of(doc):
     (lambda: poinsot.multibody.System.add_hinge, "multibody_System_add_hinge"),
     (lambda: poinsot.multibody.Rattle.step, "multibody_Rattle_step"),
     (lambda: poinsot.multibody.ProjectedRk4.step, "multibody_ProjectedRk4_step"),
-    (lambda: poinsot.multibody.run_scenario, "multibody_run_scenario"),
+    (lambda: poinsot.multibody.run_scenario, "io_run_multibody_scenario"),
 ])
 def test_docstring_is_the_header_doc_comment(header_docs, obj, key):
     _, docs = header_docs

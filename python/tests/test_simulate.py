@@ -96,6 +96,28 @@ def test_run_in_process_gives_the_command_line_summary(tennis_racket, tmp_path):
     assert np.array_equal(r.final_state.omega_body, res.summary["final"]["omega_body"])
 
 
+def test_run_of_a_multibody_file_gives_the_command_line_files(cli_exe, source_dir, tmp_path):
+    """poinsot.run on a multibody file is `poinsot run`: the same engine (io/multibody_run.hpp), the same
+    overrides, the same report and summary.json (but for the folder's name and the cpu time), and files."""
+    import subprocess
+
+    path = source_dir / "examples" / "multibody" / "double_pendulum.toml"
+    res = poinsot.run(path, tmp_path / "py", method="rk4", t_end=0.2, sample_dt=0.01)
+    r = subprocess.run([cli_exe, "run", str(path), "--method", "rk4", "--t-end", "0.2", "--sample-dt", "0.01",
+                        "--out", str(tmp_path / "cli"), "--json"], capture_output=True, text=True, timeout=60)
+    assert r.returncode == 0, r.stderr
+    cli = json.loads(r.stdout)
+    assert res.summary == json.loads((tmp_path / "py" / "summary.json").read_text())
+    assert res.report == (tmp_path / "py" / "report.txt").read_text()
+    for s in (cli, res.summary):
+        del s["files"], s["cpu_seconds_per_step"]
+    assert res.summary == cli
+    assert (res.summary["method"], res.summary["order"], res.summary["steps"]) == ("rk4", 4, 200)
+    for name in ("trajectory.csv", "diagnostics.csv", "reactions.csv", "multipliers.csv"):
+        assert (tmp_path / "py" / name).read_text() == (tmp_path / "cli" / name).read_text(), name
+    assert res.report.startswith("multibody run: double_pendulum (")
+
+
 def test_a_scenario_dict_equals_the_same_file(tmp_path):
     scenario = {
         "title": "a dict",

@@ -137,6 +137,8 @@ def module_stub(module, local: str) -> str:
             lines.append(f"from poinsot import {sub} as {sub}\n")
         lines.append("def _simulate(*args: Any, **kwargs: Any) -> dict: ...\n")
         lines.append("def _run_scenario(scenario: Scenario, out_dir: str) -> Tuple[str, str]: ...\n")
+        lines.append("def _run_multibody_scenario(scenario: multibody.Scenario, out_dir: str, *, method: str = ..., "
+                     "dt: object = ..., t_end: object = ..., sample_dt: object = ...) -> Tuple[str, str]: ...\n")
         lines.append("_simulation_defaults: dict\n")
     return "\n".join(lines).replace("_core.", "") if not local else "\n".join(lines)
 

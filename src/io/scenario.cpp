@@ -231,21 +231,4 @@ Scenario load_scenario(const std::string& path) {
   return sc;
 }
 
-void apply_overrides(Scenario& sc, const ScenarioOverrides& o) {
-  const auto check = [](std::string_view option, double x) {
-    if (!(std::isfinite(x) && x > 0.0)) {
-      throw InvalidInput(fmt::format("{}: got {} s, expected a number > 0", option, format_number(x)));
-    }
-    return x;
-  };
-  if (!o.method.empty()) {
-    check_method(sc, o.method, "--method");
-    sc.method = o.method;
-  }
-  if (o.has_dt) sc.integrator.dt = check("--dt", o.dt);
-  if (o.has_t_end) sc.simulation.t_end = check("--t-end", o.t_end);
-  if (o.has_sample_dt) sc.simulation.sample_dt = check("--sample-dt", o.sample_dt);
-  if (!o.out_dir.empty()) sc.out_dir = o.out_dir;
-}
-
 }  // namespace poinsot::io

@@ -11,34 +11,18 @@
 #include <filesystem>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
+#include "json_values.hpp"
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::io {
 namespace {
 
-using json = nlohmann::ordered_json;
-
-json vec(const Vec3& v) {
-  return json::array({v[0], v[1], v[2]});
-}
-
-json mat(const Mat3& m) {
-  json rows = json::array();
-  for (int i = 0; i < 3; ++i)
-    rows.push_back(json::array({m(i, 0), m(i, 1), m(i, 2)}));
-  return rows;
-}
-
-/// A finite number, or null (JSON has no NaN or infinity).
-json num(double x) {
-  return std::isfinite(x) ? json(x) : json(nullptr);
-}
-
-json opt(const std::optional<double>& x) {
-  return x ? num(*x) : json(nullptr);
-}
+using detail::json;
+using detail::mat;
+using detail::num;
+using detail::opt;
+using detail::vec;
 
 json state_json(const dynamics::State& s) {
   const Quat q = s.quaternion();
@@ -61,9 +45,9 @@ std::string summary_json(const RunSummary& s) {
   j["torque"] = s.torque;
   j["t_end"] = s.t_end;
   j["sample_dt"] = s.sample_dt;
-  j["status"] = !s.failure.empty() ? "failed" : (r.interrupted ? "interrupted" : "completed");
+  j["status"] = detail::run_status(s.failure, r.interrupted);
   j["interrupted"] = r.interrupted;
-  j["failure"] = s.failure.empty() ? json(nullptr) : json(s.failure);
+  j["failure"] = detail::text_or_null(s.failure);
   j["body"] = {{"description", s.body_description},
                {"principal_moments", vec(s.principal_moments)},
                {"inertia", mat(s.inertia)},
@@ -86,7 +70,7 @@ std::string summary_json(const RunSummary& s) {
           : json(nullptr);
   events["flip_interval_theory"] = opt(s.flip_interval_theory);
   events["period_theory"] = opt(s.period_theory);
-  events["free_body_regime"] = s.free_body_regime.empty() ? json(nullptr) : json(s.free_body_regime);
+  events["free_body_regime"] = detail::text_or_null(s.free_body_regime);
   json top = nullptr;
   if (s.top) {
     const auto& t = *s.top;
@@ -111,28 +95,12 @@ std::string summary_json(const RunSummary& s) {
   }
   j["events"] = events;
   j["top"] = top;
+  // Λ: the keys of `poinsot lambda --json` (lambda_json.hpp), and Λ(t0) under the name summary.json has
+  // always used.
   json lam = nullptr;
   if (s.lambda) {
-    const auto& p = *s.lambda;
-    lam = {{"lambda_initial_body", mat(p.lambda_initial)},
-           {"eigenvalues_initial", vec(p.eigenvalues_initial)},
-           {"eigenvalues_final", vec(p.eigenvalues_final)},
-           {"eigenvalue_max_variation", num(p.eigenvalue_max_variation)},
-           {"symmetry_error_max", num(p.symmetry_error_max)},
-           {"max_eigenvalue_max", num(p.max_eigenvalue_max)},
-           {"trace_plus_2T_max", num(p.trace_plus_2T_max)},
-           {"stress_integral_initial", mat(p.stress_initial.integral.tensor)},
-           {"closed_form", nullptr}};
-    if (p.closed_form) {
-      const auto& c = *p.closed_form;
-      lam["closed_form"] = {{"A", c.inertia.A},
-                            {"C", c.inertia.C},
-                            {"c1", c.c1},
-                            {"c2", c.c2},
-                            {"Delta", c.Delta},
-                            {"eigenvalues", vec(c.eigenvalues)},
-                            {"max_deviation", num(c.max_deviation)}};
-    }
+    lam = json{{"lambda_initial_body", mat(s.lambda->lambda_initial)}};
+    lam.update(detail::lambda_properties_value(*s.lambda));
   }
   j["lambda"] = lam;
   j["steps"] = r.steps;
@@ -141,8 +109,8 @@ std::string summary_json(const RunSummary& s) {
   j["wall_time_s"] = r.wall_time_s;
   j["steps_per_second"] =
       r.wall_time_s > 0.0 ? num(static_cast<double>(r.steps) / r.wall_time_s) : json(nullptr);
-  j["files"] = {{"trajectory", s.trajectory_file.empty() ? json(nullptr) : json(s.trajectory_file)},
-                {"summary", s.summary_file.empty() ? json(nullptr) : json(s.summary_file)}};
+  j["files"] = {{"trajectory", detail::text_or_null(s.trajectory_file)},
+                {"summary", detail::text_or_null(s.summary_file)}};
   return j.dump(2) + "\n";
 }
 

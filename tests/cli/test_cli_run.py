@@ -347,6 +347,62 @@ def test_multibody_method_rk4_closes_the_joints_and_cuts_the_energy_error(cli, s
     assert "RK4 projected onto the joints" in (tmp_path / "rk4" / "report.txt").read_text()
 
 
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM], ids=["SIGINT", "SIGTERM"])
+def test_multibody_signal_leaves_complete_files_marked_interrupted(source_dir, tmp_path, sig):
+    """Ctrl-C (or SIGTERM) during a long multibody run stops it at the next row, as a single-body run: every
+    row of trajectory.csv and diagnostics.csv complete, summary.json "interrupted" at the last row's time, the
+    report printed with INTERRUPTED, exit status 128 + the signal."""
+    exe = os.environ["POINSOT_CLI"]
+    out = tmp_path / "o"
+    p = subprocess.Popen([exe, "run", str(source_dir / "examples" / "multibody" / "chain16.toml"), "--t-end", "1e6",
+                          "--sample-dt", "0.001", "--out", str(out), "--quiet"], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True)
+    csv = out / "trajectory.csv"
+    deadline = time.time() + 60
+    while time.time() < deadline and (not csv.exists() or csv.stat().st_size < 100000):
+        time.sleep(0.05)
+    p.send_signal(sig)
+    stdout, stderr = p.communicate(timeout=60)
+    assert p.returncode == 128 + sig, stderr
+    assert "INTERRUPTED at t =" in stdout
+    assert f"interrupted by signal {int(sig)}" in stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["status"] == "interrupted" and summary["interrupted"] is True
+    lines = csv.read_text().splitlines()
+    names, rows = lines[0].split(","), [line.split(",") for line in lines[1:]]
+    assert len(names) == 1 + 16 * 13 and all(len(row) == len(names) for row in rows)
+    assert summary["rows"] == len(rows) > 1 and float(rows[-1][0]) == summary["t_final"]
+    diagnostics = (out / "diagnostics.csv").read_text().splitlines()
+    assert len(diagnostics) == len(lines) and all(len(d.split(",")) == 12 for d in diagnostics)
+    assert summary["steps"] == round(summary["t_final"] / summary["dt"])
+    assert (out / "report.txt").read_text() == stdout
+    assert (out / "reactions.csv").exists() and not list(out.glob(".*tmp"))
+
+
+def test_multibody_report_of_a_long_chain_reads_like_the_single_body_one(cli, source_dir, tmp_path):
+    """chain16: sections, the 16 identical links said once, short numbers with their units, the 5 largest
+    reactions and multipliers with the full tables in reactions.csv and multipliers.csv (one row per joint and
+    per body, the same forces)."""
+    out = tmp_path / "c"
+    r = cli("run", source_dir / "examples" / "multibody" / "chain16.toml", "--t-end", "0.5", "--out", out)
+    assert r.returncode == 0, r.stderr
+    report = r.stdout
+    assert report.startswith("multibody run: chain16 (")
+    for section in ("\nsystem\n", "\nrun\n", "\nconserved quantities and constraints", "\njoint reactions at t = 0.5 s",
+                    "\nmultipliers Λ at t = 0.5 s", "\ncost\n", "\nfiles\n"):
+        assert section in report, section
+    assert report.count("bodies 'link0' to 'link15' (16): rod radius 0.01 m") == 1
+    assert "the 5 largest of 16 by |F|, all in" in report and "the 5 largest of 16 by ‖Λ‖_F, all in" in report
+    assert not re.search(r"\d\.\d{8,}", report), "no 17-digit numbers in the report"
+    reactions = (out / "reactions.csv").read_text().splitlines()
+    assert reactions[0] == "t,joint,body_a,body_b,Fx,Fy,Fz,F_norm,Cx,Cy,Cz,C_norm" and len(reactions) == 17
+    forces = sorted((float(line.split(",")[7]) for line in reactions[1:]), reverse=True)
+    table = report.split("joint reactions")[1].split("\n\n")[0].splitlines()[2:]
+    assert len(table) == 5
+    assert [float(row.split()[2]) for row in table] == pytest.approx(forces[:5], rel=1e-5)  # 6 digits shown
+    assert len((out / "multipliers.csv").read_text().splitlines()) == 17
+
+
 MB_MINIMAL = """[simulation]
 {}
 [[bodies]]

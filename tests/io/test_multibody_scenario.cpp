@@ -191,7 +191,7 @@ TEST(MultibodyScenario, EveryExampleLoadsAndRuns) {
     SCOPED_TRACE(entry.path().string());
     multibody::Scenario sc = load_multibody_scenario(entry.path().string());
     sc.duration = 50 * sc.dt;  // a smoke run; the physics is tested elsewhere
-    const multibody::RunSummary s = multibody::run_scenario(sc, nullptr, "");
+    const multibody::RunSummary s = multibody::simulate(sc);
     EXPECT_EQ(s.steps, 50);
     EXPECT_LT(s.max_joint_gap, 1e-12);
     EXPECT_LT(s.max_joint_angle, 1e-12);

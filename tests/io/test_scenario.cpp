@@ -222,9 +222,7 @@ TEST(Scenario, OverridesAreValidatedLikeTheFile) {
   Scenario sc = parse_scenario(kMinimal);
   ScenarioOverrides o;
   o.method = "rk4";
-  o.has_dt = true;
   o.dt = 2e-3;
-  o.has_t_end = true;
   o.t_end = 7.0;
   o.out_dir = "x";
   apply_overrides(sc, o);
@@ -233,11 +231,9 @@ TEST(Scenario, OverridesAreValidatedLikeTheFile) {
   EXPECT_EQ(sc.simulation.t_end, 7.0);
   EXPECT_EQ(sc.out_dir, "x");
   ScenarioOverrides bad;
-  bad.has_dt = true;
   bad.dt = -1.0;
   EXPECT_THROW(apply_overrides(sc, bad), InvalidInput);
   ScenarioOverrides nan_t;
-  nan_t.has_t_end = true;
   nan_t.t_end = std::nan("");
   EXPECT_THROW(apply_overrides(sc, nan_t), InvalidInput);
 }

@@ -42,6 +42,7 @@
 #include <string>
 #include <string_view>
 
+#include "poinsot/io/scenario.hpp"
 #include "poinsot/multibody/scenario.hpp"
 
 namespace poinsot::io {
@@ -54,5 +55,11 @@ multibody::Scenario parse_multibody_scenario(std::string_view text, std::string_
 
 /// Reads and validates a multibody scenario file (relative files from its folder).
 multibody::Scenario load_multibody_scenario(const std::string& path);
+
+/// The command line's overrides on a multibody scenario: `method` "rattle" (keeps the file's order) or "rk4"
+/// (order 4), `dt` (s), `t_end` → duration (s), `sample_dt` → output_every = max(1, round(sample_dt/dt))
+/// steps; out_dir is not part of a multibody scenario and is left to the caller. Throws InvalidInput naming
+/// the option (`--method`, `--dt`, ...), the value and what was expected.
+void apply_overrides(multibody::Scenario& scenario, const ScenarioOverrides& overrides);
 
 }  // namespace poinsot::io

@@ -12,6 +12,7 @@
 /// method `exact` with a torque. Units are SI throughout: kg, m, s, rad, kg·m², N·m.
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -51,18 +52,19 @@ Scenario parse_scenario(std::string_view text, std::string_view source = "<strin
 /// Reads and validates a scenario file. Throws InvalidInput if it cannot be read or is invalid.
 Scenario load_scenario(const std::string& path);
 
-/// Command-line overrides of the common keys; an unset field leaves the file's value. Validated like the
-/// file's values (the messages name the option, e.g. `--dt`).
+/// Command-line overrides of the common keys (`--method`, `--dt`, `--t-end`, `--sample-dt`, `--out`), the one
+/// mapping behind `poinsot run`, `poinsot lambda` and Python's `Scenario.with_overrides`; an unset field
+/// leaves the file's value. Validated like the file's values (the messages name the option, e.g. `--dt`).
 struct ScenarioOverrides {
-  std::string method;
-  double dt = 0.0;         ///< s, 0: unset
-  double t_end = 0.0;      ///< s, 0: unset
-  double sample_dt = 0.0;  ///< s, 0: unset
-  bool has_dt = false, has_t_end = false, has_sample_dt = false;
-  std::string out_dir;
+  std::string method;               ///< empty: unset
+  std::optional<double> dt;         ///< s
+  std::optional<double> t_end;      ///< s
+  std::optional<double> sample_dt;  ///< s
+  std::string out_dir;              ///< empty: unset
 };
 
 /// Applies overrides to a scenario and re-checks the rules they touch (range, `exact` with a torque).
+/// The multibody overload is in multibody_scenario.hpp; both are defined in overrides.cpp.
 void apply_overrides(Scenario& scenario, const ScenarioOverrides& overrides);
 
 /// Throws InvalidInput unless `method` names an integrator that can run this scenario (`what` names the

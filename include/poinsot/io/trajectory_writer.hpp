@@ -9,12 +9,9 @@
 ///   L_body_x..z [kg·m²/s], J ω.
 /// Numbers are the shortest text that reads back to the same double.
 ///
-/// Robustness: only whole rows are ever written to the file (rows are gathered in memory and handed to the
-/// operating system in one write of complete lines, at least every 0.25 s and whenever 64 KiB have gathered),
-/// so a run killed at any moment leaves a file complete up to its last full row; flush() writes out every
-/// row.
+/// Robustness: only whole rows are ever written to the file (line_file.hpp), so a run killed at any moment
+/// leaves a file complete up to its last full row; flush() writes out every row.
 
-#include <chrono>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,6 +19,7 @@
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/state.hpp"
+#include "poinsot/io/line_file.hpp"
 
 namespace poinsot::io {
 
@@ -30,29 +28,24 @@ class TrajectoryCsvWriter {
   /// Creates (or truncates) `path` and writes the header. `gravity_space` (m/s²) enters the energy column.
   /// Throws InvalidInput if the file cannot be created.
   TrajectoryCsvWriter(const std::string& path, const dynamics::RigidBody& body, const Vec3& gravity_space);
-  ~TrajectoryCsvWriter();  ///< flushes (errors ignored) and closes
   TrajectoryCsvWriter(const TrajectoryCsvWriter&) = delete;
   TrajectoryCsvWriter& operator=(const TrajectoryCsvWriter&) = delete;
 
   /// Appends the row of one sample.
   void write(const dynamics::State& sample);
   /// Hands every gathered row to the operating system. Throws ComputationFailed on a write error.
-  void flush();
+  void flush() { file_.flush(); }
   /// Rows written so far (not counting the header).
-  long long rows() const { return rows_; }
-  const std::string& path() const { return path_; }
+  long long rows() const { return file_.lines(); }
+  const std::string& path() const { return file_.path(); }
 
   /// The column names, in order.
   static const std::vector<std::string>& columns();
 
  private:
-  std::string path_;
+  LineFile file_;  ///< flushed and closed on destruction (errors then ignored)
   const dynamics::RigidBody& body_;
   Vec3 gravity_space_;
-  int fd_ = -1;
-  std::string buffer_;
-  long long rows_ = 0;
-  std::chrono::steady_clock::time_point last_flush_;
 };
 
 }  // namespace poinsot::io

@@ -1,10 +1,11 @@
 #pragma once
 /// @file scenario.hpp
-/// A multibody scenario (a System, its initial State, the step and the output rate) and the driver that runs
-/// it: the multibody half of `poinsot run`. The files are read in the io layer (io/multibody_scenario.hpp,
-/// the format in docs/multibody.md, examples in examples/multibody/). Units SI throughout.
+/// A multibody scenario (a System, its initial State, the step and the output rate) and the loop that runs
+/// it, handing every output row to an observer. The files are read and written in the io layer
+/// (io/multibody_scenario.hpp, io/multibody_run.hpp; the format in docs/multibody.md, examples in
+/// examples/multibody/): this layer computes, io serialises. Units SI throughout.
 
-#include <iosfwd>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,9 +39,9 @@ void project_velocities(const System& system, State& state);
 
 /// What a run measured.
 struct RunSummary {
-  long steps = 0;
+  long steps = 0;                                   ///< steps taken (fewer than planned when stopped)
   double energy_initial = 0.0, energy_final = 0.0;  ///< J
-  double max_energy_error = 0.0;                    ///< max |E(t) − E(0)|, J
+  double max_energy_error = 0.0;                    ///< max |E(t) − E(0)| over every step, J
   double max_joint_gap = 0.0;                       ///< m
   double max_joint_angle = 0.0;                     ///< dimensionless
   double max_orthogonality = 0.0;                   ///< max |RᵀR − I|
@@ -49,25 +50,26 @@ struct RunSummary {
   bool tree_solver = true;
   KktMethod kkt_method = KktMethod::tree;
   double cpu_seconds_per_step = 0.0;
+  bool interrupted = false;  ///< the observer stopped the run before its end
+  std::string failure;       ///< the message of the ComputationFailed that stopped the run; empty: none
+  /// The state after the last step taken (after a failure, its time is the last completed step's, the rest as
+  /// the failed step left it).
+  State final_state;
 };
 
-/// Integrates the scenario with its method (RATTLE, rattle.hpp, or the projected RK4, projected_rk4.hpp).
-/// Writes a CSV trajectory to `trajectory_csv` unless it is empty (columns: t, then per body x y z qw qx qy
-/// qz vx vy vz wx wy wz: the centre of mass (m), the rotation body → space as a quaternion, the velocity of
-/// the centre of mass (m/s), ω in the body frame (rad/s)) and a human-readable report to `report` unless null
-/// (energy, momenta, constraint violation, joint reactions and each body's Λ at the end).
+/// Called with the state at t₀, after every `output_every` steps and after the last step; returning false
+/// stops the run there (RunSummary::interrupted).
+using SampleObserver = std::function<bool(const State&)>;
+
+/// Integrates the scenario with its method (RATTLE, rattle.hpp, or the projected RK4, projected_rk4.hpp)
+/// from `initial` for round(duration/dt) steps, the sample times being t₀ + n·dt exactly. Measures over every
+/// step the largest energy error |E − E(0)| (E = T + V, observables.hpp), joint gap, joint angle and
+/// |RᵀR − I|, and the iterations of the position stage (RATTLE) or of the joint projection (RK4).
 ///
-/// Writes the conserved quantities and the constraint violation to `diagnostics_csv` unless it is empty, one
-/// row per trajectory row (t = 0, every `output_every` steps and the last step), columns:
-/// `t` (s), `energy` E = T + V (J, observables.hpp), `energy_error` E − E(0) (J; its largest magnitude over
-/// every step is RunSummary::max_energy_error), `kinetic` T (J), `potential` V (J, loads.hpp: gravity,
-/// springs, constant forces), `linear_momentum` |Σ m v| (kg·m/s), `L_space_x`, `L_space_y`, `L_space_z` the
-/// angular momentum about the space origin Σ (x × m v + R J ω) (kg·m²/s), `joint_gap` (m), `joint_angle`
-/// (dimensionless) and `orthogonality` max |RᵀR − I| (dimensionless), the maxima over joints and bodies of
-/// ConstraintViolation.
-///
-/// On a ComputationFailed the rows already written stay in both files and the exception propagates.
-RunSummary run_scenario(const Scenario& scenario, std::ostream* report, const std::string& trajectory_csv,
-                        const std::string& diagnostics_csv = "");
+/// A ComputationFailed in a step (e.g. h|ω| ≥ 1) ends the loop: its message is kept in `failure` and the
+/// summary holds what was measured up to the last completed step (the caller decides whether to re-throw).
+/// Throws InvalidInput when the scenario is inconsistent (check_consistent) or its step is refused by the
+/// integrator.
+RunSummary simulate(const Scenario& scenario, const SampleObserver& observer = {});
 
 }  // namespace poinsot::multibody
