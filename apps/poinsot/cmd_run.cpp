@@ -29,6 +29,7 @@
 #include "poinsot/io/scenario.hpp"
 #include "poinsot/io/scenario_file.hpp"
 #include "poinsot/io/summary.hpp"
+#include "poinsot/io/view_page.hpp"
 #include "poinsot/multibody/scenario.hpp"
 
 extern char** environ;
@@ -112,7 +113,8 @@ class Progress {
 struct RunCliOptions {
   std::string scenario;
   std::string out;
-  bool json = false, plot = false, quiet = false;
+  bool json = false, plot = false, quiet = false, html = false;
+  io::ViewOptions view;  ///< --html: view.html's options
   std::string method;
   double dt = 0.0, t_end = 0.0, sample_dt = 0.0;
   CLI::Option* dt_opt = nullptr;
@@ -229,9 +231,12 @@ void run_multibody(const RunCliOptions& o, multibody::Scenario mb) {
   io::write_file_atomic(dir + "/summary.json", summary);
   fmt::print("{}", o.json ? summary : report.str());
   if (o.plot) make_plots(dir, o.json);  // paths.png, energy.png, constraints.png
+  if (o.html) io::write_view_page(dir, o.view);
 }
 
 void run(RunCliOptions& o) {
+  o.view.scenario_path = o.scenario;
+  if (o.html) io::check_view_options(o.view);
   io::AnyScenario any = io::load_any_scenario(o.scenario);  // the file is parsed once, either kind
   if (auto* mb = std::get_if<multibody::Scenario>(&any)) {
     run_multibody(o, std::move(*mb));
@@ -282,6 +287,7 @@ void run(RunCliOptions& o) {
   if (o.plot) {
     make_plots(dir, o.json);
   }
+  if (o.html) io::write_view_page(dir, o.view);
 }
 
 }  // namespace
@@ -294,6 +300,9 @@ void register_run(CLI::App& app) {
   cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
   cmd->add_flag("--plot", o->plot, "also draw the figures (PNG, Matplotlib) into the output folder");
   cmd->add_flag("--quiet", o->quiet, "no progress bar");
+  cmd->add_flag("--html", o->html, "also write view.html, the run's 3-D page (docs/viewer.md)");
+  cmd->add_option("--frames", o->view.frames,
+                  fmt::format("with --html: most frames in the page (default {})", io::kViewFramesDefault));
   cmd->add_option(
       "--method", o->method,
       "override [integrator] method: exact, rk4, dopri5, dop853, dlm, rattle (multibody: rattle, rk4)");
