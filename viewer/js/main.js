@@ -81,7 +81,7 @@
     toggle: function () {
       if (!player.playing && player.time >= player.t1) player.time = player.t0;
       player.playing = !player.playing;
-      last = null;
+      last = performance.now();
       player.render();
     },
     setSpeed: function (s) { player.speed = Math.min(10, Math.max(0.1, s)); controls.refresh(); },
@@ -97,12 +97,16 @@
       player.render();
     },
     resetView: function () { orbit.reset(); player.render(); },
-    render: function () {
+    // Moves every object to the current time (no drawing).
+    update: function () {
       player.where = track.locate(player.time);
       scenes.forEach(function (s) { s.update(player.time, player.where); });
       overlays.forEach(function (o) {  // arrows hide themselves at zero length; the toggles win
         if (!o.on) o.objects.forEach(function (obj) { obj.visible = false; });
       });
+    },
+    render: function () {
+      player.update();
       var off = orbit.offset(), up = [0, 0, 1];
       if (player.cameraMode === 'body') {
         var q = data.kind === 'multibody' ? track.value('q0', player.time) : main.q;
@@ -136,15 +140,13 @@
   }
   controls = new PV.Controls(player, overlays);
 
-  var last = null;
+  var last = 0;  // the time (ms) of the last frame drawn while playing
   function tick(now) {
     if (player.playing) {
-      if (last !== null) player.time += (now - last) / 1000 * player.speed;
+      player.time += Math.max(0, now - last) / 1000 * player.speed;
       last = now;
       if (player.time >= player.t1) { player.time = player.t1; player.playing = false; }
       player.render();
-    } else {
-      last = null;
     }
     requestAnimationFrame(tick);
   }
@@ -161,6 +163,8 @@
     data: data, track: track, player: player, scene: scene,
     construction: poinsot,  // null unless torque-free
     probe: function () { return poinsot ? poinsot.probe() : null; },
+    // Sets the time (s) and moves the objects there without drawing (for tests that read the scene).
+    moveTo: function (t) { player.time = Math.min(player.t1, Math.max(player.t0, t)); player.update(); },
     bodyQuaternion: function () {  // [w, x, y, z] of the body as drawn
       var g = data.kind === 'multibody' ? main.bodies[0].group : main.group;
       return [g.quaternion.w, g.quaternion.x, g.quaternion.y, g.quaternion.z];
