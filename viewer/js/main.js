@@ -51,7 +51,7 @@
   scenes.forEach(function (s) { overlays = overlays.concat(s.overlays); });
   camera.near = ctx.length * 1e-3; camera.far = ctx.length * 1e3;
   camera.updateProjectionMatrix();
-  var orbit = new PV.Orbit(renderer.domElement, (poinsot ? 7 : 5) * ctx.length);
+  var orbit = new PV.Orbit(renderer.domElement, (poinsot ? 5.5 : 4.5) * ctx.length);
 
   document.getElementById('title').textContent = (data.title || data.scenario) + '  (' + data.method + ', ' +
       data.frames + ' frames of ' + data.samples + ' samples)';
