@@ -96,6 +96,20 @@ class Page:
             }
             return [n / (c.width * c.height), h];""")
 
+    def changed_since(self, snapshot=None):
+        """Takes a copy of the canvas's pixels (kept in the page) and returns the fraction of pixels that differ
+        from the copy taken before (by more than 24 in the sum of the colour channels), None the first time."""
+        return self.js("""
+            var c = document.querySelector('#stage canvas');
+            var t = document.createElement('canvas'); t.width = c.width; t.height = c.height;
+            var g = t.getContext('2d'); g.drawImage(c, 0, 0);
+            var d = g.getImageData(0, 0, c.width, c.height).data, old = window.__snapshot, n = 0;
+            window.__snapshot = d;
+            if (!old) return null;
+            for (var i = 0; i < d.length; i += 4)
+              if (Math.abs(d[i] - old[i]) + Math.abs(d[i + 1] - old[i + 1]) + Math.abs(d[i + 2] - old[i + 2]) > 24) n++;
+            return n / (c.width * c.height);""")
+
     def seek_with_slider(self, t):
         """Moves the time slider to t (s) as a user does: its value, then its input event."""
         self.js("var s = document.getElementById('time'); s.value = arguments[0];"

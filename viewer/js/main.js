@@ -30,10 +30,11 @@
   var scene = new THREE.Scene();
   scene.background = new THREE.Color(0xf4f4f2);
   scene.add(new THREE.AmbientLight(0xffffff, 0.55));
-  var sun = new THREE.DirectionalLight(0xffffff, 0.6);
-  sun.position.set(3, -2, 5);
-  scene.add(sun);
   var camera = new THREE.PerspectiveCamera(40, stage.clientWidth / stage.clientHeight, 1e-3, 1e4);
+  var headlight = new THREE.DirectionalLight(0xffffff, 0.6);  // moves with the camera (either camera frame)
+  headlight.position.set(0.4, 0.6, 1);
+  camera.add(headlight);
+  scene.add(camera);
 
   var track = buildTrack();
   var ctx = { data: data, track: track, scene: scene, length: 1, center: [0, 0, 0] };
