@@ -14,7 +14,7 @@ import pytest
 SOURCE_DIR = Path(os.environ.get("POINSOT_SOURCE_DIR", Path(__file__).resolve().parents[2]))
 CHROMIUM = "/usr/bin/chromium"
 CHROMEDRIVER = "/usr/bin/chromedriver"
-WINDOW = (960, 640)  # CSS pixels; small, so that software rendering stays fast
+WINDOW = (800, 520)  # CSS pixels; small, so that software rendering stays fast
 
 EXAMPLES = sorted(p.relative_to(SOURCE_DIR / "examples").as_posix()
                   for p in list((SOURCE_DIR / "examples").glob("*.toml")) +
@@ -69,11 +69,14 @@ def browser():
 class Page:
     """A view.html loaded in the browser, with helpers to read the page's state and pixels."""
 
-    def __init__(self, driver, path):
+    def __init__(self, driver, path, reuse=False):
         self.driver = driver
-        driver.get_log("browser")  # drop what earlier pages logged
-        driver.get(Path(path).resolve().as_uri())
         self.logs = []
+        uri = Path(path).resolve().as_uri()
+        if reuse and driver.current_url == uri:
+            return  # the page the previous test left, as it left it
+        driver.get_log("browser")  # drop what earlier pages logged
+        driver.get(uri)
 
     def js(self, script, *args):
         return self.driver.execute_script(script, *args)
@@ -118,4 +121,4 @@ class Page:
 
 @pytest.fixture
 def load(browser):
-    return lambda path: Page(browser, path)
+    return lambda path, reuse=False: Page(browser, path, reuse)

@@ -15,8 +15,6 @@ import math
 import numpy as np
 import pytest
 
-from conftest import SOURCE_DIR
-
 TOL = 1e-9
 
 # An asymmetric body given by a full inertia tensor (principal axes not the body axes), torque-free, exact.
@@ -40,15 +38,14 @@ def read_csv(path):
 
 
 @pytest.fixture(scope="module")
-def runs(cli, tmp_path_factory):
+def runs(cli, example_runs, tmp_path_factory):
     root = tmp_path_factory.mktemp("construction")
     (root / "skew.toml").write_text(SKEW_BODY)
-    out = {}
-    for name, scenario in (("tennis", SOURCE_DIR / "examples" / "tennis_racket.toml"), ("skew", root / "skew.toml")):
-        r = cli("run", scenario, "--out", root / name, "--html", "--quiet", "--method", "exact")
-        assert r.returncode == 0, r.stderr
-        out[name] = root / name
-    return out
+    r = cli("run", root / "skew.toml", "--out", root / "skew", "--html", "--quiet")
+    assert r.returncode == 0, r.stderr
+    tennis = example_runs["tennis_racket.toml"]
+    assert json.loads((tennis / "summary.json").read_text())["method"] == "exact"
+    return {"tennis": tennis, "skew": root / "skew"}
 
 
 def theory(summary):
@@ -69,7 +66,7 @@ def theory(summary):
     return {"two_T": two_T, "L": L, "d": d, "rho_min": math.sqrt(max(min(rho2), 0)), "rho_max": math.sqrt(max(rho2))}
 
 
-@pytest.mark.parametrize("name", ["tennis", "skew"])
+@pytest.mark.parametrize("name", ["skew", "tennis"])
 def test_construction_rolls_on_the_invariable_plane(name, runs, load):
     summary = json.loads((runs[name] / "summary.json").read_text())
     th = theory(summary)
@@ -108,7 +105,7 @@ def test_frames_equal_the_trajectory_and_slerp_between_them(runs, load):
     change over the frame interval h)."""
     names, rows = read_csv(runs["tennis"] / "trajectory.csv")
     col = {c: k for k, c in enumerate(names)}
-    page = load(runs["tennis"] / "view.html")
+    page = load(runs["tennis"] / "view.html", reuse=True)  # as the construction test left it
     data = page.js("var d = window.poinsotView.data; return [d.stride, d.samples, d.frames];")
     stride, samples, frames = data
     assert samples == len(rows) and stride > 1 and frames <= 2000
