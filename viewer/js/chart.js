@@ -13,7 +13,7 @@ PV.Chart = (function () {
     if (!(hi > lo)) { lo -= 1; hi += 1; }
     var pad = 0.05 * (hi - lo);
     this.lo = lo - pad; this.hi = hi + pad;
-    this.box = { left: 52, right: canvas.width - 8, top: 8, bottom: canvas.height - 30 };
+    this.box = { left: 66, right: canvas.width - 8, top: 8, bottom: canvas.height - 30 };
     var self = this;
     canvas.addEventListener('click', function (e) {
       var r = canvas.getBoundingClientRect();
@@ -21,6 +21,12 @@ PV.Chart = (function () {
       var u = (x - self.box.left) / (self.box.right - self.box.left);
       onSeek(t[0] + Math.min(1, Math.max(0, u)) * (t[t.length - 1] - t[0]));
     });
+  }
+
+  // A short number for an axis: 3 significant digits, in exponent form when small or large.
+  function label(v) {
+    var a = Math.abs(v);
+    return a !== 0 && (a < 1e-2 || a >= 1e4) ? v.toExponential(2) : v.toPrecision(3);
   }
 
   Chart.prototype.x = function (time) {
@@ -38,8 +44,8 @@ PV.Chart = (function () {
     c.strokeRect(b.left, b.top, b.right - b.left, b.bottom - b.top);
     c.fillStyle = '#222'; c.font = '11px sans-serif';
     c.textAlign = 'right';
-    c.fillText(this.hi.toPrecision(3), b.left - 3, b.top + 9);
-    c.fillText(this.lo.toPrecision(3), b.left - 3, b.bottom);
+    c.fillText(label(this.hi), b.left - 3, b.top + 9);
+    c.fillText(label(this.lo), b.left - 3, b.bottom);
     c.textAlign = 'center';
     c.fillText('t (s)', (b.left + b.right) / 2, this.canvas.height - 4);
     c.fillText(t[0].toPrecision(3), b.left, b.bottom + 12);

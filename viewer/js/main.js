@@ -54,7 +54,7 @@
   camera.updateProjectionMatrix();
   var orbit = new PV.Orbit(renderer.domElement, (poinsot ? 5.5 : 4.5) * ctx.length);
 
-  document.getElementById('title').textContent = (data.title || data.scenario) + '  (' + data.method + ', ' +
+  document.getElementById('title').textContent = (data.title || data.scenario.split('/').pop()) + '  (' + data.method + ', ' +
       data.frames + ' frames of ' + data.samples + ' samples)';
   var legend = document.getElementById('legend');
   scenes.forEach(function (s) {
