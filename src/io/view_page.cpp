@@ -2,10 +2,8 @@
 // assembled from the embedded template, style and scripts.
 #include "poinsot/io/view_page.hpp"
 
-#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <variant>
@@ -92,12 +90,10 @@ void check_page_budget(const std::string& dir, long long frames, long long value
 
 /// The scenario that made the run, when it can still be read: the given path, else the one in summary.json.
 std::optional<AnyScenario> try_load_scenario(const ViewOptions& options, const json& summary) {
-  std::vector<std::string> candidates;
   if (!options.scenario_path.empty()) return load_any_scenario(options.scenario_path);
-  for (const char* key : {"source", "scenario"})
-    if (summary.contains(key) && summary[key].is_string())
-      candidates.push_back(summary[key].get<std::string>());
-  for (const std::string& path : candidates) {
+  for (const char* key : {"source", "scenario"}) {
+    if (!summary.contains(key) || !summary[key].is_string()) continue;
+    const std::string path = summary[key].get<std::string>();
     if (!fs::is_regular_file(path)) continue;
     try {
       return load_any_scenario(path);
@@ -115,7 +111,7 @@ std::size_t column(const CsvFrames& f, const std::string& name, const std::strin
       fmt::format("view: \"{}\" has no column \"{}\"; expected the trajectory of a run", path, name));
 }
 
-/// Appends the columns `names` of every frame to `out`, frame after frame.
+/// The columns `names` of every frame, frame after frame.
 std::vector<double> gather(const CsvFrames& f, const std::vector<std::string>& names,
                            const std::string& path) {
   std::vector<std::size_t> idx;
