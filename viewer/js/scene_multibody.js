@@ -57,18 +57,30 @@ PV.MultibodyScene = (function () {
       }
       return { spec: j, ball: ball, links: links };
     });
+    // Gravity: an arrow beside the scene, a quarter of its span long.
+    this.gravityArrow = D.arrow(0x2ca02c);
+    var g = data.gravity || [0, 0, 0], gn = M.norm(g);
+    if (gn > 0) {
+      var gdir = M.scale(g, 1 / gn);
+      var side = M.norm(M.cross(gdir, [1, 0, 0])) > 0.5 ? [1, 0, 0] : [0, 1, 0];
+      this.gravityArrow.set(M.add(ctx.center, M.add(M.scale(side, -0.7 * span), M.scale(gdir, -0.125 * span))),
+                            M.scale(gdir, 0.25 * span));
+      ctx.scene.add(this.gravityArrow);
+    }
     var jointObjects = [];
     this.joints.forEach(function (j) { jointObjects.push(j.ball, j.links); });
     this.overlays = [
       { key: 'shape', label: 'bodies', objects: this.bodies.map(function (b) { return b.shapes; }), on: true },
       { key: 'joints', label: 'joints', objects: jointObjects, on: true },
-      { key: 'paths', label: 'paths of the centres of mass', objects: [this.paths], on: true }
+      { key: 'paths', label: 'paths of the centres of mass', objects: [this.paths], on: true },
+      { key: 'gravity', label: 'gravity', objects: [this.gravityArrow], on: gn > 0 }
     ];
     this.legend = data.bodies.map(function (b, k) {
       return ['#' + palette[k % palette.length].toString(16), b.name + (b.mass ? ' (' + b.mass + ' kg)' : '')];
     });
     if (!data.model_from_scenario) this.legend.push(['#ffffff', 'scenario file not found: bodies drawn as markers']);
     this.legend.push(['#222222', 'ball joint'], ['#1f77b4', 'hinge joint']);
+    if (gn > 0) this.legend.push(['#2ca02c', 'gravity g = ' + gn.toPrecision(3) + ' m/s\u00b2']);
   }
 
   MultibodyScene.prototype.toggleShape = function () {
