@@ -54,7 +54,8 @@
   camera.updateProjectionMatrix();
   var orbit = new PV.Orbit(renderer.domElement, (poinsot ? 5.5 : 4.5) * ctx.length);
 
-  document.getElementById('title').textContent = (data.title || data.scenario.split('/').pop()) + '  (' + data.method + ', ' +
+  document.getElementById('title').textContent = (data.title || data.scenario.split('/').pop()) + '  (' +
+      data.method + ', ' +
       data.frames + ' frames of ' + data.samples + ' samples)';
   var legend = document.getElementById('legend');
   scenes.forEach(function (s) {
@@ -94,7 +95,10 @@
     toggleShape: function () {
       var shown = main.toggleShape();
       var cb = document.getElementById('overlay-shape');
-      if (cb) cb.parentNode.lastChild.textContent = cb.parentNode.lastChild.textContent.replace(/\((box|ellipsoid)\)/, '(' + shown + ')');
+      if (cb) {
+        var text = cb.parentNode.lastChild;
+        text.textContent = text.textContent.replace(/\((box|ellipsoid)\)/, '(' + shown + ')');
+      }
       player.render();
     },
     resetView: function () { orbit.reset(); player.render(); },
@@ -113,7 +117,8 @@
         var q = data.kind === 'multibody' ? track.value('q0', player.time) : main.q;
         off = M.rotate(q, off); up = M.rotate(q, up);
       }
-      var target = data.kind === 'multibody' && player.cameraMode === 'body' ? track.value('x0', player.time) : ctx.center;
+      var target = data.kind === 'multibody' && player.cameraMode === 'body' ? track.value('x0', player.time)
+                                                                              : ctx.center;
       camera.position.set(target[0] + off[0], target[1] + off[1], target[2] + off[2]);
       camera.up.set(up[0], up[1], up[2]);
       camera.lookAt(target[0], target[1], target[2]);
@@ -131,7 +136,8 @@
     return out;
   }
   if (data.kind === 'multibody' && data.energy_error) {
-    chart = new PV.Chart(chartCanvas, data.t, [{ label: 'E \u2212 E\u2080', color: '#d62728', values: data.energy_error }],
+    chart = new PV.Chart(chartCanvas, data.t,
+                         [{ label: 'E \u2212 E\u2080', color: '#d62728', values: data.energy_error }],
                          'E \u2212 E\u2080 (J)', player.seek);
   } else {
     var name = data.kind === 'multibody' ? 'w0' : 'omega_body';

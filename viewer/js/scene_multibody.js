@@ -28,7 +28,8 @@ PV.MultibodyScene = (function () {
 
     this.bodies = data.bodies.map(function (b, k) {
       var group = new THREE.Group();
-      var shapes = b.shapes || { box_half_extents: [marker, marker, marker], ellipsoid_semi_axes: [marker, marker, marker],
+      var shapes = b.shapes || { box_half_extents: [marker, marker, marker],
+                                 ellipsoid_semi_axes: [marker, marker, marker],
                                  axes: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] };
       var mesh = D.bodyShapes(shapes, palette[k % palette.length], 0.25 * marker);
       group.add(mesh);

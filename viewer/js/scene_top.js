@@ -37,7 +37,8 @@ PV.TopScene = (function () {
     if (gn > 0) {
       var gdir = M.scale(g, 1 / gn);
       var side = M.norm(M.cross(gdir, [1, 0, 0])) > 0.5 ? [1, 0, 0] : [0, 1, 0];
-      this.gravityArrow.set(M.add(M.scale(side, -1.25 * radius), M.scale(gdir, -0.4 * radius)), M.scale(gdir, 0.8 * radius));
+      this.gravityArrow.set(M.add(M.scale(side, -1.25 * radius), M.scale(gdir, -0.4 * radius)),
+                            M.scale(gdir, 0.8 * radius));
     } else {
       this.gravityArrow.userData.enabled = false;
       this.gravityArrow.visible = false;
