@@ -33,3 +33,26 @@ def test_view_refuses_what_is_not_a_finished_run(tmp_path):
     with pytest.raises(ValueError, match="--frames 1 is out of range"):
         poinsot.view(tmp_path, frames=1, display=False)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_view_shows_the_page_inline_in_jupyter(tmp_path, monkeypatch):
+    """With display=True the page goes to IPython.display as an iframe holding the whole page (srcdoc), so the
+    notebook needs no server for it; a stand-in IPython records what was shown."""
+    import html
+    import sys
+    import types
+
+    shown = []
+    fake = types.ModuleType("IPython.display")
+    fake.HTML = lambda text: ("HTML", text)
+    fake.display = shown.append
+    monkeypatch.setitem(sys.modules, "IPython", types.ModuleType("IPython"))
+    monkeypatch.setitem(sys.modules, "IPython.display", fake)
+    r = poinsot.run({"body": {"principal_moments": [1, 2, 3]}, "initial": {"omega_body": [0.1, 2, 0.1]},
+                     "output": {"t_end": 1, "sample_dt": 0.01}}, out_dir=tmp_path / "run")
+    path = poinsot.view(r, display=True, height=500)
+    assert len(shown) == 1 and shown[0][0] == "HTML"
+    frame = shown[0][1]
+    assert frame.startswith('<iframe srcdoc="') and "height: 500px" in frame
+    page = open(path, encoding="utf-8").read()
+    assert html.unescape(frame[len('<iframe srcdoc="'):frame.index('" style=')]) == page
