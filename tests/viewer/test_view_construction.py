@@ -133,3 +133,20 @@ def test_frames_equal_the_trajectory_and_slerp_between_them(runs, load):
         worst = max(worst, 2 * math.acos(c))
     assert worst <= bound, (worst, bound)
     assert worst > 0  # the rows between frames are interpolated, not copied
+
+
+@pytest.mark.parametrize("example", ["multibody/double_pendulum.toml", "multibody/l_bracket_hinge.toml",
+                                     "multibody/gyroscope_gimbals.toml", "multibody/chain16.toml"])
+def test_multibody_joints_hold_as_drawn(example, example_runs, load):
+    """Each joint's point placed from body a (x_a + R_a A) and from body b (x_b + R_b B, or the world's point)
+    as the page draws them: apart by no more than the largest joint gap the run measured (summary.json), plus
+    round-off. A wrong quaternion convention or body order in the page would open the joints by centimetres."""
+    summary = json.loads((example_runs[example] / "summary.json").read_text())
+    page = load(example_runs[example] / "view.html")
+    n = page.js("return window.poinsotView.track.n")
+    frames = sorted(set(np.linspace(0, n - 1, 40).astype(int).tolist()))
+    gaps = page.js("""var v = window.poinsotView, out = [];
+        arguments[0].forEach(function (i) { v.moveTo(v.data.t[i]); out.push(v.jointGap()); });
+        return out;""", frames)
+    assert page.js("return window.poinsotView.data.joints.length") > 0
+    assert max(gaps) <= summary["joint_gap_max"] + 1e-12, (max(gaps), summary["joint_gap_max"])

@@ -170,6 +170,7 @@
     data: data, track: track, player: player, scene: scene,
     construction: poinsot,  // null unless torque-free
     probe: function () { return poinsot ? poinsot.probe() : null; },
+    jointGap: function () { return data.kind === 'multibody' ? main.jointGap() : null; },
     // Sets the time (s) and moves the objects there without drawing (for tests that read the scene).
     moveTo: function (t) { player.time = Math.min(player.t1, Math.max(player.t0, t)); player.update(); },
     bodyQuaternion: function () {  // [w, x, y, z] of the body as drawn

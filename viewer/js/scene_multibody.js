@@ -106,13 +106,22 @@ PV.MultibodyScene = (function () {
       var a = states[j.spec.body_a];
       var p = M.add(a.x, M.rotate(a.q, j.spec.point_a));
       j.ball.position.set(p[0], p[1], p[2]);
-      var other = j.spec.body_b >= 0 ? states[j.spec.body_b].x : j.spec.point_b;
+      // The same joint point seen from body b (or the world): apart from p by the joint's gap only.
+      var b = j.spec.body_b >= 0 ? states[j.spec.body_b] : null;
+      j.fromB = b ? M.add(b.x, M.rotate(b.q, j.spec.point_b)) : j.spec.point_b;
+      j.gap = M.norm(M.sub(p, j.fromB));
+      var other = b ? b.x : j.spec.point_b;
       var pos = j.links.geometry.attributes.position;
       pos.setXYZ(0, a.x[0], a.x[1], a.x[2]); pos.setXYZ(1, p[0], p[1], p[2]);
       pos.setXYZ(2, other[0], other[1], other[2]);
       pos.needsUpdate = true;
     });
     this.paths.children.forEach(function (l) { l.showUpTo(where.i + 1); });
+  };
+
+  // The largest distance (m) between a joint's point placed from body a and from body b, as drawn now.
+  MultibodyScene.prototype.jointGap = function () {
+    return this.joints.reduce(function (g, j) { return Math.max(g, j.gap); }, 0);
   };
 
   return MultibodyScene;
