@@ -300,9 +300,10 @@ void register_run(CLI::App& app) {
   cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
   cmd->add_flag("--plot", o->plot, "also draw the figures (PNG, Matplotlib) into the output folder");
   cmd->add_flag("--quiet", o->quiet, "no progress bar");
-  cmd->add_flag("--html", o->html, "also write view.html, the run's 3-D page (docs/viewer.md)");
+  auto* html = cmd->add_flag("--html", o->html, "also write view.html, the run's 3-D page (docs/viewer.md)");
   cmd->add_option("--frames", o->view.frames,
-                  fmt::format("with --html: most frames in the page (default {})", io::kViewFramesDefault));
+                  fmt::format("with --html: most frames in the page (default {})", io::kViewFramesDefault))
+      ->needs(html);
   cmd->add_option(
       "--method", o->method,
       "override [integrator] method: exact, rk4, dopri5, dop853, dlm, rattle (multibody: rattle, rk4)");

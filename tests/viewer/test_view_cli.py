@@ -64,6 +64,12 @@ def test_frames_out_of_range_are_refused_before_the_run(cli, tennis, tmp_path, f
     assert not out.exists()  # refused before anything was simulated or written
 
 
+def test_frames_without_html_is_refused(cli, tmp_path):
+    r = cli("run", TENNIS, "--out", tmp_path / "run", "--frames", "10", "--quiet")
+    assert r.returncode == 2 and r.stderr.strip() == "poinsot: --frames requires --html", r.stderr
+    assert not (tmp_path / "run").exists()
+
+
 def test_a_run_too_large_for_the_frames_is_refused(cli, tmp_path):
     """A multibody run of 200 bodies and 1001 rows holds 1001 x (1 + 10 x 200) numbers, beyond the 2e6 a
     page may hold: refused with the frames that fit, which then work."""
