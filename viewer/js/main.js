@@ -45,7 +45,11 @@
   } else {
     main = new PV.BodyScene(ctx);
     scenes.push(main);
-    if (data.torque === 'none') { poinsot = new PV.PoinsotScene(ctx, main); scenes.push(poinsot); }
+    // Poinsot's construction needs a torque-free body that turns (L = 0 has no invariable plane).
+    if (data.torque === 'none' && M.norm(data.initial.L_space) > 0 && data.initial.energy > 0) {
+      poinsot = new PV.PoinsotScene(ctx, main);
+      scenes.push(poinsot);
+    }
     if (data.top) scenes.push(new PV.TopScene(ctx, main));
   }
   var overlays = [];
