@@ -29,6 +29,7 @@
 #include "poinsot/io/scenario.hpp"
 #include "poinsot/io/scenario_file.hpp"
 #include "poinsot/io/summary.hpp"
+#include "poinsot/io/view_page.hpp"
 #include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/scenario.hpp"
 
@@ -116,7 +117,8 @@ class Progress {
 struct RunCliOptions {
   std::string scenario;
   std::string out;
-  bool json = false, plot = false, quiet = false;
+  bool json = false, plot = false, quiet = false, html = false;
+  io::ViewOptions view;  ///< --html: view.html's options
   std::string method;
   double dt = 0.0, t_end = 0.0, sample_dt = 0.0;
   CLI::Option* dt_opt = nullptr;
@@ -215,6 +217,7 @@ void finish(const RunCliOptions& o, const std::string& dir, const std::string& j
     std::exit(128 + g_signal);
   }
   if (o.plot) make_plots(dir, o.json);
+  if (o.html) io::write_view_page(dir, o.view);
 }
 
 /// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE or the projected RK4 on the
@@ -232,6 +235,8 @@ void run_multibody(const RunCliOptions& o, const io::ScenarioOverrides& ov, mult
 }
 
 void run(RunCliOptions& o) {
+  o.view.scenario_path = o.scenario;
+  if (o.html) io::check_view_options(o.view);
   io::ScenarioOverrides ov;
   ov.method = o.method;
   if (o.dt_opt->count() > 0) ov.dt = o.dt;
@@ -263,6 +268,10 @@ void register_run(CLI::App& app) {
   cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
   cmd->add_flag("--plot", o->plot, "also draw the figures (PNG, Matplotlib) into the output folder");
   cmd->add_flag("--quiet", o->quiet, "no progress bar");
+  auto* html = cmd->add_flag("--html", o->html, "also write view.html, the run's 3-D page (docs/viewer.md)");
+  cmd->add_option("--frames", o->view.frames,
+                  fmt::format("with --html: most frames in the page (default {})", io::kViewFramesDefault))
+      ->needs(html);
   cmd->add_option("--method", o->method,
                   fmt::format("override [integrator] method: {} (multibody: {})", dynamics::method_names(),
                               multibody::multibody_method_names()));

@@ -20,4 +20,7 @@ void register_run(CLI::App& app);
 // lambda (issue 5)
 void register_lambda(CLI::App& app);
 
+// view: the 3-D page of a run
+void register_view(CLI::App& app);
+
 }  // namespace poinsot::cli

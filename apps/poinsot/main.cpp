@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
   // lambda (issue 5)
   poinsot::cli::register_lambda(app);
 
+  // view: the 3-D page of a run
+  poinsot::cli::register_view(app);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

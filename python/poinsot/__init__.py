@@ -55,6 +55,7 @@ from ._core import (
 )
 from . import plot
 from ._simulate import RunResult, SimulationResult, run, scenario_toml, simulate
+from ._view import view
 
 __all__ = [
     "__version__",
@@ -98,5 +99,6 @@ __all__ = [
     "run",
     "RunResult",
     "plot",
+    "view",
 ]
 

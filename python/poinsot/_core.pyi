@@ -292,11 +292,19 @@ def total_energy(body: RigidBody, state: State, gravity_space: numpy.typing.Arra
 def validate_state(state: State, what: str = ...) -> None:
     """Throws InvalidInput unless R is a rotation (‖RᵀR − I‖_F ≤ 1e-9 after the caller's projection) and the state is finite."""
 
+def view_data_json(run_dir: str, frames: int = ..., scenario: str = ...) -> str:
+    """The page's data as JSON (the keys are listed in docs/viewer.md) from the folder of a finished run (summary.json and trajectory.csv of `poinsot run`; diagnostics.csv of a multibody run when present)."""
+
+def write_view_page(run_dir: str, frames: int = ..., scenario: str = ...) -> str:
+    """Writes `run_dir`/view.html atomically (temporary file, then rename) and returns its path."""
+
 DEFAULT_LAMBDA_METHOD: str
 
 DEFAULT_METHOD: str
 
 METHODS: dict
+
+VIEW_FRAMES_DEFAULT: int
 
 __version__: str
 

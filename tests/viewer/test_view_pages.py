@@ -1,0 +1,112 @@
+"""Every example's view.html in a real browser: it loads with no console error or warning, draws something,
+redraws when the time slider moves, and plays."""
+import time
+
+import pytest
+
+from conftest import EXAMPLES
+
+
+@pytest.mark.parametrize("example", EXAMPLES)
+def test_page_of_every_example_loads_draws_and_plays(example, example_runs, load):
+    page = load(example_runs[example] / "view.html")
+    assert page.js("return !!window.poinsotView"), page.console()
+    player = page.js("var p = window.poinsotView.player; return {t0: p.t0, t1: p.t1, n: p.n};")
+    assert player["n"] >= 2 and player["t1"] > player["t0"]
+
+    covered, digest = page.pixels()
+    assert covered > 0.001, f"{example}: the canvas is blank ({covered:.4f} of the pixels drawn)"
+
+    page.seek_with_slider(player["t0"] + 0.6 * (player["t1"] - player["t0"]))
+    assert page.js("return window.poinsotView.player.time") == pytest.approx(
+        player["t0"] + 0.6 * (player["t1"] - player["t0"]))
+    assert page.pixels()[1] != digest, f"{example}: moving the time slider left the pixels unchanged"
+    label = page.js("return document.getElementById('time-label').textContent")
+    assert label.startswith("t = ") and " s / " in label
+
+    page.seek_with_slider(player["t0"])
+    page.driver.find_element("id", "play").click()
+    deadline = time.monotonic() + 3.0  # software rendering may draw few frames a second
+    while True:
+        time.sleep(0.1)
+        state = page.js("var p = window.poinsotView.player; return [p.playing, p.time];")
+        if state[1] > player["t0"] or time.monotonic() > deadline:
+            break
+    assert state[0] and state[1] > player["t0"], f"{example}: play did not advance the time: {state}"
+    page.driver.find_element("id", "play").click()  # pause
+
+    bad = [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]
+    assert not bad, f"{example}: the console says {bad}"
+
+
+def test_page_is_self_contained(example_runs):
+    """Opens from disk with no server or network: no external script, style or image."""
+    text = (example_runs["tennis_racket.toml"] / "view.html").read_text(encoding="utf-8")
+    for ref in ("<script src", "<link", "<img", "@import", "url(http"):
+        assert ref not in text, ref
+    assert "THREE.REVISION" in text or 'REVISION="111"' in text
+
+
+def test_keyboard_shortcuts_and_controls(example_runs, load):
+    """The help panel's keys do what it says; the speed stays within 0.1x to 10x; a frame step lands on the
+    next frame's time; the body-fixed camera keeps the body still on screen while it turns."""
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.keys import Keys
+
+    page = load(example_runs["tennis_racket.toml"] / "view.html")
+    keys = ActionChains(page.driver)
+    state = "var p = window.poinsotView.player; return [p.playing, p.time, p.speed, p.cameraMode];"
+    assert page.js("return document.getElementById('help').hidden")
+    keys.send_keys("h").perform()
+    assert not page.js("return document.getElementById('help').hidden")
+    assert page.js("return document.getElementById('help-keys').rows.length") >= 9
+    keys.send_keys("h").perform()
+    for _ in range(20):
+        keys.send_keys("+").perform()
+    assert page.js(state)[2] == 10
+    for _ in range(40):
+        keys.send_keys("-").perform()
+    assert page.js(state)[2] == pytest.approx(0.1)
+    keys.send_keys(Keys.ARROW_RIGHT).perform()
+    keys.send_keys(Keys.ARROW_RIGHT).perform()
+    assert page.js(state)[1] == page.js("return window.poinsotView.data.t[2]")
+    keys.send_keys(Keys.END).perform()
+    assert page.js(state)[1] == page.js("return window.poinsotView.player.t1")
+    visible = "return window.poinsotView.scene.children.filter(function (o) { return o.type === 'Mesh' &&" \
+              " o.geometry.type === 'CircleGeometry'; })[0].visible"
+    assert page.js(visible)  # the invariable plane, overlay 7
+    keys.send_keys("7").perform()
+    assert not page.js(visible) and not page.js("return document.getElementById('overlay-plane').checked")
+    keys.send_keys("7").perform()
+    assert page.js(visible)
+
+    # Only the body and what it carries stay drawn: the body-fixed camera then sees a still picture.
+    for overlay in ("plane", "herpolhode", "polhode", "L", "omega", "contact"):
+        page.js("document.getElementById('overlay-' + arguments[0]).click();", overlay)
+    page.seek_with_slider(1.0)
+    page.changed_since()
+    page.seek_with_slider(1.05)
+    assert page.changed_since() > 0.005  # space-fixed camera: the body turns on screen
+    keys.send_keys("c").perform()
+    assert page.js(state)[3] == "body"
+    page.seek_with_slider(1.0)
+    page.changed_since()
+    page.seek_with_slider(1.05)
+    assert page.changed_since() < 0.001, "the body-fixed camera should show the body still"
+    keys.send_keys(Keys.SPACE).perform()
+    assert page.js(state)[0]
+    keys.send_keys(Keys.SPACE).perform()
+    assert not page.js(state)[0]
+    assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]
+
+
+def test_a_body_at_rest_has_no_construction_and_no_error(cli, tmp_path, load):
+    """L = 0 has no invariable plane: the page draws the body alone, with nothing NaN in the console."""
+    (tmp_path / "rest.toml").write_text('[body]\nprincipal_moments = [1, 2, 3]\n[initial]\nomega_body = [0, 0, 0]\n'
+                                        '[integrator]\nmethod = "exact"\n[output]\nt_end = 1\n')
+    r = cli("run", tmp_path / "rest.toml", "--out", tmp_path / "run", "--html", "--quiet")
+    assert r.returncode == 0, r.stderr
+    page = load(tmp_path / "run" / "view.html")
+    assert page.js("return window.poinsotView.construction") is None
+    assert page.pixels()[0] > 0.001
+    assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]
