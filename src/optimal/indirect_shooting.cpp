@@ -42,8 +42,9 @@ SwitchGuess read_switching_structure(const ReorientationProblem& p, const Direct
       if (std::abs(u) < 0.95 * umax) {
         if (inside_since < 0.0) inside_since = d.time[j];
         if (d.time[j] - inside_since > 0.05 * T && g.singular.empty())
-          g.singular = "u" + std::to_string(i + 1) + " is inside its bound from t = " + format_number(inside_since, 6) +
-                       " s to " + format_number(d.time[j], 6) + " s (a singular arc?)";
+          g.singular = "u" + std::to_string(i + 1) +
+                       " is inside its bound from t = " + format_number(inside_since, 6) + " s to " +
+                       format_number(d.time[j], 6) + " s (a singular arc?)";
       } else {
         inside_since = -1.0;
       }
@@ -77,7 +78,9 @@ class Shooter {
     Rf_ = p.attitude_final.toRotationMatrix();
   }
 
-  int size() const { return 6 + (p_.free_final_time() ? 1 : 0) + (bang_ ? static_cast<int>(s_.axes.size()) : 0); }
+  int size() const {
+    return 6 + (p_.free_final_time() ? 1 : 0) + (bang_ ? static_cast<int>(s_.axes.size()) : 0);
+  }
 
   /// The torque on the arc that starts after the switches at times ≤ t_begin (bang-bang), from x.
   Vec3 arc_torque(const Eigen::VectorXd& x, double t_mid) const {
@@ -102,8 +105,10 @@ class Shooter {
     std::vector<double> knots{0.0};
     std::vector<std::size_t> order;
     if (bang_) {
-      for (std::size_t k = 0; k < s_.axes.size(); ++k) order.push_back(k);
-      std::sort(order.begin(), order.end(), [&](auto a, auto b) { return switch_time(x, a) < switch_time(x, b); });
+      for (std::size_t k = 0; k < s_.axes.size(); ++k)
+        order.push_back(k);
+      std::sort(order.begin(), order.end(),
+                [&](auto a, auto b) { return switch_time(x, a) < switch_time(x, b); });
       for (auto k : order) {
         if (!(switch_time(x, k) > 0.0 && switch_time(x, k) < T)) return false;
         knots.push_back(switch_time(x, k));
@@ -119,16 +124,17 @@ class Shooter {
       auto control = [&](const PmpState& yy) {
         return bang_ ? u_arc : minimising_control(p_, Eigen::Map<const Vec3>(yy.data() + 21));
       };
-      auto rhs = [&](const PmpState& yy, PmpState& dy, double) { detail::pmp_rhs(p_, J_inv_, yy, dy, control(yy)); };
+      auto rhs = [&](const PmpState& yy, PmpState& dy, double) {
+        detail::pmp_rhs(p_, J_inv_, yy, dy, control(yy));
+      };
       const int n = std::max(2, o_.samples_per_arc);
       for (int i = 0; i < n; ++i) {
         const double ts = t0 + (t1 - t0) * i / (n - 1);
         if (i > 0 && t1 > t0) {
           const double ta = t0 + (t1 - t0) * (i - 1) / (n - 1);
-          odeint::integrate_adaptive(
-              odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(o_.integration_tolerance,
-                                                                                 o_.integration_tolerance),
-              rhs, y, ta, ts, (ts - ta) / 4);
+          odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(
+                                         o_.integration_tolerance, o_.integration_tolerance),
+                                     rhs, y, ta, ts, (ts - ta) / 4);
         }
         observe(ts, y, control(y));
       }
@@ -164,7 +170,8 @@ class Shooter {
     int row = 6;
     if (p_.free_final_time()) F[row++] = detail::hamiltonian(p_, J_inv_, v, uT);
     if (bang_)
-      for (std::size_t k = 0; k < sigma.size(); ++k) F[row++] = sigma[k] * p_.torque_max[s_.axes[k]];
+      for (std::size_t k = 0; k < sigma.size(); ++k)
+        F[row++] = sigma[k] * p_.torque_max[s_.axes[k]];
     return F.allFinite();
   }
 
@@ -184,26 +191,34 @@ Vec3 minimising_control(const ReorientationProblem& p, const Vec3& costate_omega
   switch (p.objective) {
     case Objective::minimum_time:
       if (p.bound == TorqueBound::per_axis) {
-        for (int i = 0; i < 3; ++i) u[i] = sigma[i] < 0 ? p.torque_max[i] : -p.torque_max[i];
+        for (int i = 0; i < 3; ++i)
+          u[i] = sigma[i] < 0 ? p.torque_max[i] : -p.torque_max[i];
         return u;
       }
       return sigma.norm() > 0 ? Vec3(-p.torque_max[0] * sigma.normalized()) : Vec3::Zero();
-    case Objective::minimum_energy: u = -0.5 * sigma; break;
-    case Objective::minimum_time_regularised: u = -sigma / (2.0 * p.energy_weight); break;
+    case Objective::minimum_energy:
+      u = -0.5 * sigma;
+      break;
+    case Objective::minimum_time_regularised:
+      u = -sigma / (2.0 * p.energy_weight);
+      break;
   }
   if (p.bound == TorqueBound::per_axis) return u.cwiseMax(-p.torque_max).cwiseMin(p.torque_max);
   return u.norm() > p.torque_max[0] ? Vec3(p.torque_max[0] * u.normalized()) : u;
 }
 
-IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolution& d, const ShootingOptions& o) {
+IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolution& d,
+                                const ShootingOptions& o) {
   validate(p);
   if (d.costate_time.size() < 2 || d.time.empty())
-    throw InvalidInput("indirect: the direct solution has no costate estimates; expected a solve_direct result");
+    throw InvalidInput(
+        "indirect: the direct solution has no costate estimates; expected a solve_direct result");
   IndirectSolution out;
   out.bang_bang = p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis;
 
   double rate_peak = 0.0;
-  for (const auto& w : d.omega_body) rate_peak = std::max(rate_peak, w.cwiseAbs().maxCoeff());
+  for (const auto& w : d.omega_body)
+    rate_peak = std::max(rate_peak, w.cwiseAbs().maxCoeff());
   if (p.has_rate_bound() && rate_peak > p.rate_max * (1.0 - 1e-4)) {
     out.status = "not applied: the rate bound is active (peak |ω_i| = " + format_number(rate_peak, 8) +
                  " rad/s); state-constrained arcs are not handled by the shooting method";
@@ -230,7 +245,8 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   const double c0 = d.costate_time[0], c1 = d.costate_time[1];
   x.segment<3>(3) = d.costate_omega[0] - c0 / (c1 - c0) * (d.costate_omega[1] - d.costate_omega[0]);
   if (p.free_final_time()) x[6] = d.final_time;
-  for (std::size_t k = 0; k < sw.times.size(); ++k) x[7 + static_cast<int>(k)] = sw.times[k];
+  for (std::size_t k = 0; k < sw.times.size(); ++k)
+    x[7 + static_cast<int>(k)] = sw.times[k];
 
   Eigen::VectorXd F;
   if (!shooter.residual(x, F)) {
@@ -243,7 +259,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     const int n = shooter.size();
     Eigen::MatrixXd Jac(n, n);
     for (int j = 0; j < n; ++j) {
-      const double scale = j < 3 ? x.segment<3>(0).cwiseAbs().maxCoeff()
+      const double scale = j < 3   ? x.segment<3>(0).cwiseAbs().maxCoeff()
                            : j < 6 ? x.segment<3>(3).cwiseAbs().maxCoeff()
                                    : std::abs(x[j]);
       const double h = 1e-7 * std::max({std::abs(x[j]), 1e-2 * scale, 1e-12});
@@ -287,8 +303,10 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   }
   {  // ascending switching times
     std::vector<std::size_t> idx(out.switch_times.size());
-    for (std::size_t k = 0; k < idx.size(); ++k) idx[k] = k;
-    std::sort(idx.begin(), idx.end(), [&](auto a, auto b) { return out.switch_times[a] < out.switch_times[b]; });
+    for (std::size_t k = 0; k < idx.size(); ++k)
+      idx[k] = k;
+    std::sort(idx.begin(), idx.end(),
+              [&](auto a, auto b) { return out.switch_times[a] < out.switch_times[b]; });
     std::vector<double> t;
     std::vector<int> a;
     for (auto k : idx) {

@@ -47,9 +47,12 @@ inline Vec3 attitude_costate_body(const Mat3& R, const Mat3& P) {
 /// The running cost L(u) of the objective (1 + ε‖u‖² includes the time term of the free-time objectives).
 inline double running_cost(const ReorientationProblem& p, const Vec3& u) {
   switch (p.objective) {
-    case Objective::minimum_time: return 1.0;
-    case Objective::minimum_energy: return u.squaredNorm();
-    case Objective::minimum_time_regularised: return 1.0 + p.energy_weight * u.squaredNorm();
+    case Objective::minimum_time:
+      return 1.0;
+    case Objective::minimum_energy:
+      return u.squaredNorm();
+    case Objective::minimum_time_regularised:
+      return 1.0 + p.energy_weight * u.squaredNorm();
   }
   return 0.0;
 }

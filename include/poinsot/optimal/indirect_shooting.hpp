@@ -33,7 +33,7 @@
 namespace poinsot::optimal {
 
 struct ShootingOptions {
-  double tolerance = 1e-12;              ///< on the scaled residual (max norm)
+  double tolerance = 1e-12;  ///< on the scaled residual (max norm)
   int max_iterations = 40;
   double integration_tolerance = 1e-13;  ///< RKF78 rtol and atol
   int samples_per_arc = 64;              ///< output samples on each arc (ends included)
@@ -61,14 +61,14 @@ struct IndirectSolution {
 
   // Samples (arc ends included, so each switch appears twice, once per side).
   std::vector<double> time;
-  std::vector<Mat3> attitude;              ///< R (body → space)
-  std::vector<Vec3> omega_body;            ///< rad/s
-  std::vector<Vec3> torque_body;           ///< N·m
-  std::vector<Mat3> costate_attitude;      ///< P
-  std::vector<Vec3> costate_attitude_body; ///< p_θ = vee(RᵀP − PᵀR)
-  std::vector<Vec3> costate_omega;         ///< p_ω
-  std::vector<Vec3> switching_function;    ///< σ = J⁻¹ p_ω
-  std::vector<double> hamiltonian;         ///< H (0 on a free-time extremal)
+  std::vector<Mat3> attitude;               ///< R (body → space)
+  std::vector<Vec3> omega_body;             ///< rad/s
+  std::vector<Vec3> torque_body;            ///< N·m
+  std::vector<Mat3> costate_attitude;       ///< P
+  std::vector<Vec3> costate_attitude_body;  ///< p_θ = vee(RᵀP − PᵀR)
+  std::vector<Vec3> costate_omega;          ///< p_ω
+  std::vector<Vec3> switching_function;     ///< σ = J⁻¹ p_ω
+  std::vector<double> hamiltonian;          ///< H (0 on a free-time extremal)
 };
 
 /// Shoots from the direct solution's costates. Throws InvalidInput for an invalid problem or a direct
