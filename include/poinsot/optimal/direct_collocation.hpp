@@ -26,7 +26,7 @@
 namespace poinsot::optimal {
 
 struct CollocationOptions {
-  int initial_intervals = 24;
+  int initial_intervals = 10;
   double mesh_tolerance = 1e-7;  ///< the largest accepted ε_k (relative)
   int max_mesh_iterations = 10;
   int max_intervals = 4000;

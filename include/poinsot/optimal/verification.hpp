@@ -21,7 +21,9 @@ struct VerificationTolerances {
   double orthogonality = 1e-10;        ///< ‖RᵀR − I‖_F along the indirect solution
   double resimulated_attitude = 1e-9;  ///< rad, bang-bang controls (exact switch times)
   double resimulated_attitude_smooth = 1e-6;  ///< rad, smooth controls replayed piecewise-linearly
-  double direct_indirect = 1e-4;  ///< relative difference of the costs (the direct mesh blurs switches)
+  /// Relative difference of the costs: the direct mesh blurs the switches (6.5e-5 for Betts at a mesh error
+  /// of 1e-5), while another extremal (the eigenaxis manoeuvre: 20 % for Betts) is far above it.
+  double direct_indirect = 1e-3;
 };
 
 struct VerificationReport {
