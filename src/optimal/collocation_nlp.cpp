@@ -23,7 +23,7 @@ CollocationNlp::CollocationNlp(const ReorientationProblem& problem, std::vector<
 }
 
 int CollocationNlp::num_constraints() const {
-  const int base = 14 * intervals() + 2 * intervals() + 3;
+  const int base = 14 * intervals() + 2 * intervals() + final_rows();
   return problem_.bound == TorqueBound::norm ? base + points() : base;
 }
 
@@ -133,7 +133,8 @@ void CollocationNlp::constraints(const double* z, double* g) const {
   }
   for (int p = 1; p < points(); ++p)
     g[norm_rows_begin() + p - 1] = point(z, p).head<4>().squaredNorm() - 1.0;
-  Eigen::Map<Vec3>(g + final_rows_begin()) = final_attitude_rows_ * point(z, points() - 1).head<4>();
+  if (final_rows() == 3)
+    Eigen::Map<Vec3>(g + final_rows_begin()) = final_attitude_rows_ * point(z, points() - 1).head<4>();
   if (problem_.bound == TorqueBound::norm)
     for (int p = 0; p < points(); ++p)
       g[torque_norm_rows_begin() + p] = point(z, p).segment<3>(7).squaredNorm();
@@ -142,7 +143,7 @@ void CollocationNlp::constraints(const double* z, double* g) const {
 int CollocationNlp::jacobian_nonzeros() const {
   const int per_interval = 14 * (3 * kPointVars + 1);
   const int torque = problem_.bound == TorqueBound::norm ? 3 * points() : 0;
-  return intervals() * per_interval + 4 * (points() - 1) + 12 + torque;
+  return intervals() * per_interval + 4 * (points() - 1) + 4 * final_rows() + torque;
 }
 
 void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
@@ -162,7 +163,7 @@ void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
       rows[n] = norm_rows_begin() + p - 1;
       cols[n++] = kPointVars * p + c;
     }
-  for (int r = 0; r < 3; ++r)
+  for (int r = 0; r < final_rows(); ++r)
     for (int c = 0; c < 4; ++c) {
       rows[n] = final_rows_begin() + r;
       cols[n++] = kPointVars * (points() - 1) + c;
@@ -204,7 +205,7 @@ void CollocationNlp::jacobian_values(const double* z, double* v) const {
   for (int p = 1; p < points(); ++p)
     for (int c = 0; c < 4; ++c)
       v[n++] = 2.0 * z[kPointVars * p + c];
-  for (int r = 0; r < 3; ++r)
+  for (int r = 0; r < final_rows(); ++r)
     for (int c = 0; c < 4; ++c)
       v[n++] = final_attitude_rows_(r, c);
   if (problem_.bound == TorqueBound::norm)

@@ -10,7 +10,7 @@
 ///   D_k = x_{k+1} − x_k − h_k/6 (f_k + 4 f_m + f_{k+1})          (Simpson defect, 7 per interval)
 ///   M_k = x_m − ½ (x_k + x_{k+1}) − h_k/8 (f_k − f_{k+1})        (Hermite midpoint, 7 per interval)
 ///   ‖q_p‖² − 1 = 0 for p = 1 … 2N                              (the SO(3) constraint on the quaternion)
-///   vec(q_f* ⊗ q_{2N}) = 0                                      (final attitude, 3)
+///   vec(q_f* ⊗ q_{2N}) = 0                                      (final attitude, 3; none when free)
 ///   ‖u_p‖² ≤ u_max² for p = 0 … 2N                              (norm bound only)
 /// Objective: β T + α Σ_k h_k/6 (‖u_k‖² + 4‖u_m‖² + ‖u_{k+1}‖²) (Simpson's rule for ∫‖u‖²dt), with
 /// (β, α) = (1, 0), (0, 1), (1, ε) for minimum time, minimum energy, regularised minimum time.
@@ -67,7 +67,8 @@ class CollocationNlp {
   double time_weight() const;
   int norm_rows_begin() const { return 14 * intervals(); }
   int final_rows_begin() const { return norm_rows_begin() + 2 * intervals(); }
-  int torque_norm_rows_begin() const { return final_rows_begin() + 3; }
+  int final_rows() const { return problem_.free_final_attitude ? 0 : 3; }
+  int torque_norm_rows_begin() const { return final_rows_begin() + final_rows(); }
 
   ReorientationProblem problem_;
   std::vector<double> tau_;

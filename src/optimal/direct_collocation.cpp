@@ -152,17 +152,28 @@ std::vector<double> mesh_errors(const CollocationNlp& nlp, const std::vector<dou
 std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
   const auto& p = nlp.problem();
   const Mat3 R0 = p.attitude_initial.toRotationMatrix(), Rf = p.attitude_final.toRotationMatrix();
-  const Vec3 rotvec = so3::log(R0.transpose() * Rf);
+  const Vec3 rotvec = p.free_final_attitude ? Vec3::Zero() : so3::log(R0.transpose() * Rf);
   // A transverse rate bump breaks the symmetry of rotations about a principal axis, whose eigenaxis
   // manoeuvre is a stationary point of the NLP but not the optimum (Bilimoria & Wie 1993).
   Vec3 transverse = Vec3(0.36, 0.48, 0.8);
   if (rotvec.norm() > 0.0) transverse -= transverse.dot(rotvec) / rotvec.squaredNorm() * rotvec;
   if (transverse.norm() > 1e-3) transverse.normalize();
   std::vector<double> z(nlp.num_variables(), 0.0);
+  // With a free final attitude (detumbling) the attitude guess follows the rate guess: R is propagated by
+  // exact exponentials of the linearly interpolated ω over 16 sub-steps between points.
+  Mat3 R_free = R0;
+  double tau_prev = 0.0;
+  Vec3 w_prev = p.omega_initial;
   for (int pt = 0; pt < nlp.points(); ++pt) {
     const int k = pt / 2;
     const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
-    const Quat q(R0 * so3::exp(tau * rotvec));
+    const Vec3 w = (1.0 - tau) * p.omega_initial + tau * p.omega_final + rotvec / T +
+                   std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
+    for (int i = 0; i < 16; ++i)
+      R_free = R_free * so3::exp((tau - tau_prev) * T / 16.0 * (w_prev + (i + 0.5) / 16.0 * (w - w_prev)));
+    tau_prev = tau;
+    w_prev = w;
+    const Quat q(p.free_final_attitude ? R_free : Mat3(R0 * so3::exp(tau * rotvec)));
     const Quat qs = q.w() * p.attitude_initial.w() + q.vec().dot(p.attitude_initial.vec()) < 0
                         ? Quat(-q.w(), -q.x(), -q.y(), -q.z())
                         : q;
@@ -170,8 +181,6 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
     z[kP * pt + 1] = qs.x();
     z[kP * pt + 2] = qs.y();
     z[kP * pt + 3] = qs.z();
-    const Vec3 w = (1.0 - tau) * p.omega_initial + tau * p.omega_final + rotvec / T +
-                   std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
     for (int i = 0; i < 3; ++i)
       z[kP * pt + 4 + i] = w[i];
   }

@@ -165,7 +165,9 @@ class Shooter {
     const double T = final_time(x);
     F.resize(size());
     const Mat3 E = Rf_.transpose() * v.R;
-    F.segment<3>(0) = 0.5 * so3::vee(E - E.transpose());
+    // Free final attitude: p_θ(T) = 0, i.e. p_θ(0) = 0 (R p_θ is constant).
+    F.segment<3>(0) =
+        p_.free_final_attitude ? Vec3(x.segment<3>(0)) : Vec3(0.5 * so3::vee(E - E.transpose()));
     F.segment<3>(3) = (v.omega - p_.omega_final) * T;
     int row = 6;
     if (p_.free_final_time()) F[row++] = detail::hamiltonian(p_, J_inv_, v, uT);

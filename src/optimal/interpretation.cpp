@@ -32,7 +32,7 @@ ManoeuvreInterpretation interpret(const ReorientationProblem& p, const IndirectS
     }
     out.peak_von_mises = std::max(out.peak_von_mises, sum.von_mises);
   }
-  const bool at_rest = p.omega_initial.isZero(0.0) && p.omega_final.isZero(0.0);
+  const bool at_rest = p.omega_initial.isZero(0.0) && p.omega_final.isZero(0.0) && !p.free_final_attitude;
   const Vec3 rotvec =
       so3::log(p.attitude_initial.toRotationMatrix().transpose() * p.attitude_final.toRotationMatrix());
   const double theta = rotvec.norm();

@@ -58,7 +58,7 @@ double ReorientationProblem::torque_norm_limit() const {
 }
 
 double minimum_duration_bound(const ReorientationProblem& p) {
-  const double theta = so3::angle_between(p.attitude_initial, p.attitude_final);
+  const double theta = p.free_final_attitude ? 0.0 : so3::angle_between(p.attitude_initial, p.attitude_final);
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(p.inertia_body);
   const double j_min = eig.eigenvalues()[0];
   const double ubar = p.torque_norm_limit();

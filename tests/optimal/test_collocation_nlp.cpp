@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <tuple>
 
 #include "optimal_test_problems.hpp"
 
@@ -33,7 +34,7 @@ Eigen::MatrixXd dense_jacobian(const CollocationNlp& nlp, const std::vector<doub
   return J;
 }
 
-ReorientationProblem general_problem(TorqueBound bound, Objective objective) {
+ReorientationProblem general_problem(TorqueBound bound, Objective objective, bool free_attitude) {
   ReorientationProblem p;
   Mat3 J;
   J << 3.0, 0.2, -0.1, 0.2, 2.5, 0.3, -0.1, 0.3, 2.0;  // a valid non-diagonal inertia
@@ -44,15 +45,16 @@ ReorientationProblem general_problem(TorqueBound bound, Objective objective) {
   p.objective = objective;
   if (objective == Objective::minimum_energy) p.final_time = 10.0;
   if (objective == Objective::minimum_time_regularised) p.energy_weight = 0.3;
+  p.free_final_attitude = free_attitude;
   return p;
 }
 
-class CollocationDerivatives : public ::testing::TestWithParam<std::pair<TorqueBound, Objective>> {};
+class CollocationDerivatives : public ::testing::TestWithParam<std::tuple<TorqueBound, Objective, bool>> {};
 
 // Central differences have error O(δ²·|f'''|) + O(ε/δ): with δ = 1e-6 and O(1) data, about 1e-9.
 TEST_P(CollocationDerivatives, JacobianAndHessianMatchCentralDifferences) {
-  const auto [bound, objective] = GetParam();
-  const CollocationNlp nlp(general_problem(bound, objective), {0.0, 0.3, 0.55, 1.0});
+  const auto [bound, objective, free_attitude] = GetParam();
+  const CollocationNlp nlp(general_problem(bound, objective, free_attitude), {0.0, 0.3, 0.55, 1.0});
   const std::vector<double> z = random_point(nlp, 7);
   const int n = nlp.num_variables(), m = nlp.num_constraints();
   const double delta = 1e-6;
@@ -107,10 +109,11 @@ TEST_P(CollocationDerivatives, JacobianAndHessianMatchCentralDifferences) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllObjectives, CollocationDerivatives,
-                         ::testing::Values(std::pair{TorqueBound::per_axis, Objective::minimum_time},
-                                           std::pair{TorqueBound::norm, Objective::minimum_energy},
-                                           std::pair{TorqueBound::per_axis,
-                                                     Objective::minimum_time_regularised}));
+                         ::testing::Values(std::tuple{TorqueBound::per_axis, Objective::minimum_time, false},
+                                           std::tuple{TorqueBound::norm, Objective::minimum_energy, false},
+                                           std::tuple{TorqueBound::per_axis,
+                                                      Objective::minimum_time_regularised, false},
+                                           std::tuple{TorqueBound::norm, Objective::minimum_time, true}));
 
 }  // namespace
 }  // namespace poinsot::optimal::detail

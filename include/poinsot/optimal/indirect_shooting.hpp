@@ -14,7 +14,8 @@
 /// u_i = −u_max,i sign σ_i (per-axis, minimum time), u = −ū σ/‖σ‖ (norm bound, minimum time), or the
 /// projection of −σ/2 (energy), −σ/(2ε) (regularised) onto the bounds.
 /// Boundary conditions: R(T) = R_f (3 equations: vee(R_fᵀR − RᵀR_f)/2 = 0), ω(T) = ω_f, and for a free final
-/// time the transversality condition H(T) = 0 (H is autonomous, hence constant).
+/// time the transversality condition H(T) = 0 (H is autonomous, hence constant). With a free final
+/// attitude the attitude conditions are replaced by p_θ(T) = 0.
 ///
 /// Bang-bang controls (per-axis bounds, minimum time): the switching structure (the initial sign of each u_i
 /// and the order of its sign changes) is read from the direct solution's torques, and the switching times

@@ -39,6 +39,9 @@ struct ReorientationProblem {
   Quat attitude_final = Quat::Identity();                     ///< R_f as a unit quaternion (body → space)
   Vec3 omega_initial = Vec3::Zero();                          ///< ω_0, body frame (rad/s)
   Vec3 omega_final = Vec3::Zero();                            ///< ω_f, body frame (rad/s)
+  /// Detumbling: R(T) is free (attitude_final is ignored); the transversality condition is p_θ(T) = 0.
+  bool free_final_attitude = false;
+
   Objective objective = Objective::minimum_time;
   double final_time = 0.0;     ///< T (s) for minimum_energy; ignored by the free-time objectives
   double energy_weight = 0.0;  ///< ε (s/(N·m)²) of minimum_time_regularised; must be 0 otherwise
@@ -50,10 +53,10 @@ struct ReorientationProblem {
 };
 
 /// A necessary lower bound on the duration of any admissible manoeuvre (s): the geodesic angle Θ between R_0
-/// and R_f is at most ∫‖ω‖dt, ‖ω‖ ≤ ‖L‖/J_min, and ‖L(t)‖ ≤ min(‖L_0‖ + ū t, ‖L_f‖ + ū (T − t)) because
-/// ‖L̇_space‖ = ‖u‖ ≤ ū (ū = torque_norm_limit()); with a rate bound also ‖ω‖ ≤ √3 ω_max. Also ‖L_f‖ and ‖L_0‖
-/// differ by at most ū T. The smallest T meeting both (found by bisection to 1e-12 relative). Assumes a
-/// problem whose other fields are valid.
+/// and R_f (0 with a free final attitude) is at most ∫‖ω‖dt, ‖ω‖ ≤ ‖L‖/J_min, and ‖L(t)‖ ≤ min(‖L_0‖ + ū t,
+/// ‖L_f‖ + ū (T − t)) because ‖L̇_space‖ = ‖u‖ ≤ ū (ū = torque_norm_limit()); with a rate bound also ‖ω‖ ≤ √3
+/// ω_max. Also ‖L_f‖ and ‖L_0‖ differ by at most ū T. The smallest T meeting both (found by bisection to
+/// 1e-12 relative). Assumes a problem whose other fields are valid.
 double minimum_duration_bound(const ReorientationProblem& problem);
 
 /// Throws InvalidInput (one line naming the field, the value and what was expected) for: an invalid or

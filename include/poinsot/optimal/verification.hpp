@@ -36,7 +36,8 @@ struct VerificationReport {
   double costate_drift = 0.0;          ///< max ‖R p_θ − R_0 p_θ(0)‖ / ‖p_θ(0)‖
   double orthogonality = 0.0;          ///< max ‖RᵀR − I‖_F
   double lambda_torque_error = 0.0;  ///< max ‖vee(Λ − Λᵀ) − u‖ / ū: the paper's Λ carries the torque
-  double resimulated_attitude_error = 0.0;  ///< rad, angle between the re-simulated R(T) and R_f
+  double resimulated_attitude_error = 0.0;  ///< rad, angle between the re-simulated R(T) and R_f (free
+                                            ///< final attitude: the indirect solution's R(T))
   double resimulated_rate_error = 0.0;      ///< rad/s, ‖ω(T) − ω_f‖
   double direct_indirect_difference = 0.0;  ///< |J_direct − J_indirect| / |J_indirect|
 };
