@@ -159,20 +159,41 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
   if (rotvec.norm() > 0.0) transverse -= transverse.dot(rotvec) / rotvec.squaredNorm() * rotvec;
   if (transverse.norm() > 1e-3) transverse.normalize();
   std::vector<double> z(nlp.num_variables(), 0.0);
-  // With a free final attitude (detumbling) the attitude guess follows the rate guess: R is propagated by
-  // exact exponentials of the linearly interpolated ω over 16 sub-steps between points.
+  // With a free final attitude (detumbling to rest) the guess is the motion under the momentum-dumping torque
+  // u = −(‖L_0‖/T) Jω/‖Jω‖, which takes ‖L‖ linearly to 0 at T; R and ω are advanced by 16 midpoint sub-steps
+  // (exact exponentials for R) between points.
+  const bool dumping = p.free_final_attitude && p.omega_final.isZero(0.0);
+  const double dump_rate = (p.inertia_body * p.omega_initial).norm() / T;
+  const Mat3 J_inv = p.inertia_body.inverse();
+  const auto dumping_torque = [&](const Vec3& w) {
+    const Vec3 L = p.inertia_body * w;
+    return L.norm() > 0.0 ? Vec3(-dump_rate * L.normalized()) : Vec3::Zero();
+  };
   Mat3 R_free = R0;
+  Vec3 w_free = p.omega_initial;
   double tau_prev = 0.0;
-  Vec3 w_prev = p.omega_initial;
   for (int pt = 0; pt < nlp.points(); ++pt) {
     const int k = pt / 2;
     const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
-    const Vec3 w = (1.0 - tau) * p.omega_initial + tau * p.omega_final + rotvec / T +
-                   std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
-    for (int i = 0; i < 16; ++i)
-      R_free = R_free * so3::exp((tau - tau_prev) * T / 16.0 * (w_prev + (i + 0.5) / 16.0 * (w - w_prev)));
+    Vec3 w = (1.0 - tau) * p.omega_initial + tau * p.omega_final + rotvec / T +
+             std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
+    for (int i = 0; i < 16 && p.free_final_attitude; ++i) {
+      const double h = (tau - tau_prev) * T / 16.0;
+      const auto wdot = [&](const Vec3& v) {
+        const Vec3 u = dumping ? dumping_torque(v) : Vec3::Zero();
+        return Vec3(J_inv * (u - v.cross(p.inertia_body * v)));
+      };
+      const Vec3 w_mid = dumping ? Vec3(w_free + 0.5 * h * wdot(w_free)) : w;
+      R_free = R_free * so3::exp(h * w_mid);
+      if (dumping) w_free += h * wdot(w_mid);
+    }
     tau_prev = tau;
-    w_prev = w;
+    if (dumping) {
+      w = pt + 1 == nlp.points() ? p.omega_final : w_free;
+      const Vec3 u = dumping_torque(w);
+      for (int i = 0; i < 3; ++i)
+        z[kP * pt + 7 + i] = u[i];
+    }
     const Quat q(p.free_final_attitude ? R_free : Mat3(R0 * so3::exp(tau * rotvec)));
     const Quat qs = q.w() * p.attitude_initial.w() + q.vec().dot(p.attitude_initial.vec()) < 0
                         ? Quat(-q.w(), -q.x(), -q.y(), -q.z())
