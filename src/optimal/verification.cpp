@@ -90,7 +90,8 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
     const Vec3& sigma = s.switching_function[j];
     const Vec3& u = s.torque_body[j];
     const Vec3 u_best = minimising_control(p, s.costate_omega[j]);
-    const double scale = std::max(p.torque_norm_limit() * sigma.norm(), 1e-300);
+    // the size of the control-dependent part of H: ‖σ‖ ‖u*‖ (ū‖σ‖ for minimum time, ‖σ‖²/2 for energy)
+    const double scale = std::max(sigma.norm() * u_best.norm(), 1e-300);
     r.control_gap = std::max(
         r.control_gap, (control_hamiltonian(p, sigma, u) - control_hamiltonian(p, sigma, u_best)) / scale);
     if (s.bang_bang)
