@@ -151,7 +151,6 @@ class Shooter {
     PmpState yT{};
     Vec3 uT = Vec3::Zero();
     std::vector<double> sigma;
-    const int samples = o_.samples_per_arc;
     ShootingOptions quick = o_;
     quick.samples_per_arc = 2;
     Shooter fast(p_, quick, s_, bang_);
@@ -160,7 +159,6 @@ class Shooter {
           uT = u;
         }))
       return false;
-    (void)samples;
     const detail::PmpView v = detail::unpack(yT);
     const double T = final_time(x);
     F.resize(size());
