@@ -15,3 +15,10 @@ target_link_libraries(poinsot PRIVATE assimp::assimp tomlplusplus::tomlplusplus)
 find_package(Boost 1.74 REQUIRED)
 target_link_libraries(poinsot PRIVATE Boost::headers)
 # --- end dynamics
+
+# --- optimal: Ipopt (Debian coinor-libipopt-dev, found with pkg-config `ipopt`) solves the collocation NLP of
+# optimal/direct_collocation.cpp. Private: the public headers of optimal/ do not include Ipopt.
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
+target_link_libraries(poinsot PRIVATE PkgConfig::IPOPT)
+# --- end optimal

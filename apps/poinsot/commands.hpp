@@ -11,16 +11,18 @@ void register_rotation(CLI::App& app);
 // hidden `completion bash|commands`: walks the app when it runs, so register it with the others
 void register_completion(CLI::App& app);
 
-// inertia (issue 3)
+// inertia: mass properties, principal axes, validity
 void register_inertia(CLI::App& app);
 
-// run (issue 6)
+// run: a scenario file, single-body or multibody
 void register_run(CLI::App& app);
 
-// lambda (issue 5)
+// lambda: the multipliers Λ and the constraint stress
 void register_lambda(CLI::App& app);
 
 // view: the 3-D page of a run
 void register_view(CLI::App& app);
+// optimize (optimal reorientation)
+void register_optimize(CLI::App& app);
 
 }  // namespace poinsot::cli

@@ -17,17 +17,19 @@ int main(int argc, char** argv) {
   poinsot::cli::register_completion(app);
   poinsot::cli::register_rotation(app);
 
-  // inertia (issue 3)
+  // inertia: mass properties, principal axes, validity
   poinsot::cli::register_inertia(app);
 
-  // run (issue 6)
+  // run: a scenario file, single-body or multibody
   poinsot::cli::register_run(app);
 
-  // lambda (issue 5)
+  // lambda: the multipliers Λ and the constraint stress
   poinsot::cli::register_lambda(app);
 
   // view: the 3-D page of a run
   poinsot::cli::register_view(app);
+  // optimize (optimal reorientation)
+  poinsot::cli::register_optimize(app);
 
   try {
     app.parse(argc, argv);

@@ -1,0 +1,44 @@
+#pragma once
+/// @file optimal_scenario.hpp
+/// Scenario files for `poinsot optimize` (docs/optimal_control.md, "Scenario files"): the body in `[body]`
+/// (any form of docs/scenario.md: principal_moments, inertia, poinsot, shape, mesh, composite; J about the
+/// centre of mass) and the problem in `[optimal_control]`:
+///
+///     [optimal_control]
+///     objective = "minimum_time"        # minimum_energy (needs final_time), minimum_time_regularised
+///     (energy_weight) torque_bound = "per_axis"         # or "norm" torque_max = [50, 50, 50]         # N·m:
+///     three bounds per axis, one number for a norm bound rate_max = 0.5                    # rad/s, optional
+///     final_time = 10.0                 # s, minimum_energy only
+///     energy_weight = 1e-4              # s/(N·m)², minimum_time_regularised only
+///     mesh_tolerance = 1e-5             # direct method, optional
+///     initial_intervals = 10            # direct method, optional (2 … 4000)
+///     max_mesh_iterations = 10          # direct method, optional (1 … 100)
+///     [optimal_control.initial]         # orientation = { ... } as in [initial]; omega_body (rad/s)
+///     [optimal_control.final]
+///     [output] dir = "..."              # optional, default SCENARIO-optimize
+///
+/// Throws InvalidInput located at the key for every malformed or invalid value (the problem's own checks,
+/// optimal::validate, are applied and located at [optimal_control]).
+#include <string>
+#include <string_view>
+
+#include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/problem.hpp"
+
+namespace poinsot::io {
+
+struct OptimalScenario {
+  std::string name;  ///< the file's stem
+  std::string source;
+  std::string title;
+  std::string body_description;
+  optimal::ReorientationProblem problem;
+  optimal::CollocationOptions collocation;
+  std::string out_dir;  ///< empty: the default
+};
+
+OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view source,
+                                       std::string_view base_dir);
+OptimalScenario load_optimal_scenario(const std::string& path);
+
+}  // namespace poinsot::io

@@ -1,0 +1,83 @@
+#pragma once
+/// @file indirect_shooting.hpp
+/// The indirect method: Pontryagin's minimum principle in the coordinates of Vallée & Dumitriu, the rotation
+/// matrix R (RᵀR = I, body → space) and the body angular velocity ω, solved by shooting with Newton's method
+/// from the costates of the direct solution (docs/optimal_control.md derives every equation).
+///
+/// Hamiltonian (minimum principle, costates P ∈ ℝ³ˣ³ of R and p_ω of ω):
+///     H = L(u) + ⟨P, R j(ω)⟩ + p_ωᵀ J⁻¹ (u − ω × Jω),   L = 0, ‖u‖², 1 + ε‖u‖² (per objective; for minimum
+///     time the constant 1 is included, so H ≡ 0 on a free-final-time extremal, i.e. λᵀf ≡ −1).
+/// ⟨P, R j(ω)⟩ = p_θᵀω with the body attitude costate p_θ = vee(RᵀP − PᵀR); the symmetric part of RᵀP is the
+/// gauge left free by the orthogonality constraint and does not enter H.
+/// Costate equations: Ṗ = −∂H/∂R = P j(ω) (so R p_θ, the space-frame attitude costate, is constant);
+/// ṗ_ω = −p_θ + (j(ω)J − j(Jω))ᵀ J⁻¹ p_ω. Switching function σ = J⁻¹ p_ω; the minimising control is
+/// u_i = −u_max,i sign σ_i (per-axis, minimum time), u = −ū σ/‖σ‖ (norm bound, minimum time), or the
+/// projection of −σ/2 (energy), −σ/(2ε) (regularised) onto the bounds.
+/// Boundary conditions: R(T) = R_f (3 equations: vee(R_fᵀR − RᵀR_f)/2 = 0), ω(T) = ω_f, and for a free final
+/// time the transversality condition H(T) = 0 (H is autonomous, hence constant). With a free final
+/// attitude the attitude conditions are replaced by p_θ(T) = 0.
+///
+/// Bang-bang controls (per-axis bounds, minimum time): the switching structure (the initial sign of each u_i
+/// and the order of its sign changes) is read from the direct solution's torques, and the switching times
+/// are unknowns of the Newton iteration with the conditions σ_i(t_s) = 0, so the switches are exact.
+/// Shooting: single shooting over the arcs between switches (integration by Runge–Kutta–Fehlberg 7(8) at
+/// rtol = atol = integration_tolerance); the Jacobian by forward differences.
+/// Not handled: active rate bounds (state constraints; the solver reports them and does not claim
+/// optimality), singular arcs (|u_i| strictly inside its bound over an interval of the direct solution).
+#include <string>
+#include <vector>
+
+#include "poinsot/core/types.hpp"
+#include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/problem.hpp"
+
+namespace poinsot::optimal {
+
+struct ShootingOptions {
+  double tolerance = 1e-12;  ///< on the scaled residual (max norm)
+  int max_iterations = 40;
+  double integration_tolerance = 1e-13;  ///< RKF78 rtol and atol
+  int samples_per_arc = 64;              ///< output samples on each arc (ends included)
+};
+
+/// A time interval on which the torque is constant (bang-bang solutions).
+struct ControlArc {
+  double t_begin = 0.0, t_end = 0.0;  ///< s
+  Vec3 torque_body = Vec3::Zero();    ///< N·m
+};
+
+struct IndirectSolution {
+  bool converged = false;
+  std::string status;  ///< "converged" or what failed
+  bool bang_bang = false;
+  double final_time = 0.0;  ///< s
+  double cost = 0.0;
+  double residual = 0.0;  ///< scaled shooting residual (max norm)
+  int iterations = 0;
+  Vec3 costate_attitude_initial = Vec3::Zero();  ///< p_θ(0)
+  Vec3 costate_omega_initial = Vec3::Zero();     ///< p_ω(0)
+  std::vector<double> switch_times;              ///< s, ascending (bang-bang)
+  std::vector<int> switch_axes;                  ///< body axis 0, 1, 2 of each switch
+  std::vector<ControlArc> arcs;                  ///< bang-bang arcs, in order
+
+  // Samples (arc ends included, so each switch appears twice, once per side).
+  std::vector<double> time;
+  std::vector<Mat3> attitude;               ///< R (body → space)
+  std::vector<Vec3> omega_body;             ///< rad/s
+  std::vector<Vec3> torque_body;            ///< N·m
+  std::vector<Mat3> costate_attitude;       ///< P
+  std::vector<Vec3> costate_attitude_body;  ///< p_θ = vee(RᵀP − PᵀR)
+  std::vector<Vec3> costate_omega;          ///< p_ω
+  std::vector<Vec3> switching_function;     ///< σ = J⁻¹ p_ω
+  std::vector<double> hamiltonian;          ///< H (0 on a free-time extremal)
+};
+
+/// Shoots from the direct solution's costates. Throws InvalidInput for an invalid problem or a direct
+/// solution of another problem size (empty); failures are reported in converged/status with the last iterate.
+IndirectSolution solve_indirect(const ReorientationProblem& problem, const DirectSolution& direct,
+                                const ShootingOptions& options = {});
+
+/// The control minimising H for the costate p_ω (see above; per-axis minimum time takes sign(0) = +).
+Vec3 minimising_control(const ReorientationProblem& problem, const Vec3& costate_omega);
+
+}  // namespace poinsot::optimal

@@ -1,0 +1,69 @@
+#pragma once
+/// @file problem.hpp
+/// The optimal reorientation of one rigid body by body torques: the data of the optimal-control problem,
+/// checked once, shared read-only by the direct (collocation) and indirect (shooting) methods.
+///
+/// Dynamics (ERRATA.md conventions): `Ṙ = R j(ω)` with R body → space and ω the body-frame angular velocity
+/// (rad/s); Euler `J ω̇ + ω × Jω = u` with J the inertia about the centre of mass in the body frame (kg·m²)
+/// and u the control torque in the body frame (N·m).
+/// Controls: per-axis bounds `|u_i| ≤ u_max,i` or a norm bound `‖u‖ ≤ u_max`; optional rate bounds
+/// `|ω_i| ≤ ω_max` (a state constraint). Boundary conditions: R(0) = R_0, ω(0) = ω_0, R(T) = R_f, ω(T) = ω_f.
+/// Objectives:
+///   minimum_time                 J = T, T free;
+///   minimum_energy               J = ∫₀ᵀ ‖u‖² dt (N²·m²·s) at the fixed final time T;
+///   minimum_time_regularised     J = T + ε ∫₀ᵀ ‖u‖² dt, T free, ε (s/(N·m)²) small: the regularisation
+///                                smooths bang-bang controls into steep continuous ones (stated as such in
+///                                every report; it is not the minimum-time problem).
+#include <limits>
+#include <string>
+#include <string_view>
+
+#include "poinsot/core/types.hpp"
+
+namespace poinsot::optimal {
+
+enum class Objective { minimum_time, minimum_energy, minimum_time_regularised };
+enum class TorqueBound { per_axis, norm };
+
+/// "minimum_time", "minimum_energy", "minimum_time_regularised".
+std::string_view objective_name(Objective objective);
+/// Inverse of objective_name; throws InvalidInput naming `field` and the accepted names.
+Objective parse_objective(std::string_view name, std::string_view field = "objective");
+
+struct ReorientationProblem {
+  Mat3 inertia_body = Mat3::Identity();  ///< J about the centre of mass, body frame (kg·m²)
+  TorqueBound bound = TorqueBound::per_axis;
+  Vec3 torque_max = Vec3::Ones();  ///< per-axis bounds u_max,i (N·m); with a norm bound only [0] is used
+  double rate_max = std::numeric_limits<double>::infinity();  ///< |ω_i| ≤ rate_max (rad/s); inf = none
+  Quat attitude_initial = Quat::Identity();                   ///< R_0 as a unit quaternion (body → space)
+  Quat attitude_final = Quat::Identity();                     ///< R_f as a unit quaternion (body → space)
+  Vec3 omega_initial = Vec3::Zero();                          ///< ω_0, body frame (rad/s)
+  Vec3 omega_final = Vec3::Zero();                            ///< ω_f, body frame (rad/s)
+  /// Detumbling: R(T) is free (attitude_final is ignored); the transversality condition is p_θ(T) = 0.
+  bool free_final_attitude = false;
+
+  Objective objective = Objective::minimum_time;
+  double final_time = 0.0;     ///< T (s) for minimum_energy; ignored by the free-time objectives
+  double energy_weight = 0.0;  ///< ε (s/(N·m)²) of minimum_time_regularised; must be 0 otherwise
+
+  /// The largest torque norm the bounds allow (N·m): ‖u_max‖ per axis, u_max with a norm bound.
+  double torque_norm_limit() const;
+  bool has_rate_bound() const { return rate_max < std::numeric_limits<double>::infinity(); }
+  bool free_final_time() const { return objective != Objective::minimum_energy; }
+};
+
+/// A necessary lower bound on the duration of any admissible manoeuvre (s): the geodesic angle Θ between R_0
+/// and R_f (0 with a free final attitude) is at most ∫‖ω‖dt, ‖ω‖ ≤ ‖L‖/J_min, and ‖L(t)‖ ≤ min(‖L_0‖ + ū t,
+/// ‖L_f‖ + ū (T − t)) because ‖L̇_space‖ = ‖u‖ ≤ ū (ū = torque_norm_limit()); with a rate bound also ‖ω‖ ≤ √3
+/// ω_max. Also ‖L_f‖ and ‖L_0‖ differ by at most ū T. The smallest T meeting both (found by bisection to
+/// 1e-12 relative). Assumes a problem whose other fields are valid.
+double minimum_duration_bound(const ReorientationProblem& problem);
+
+/// Throws InvalidInput (one line naming the field, the value and what was expected) for: an invalid or
+/// singular inertia; non-finite or non-positive torque bounds; a rate bound ≤ 0 or below |ω_0,i| or |ω_f,i|;
+/// non-unit or non-finite attitudes (tolerance 1e-9 on ‖q‖); a minimum-energy final time that is not
+/// finite and positive or is below minimum_duration_bound; an energy weight that is negative, non-finite, or
+/// given for another objective.
+void validate(const ReorientationProblem& problem);
+
+}  // namespace poinsot::optimal

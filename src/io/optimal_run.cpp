@@ -1,0 +1,224 @@
+#include "poinsot/io/optimal_run.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "poinsot/core/format.hpp"
+#include "poinsot/io/summary.hpp"
+
+namespace poinsot::io {
+
+namespace {
+
+std::string num(double v) {
+  return format_number(v);
+}
+
+// "t,v1x,v1y,v1z,...,extra...\n" (std::string::append: GCC 12 reports a false -Wrestrict on "," + string).
+std::string csv_row(double t, std::initializer_list<Vec3> vs, std::initializer_list<double> extra = {}) {
+  std::string s = num(t);
+  for (const auto& v : vs)
+    for (int i = 0; i < 3; ++i)
+      s.append(",").append(num(v[i]));
+  for (double x : extra)
+    s.append(",").append(num(x));
+  return s.append("\n");
+}
+
+// "t,qw,qx,qy,qz,ω,u,L\n"
+std::string trajectory_row(double t, const Quat& q, const Vec3& w, const Vec3& u, const Vec3& L) {
+  std::string s = num(t);
+  for (double c : {q.w(), q.x(), q.y(), q.z()})
+    s.append(",").append(num(c));
+  return s.append(csv_row(t, {w, u, L}).substr(num(t).size()));
+}
+
+nlohmann::ordered_json vec(const Vec3& v) {
+  return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+OptimalRun run_optimal(const OptimalScenario& sc) {
+  OptimalRun r;
+  r.scenario = sc;
+  r.direct = optimal::solve_direct(sc.problem, sc.collocation);
+  if (r.direct.costate_time.size() >= 2) r.indirect = optimal::solve_indirect(sc.problem, r.direct);
+  if (!r.indirect.time.empty()) {
+    r.verification = optimal::verify(sc.problem, r.direct, r.indirect);
+    r.interpretation = optimal::interpret(sc.problem, r.indirect);
+    r.has_interpretation = true;
+  } else {
+    r.verification.failures.push_back(r.indirect.status.empty() ? "indirect method not run"
+                                                                : r.indirect.status);
+    if (!r.direct.converged) r.verification.failures.insert(r.verification.failures.begin(), r.direct.status);
+  }
+  r.optimal = r.direct.converged && r.indirect.converged && r.verification.passed;
+  r.status =
+      r.optimal ? "optimal (verified)" : fmt::format("not converged: {}", r.verification.failures.front());
+  return r;
+}
+
+std::string optimal_report(const OptimalRun& r) {
+  const auto& p = r.scenario.problem;
+  std::ostringstream o;
+  o << "poinsot optimize: " << r.scenario.source << "\n";
+  if (!r.scenario.title.empty()) o << "  " << r.scenario.title << "\n";
+  o << "body: " << r.scenario.body_description << "\n";
+  o << "objective: " << optimal::objective_name(p.objective);
+  if (p.objective == optimal::Objective::minimum_time_regularised)
+    o << " (T + " << num(p.energy_weight) << " ∫‖u‖²dt: a smoothed minimum-time problem)";
+  o << "; torque bound "
+    << (p.bound == optimal::TorqueBound::per_axis ? "per axis " + format_vector(p.torque_max)
+                                                  : "norm " + num(p.torque_max[0]))
+    << " N·m";
+  if (p.has_rate_bound()) o << "; rate bound " << num(p.rate_max) << " rad/s";
+  o << "\nstatus: " << r.status << "\n\n";
+  o << fmt::format(
+      "direct (Hermite–Simpson, Ipopt): {}; {} intervals after {} mesh iterations, mesh error {}, "
+      "{} Ipopt iterations\n  final time {} s, cost {}\n",
+      r.direct.status, r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1,
+      r.direct.mesh_iterations, format_number(r.direct.max_mesh_error, 3), r.direct.nlp_iterations,
+      format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));
+  o << fmt::format(
+      "indirect (minimum principle in (R, ω), shooting): {}; {} Newton iterations, residual {}\n",
+      r.indirect.status, r.indirect.iterations, format_number(r.indirect.residual, 3));
+  if (!r.indirect.time.empty()) {
+    o << fmt::format("  final time {} s, cost {}\n", format_number(r.indirect.final_time, 14),
+                     format_number(r.indirect.cost, 14));
+    for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k)
+      o << fmt::format("  switch of u{} at t = {} s\n", r.indirect.switch_axes[k] + 1,
+                       format_number(r.indirect.switch_times[k], 12));
+    const auto& v = r.verification;
+    o << "\nchecks:\n"
+      << fmt::format("  Hamiltonian: mean {}, max deviation {}\n", format_number(v.hamiltonian_mean, 3),
+                     format_number(v.hamiltonian_deviation, 3))
+      << fmt::format("  control minimises H: largest gap {}; switching-sign violations {}\n",
+                     format_number(v.control_gap, 3), v.switching_sign_violations)
+      << fmt::format("  space attitude costate drift {}; ‖RᵀR − I‖ {}; vee(Λ − Λᵀ) − u {}\n",
+                     format_number(v.costate_drift, 3), format_number(v.orthogonality, 3),
+                     format_number(v.lambda_torque_error, 3))
+      << fmt::format("  DOP853 re-simulation: attitude error {} rad, rate error {} rad/s\n",
+                     format_number(v.resimulated_attitude_error, 3),
+                     format_number(v.resimulated_rate_error, 3))
+      << fmt::format("  direct vs indirect cost: {} (relative)\n",
+                     format_number(v.direct_indirect_difference, 3));
+    for (const auto& f : v.failures)
+      o << "  FAILED: " << f << "\n";
+  }
+  if (r.has_interpretation) {
+    const auto& m = r.interpretation;
+    o << fmt::format(
+        "\nconstraint stress ∫σ dv = −RΛRᵀ: peak Tresca {} N·m at t = {} s, peak von Mises {} N·m\n",
+        format_number(m.peak_tresca, 6), format_number(m.peak_tresca_time, 6),
+        format_number(m.peak_von_mises, 6));
+    if (m.eigenaxis_available)
+      o << fmt::format("eigenaxis manoeuvre with the same bounds: {} ({} saved by the optimum)\n",
+                       format_number(m.eigenaxis_cost, 10), format_number(m.saving, 4));
+  }
+  return o.str();
+}
+
+std::string optimal_summary_json(const OptimalRun& r) {
+  nlohmann::ordered_json j;
+  j["scenario"] = r.scenario.source;
+  j["status"] = r.status;
+  j["optimal"] = r.optimal;
+  j["objective"] = std::string(optimal::objective_name(r.scenario.problem.objective));
+  j["direct"] = {{"converged", r.direct.converged},
+                 {"status", r.direct.status},
+                 {"final_time", r.direct.final_time},
+                 {"cost", r.direct.cost},
+                 {"intervals", r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1},
+                 {"mesh_error", r.direct.max_mesh_error},
+                 {"nlp_iterations", r.direct.nlp_iterations}};
+  nlohmann::ordered_json ind = {{"converged", r.indirect.converged},
+                                {"status", r.indirect.status},
+                                {"final_time", r.indirect.final_time},
+                                {"cost", r.indirect.cost},
+                                {"residual", r.indirect.residual},
+                                {"iterations", r.indirect.iterations},
+                                {"costate_attitude_initial", vec(r.indirect.costate_attitude_initial)},
+                                {"costate_omega_initial", vec(r.indirect.costate_omega_initial)}};
+  ind["switches"] = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k)
+    ind["switches"].push_back({{"axis", r.indirect.switch_axes[k] + 1}, {"t", r.indirect.switch_times[k]}});
+  j["indirect"] = ind;
+  const auto& v = r.verification;
+  j["checks"] = {{"passed", v.passed},
+                 {"failures", v.failures},
+                 {"hamiltonian_mean", v.hamiltonian_mean},
+                 {"hamiltonian_deviation", v.hamiltonian_deviation},
+                 {"control_gap", v.control_gap},
+                 {"switching_sign_violations", v.switching_sign_violations},
+                 {"costate_drift", v.costate_drift},
+                 {"orthogonality", v.orthogonality},
+                 {"lambda_torque_error", v.lambda_torque_error},
+                 {"resimulated_attitude_error", v.resimulated_attitude_error},
+                 {"resimulated_rate_error", v.resimulated_rate_error},
+                 {"direct_indirect_difference", v.direct_indirect_difference}};
+  if (r.has_interpretation) {
+    const auto& m = r.interpretation;
+    j["interpretation"] = {
+        {"peak_tresca", m.peak_tresca},
+        {"peak_tresca_time", m.peak_tresca_time},
+        {"peak_von_mises", m.peak_von_mises},
+        {"eigenaxis_cost",
+         m.eigenaxis_available ? nlohmann::ordered_json(m.eigenaxis_cost) : nlohmann::ordered_json()},
+        {"saving", m.eigenaxis_available ? nlohmann::ordered_json(m.saving) : nlohmann::ordered_json()}};
+  }
+  return j.dump(2) + "\n";
+}
+
+void write_optimal_files(const OptimalRun& r, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const std::string head = fmt::format("# status: {}\n", r.status);
+  const Mat3& J = r.scenario.problem.inertia_body;
+  std::string traj = head, control = head, costates = head;
+  traj.append("t,qw,qx,qy,qz,wx,wy,wz,ux,uy,uz,Lx,Ly,Lz\n");
+  control.append("t,ux,uy,uz\n");
+  costates.append(
+      "t,p_theta_x,p_theta_y,p_theta_z,p_omega_x,p_omega_y,p_omega_z,sigma_x,sigma_y,sigma_z,H\n");
+  const auto& s = r.indirect;
+  if (!s.time.empty()) {
+    for (std::size_t k = 0; k < s.time.size(); ++k) {
+      const Quat q(s.attitude[k]);
+      traj += trajectory_row(s.time[k], q, s.omega_body[k], s.torque_body[k],
+                             s.attitude[k] * (J * s.omega_body[k]));
+      costates +=
+          csv_row(s.time[k], {s.costate_attitude_body[k], s.costate_omega[k], s.switching_function[k]},
+                  {s.hamiltonian[k]});
+    }
+    if (s.bang_bang) {
+      for (const auto& a : s.arcs)
+        control += csv_row(a.t_begin, {a.torque_body}) + csv_row(a.t_end, {a.torque_body});
+    } else {
+      for (std::size_t k = 0; k < s.time.size(); ++k)
+        control += csv_row(s.time[k], {s.torque_body[k]});
+    }
+  } else {  // the best iterate: the direct solution
+    const auto& d = r.direct;
+    for (std::size_t k = 0; k < d.time.size(); ++k) {
+      const Quat& q = d.attitude[k];
+      traj += trajectory_row(d.time[k], q, d.omega_body[k], d.torque_body[k],
+                             q.toRotationMatrix() * (J * d.omega_body[k]));
+      control += csv_row(d.time[k], {d.torque_body[k]});
+    }
+    const Mat3 J_inv = J.inverse();
+    for (std::size_t k = 0; k < d.costate_time.size(); ++k)
+      costates += csv_row(d.costate_time[k],
+                          {d.costate_attitude_body[k], d.costate_omega[k], J_inv * d.costate_omega[k]},
+                          {std::nan("")});
+  }
+  write_file_atomic(dir + "/trajectory.csv", traj);
+  write_file_atomic(dir + "/control.csv", control);
+  write_file_atomic(dir + "/costates.csv", costates);
+  write_file_atomic(dir + "/summary.json", optimal_summary_json(r));
+  write_file_atomic(dir + "/report.txt", optimal_report(r));
+}
+
+}  // namespace poinsot::io

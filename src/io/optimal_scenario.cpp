@@ -1,0 +1,119 @@
+#include "poinsot/io/optimal_scenario.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/so3/quaternion.hpp"
+#include "scenario_body.hpp"
+#include "scenario_orientation.hpp"
+#include "toml_fields.hpp"
+
+namespace poinsot::io {
+
+namespace {
+
+using detail::Section;
+using detail::Source;
+
+struct Endpoint {
+  Quat attitude;
+  Vec3 omega;
+  bool free_attitude = false;
+};
+
+Endpoint read_endpoint(const Source& src, const Section& oc, const char* key) {
+  const Section s(src, oc.table(key), "optimal_control." + std::string(key),
+                  {"orientation", "omega_body", "free_attitude"}, oc.node(key));
+  const bool free = s.boolean("free_attitude").value_or(false);
+  if (free && std::string_view(key) == "initial")
+    s.fail("free_attitude", "only the final attitude can be free");
+  if (free && s.has("orientation"))
+    s.fail("orientation", "given with free_attitude = true; expected one of them");
+  return {so3::quaternion_from_rotation(detail::read_orientation(src, s)),
+          s.vec3("omega_body").value_or(Vec3::Zero()), free};
+}
+
+}  // namespace
+
+OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view source,
+                                       std::string_view base_dir) {
+  const toml::table root = detail::parse_toml(text, source);
+  const Source src{std::string(source)};
+  const Section top(src, &root, "top level", {"title", "body", "optimal_control", "output"});
+  OptimalScenario sc;
+  sc.source = std::string(source);
+  sc.title = top.string("title").value_or("");
+
+  const Section b(src, root["body"].as_table(), "body",
+                  {"principal_moments", "inertia", "poinsot", "shape", "mesh", "composite", "mass"});
+  const detail::BodyInertia body = detail::read_body_inertia(src, b, base_dir, 'z');
+  sc.body_description = body.description;
+  sc.problem.inertia_body = body.inertia_com;
+
+  const Section oc(src, root["optimal_control"].as_table(), "optimal_control",
+                   {"objective", "torque_bound", "torque_max", "rate_max", "final_time", "energy_weight",
+                    "mesh_tolerance", "initial_intervals", "max_mesh_iterations", "initial", "final"},
+                   root.get("optimal_control"));
+  if (!oc.present()) top.fail("optimal_control", "missing; expected an [optimal_control] section");
+  auto& p = sc.problem;
+  if (const auto o = oc.string("objective"))
+    p.objective =
+        detail::located(oc, "objective", [&] { return optimal::parse_objective(*o, oc.label("objective")); });
+  const std::string bound = oc.string("torque_bound").value_or("per_axis");
+  if (bound != "per_axis" && bound != "norm")
+    oc.fail("torque_bound", fmt::format("got \"{}\", expected \"per_axis\" or \"norm\"", bound));
+  p.bound = bound == "norm" ? optimal::TorqueBound::norm : optimal::TorqueBound::per_axis;
+  oc.require("torque_max", bound == "norm" ? "a number (N·m)" : "[u1, u2, u3] (N·m)");
+  if (p.bound == optimal::TorqueBound::norm) {
+    p.torque_max = Vec3::Constant(*oc.number("torque_max"));
+  } else {
+    p.torque_max = *oc.vec3("torque_max");
+  }
+  if (const auto r = oc.number("rate_max")) p.rate_max = *r;
+  p.final_time = oc.number("final_time").value_or(0.0);
+  p.energy_weight = oc.number("energy_weight").value_or(0.0);
+  if (p.objective == optimal::Objective::minimum_energy)
+    oc.require("final_time", "the fixed final time in seconds (minimum_energy)");
+  else if (oc.has("final_time"))
+    oc.fail("final_time", "given for a free-final-time objective; only minimum_energy takes final_time");
+  if (const auto m = oc.number("mesh_tolerance")) sc.collocation.mesh_tolerance = *m;
+  const auto count = [&](std::string_view key, int lo, int hi) {
+    const double v = *oc.number(key);
+    if (!(v >= lo && v <= hi && v == std::floor(v)))
+      oc.fail(key, fmt::format("got {}, expected an integer from {} to {}", format_number(v), lo, hi));
+    return static_cast<int>(v);
+  };
+  if (oc.has("initial_intervals")) sc.collocation.initial_intervals = count("initial_intervals", 2, 4000);
+  if (oc.has("max_mesh_iterations"))
+    sc.collocation.max_mesh_iterations = count("max_mesh_iterations", 1, 100);
+  if (const auto m = oc.number("mesh_tolerance"); m && !(*m > 0.0))
+    oc.fail("mesh_tolerance", fmt::format("got {}, expected a positive tolerance", format_number(*m)));
+  const Endpoint a = read_endpoint(src, oc, "initial"), f = read_endpoint(src, oc, "final");
+  p.attitude_initial = a.attitude;
+  p.omega_initial = a.omega;
+  p.attitude_final = f.attitude;
+  p.omega_final = f.omega;
+  p.free_final_attitude = f.free_attitude;
+  try {
+    optimal::validate(p);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(detail::location(src, root.get("optimal_control")) + e.what());
+  }
+
+  const Section out(src, root["output"].as_table(), "output", {"dir"});
+  sc.out_dir = out.string("dir").value_or("");
+  return sc;
+}
+
+OptimalScenario load_optimal_scenario(const std::string& path) {
+  const std::filesystem::path p(path);
+  OptimalScenario sc = parse_optimal_scenario(detail::read_text_file(path), path, p.parent_path().string());
+  sc.name = p.stem().string();
+  return sc;
+}
+
+}  // namespace poinsot::io

@@ -1,0 +1,349 @@
+#include "poinsot/optimal/direct_collocation.hpp"
+
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+#include <IpTNLP.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <numbers>
+
+#include "collocation_nlp.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/so3/exp_log.hpp"
+#include "poinsot/so3/quaternion.hpp"
+
+namespace poinsot::optimal {
+
+namespace {
+
+using detail::CollocationNlp;
+using detail::Vec11;
+using detail::Vec4;
+using detail::Vec7;
+constexpr int kP = CollocationNlp::kPointVars;
+
+/// Ipopt's view of a CollocationNlp: forwards every evaluation, keeps the final iterate and multipliers.
+class IpoptAdapter : public Ipopt::TNLP {
+ public:
+  IpoptAdapter(const CollocationNlp& nlp, std::vector<double> start) : nlp_(nlp), z_(std::move(start)) {}
+
+  bool get_nlp_info(Ipopt::Index& n, Ipopt::Index& m, Ipopt::Index& nnz_jac, Ipopt::Index& nnz_h,
+                    IndexStyleEnum& style) override {
+    n = nlp_.num_variables();
+    m = nlp_.num_constraints();
+    nnz_jac = nlp_.jacobian_nonzeros();
+    nnz_h = nlp_.hessian_nonzeros();
+    style = C_STYLE;
+    return true;
+  }
+  bool get_bounds_info(Ipopt::Index, Ipopt::Number* xl, Ipopt::Number* xu, Ipopt::Index, Ipopt::Number* gl,
+                       Ipopt::Number* gu) override {
+    std::vector<double> lo, up;
+    nlp_.variable_bounds(lo, up);
+    std::copy(lo.begin(), lo.end(), xl);
+    std::copy(up.begin(), up.end(), xu);
+    nlp_.constraint_bounds(lo, up);
+    std::copy(lo.begin(), lo.end(), gl);
+    std::copy(up.begin(), up.end(), gu);
+    return true;
+  }
+  bool get_starting_point(Ipopt::Index, bool init_x, Ipopt::Number* x, bool, Ipopt::Number*, Ipopt::Number*,
+                          Ipopt::Index, bool, Ipopt::Number*) override {
+    if (init_x) std::copy(z_.begin(), z_.end(), x);
+    return true;
+  }
+  bool eval_f(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number& f) override {
+    f = nlp_.objective(x);
+    return std::isfinite(f);
+  }
+  bool eval_grad_f(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number* g) override {
+    nlp_.objective_gradient(x, g);
+    return true;
+  }
+  bool eval_g(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Index m, Ipopt::Number* g) override {
+    nlp_.constraints(x, g);
+    return std::all_of(g, g + m, [](double v) { return std::isfinite(v); });
+  }
+  bool eval_jac_g(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Index, Ipopt::Index, Ipopt::Index* rows,
+                  Ipopt::Index* cols, Ipopt::Number* values) override {
+    if (values == nullptr)
+      nlp_.jacobian_structure(rows, cols);
+    else
+      nlp_.jacobian_values(x, values);
+    return true;
+  }
+  bool eval_h(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number sigma, Ipopt::Index,
+              const Ipopt::Number* lambda, bool, Ipopt::Index, Ipopt::Index* rows, Ipopt::Index* cols,
+              Ipopt::Number* values) override {
+    if (values == nullptr)
+      nlp_.hessian_structure(rows, cols);
+    else
+      nlp_.hessian_values(x, sigma, lambda, values);
+    return true;
+  }
+  void finalize_solution(Ipopt::SolverReturn, Ipopt::Index n, const Ipopt::Number* x, const Ipopt::Number*,
+                         const Ipopt::Number*, Ipopt::Index m, const Ipopt::Number*,
+                         const Ipopt::Number* lambda, Ipopt::Number, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities*) override {
+    z_.assign(x, x + n);
+    y_.assign(lambda, lambda + m);
+  }
+
+  const std::vector<double>& z() const { return z_; }
+  const std::vector<double>& y() const { return y_; }
+
+ private:
+  const CollocationNlp& nlp_;
+  std::vector<double> z_, y_;
+};
+
+/// The interpolants of one interval at s ∈ [0, 1]: state (cubic Hermite), its time derivative, and the
+/// controls (quadratic through s = 0, ½, 1).
+struct IntervalSample {
+  Vec7 x, xdot;
+  Vec4 v;
+};
+
+IntervalSample sample_interval(const CollocationNlp& nlp, const std::vector<double>& z, int k, double s) {
+  const auto pt = [&](int p) { return Eigen::Map<const Vec11>(z.data() + kP * p); };
+  const Vec11 z0 = pt(2 * k), z1 = pt(2 * k + 1), z2 = pt(2 * k + 2);
+  const double h = (nlp.tau()[k + 1] - nlp.tau()[k]) * z[nlp.time_index()];
+  const Vec7 f0 = nlp.dynamics().rhs(z0), f2 = nlp.dynamics().rhs(z2);
+  const double s2 = s * s, s3 = s2 * s;
+  IntervalSample r;
+  r.x = (2 * s3 - 3 * s2 + 1) * z0.head<7>() + (s3 - 2 * s2 + s) * h * f0 +
+        (-2 * s3 + 3 * s2) * z2.head<7>() + (s3 - s2) * h * f2;
+  r.xdot = ((6 * s2 - 6 * s) * z0.head<7>() + (-6 * s2 + 6 * s) * z2.head<7>()) / h +
+           (3 * s2 - 4 * s + 1) * f0 + (3 * s2 - 2 * s) * f2;
+  r.v = 2 * (s - 0.5) * (s - 1) * z0.tail<4>() - 4 * s * (s - 1) * z1.tail<4>() +
+        2 * s * (s - 0.5) * z2.tail<4>();
+  return r;
+}
+
+/// ε_k for every interval (see direct_collocation.hpp).
+std::vector<double> mesh_errors(const CollocationNlp& nlp, const std::vector<double>& z) {
+  static const double gx[5] = {0.0469100770306680, 0.2307653449471585, 0.5, 0.7692346550528415,
+                               0.9530899229693320};
+  static const double gw[5] = {0.1184634425280945, 0.2393143352496832, 0.2844444444444444, 0.2393143352496832,
+                               0.1184634425280945};
+  Vec7 scale = Vec7::Ones();
+  for (int p = 0; p < nlp.points(); ++p)
+    scale = scale.cwiseMax(Eigen::Map<const Vec7>(z.data() + kP * p).cwiseAbs() + Vec7::Ones());
+  std::vector<double> err(nlp.intervals());
+  for (int k = 0; k < nlp.intervals(); ++k) {
+    const double h = (nlp.tau()[k + 1] - nlp.tau()[k]) * z[nlp.time_index()];
+    Vec7 sum = Vec7::Zero();
+    for (int i = 0; i < 5; ++i) {
+      const IntervalSample s = sample_interval(nlp, z, k, gx[i]);
+      Vec11 zz;
+      zz << s.x, s.v;
+      sum += gw[i] * h * (s.xdot - nlp.dynamics().rhs(zz)).cwiseAbs();
+    }
+    err[k] = sum.cwiseQuotient(scale).maxCoeff();
+  }
+  return err;
+}
+
+/// The eigenaxis guess: q(t) = q_0 ⊗ exp(s Θ n / 2), ω = Θ n / T (body frame) plus a transverse bump,
+/// u = 0, ν = 0.
+std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
+  const auto& p = nlp.problem();
+  const Mat3 R0 = p.attitude_initial.toRotationMatrix(), Rf = p.attitude_final.toRotationMatrix();
+  const Vec3 rotvec = p.free_final_attitude ? Vec3::Zero() : so3::log(R0.transpose() * Rf);
+  // A transverse rate bump breaks the symmetry of rotations about a principal axis, whose eigenaxis
+  // manoeuvre is a stationary point of the NLP but not the optimum (Bilimoria & Wie 1993).
+  Vec3 transverse = Vec3(0.36, 0.48, 0.8);
+  if (rotvec.norm() > 0.0) transverse -= transverse.dot(rotvec) / rotvec.squaredNorm() * rotvec;
+  if (transverse.norm() > 1e-3) transverse.normalize();
+  std::vector<double> z(nlp.num_variables(), 0.0);
+  // With a free final attitude (detumbling to rest) the guess is the motion under the momentum-dumping torque
+  // u = −(‖L_0‖/T) Jω/‖Jω‖, which takes ‖L‖ linearly to 0 at T; R and ω are advanced by 16 midpoint sub-steps
+  // (exact exponentials for R) between points.
+  const bool dumping = p.free_final_attitude && p.omega_final.isZero(0.0);
+  const double dump_rate = (p.inertia_body * p.omega_initial).norm() / T;
+  const Mat3 J_inv = p.inertia_body.inverse();
+  const auto dumping_torque = [&](const Vec3& w) {
+    const Vec3 L = p.inertia_body * w;
+    return L.norm() > 0.0 ? Vec3(-dump_rate * L.normalized()) : Vec3::Zero();
+  };
+  Mat3 R_free = R0;
+  Vec3 w_free = p.omega_initial;
+  double tau_prev = 0.0;
+  for (int pt = 0; pt < nlp.points(); ++pt) {
+    const int k = pt / 2;
+    const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
+    Vec3 w = (1.0 - tau) * p.omega_initial + tau * p.omega_final + rotvec / T +
+             std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
+    for (int i = 0; i < 16 && p.free_final_attitude; ++i) {
+      const double h = (tau - tau_prev) * T / 16.0;
+      const auto wdot = [&](const Vec3& v) {
+        const Vec3 u = dumping ? dumping_torque(v) : Vec3::Zero();
+        return Vec3(J_inv * (u - v.cross(p.inertia_body * v)));
+      };
+      const Vec3 w_mid = dumping ? Vec3(w_free + 0.5 * h * wdot(w_free)) : w;
+      R_free = R_free * so3::exp(h * w_mid);
+      if (dumping) w_free += h * wdot(w_mid);
+    }
+    tau_prev = tau;
+    if (dumping) {
+      w = pt + 1 == nlp.points() ? p.omega_final : w_free;
+      const Vec3 u = dumping_torque(w);
+      for (int i = 0; i < 3; ++i)
+        z[kP * pt + 7 + i] = u[i];
+    }
+    const Quat q(p.free_final_attitude ? R_free : Mat3(R0 * so3::exp(tau * rotvec)));
+    const Quat qs = q.w() * p.attitude_initial.w() + q.vec().dot(p.attitude_initial.vec()) < 0
+                        ? Quat(-q.w(), -q.x(), -q.y(), -q.z())
+                        : q;
+    z[kP * pt] = qs.w();
+    z[kP * pt + 1] = qs.x();
+    z[kP * pt + 2] = qs.y();
+    z[kP * pt + 3] = qs.z();
+    for (int i = 0; i < 3; ++i)
+      z[kP * pt + 4 + i] = w[i];
+  }
+  z[nlp.time_index()] = T;
+  return z;
+}
+
+/// The previous solution's interpolants evaluated at the points of `next` (τ is shared: same T).
+std::vector<double> interpolate(const CollocationNlp& prev, const std::vector<double>& z,
+                                const CollocationNlp& next) {
+  std::vector<double> out(next.num_variables(), 0.0);
+  int k = 0;
+  for (int pt = 0; pt < next.points(); ++pt) {
+    const int kn = pt / 2;
+    const double tau = pt % 2 == 0 ? next.tau()[kn] : 0.5 * (next.tau()[kn] + next.tau()[kn + 1]);
+    while (k + 1 < prev.intervals() && prev.tau()[k + 1] <= tau)
+      ++k;
+    const double s = std::clamp((tau - prev.tau()[k]) / (prev.tau()[k + 1] - prev.tau()[k]), 0.0, 1.0);
+    const IntervalSample smp = sample_interval(prev, z, k, s);
+    Eigen::Map<Vec7>(out.data() + kP * pt) = smp.x;
+    Eigen::Map<Vec4>(out.data() + kP * pt + 7) = smp.v;
+  }
+  out[next.time_index()] = z[prev.time_index()];
+  return out;
+}
+
+/// Splits every interval whose error exceeds the tolerance into 2 … 5 pieces (ε ∝ h⁴ on a smooth arc).
+std::vector<double> refine(const std::vector<double>& tau, const std::vector<double>& err, double tol) {
+  std::vector<double> out{0.0};
+  for (std::size_t k = 0; k + 1 < tau.size(); ++k) {
+    int pieces = 1;
+    if (err[k] > tol) pieces = std::clamp(static_cast<int>(std::ceil(std::pow(err[k] / tol, 0.25))), 2, 5);
+    for (int i = 1; i <= pieces; ++i)
+      out.push_back(tau[k] + (tau[k + 1] - tau[k]) * i / pieces);
+  }
+  out.back() = 1.0;
+  return out;
+}
+
+DirectSolution extract(const CollocationNlp& nlp, const std::vector<double>& z,
+                       const std::vector<double>& y) {
+  DirectSolution s;
+  const double T = z[nlp.time_index()];
+  s.final_time = T;
+  s.cost = nlp.objective(z.data());
+  for (int pt = 0; pt < nlp.points(); ++pt) {
+    const int k = pt / 2;
+    const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
+    const double* zp = z.data() + kP * pt;
+    s.time.push_back(tau * T);
+    s.attitude.push_back(Quat(zp[0], zp[1], zp[2], zp[3]).normalized());
+    s.omega_body.emplace_back(zp[4], zp[5], zp[6]);
+    s.torque_body.emplace_back(zp[7], zp[8], zp[9]);
+    if (pt % 2 == 0) s.node_time.push_back(tau * T);
+  }
+  if (!y.empty())
+    for (int k = 0; k < nlp.intervals(); ++k) {
+      const Vec7 lambda = -Eigen::Map<const Vec7>(y.data() + CollocationNlp::defect_row(k));
+      const IntervalSample mid = sample_interval(nlp, z, k, 0.5);
+      const Vec4 q = mid.x.head<4>();
+      s.costate_time.push_back(0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]) * T);
+      s.costate_attitude_body.push_back(0.5 * detail::quaternion_omega_matrix(q).transpose() *
+                                        lambda.head<4>());
+      s.costate_omega.push_back(lambda.tail<3>());
+    }
+  s.mesh_error = mesh_errors(nlp, z);
+  s.max_mesh_error = *std::max_element(s.mesh_error.begin(), s.mesh_error.end());
+  return s;
+}
+
+}  // namespace
+
+DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options) {
+  validate(problem);
+  if (options.initial_intervals < 2 || options.max_intervals < options.initial_intervals)
+    throw InvalidInput("collocation.initial_intervals: " + std::to_string(options.initial_intervals) +
+                       "; expected 2 ≤ initial_intervals ≤ max_intervals (" +
+                       std::to_string(options.max_intervals) + ")");
+  if (!(options.mesh_tolerance > 0.0) || !(options.nlp_tolerance > 0.0))
+    throw InvalidInput("collocation: mesh_tolerance " + format_number(options.mesh_tolerance) +
+                       " and nlp_tolerance " + format_number(options.nlp_tolerance) +
+                       "; expected positive values");
+
+  std::vector<double> tau(options.initial_intervals + 1);
+  for (int k = 0; k <= options.initial_intervals; ++k)
+    tau[k] = static_cast<double>(k) / options.initial_intervals;
+  auto nlp = std::make_unique<CollocationNlp>(problem, tau);
+  const double T0 = problem.free_final_time() ? 2.0 * minimum_duration_bound(problem) : problem.final_time;
+  std::vector<double> z = initial_guess(*nlp, T0);
+  std::vector<double> y;
+
+  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = new Ipopt::IpoptApplication(false);
+  app->Options()->SetIntegerValue("print_level", options.print_level);
+  app->Options()->SetStringValue("sb", "yes");
+  if (const char* f = std::getenv("POINSOT_IPOPT_LOG")) app->Options()->SetStringValue("output_file", f);
+  app->Options()->SetNumericValue("tol", options.nlp_tolerance);
+  app->Options()->SetNumericValue("acceptable_tol", options.nlp_tolerance);
+  app->Options()->SetIntegerValue("max_iter", options.max_nlp_iterations);
+  app->Options()->SetStringValue("hessian_approximation", "exact");
+  app->Options()->SetStringValue("mu_strategy", "adaptive");
+  if (app->Initialize() != Ipopt::Solve_Succeeded) throw ComputationFailed("ipopt: initialisation failed");
+
+  DirectSolution best;
+  std::string failure;
+  int nlp_iterations = 0;
+  for (int it = 0; it < options.max_mesh_iterations; ++it) {
+    Ipopt::SmartPtr<IpoptAdapter> adapter = new IpoptAdapter(*nlp, z);
+    const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
+    if (!adapter->z().empty()) {
+      z = adapter->z();
+      y = adapter->y();
+    }
+    if (auto stats = app->Statistics(); Ipopt::IsValid(stats)) nlp_iterations += stats->IterationCount();
+    best = extract(*nlp, z, y);
+    best.mesh_iterations = it + 1;
+    best.nlp_iterations = nlp_iterations;
+    if (status != Ipopt::Solve_Succeeded && status != Ipopt::Solved_To_Acceptable_Level) {
+      failure = "Ipopt did not converge (status " + std::to_string(static_cast<int>(status)) + ") on mesh " +
+                std::to_string(it + 1) + " with " + std::to_string(nlp->intervals()) + " intervals";
+      break;
+    }
+    if (best.max_mesh_error <= options.mesh_tolerance) {
+      best.converged = true;
+      best.status = "converged";
+      return best;
+    }
+    std::vector<double> next = refine(nlp->tau(), best.mesh_error, options.mesh_tolerance);
+    if (static_cast<int>(next.size()) - 1 > options.max_intervals) {
+      failure = "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
+                format_number(options.mesh_tolerance) + " with the interval limit " +
+                std::to_string(options.max_intervals) + " reached";
+      break;
+    }
+    auto refined = std::make_unique<CollocationNlp>(problem, std::move(next));
+    z = interpolate(*nlp, z, *refined);
+    nlp = std::move(refined);
+  }
+  best.status = failure.empty() ? "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
+                                      format_number(options.mesh_tolerance) + " after " +
+                                      std::to_string(options.max_mesh_iterations) + " mesh iterations"
+                                : failure;
+  return best;
+}
+
+}  // namespace poinsot::optimal

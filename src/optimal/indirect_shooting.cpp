@@ -1,0 +1,343 @@
+#include "poinsot/optimal/indirect_shooting.hpp"
+
+// GCC 12 reports -Wmaybe-uninitialized and -Wrestrict inside Boost.Odeint's stepper copy constructors when
+// they are inlined here (false positives in library code: the work arrays are resized before use).
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wrestrict"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <boost/numeric/odeint.hpp>
+#include <cmath>
+
+#include "pmp_system.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+
+namespace poinsot::optimal {
+
+namespace {
+
+using detail::PmpState;
+namespace odeint = boost::numeric::odeint;
+
+// Sign changes of u_i in the direct solution: the switching structure of a bang-bang control.
+struct SwitchGuess {
+  Vec3 initial_sign = Vec3::Ones();
+  std::vector<double> times;
+  std::vector<int> axes;
+  std::string singular;  // non-empty when u_i stays inside its bound over a stretch (singular arc)
+};
+
+SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d) {
+  SwitchGuess g;
+  const double T = d.final_time;
+  for (int i = 0; i < 3; ++i) {
+    const double umax = p.torque_max[i];
+    int last = -1;
+    double inside_since = -1.0;
+    for (std::size_t j = 0; j < d.time.size(); ++j) {
+      const double u = d.torque_body[j][i];
+      const bool saturated = std::abs(u) > 0.5 * umax;
+      if (std::abs(u) < 0.95 * umax) {
+        if (inside_since < 0.0) inside_since = d.time[j];
+        if (d.time[j] - inside_since > 0.05 * T && g.singular.empty())
+          g.singular = "u" + std::to_string(i + 1) +
+                       " is inside its bound from t = " + format_number(inside_since, 6) + " s to " +
+                       format_number(d.time[j], 6) + " s (a singular arc?)";
+      } else {
+        inside_since = -1.0;
+      }
+      if (!saturated) continue;
+      if (last < 0) {
+        g.initial_sign[i] = u > 0 ? 1.0 : -1.0;
+      } else if ((u > 0) != (d.torque_body[last][i] > 0)) {
+        // zero of the piecewise-linear interpolant between the last two saturated samples
+        double t0 = d.time[last];
+        for (std::size_t k = last; k < j; ++k) {
+          const double a = d.torque_body[k][i], b = d.torque_body[k + 1][i];
+          if ((a > 0) != (b > 0)) {
+            t0 = d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
+            break;
+          }
+        }
+        g.times.push_back(t0);
+        g.axes.push_back(i);
+      }
+      last = static_cast<int>(j);
+    }
+  }
+  return g;
+}
+
+class Shooter {
+ public:
+  Shooter(const ReorientationProblem& p, const ShootingOptions& o, const SwitchGuess& s, bool bang_bang)
+      : p_(p), o_(o), s_(s), bang_(bang_bang), J_inv_(p.inertia_body.inverse()) {
+    R0_ = p.attitude_initial.toRotationMatrix();
+    Rf_ = p.attitude_final.toRotationMatrix();
+  }
+
+  int size() const {
+    return 6 + (p_.free_final_time() ? 1 : 0) + (bang_ ? static_cast<int>(s_.axes.size()) : 0);
+  }
+
+  /// The torque on the arc that starts after the switches at times ≤ t_begin (bang-bang), from x.
+  Vec3 arc_torque(const Eigen::VectorXd& x, double t_mid) const {
+    Vec3 u;
+    for (int i = 0; i < 3; ++i) {
+      double sign = s_.initial_sign[i];
+      for (std::size_t k = 0; k < s_.axes.size(); ++k)
+        if (s_.axes[k] == i && switch_time(x, k) < t_mid) sign = -sign;
+      u[i] = sign * p_.torque_max[i];
+    }
+    return u;
+  }
+  double switch_time(const Eigen::VectorXd& x, std::size_t k) const { return x[7 + static_cast<int>(k)]; }
+  double final_time(const Eigen::VectorXd& x) const { return p_.free_final_time() ? x[6] : p_.final_time; }
+
+  /// Integrates from 0 to T; calls observe(t, y, u) at samples_per_arc points of each arc when asked.
+  /// Returns false when the switching times are out of order or out of (0, T).
+  template <class Observer>
+  bool propagate(const Eigen::VectorXd& x, std::vector<double>* sigma_at_switch, Observer&& observe) const {
+    const double T = final_time(x);
+    if (!(T > 0.0)) return false;
+    std::vector<double> knots{0.0};
+    std::vector<std::size_t> order;
+    if (bang_) {
+      for (std::size_t k = 0; k < s_.axes.size(); ++k)
+        order.push_back(k);
+      std::sort(order.begin(), order.end(),
+                [&](auto a, auto b) { return switch_time(x, a) < switch_time(x, b); });
+      for (auto k : order) {
+        if (!(switch_time(x, k) > 0.0 && switch_time(x, k) < T)) return false;
+        knots.push_back(switch_time(x, k));
+      }
+    }
+    knots.push_back(T);
+    const Vec3 p_theta0 = x.segment<3>(0);
+    PmpState y = detail::pack(R0_, p_.omega_initial, 0.5 * R0_ * so3::hat(p_theta0), x.segment<3>(3), 0.0);
+    if (sigma_at_switch) sigma_at_switch->assign(s_.axes.size(), 0.0);
+    for (std::size_t a = 0; a + 1 < knots.size(); ++a) {
+      const double t0 = knots[a], t1 = knots[a + 1];
+      const Vec3 u_arc = bang_ ? arc_torque(x, 0.5 * (t0 + t1)) : Vec3::Zero();
+      auto control = [&](const PmpState& yy) {
+        return bang_ ? u_arc : minimising_control(p_, Eigen::Map<const Vec3>(yy.data() + 21));
+      };
+      auto rhs = [&](const PmpState& yy, PmpState& dy, double) {
+        detail::pmp_rhs(p_, J_inv_, yy, dy, control(yy));
+      };
+      const int n = std::max(2, o_.samples_per_arc);
+      for (int i = 0; i < n; ++i) {
+        const double ts = t0 + (t1 - t0) * i / (n - 1);
+        if (i > 0 && t1 > t0) {
+          const double ta = t0 + (t1 - t0) * (i - 1) / (n - 1);
+          odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(
+                                         o_.integration_tolerance, o_.integration_tolerance),
+                                     rhs, y, ta, ts, (ts - ta) / 4);
+        }
+        observe(ts, y, control(y));
+      }
+      if (sigma_at_switch && a + 1 < knots.size() - 1) {
+        const std::size_t k = order[a];
+        (*sigma_at_switch)[k] = (J_inv_ * Eigen::Map<const Vec3>(y.data() + 21))[s_.axes[k]];
+      }
+    }
+    return true;
+  }
+
+  /// The scaled shooting residual; false when x is outside the domain.
+  bool residual(const Eigen::VectorXd& x, Eigen::VectorXd& F) const {
+    PmpState yT{};
+    Vec3 uT = Vec3::Zero();
+    std::vector<double> sigma;
+    ShootingOptions quick = o_;
+    quick.samples_per_arc = 2;
+    Shooter fast(p_, quick, s_, bang_);
+    if (!fast.propagate(x, &sigma, [&](double, const PmpState& y, const Vec3& u) {
+          yT = y;
+          uT = u;
+        }))
+      return false;
+    const detail::PmpView v = detail::unpack(yT);
+    const double T = final_time(x);
+    F.resize(size());
+    const Mat3 E = Rf_.transpose() * v.R;
+    // Free final attitude: p_θ(T) = 0, i.e. p_θ(0) = 0 (R p_θ is constant).
+    F.segment<3>(0) =
+        p_.free_final_attitude ? Vec3(x.segment<3>(0)) : Vec3(0.5 * so3::vee(E - E.transpose()));
+    F.segment<3>(3) = (v.omega - p_.omega_final) * T;
+    int row = 6;
+    if (p_.free_final_time()) F[row++] = detail::hamiltonian(p_, J_inv_, v, uT);
+    if (bang_)
+      for (std::size_t k = 0; k < sigma.size(); ++k)
+        F[row++] = sigma[k] * p_.torque_max[s_.axes[k]];
+    return F.allFinite();
+  }
+
+ private:
+  const ReorientationProblem& p_;
+  ShootingOptions o_;
+  const SwitchGuess& s_;
+  bool bang_;
+  Mat3 J_inv_, R0_, Rf_;
+};
+
+}  // namespace
+
+Vec3 minimising_control(const ReorientationProblem& p, const Vec3& costate_omega) {
+  const Vec3 sigma = p.inertia_body.inverse() * costate_omega;
+  Vec3 u;
+  switch (p.objective) {
+    case Objective::minimum_time:
+      if (p.bound == TorqueBound::per_axis) {
+        for (int i = 0; i < 3; ++i)
+          u[i] = sigma[i] < 0 ? p.torque_max[i] : -p.torque_max[i];
+        return u;
+      }
+      return sigma.norm() > 0 ? Vec3(-p.torque_max[0] * sigma.normalized()) : Vec3::Zero();
+    case Objective::minimum_energy:
+      u = -0.5 * sigma;
+      break;
+    case Objective::minimum_time_regularised:
+      u = -sigma / (2.0 * p.energy_weight);
+      break;
+  }
+  if (p.bound == TorqueBound::per_axis) return u.cwiseMax(-p.torque_max).cwiseMin(p.torque_max);
+  return u.norm() > p.torque_max[0] ? Vec3(p.torque_max[0] * u.normalized()) : u;
+}
+
+IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolution& d,
+                                const ShootingOptions& o) {
+  validate(p);
+  if (d.costate_time.size() < 2 || d.time.empty())
+    throw InvalidInput(
+        "indirect: the direct solution has no costate estimates; expected a solve_direct result");
+  IndirectSolution out;
+  out.bang_bang = p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis;
+
+  double rate_peak = 0.0;
+  for (const auto& w : d.omega_body)
+    rate_peak = std::max(rate_peak, w.cwiseAbs().maxCoeff());
+  if (p.has_rate_bound() && rate_peak > p.rate_max * (1.0 - 1e-4)) {
+    out.status = "not applied: the rate bound is active (peak |ω_i| = " + format_number(rate_peak, 8) +
+                 " rad/s); state-constrained arcs are not handled by the shooting method";
+    return out;
+  }
+  const SwitchGuess sw = out.bang_bang ? read_switching_structure(p, d) : SwitchGuess{};
+  if (!sw.singular.empty()) {
+    out.status = "not applied: " + sw.singular + "; singular arcs are not handled by the shooting method";
+    return out;
+  }
+  Shooter shooter(p, o, sw, out.bang_bang);
+
+  // Initial costates: R p_θ is constant, so p_θ(0) = R_0ᵀ · mean_k(R_k p_θ,k); p_ω(0) extrapolated linearly.
+  Vec3 pi_space = Vec3::Zero();
+  for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
+    // attitude at the costate time: nearest sample (interval centres coincide with midpoints)
+    const auto it = std::lower_bound(d.time.begin(), d.time.end(), d.costate_time[k]);
+    const std::size_t j = std::min<std::size_t>(it - d.time.begin(), d.time.size() - 1);
+    pi_space += d.attitude[j].toRotationMatrix() * d.costate_attitude_body[k];
+  }
+  pi_space /= static_cast<double>(d.costate_time.size());
+  Eigen::VectorXd x(shooter.size());
+  x.segment<3>(0) = p.attitude_initial.toRotationMatrix().transpose() * pi_space;
+  const double c0 = d.costate_time[0], c1 = d.costate_time[1];
+  x.segment<3>(3) = d.costate_omega[0] - c0 / (c1 - c0) * (d.costate_omega[1] - d.costate_omega[0]);
+  if (p.free_final_time()) x[6] = d.final_time;
+  for (std::size_t k = 0; k < sw.times.size(); ++k)
+    x[7 + static_cast<int>(k)] = sw.times[k];
+
+  Eigen::VectorXd F;
+  if (!shooter.residual(x, F)) {
+    out.status = "not converged: the direct solution's costates give no admissible initial shot";
+    return out;
+  }
+  double norm = F.cwiseAbs().maxCoeff();
+  int it = 0;
+  for (; it < o.max_iterations && norm > o.tolerance; ++it) {
+    const int n = shooter.size();
+    Eigen::MatrixXd Jac(n, n);
+    for (int j = 0; j < n; ++j) {
+      const double scale = j < 3   ? x.segment<3>(0).cwiseAbs().maxCoeff()
+                           : j < 6 ? x.segment<3>(3).cwiseAbs().maxCoeff()
+                                   : std::abs(x[j]);
+      const double h = 1e-7 * std::max({std::abs(x[j]), 1e-2 * scale, 1e-12});
+      Eigen::VectorXd xp = x, Fp;
+      xp[j] += h;
+      if (!shooter.residual(xp, Fp)) {
+        xp[j] = x[j] - h;
+        if (!shooter.residual(xp, Fp)) break;
+        Jac.col(j) = (F - Fp) / h;
+      } else {
+        Jac.col(j) = (Fp - F) / h;
+      }
+    }
+    const Eigen::VectorXd step = Jac.colPivHouseholderQr().solve(-F);
+    double alpha = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
+      Eigen::VectorXd xn = x + alpha * step, Fn;
+      if (shooter.residual(xn, Fn) && Fn.cwiseAbs().maxCoeff() < (1.0 - 1e-4 * alpha) * norm) {
+        x = xn;
+        F = Fn;
+        norm = Fn.cwiseAbs().maxCoeff();
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) break;
+  }
+  out.iterations = it;
+  out.residual = norm;
+  out.converged = norm <= o.tolerance;
+  out.status = out.converged ? "converged"
+                             : "not converged: shooting residual " + format_number(norm, 3) + " after " +
+                                   std::to_string(it) + " Newton iterations";
+  out.final_time = shooter.final_time(x);
+  out.costate_attitude_initial = x.segment<3>(0);
+  out.costate_omega_initial = x.segment<3>(3);
+  for (std::size_t k = 0; k < sw.axes.size(); ++k) {
+    out.switch_times.push_back(shooter.switch_time(x, k));
+    out.switch_axes.push_back(sw.axes[k]);
+  }
+  {  // ascending switching times
+    std::vector<std::size_t> idx(out.switch_times.size());
+    for (std::size_t k = 0; k < idx.size(); ++k)
+      idx[k] = k;
+    std::sort(idx.begin(), idx.end(),
+              [&](auto a, auto b) { return out.switch_times[a] < out.switch_times[b]; });
+    std::vector<double> t;
+    std::vector<int> a;
+    for (auto k : idx) {
+      t.push_back(out.switch_times[k]);
+      a.push_back(out.switch_axes[k]);
+    }
+    out.switch_times = t;
+    out.switch_axes = a;
+  }
+  const Mat3 J_inv = p.inertia_body.inverse();
+  shooter.propagate(x, nullptr, [&](double t, const PmpState& y, const Vec3& u) {
+    const detail::PmpView v = detail::unpack(y);
+    out.time.push_back(t);
+    out.attitude.push_back(v.R);
+    out.omega_body.push_back(v.omega);
+    out.torque_body.push_back(u);
+    out.costate_attitude.push_back(v.P);
+    out.costate_attitude_body.push_back(detail::attitude_costate_body(v.R, v.P));
+    out.costate_omega.push_back(v.p_omega);
+    out.switching_function.push_back(J_inv * v.p_omega);
+    out.hamiltonian.push_back(detail::hamiltonian(p, J_inv, v, u));
+    out.cost = v.cost;
+  });
+  if (out.bang_bang) {
+    std::vector<double> knots{0.0};
+    knots.insert(knots.end(), out.switch_times.begin(), out.switch_times.end());
+    knots.push_back(out.final_time);
+    for (std::size_t a = 0; a + 1 < knots.size(); ++a)
+      out.arcs.push_back({knots[a], knots[a + 1], shooter.arc_torque(x, 0.5 * (knots[a] + knots[a + 1]))});
+  }
+  return out;
+}
+
+}  // namespace poinsot::optimal

@@ -1,0 +1,82 @@
+#pragma once
+/// @file pmp_system.hpp (internal)
+/// The canonical system of the minimum principle in (R, ω, P, p_ω) (indirect_shooting.hpp), packed in one
+/// array for the Runge–Kutta–Fehlberg integrator: y = (R column-major 9, ω 3, P column-major 9, p_ω 3, ∫L 1).
+#include <array>
+
+#include "poinsot/core/types.hpp"
+#include "poinsot/optimal/problem.hpp"
+#include "poinsot/so3/hat.hpp"
+
+namespace poinsot::optimal::detail {
+
+using PmpState = std::array<double, 25>;
+
+struct PmpView {
+  Mat3 R, P;
+  Vec3 omega, p_omega;
+  double cost = 0.0;
+};
+
+inline PmpView unpack(const PmpState& y) {
+  PmpView v;
+  v.R = Eigen::Map<const Mat3>(y.data());
+  v.omega = Eigen::Map<const Vec3>(y.data() + 9);
+  v.P = Eigen::Map<const Mat3>(y.data() + 12);
+  v.p_omega = Eigen::Map<const Vec3>(y.data() + 21);
+  v.cost = y[24];
+  return v;
+}
+
+inline PmpState pack(const Mat3& R, const Vec3& omega, const Mat3& P, const Vec3& p_omega, double cost) {
+  PmpState y;
+  Eigen::Map<Mat3>(y.data()) = R;
+  Eigen::Map<Vec3>(y.data() + 9) = omega;
+  Eigen::Map<Mat3>(y.data() + 12) = P;
+  Eigen::Map<Vec3>(y.data() + 21) = p_omega;
+  y[24] = cost;
+  return y;
+}
+
+/// p_θ = vee(RᵀP − PᵀR).
+inline Vec3 attitude_costate_body(const Mat3& R, const Mat3& P) {
+  const Mat3 M = R.transpose() * P;
+  return so3::vee(M - M.transpose());
+}
+
+/// The running cost L(u) of the objective (1 + ε‖u‖² includes the time term of the free-time objectives).
+inline double running_cost(const ReorientationProblem& p, const Vec3& u) {
+  switch (p.objective) {
+    case Objective::minimum_time:
+      return 1.0;
+    case Objective::minimum_energy:
+      return u.squaredNorm();
+    case Objective::minimum_time_regularised:
+      return 1.0 + p.energy_weight * u.squaredNorm();
+  }
+  return 0.0;
+}
+
+/// H = L(u) + p_θᵀω + p_ωᵀ J⁻¹(u − ω × Jω).
+inline double hamiltonian(const ReorientationProblem& p, const Mat3& J_inv, const PmpView& v, const Vec3& u) {
+  const Mat3& J = p.inertia_body;
+  return running_cost(p, u) + attitude_costate_body(v.R, v.P).dot(v.omega) +
+         v.p_omega.dot(J_inv * (u - v.omega.cross(J * v.omega)));
+}
+
+/// ẏ for the control u.
+inline void pmp_rhs(const ReorientationProblem& p, const Mat3& J_inv, const PmpState& y, PmpState& dy,
+                    const Vec3& u) {
+  const PmpView v = unpack(y);
+  const Mat3& J = p.inertia_body;
+  const Mat3 W = so3::hat(v.omega);
+  const Vec3 Jw = J * v.omega;
+  const Vec3 p_theta = attitude_costate_body(v.R, v.P);
+  Eigen::Map<Mat3>(dy.data()) = v.R * W;
+  Eigen::Map<Vec3>(dy.data() + 9) = J_inv * (u - v.omega.cross(Jw));
+  Eigen::Map<Mat3>(dy.data() + 12) = v.P * W;
+  Eigen::Map<Vec3>(dy.data() + 21) = -p_theta + (W * J - so3::hat(Jw)).transpose() * (J_inv * v.p_omega);
+  dy[24] = running_cost(p, u);
+}
+
+}  // namespace poinsot::optimal::detail

@@ -1,0 +1,135 @@
+#include "poinsot/optimal/problem.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/inertia/validity.hpp"
+#include "poinsot/so3/distance.hpp"
+
+namespace poinsot::optimal {
+
+namespace {
+
+struct ObjectiveEntry {
+  Objective objective;
+  std::string_view name;
+};
+constexpr ObjectiveEntry kObjectives[] = {{Objective::minimum_time, "minimum_time"},
+                                          {Objective::minimum_energy, "minimum_energy"},
+                                          {Objective::minimum_time_regularised, "minimum_time_regularised"}};
+
+// ∫₀ᵀ min(a + ū t, b + ū (T − t), c) dt: the largest ∫‖L‖ dt (kg·m²·rad/s·s) the torque bound allows from
+// ‖L_0‖ = a to ‖L_f‖ = b, capped at c (rate bound). Piecewise linear; integrated exactly on its breakpoints.
+double largest_momentum_integral(double a, double b, double ubar, double c, double T) {
+  std::vector<double> knots{0.0, T};
+  const double cross = 0.5 * (b - a + ubar * T) / ubar;  // a + ū t = b + ū (T − t)
+  if (cross > 0.0 && cross < T) knots.push_back(cross);
+  const double up = (c - a) / ubar, down = T - (c - b) / ubar;
+  if (up > 0.0 && up < T) knots.push_back(up);
+  if (down > 0.0 && down < T) knots.push_back(down);
+  std::sort(knots.begin(), knots.end());
+  auto g = [&](double t) { return std::max(0.0, std::min({a + ubar * t, b + ubar * (T - t), c})); };
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < knots.size(); ++i)
+    sum += 0.5 * (knots[i + 1] - knots[i]) * (g(knots[i]) + g(knots[i + 1]));
+  return sum;
+}
+
+}  // namespace
+
+std::string_view objective_name(Objective objective) {
+  for (const auto& e : kObjectives)
+    if (e.objective == objective) return e.name;
+  return "unknown";
+}
+
+Objective parse_objective(std::string_view name, std::string_view field) {
+  for (const auto& e : kObjectives)
+    if (e.name == name) return e.objective;
+  throw InvalidInput(std::string(field) + ": unknown objective \"" + std::string(name) +
+                     "\"; expected minimum_time, minimum_energy or minimum_time_regularised");
+}
+
+double ReorientationProblem::torque_norm_limit() const {
+  return bound == TorqueBound::per_axis ? torque_max.norm() : torque_max[0];
+}
+
+double minimum_duration_bound(const ReorientationProblem& p) {
+  const double theta = p.free_final_attitude ? 0.0 : so3::angle_between(p.attitude_initial, p.attitude_final);
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(p.inertia_body);
+  const double j_min = eig.eigenvalues()[0];
+  const double ubar = p.torque_norm_limit();
+  const double a = (p.inertia_body * p.omega_initial).norm();
+  const double b = (p.inertia_body * p.omega_final).norm();
+  const double c = p.has_rate_bound() ? std::sqrt(3.0) * p.rate_max * eig.eigenvalues()[2]
+                                      : std::numeric_limits<double>::infinity();
+  const double t_momentum = std::abs(a - b) / ubar;
+  auto feasible = [&](double T) {
+    return T >= t_momentum && largest_momentum_integral(a, b, ubar, c, T) >= theta * j_min;
+  };
+  double hi = std::max(1.0, t_momentum);
+  while (!feasible(hi))
+    hi *= 2.0;
+  double lo = 0.0;
+  while (hi - lo > 1e-12 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (feasible(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+void validate(const ReorientationProblem& p) {
+  inertia::require_valid_inertia(p.inertia_body, "optimal_control.inertia");
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(p.inertia_body);
+  if (!(eig.eigenvalues()[0] > 1e-12 * eig.eigenvalues()[2]))
+    throw InvalidInput("optimal_control.inertia: principal moments " + format_vector(eig.eigenvalues()) +
+                       " kg·m² include a zero; expected an invertible inertia (no point masses or rods)");
+  const int n_bounds = p.bound == TorqueBound::per_axis ? 3 : 1;
+  for (int i = 0; i < n_bounds; ++i)
+    if (!std::isfinite(p.torque_max[i]) || !(p.torque_max[i] > 0.0))
+      throw InvalidInput("optimal_control.torque_max: " +
+                         (n_bounds == 3 ? format_vector(p.torque_max) : format_number(p.torque_max[0])) +
+                         " N·m; expected finite positive bounds");
+  if (!(p.rate_max > 0.0) || std::isnan(p.rate_max))
+    throw InvalidInput("optimal_control.rate_max: " + format_number(p.rate_max) +
+                       " rad/s; expected a positive bound (or none)");
+  for (const auto& [q, field] :
+       {std::pair{p.attitude_initial, "initial attitude"}, std::pair{p.attitude_final, "final attitude"}})
+    if (!q.coeffs().allFinite() || std::abs(q.norm() - 1.0) > 1e-9)
+      throw InvalidInput(std::string("optimal_control.") + field + ": quaternion " + format_quaternion(q) +
+                         " has norm " + format_number(q.norm()) + "; expected a unit quaternion");
+  for (const auto& [w, field] :
+       {std::pair{p.omega_initial, "omega_initial"}, std::pair{p.omega_final, "omega_final"}}) {
+    if (!w.allFinite())
+      throw InvalidInput(std::string("optimal_control.") + field + ": " + format_vector(w) +
+                         " rad/s; expected finite values");
+    if (w.cwiseAbs().maxCoeff() > p.rate_max)
+      throw InvalidInput("optimal_control.rate_max: " + format_number(p.rate_max) + " rad/s is below |" +
+                         field + "| = " + format_vector(w.cwiseAbs()) +
+                         " rad/s; no manoeuvre can start or end there");
+  }
+  if (p.objective == Objective::minimum_time_regularised) {
+    if (!std::isfinite(p.energy_weight) || !(p.energy_weight > 0.0))
+      throw InvalidInput("optimal_control.energy_weight: " + format_number(p.energy_weight) +
+                         " s/(N·m)²; expected a finite positive weight for minimum_time_regularised");
+  } else if (p.energy_weight != 0.0) {
+    throw InvalidInput("optimal_control.energy_weight: " + format_number(p.energy_weight) +
+                       "; only minimum_time_regularised takes an energy weight");
+  }
+  if (p.objective == Objective::minimum_energy) {
+    if (!std::isfinite(p.final_time) || !(p.final_time > 0.0))
+      throw InvalidInput("optimal_control.final_time: " + format_number(p.final_time) +
+                         " s; expected a finite positive final time for minimum_energy");
+    const double t_min = minimum_duration_bound(p);
+    if (p.final_time < t_min)
+      throw InvalidInput(
+          "optimal_control.final_time: " + format_number(p.final_time) +
+          " s is too short: within these torque and rate bounds any manoeuvre needs at least " +
+          format_number(t_min, 6) + " s");
+  }
+}
+
+}  // namespace poinsot::optimal

@@ -1,0 +1,143 @@
+#include "poinsot/optimal/verification.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+#include "pmp_system.hpp"
+#include "poinsot/analysis/multipliers.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/dynamics/dop853.hpp"
+#include "poinsot/so3/distance.hpp"
+
+namespace poinsot::optimal {
+
+namespace {
+
+/// The control-dependent part of H: L(u) + σᵀu.
+double control_hamiltonian(const ReorientationProblem& p, const Vec3& sigma, const Vec3& u) {
+  return detail::running_cost(p, u) + sigma.dot(u);
+}
+
+/// Replays the indirect solution's torque through DOP853; returns the final state.
+dynamics::State resimulate(const ReorientationProblem& p, const IndirectSolution& s) {
+  const auto body = dynamics::RigidBody::from_inertia(p.inertia_body);
+  auto arc_torque = std::make_shared<Vec3>(Vec3::Zero());
+  std::shared_ptr<const dynamics::TorqueModel> torque;
+  if (s.bang_bang) {
+    // The torque of the current arc, set before the arc is integrated: no stage sees the next arc.
+    torque = dynamics::TorqueModel::callback(
+        [arc_torque](double, const Mat3&, const Vec3&) { return *arc_torque; }, false,
+        "optimal bang-bang torque");
+  } else {
+    const auto* t = &s.time;
+    const auto* u = &s.torque_body;
+    torque = dynamics::TorqueModel::callback(
+        [t, u](double time, const Mat3&, const Vec3&) {
+          const auto it = std::upper_bound(t->begin(), t->end(), time);
+          const std::size_t j = std::clamp<std::size_t>(it - t->begin(), 1, t->size() - 1);
+          const double a = (*t)[j - 1], b = (*t)[j];
+          const double w = b > a ? std::clamp((time - a) / (b - a), 0.0, 1.0) : 1.0;
+          return Vec3((1.0 - w) * (*u)[j - 1] + w * (*u)[j]);
+        },
+        false, "optimal tabulated torque");
+  }
+  dynamics::IntegratorOptions opt;
+  opt.dt = s.final_time / 16.0;
+  opt.rtol = opt.atol = 1e-13;
+  dynamics::Dop853Integrator integrator(body, torque, opt);
+  dynamics::State state;
+  state.R = p.attitude_initial.toRotationMatrix();
+  state.omega_body = p.omega_initial;
+  std::vector<ControlArc> arcs = s.arcs;
+  if (!s.bang_bang) arcs = {{0.0, s.final_time, Vec3::Zero()}};
+  double dt = opt.dt;
+  for (const auto& arc : arcs) {
+    *arc_torque = arc.torque_body;
+    while (arc.t_end - state.t > 1e-14 * s.final_time) {
+      const auto r = integrator.step(state, std::min(dt, arc.t_end - state.t));
+      dt = std::max(r.dt_next, 1e-12);
+    }
+  }
+  return state;
+}
+
+}  // namespace
+
+VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d, const IndirectSolution& s,
+                          const VerificationTolerances& tol) {
+  VerificationReport r;
+  auto fail = [&](const std::string& what) { r.failures.push_back(what); };
+  if (!d.converged) fail("direct method: " + d.status);
+  if (!s.converged) fail("indirect method: " + s.status);
+  if (s.time.empty()) {
+    r.passed = false;
+    return r;
+  }
+  const Mat3 J_inv = p.inertia_body.inverse();
+  const auto body = dynamics::RigidBody::from_inertia(p.inertia_body);
+  double h_sum = 0.0;
+  for (double h : s.hamiltonian)
+    h_sum += h;
+  r.hamiltonian_mean = h_sum / static_cast<double>(s.hamiltonian.size());
+  const Vec3 pi0 = s.attitude.front() * s.costate_attitude_body.front();
+  double sigma_max = 0.0;
+  for (const auto& sg : s.switching_function)
+    sigma_max = std::max(sigma_max, sg.cwiseAbs().maxCoeff());
+  for (std::size_t j = 0; j < s.time.size(); ++j) {
+    r.hamiltonian_deviation =
+        std::max(r.hamiltonian_deviation, std::abs(s.hamiltonian[j] - r.hamiltonian_mean));
+    const Vec3& sigma = s.switching_function[j];
+    const Vec3& u = s.torque_body[j];
+    const Vec3 u_best = minimising_control(p, s.costate_omega[j]);
+    // the size of the control-dependent part of H: ‖σ‖ ‖u*‖ (ū‖σ‖ for minimum time, ‖σ‖²/2 for energy)
+    const double scale = std::max(sigma.norm() * u_best.norm(), 1e-300);
+    r.control_gap = std::max(
+        r.control_gap, (control_hamiltonian(p, sigma, u) - control_hamiltonian(p, sigma, u_best)) / scale);
+    if (s.bang_bang)
+      for (int i = 0; i < 3; ++i)
+        if (u[i] * sigma[i] > 0.0 && std::abs(sigma[i]) > 1e-9 * sigma_max) ++r.switching_sign_violations;
+    r.costate_drift = std::max(r.costate_drift, (s.attitude[j] * s.costate_attitude_body[j] - pi0).norm() /
+                                                    std::max(pi0.norm(), 1e-300));
+    r.orthogonality =
+        std::max(r.orthogonality, (s.attitude[j].transpose() * s.attitude[j] - Mat3::Identity()).norm());
+    const Vec3 omega_dot = J_inv * (u - s.omega_body[j].cross(p.inertia_body * s.omega_body[j]));
+    const Mat3 lambda = analysis::lambda_from_omega(body, s.omega_body[j], omega_dot);
+    r.lambda_torque_error = std::max(
+        r.lambda_torque_error, (so3::vee(lambda - lambda.transpose()) - u).norm() / p.torque_norm_limit());
+  }
+  const dynamics::State end = resimulate(p, s);
+  // With a free final attitude the re-simulation is compared with the indirect solution's own R(T).
+  r.resimulated_attitude_error = so3::angle_between(
+      end.R, p.free_final_attitude ? s.attitude.back() : p.attitude_final.toRotationMatrix());
+  r.resimulated_rate_error = (end.omega_body - p.omega_final).norm();
+  r.direct_indirect_difference = std::abs(d.cost - s.cost) / std::max(std::abs(s.cost), 1e-300);
+
+  const double h_level = p.free_final_time() ? std::abs(r.hamiltonian_mean) : 0.0;
+  if (r.hamiltonian_deviation > tol.hamiltonian || h_level > tol.hamiltonian)
+    fail("Hamiltonian: mean " + format_number(r.hamiltonian_mean, 3) + ", deviation " +
+         format_number(r.hamiltonian_deviation, 3) + " (expected constant" +
+         (p.free_final_time() ? " and 0" : "") + " to " + format_number(tol.hamiltonian) + ")");
+  if (r.control_gap > tol.control)
+    fail("the control does not minimise H: gap " + format_number(r.control_gap, 3));
+  if (r.switching_sign_violations > 0)
+    fail(std::to_string(r.switching_sign_violations) + " samples with a torque of the sign of σ");
+  if (r.costate_drift > tol.costate)
+    fail("space attitude costate drifts by " + format_number(r.costate_drift, 3));
+  if (r.orthogonality > tol.orthogonality) fail("RᵀR − I reaches " + format_number(r.orthogonality, 3));
+  if (r.lambda_torque_error > 1e-12)
+    fail("vee(Λ − Λᵀ) differs from u by " + format_number(r.lambda_torque_error, 3));
+  const double att_tol = s.bang_bang ? tol.resimulated_attitude : tol.resimulated_attitude_smooth;
+  if (r.resimulated_attitude_error > att_tol)
+    fail("re-simulation misses the target attitude by " + format_number(r.resimulated_attitude_error, 3) +
+         " rad");
+  if (r.resimulated_rate_error > att_tol)
+    fail("re-simulation misses the target rate by " + format_number(r.resimulated_rate_error, 3) + " rad/s");
+  if (r.direct_indirect_difference > tol.direct_indirect)
+    fail("direct and indirect costs differ by " + format_number(r.direct_indirect_difference, 3) +
+         " (relative)");
+  r.passed = r.failures.empty();
+  return r;
+}
+
+}  // namespace poinsot::optimal

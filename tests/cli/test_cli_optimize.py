@@ -1,0 +1,97 @@
+"""`poinsot optimize`: the report, the files, --json, bad input (exit 2, nothing written) and a solution that is
+not verified optimal (exit 1, files marked "not converged")."""
+import json
+from pathlib import Path
+
+SLEW = """
+[body]
+principal_moments = [1.0, 1.0, 1.0]
+[optimal_control]
+objective = "minimum_time"
+torque_bound = "per_axis"
+torque_max = [1.0, 1.0, 1.0]
+mesh_tolerance = 1e-5
+[optimal_control.final]
+orientation = { quaternion = [0.0, 1.0, 0.0, 0.0] }
+"""
+
+ENERGY = """
+[body]
+principal_moments = [2.5, 2.5, 2.5]
+[optimal_control]
+objective = "minimum_energy"
+torque_bound = "norm"
+torque_max = 100.0
+final_time = {T}
+mesh_tolerance = {tol}
+max_mesh_iterations = {its}
+[optimal_control.final]
+orientation = {{ axis_angle = {{ axis = [1.0, -2.0, 0.5], angle = 2.0 }} }}
+"""
+
+
+def write(tmp_path, text):
+    p = tmp_path / "s.toml"
+    p.write_text(text)
+    return p
+
+
+def rows(path):
+    lines = Path(path).read_text().splitlines()
+    return lines[0], lines[1].split(","), [[float(x) for x in line.split(",")] for line in lines[2:]]
+
+
+def test_per_axis_sphere_slew_files_and_report(cli, tmp_path):
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path, SLEW), "--out", out)
+    assert r.returncode == 0, r.stderr
+    assert "status: optimal (verified)" in r.stdout
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["optimal"] is True
+    # Bilimoria & Wie's slew: 3.2430832775 s (docs/optimal_control.md), five switches.
+    assert abs(summary["indirect"]["final_time"] - 3.2430832775) < 1e-9
+    assert len(summary["indirect"]["switches"]) == 5
+    status, names, control = rows(out / "control.csv")
+    assert status == "# status: optimal (verified)"
+    assert names == ["t", "ux", "uy", "uz"]
+    assert len(control) == 2 * 6  # two rows per arc, six arcs
+    assert all(abs(abs(u) - 1.0) < 1e-15 for row in control for u in row[1:])
+    _, names, costates = rows(out / "costates.csv")
+    assert names[-1] == "H"
+    assert max(abs(row[-1]) for row in costates) < 1e-8
+    _, names, traj = rows(out / "trajectory.csv")
+    assert names[:5] == ["t", "qw", "qx", "qy", "qz"]
+    assert abs(traj[-1][0] - summary["indirect"]["final_time"]) < 1e-12
+
+
+def test_json_is_summary_json(cli, tmp_path):
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path, ENERGY.format(T=3.0, tol=1e-6, its=10)), "--out", out, "--json")
+    assert r.returncode == 0, r.stdout
+    assert r.stdout == (out / "summary.json").read_text()
+    summary = json.loads(r.stdout)
+    # the eigenaxis cubic: 12 j² Θ² / T³
+    assert abs(summary["indirect"]["cost"] / (12 * 2.5**2 * 4.0 / 27.0) - 1) < 1e-11
+
+
+def test_bad_input_is_one_line_exit_2_and_writes_nothing(cli, tmp_path):
+    out = tmp_path / "out"
+    # 0.1 s is below the shortest possible 2 rad slew with ‖u‖ ≤ 100 N·m, j = 2.5: 2√(Θj/ū) = 0.447 s
+    r = cli("optimize", write(tmp_path, ENERGY.format(T=0.1, tol=1e-6, its=10)), "--out", out)
+    assert r.returncode == 2
+    assert r.stderr.count("\n") == 1 and "final_time" in r.stderr and "too short" in r.stderr
+    assert not out.exists()
+    r = cli("optimize", write(tmp_path, SLEW.replace('"per_axis"', '"cube"')), "--out", out)
+    assert r.returncode == 2 and "torque_bound" in r.stderr and not out.exists()
+
+
+def test_not_converged_is_exit_1_with_marked_files(cli, tmp_path):
+    out = tmp_path / "out"
+    # one mesh iteration cannot reach a mesh error of 1e-14: the direct method reports it, and the run is not
+    # called optimal although the shooting converges
+    r = cli("optimize", write(tmp_path, ENERGY.format(T=3.0, tol=1e-14, its=1)), "--out", out)
+    assert r.returncode == 1
+    assert "status: not converged" in r.stdout
+    for name in ("trajectory.csv", "control.csv", "costates.csv"):
+        assert (out / name).read_text().startswith("# status: not converged")
+    assert json.loads((out / "summary.json").read_text())["optimal"] is False

@@ -1,0 +1,36 @@
+#pragma once
+// Reference problems of the optimal/ tests: Betts' asymmetric spacecraft and the spherical body.
+#include <cmath>
+#include <numbers>
+
+#include "poinsot/optimal/problem.hpp"
+
+namespace poinsot::optimal::testing {
+
+/// Betts (Practical Methods for Optimal Control, 2nd ed., example 6.12; PSOPT "reorientation"):
+/// J = diag(5621, 4547, 2364) kg·m², |u_i| ≤ 50 N·m, |ω_i| ≤ 0.5 rad/s, rest → rest, 150° about body x,
+/// minimum time. Published optimum t* = 28.6304077 s.
+inline ReorientationProblem betts_problem() {
+  ReorientationProblem p;
+  p.inertia_body = Vec3(5621.0, 4547.0, 2364.0).asDiagonal();
+  p.torque_max = Vec3::Constant(50.0);
+  p.rate_max = 0.5;
+  const double half = 0.5 * 150.0 * std::numbers::pi / 180.0;
+  p.attitude_final = Quat(std::cos(half), std::sin(half), 0.0, 0.0);
+  p.objective = Objective::minimum_time;
+  return p;
+}
+inline constexpr double kBettsPublishedTime = 28.6304077;  // s
+
+/// The sphere J = j I rest to rest through Θ about the unit axis n at minimum energy in the fixed time T.
+inline ReorientationProblem sphere_energy_problem(double j, double theta, const Vec3& axis, double T) {
+  ReorientationProblem p;
+  p.inertia_body = j * Mat3::Identity();
+  p.torque_max = Vec3::Constant(1e3);
+  p.attitude_final = Quat(Eigen::AngleAxisd(theta, axis.normalized()));
+  p.objective = Objective::minimum_energy;
+  p.final_time = T;
+  return p;
+}
+
+}  // namespace poinsot::optimal::testing

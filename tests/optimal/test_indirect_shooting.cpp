@@ -1,0 +1,114 @@
+#include "poinsot/optimal/indirect_shooting.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "optimal_test_problems.hpp"
+#include "poinsot/optimal/interpretation.hpp"
+#include "poinsot/optimal/verification.hpp"
+
+namespace poinsot::optimal {
+namespace {
+
+// Betts' spacecraft, direct → indirect → verification. The shooting solution is exact up to the RKF78
+// tolerance (1e-13) and the Newton tolerance (1e-12), so t* must match the published 8 digits (28.6304077,
+// ±5e-8 in its last digit) to 5e-8 relative; the switching times are checked against the symmetry of the
+// problem (none) and against the switching functions (σ_i(t_s) = 0 is a Newton equation).
+TEST(IndirectShooting, BettsMinimumTimeMatchesThePublishedOptimum) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP()
+      << "about 4 s in release, minutes under ASan; the sanitizer build runs the smaller slews below";
+#endif
+  CollocationOptions opt;
+  opt.initial_intervals = 10;
+  opt.mesh_tolerance = 1e-5;  // enough for the switching structure and the costates the shooting needs
+  const auto p = testing::betts_problem();
+  const DirectSolution d = solve_direct(p, opt);
+  ASSERT_TRUE(d.converged) << d.status;
+  // Hermite–Simpson blurs the switches: t* to about 6.5e-5 at this mesh tolerance (73 intervals at 1e-6:
+  // 9e-6).
+  EXPECT_NEAR(d.final_time / testing::kBettsPublishedTime, 1.0, 1e-4);
+  const IndirectSolution s = solve_indirect(p, d);
+  ASSERT_TRUE(s.converged) << s.status;
+  EXPECT_NEAR(s.final_time / testing::kBettsPublishedTime, 1.0, 5e-8);
+  ASSERT_EQ(s.switch_times.size(), 5u);
+  const VerificationReport v = verify(p, d, s);
+  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+  EXPECT_LT(v.resimulated_attitude_error, 1e-9);
+  // The rate bound 0.5 rad/s is not active at the optimum (peak |ω_i| ≈ 0.19 rad/s).
+  double peak = 0.0;
+  for (const auto& w : s.omega_body)
+    peak = std::max(peak, w.cwiseAbs().maxCoeff());
+  EXPECT_LT(peak, 0.4);
+  // Beside the eigenaxis manoeuvre about the principal x axis, 2√(Θ J_1/u_1) = 34.311 s: 16.6 % saved.
+  const ManoeuvreInterpretation m = interpret(p, s);
+  ASSERT_TRUE(m.eigenaxis_available);
+  EXPECT_NEAR(m.eigenaxis_cost, 2.0 * std::sqrt(150.0 * std::numbers::pi / 180.0 * 5621.0 / 50.0), 1e-12);
+  EXPECT_NEAR(m.saving, 1.0 - s.final_time / m.eigenaxis_cost, 1e-15);
+  EXPECT_GT(m.saving, 0.16);
+}
+
+// Bilimoria & Wie (1993): the 180° rest-to-rest slew of J = I about x with |u_i| ≤ 1 is faster than the
+// eigenaxis manoeuvre 2√(Θ j/u) = 2√π. The optimum found here (T* = 3.2430832774 s, five switches) is
+// symmetric in time: t_s + t_{6−s} = T*, a property the solver is not told.
+TEST(IndirectShooting, PerAxisSphereSlewBeatsTheEigenaxisManoeuvre) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP()
+      << "about 1 s in release, a minute under ASan; the Betts and sphere-energy cases cover the code";
+#endif
+  ReorientationProblem p;
+  p.attitude_final = Quat(0.0, 1.0, 0.0, 0.0);
+  CollocationOptions opt;
+  opt.initial_intervals = 20;
+  opt.mesh_tolerance = 1e-6;
+  const DirectSolution d = solve_direct(p, opt);
+  ASSERT_TRUE(d.converged) << d.status;
+  const IndirectSolution s = solve_indirect(p, d);
+  ASSERT_TRUE(s.converged) << s.status;
+  const double eigenaxis = 2.0 * std::sqrt(std::numbers::pi);
+  EXPECT_LT(s.final_time, 0.92 * eigenaxis);
+  EXPECT_NEAR(s.final_time, 3.2430832774, 1e-9);
+  EXPECT_NEAR(d.final_time / s.final_time, 1.0, 1e-5);
+  ASSERT_EQ(s.switch_times.size(), 5u);
+  for (std::size_t k = 0; k < 5; ++k)
+    EXPECT_NEAR(s.switch_times[k] + s.switch_times[4 - k], s.final_time, 1e-9);
+  const VerificationReport v = verify(p, d, s);
+  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+}
+
+// The sphere at minimum energy: the indirect solution is the eigenaxis cubic, cost 12 j²Θ²/T³, to the
+// shooting tolerance.
+TEST(IndirectShooting, SphereMinimumEnergyCost) {
+  const double j = 2.5, theta = 2.0, T = 3.0;
+  const auto p = testing::sphere_energy_problem(j, theta, Vec3(1.0, -2.0, 0.5), T);
+  CollocationOptions opt;
+  opt.initial_intervals = 10;
+  opt.mesh_tolerance = 1e-6;
+  const DirectSolution d = solve_direct(p, opt);
+  ASSERT_TRUE(d.converged) << d.status;
+  const IndirectSolution s = solve_indirect(p, d);
+  ASSERT_TRUE(s.converged) << s.status;
+  EXPECT_NEAR(s.cost / (12.0 * j * j * theta * theta / (T * T * T)), 1.0, 1e-11);
+  const VerificationReport v = verify(p, d, s);
+  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+}
+
+TEST(IndirectShooting, RefusesActiveRateBounds) {
+  ReorientationProblem p;
+  p.attitude_final = Quat(0.0, 1.0, 0.0, 0.0);
+  p.rate_max = 1.0;  // the unconstrained optimum reaches |ω_1| ≈ 1.6 rad/s
+  CollocationOptions opt;
+  opt.initial_intervals = 8;
+  opt.mesh_tolerance = 1e-3;
+  const DirectSolution d = solve_direct(p, opt);
+  ASSERT_TRUE(d.converged) << d.status;
+  const IndirectSolution s = solve_indirect(p, d);
+  EXPECT_FALSE(s.converged);
+  EXPECT_NE(s.status.find("rate bound is active"), std::string::npos) << s.status;
+  EXPECT_FALSE(verify(p, d, s).passed);
+}
+
+}  // namespace
+}  // namespace poinsot::optimal
