@@ -15,3 +15,12 @@ target_link_libraries(poinsot PRIVATE assimp::assimp tomlplusplus::tomlplusplus)
 find_package(Boost 1.74 REQUIRED)
 target_link_libraries(poinsot PRIVATE Boost::headers)
 # --- end dynamics
+
+# --- ensemble: Random123's Philox (header-only; Debian 12 librandom123-dev) for the counter-based draws of
+# ensemble/counter_rng.cpp. The batched kernels are compiled without floating-point contraction, so that their
+# SIMD and scalar paths (and the scalar integrators of dynamics/) round identically (docs/ensemble.md).
+find_path(POINSOT_RANDOM123_INCLUDE_DIR Random123/philox.h REQUIRED)
+target_include_directories(poinsot SYSTEM PRIVATE ${POINSOT_RANDOM123_INCLUDE_DIR})
+file(GLOB _poinsot_ensemble_kernels ${CMAKE_CURRENT_SOURCE_DIR}/ensemble/batch_*.cpp)
+set_source_files_properties(${_poinsot_ensemble_kernels} PROPERTIES COMPILE_OPTIONS "-ffp-contract=off")
+# --- end ensemble
