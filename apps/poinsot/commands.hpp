@@ -18,4 +18,7 @@ void register_run(CLI::App& app);
 // lambda (issue 5)
 void register_lambda(CLI::App& app);
 
+// ensemble
+void register_ensemble(CLI::App& app);
+
 }  // namespace poinsot::cli

@@ -25,6 +25,9 @@ int main(int argc, char** argv) {
   // lambda (issue 5)
   poinsot::cli::register_lambda(app);
 
+  // ensemble
+  poinsot::cli::register_ensemble(app);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
