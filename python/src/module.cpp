@@ -23,4 +23,5 @@ PYBIND11_MODULE(_core, m) {
   poinsot::python::bind_analysis(m);
   poinsot::python::bind_io(m);
   poinsot::python::bind_multibody(m);
+  poinsot::python::bind_ensemble(m);
 }
