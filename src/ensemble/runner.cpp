@@ -166,19 +166,43 @@ SampleRow run_sample(const Sampler& sampler, std::uint64_t index, const Ensemble
   return row;
 }
 
+void merge_block(EnsembleResult& result, const BlockSummary& block) {
+  for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
+    result.stats[q].merge(block.stats[q]);
+  result.rejected += block.rejected;
+  result.repaired += block.repaired;
+}
+
+std::uint64_t block_count(std::uint64_t samples) {
+  return (samples + kBlockSamples - 1) / kBlockSamples;
+}
+
 EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& o) {
+  return run_ensemble_blocks(sampler, o, 0, block_count(o.samples), nullptr);
+}
+
+EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions& o,
+                                   std::uint64_t first_block, std::uint64_t last_block,
+                                   std::vector<BlockSummary>* blocks_out) {
   validate(o);
+  if (!(first_block <= last_block && last_block <= block_count(o.samples))) {
+    throw InvalidInput(fmt::format("ensemble: blocks [{}, {}) of {}; expected a range within the samples",
+                                   first_block, last_block, block_count(o.samples)));
+  }
+  const std::uint64_t first_sample = first_block * kBlockSamples;
+  const std::uint64_t end_sample = std::min(o.samples, last_block * kBlockSamples);
+  const std::uint64_t range = end_sample - first_sample;
   const auto start = std::chrono::steady_clock::now();
   if (o.keep_rows) {
     const std::uint64_t limit = o.max_row_bytes > 0
                                     ? o.max_row_bytes
                                     : static_cast<std::uint64_t>(sysconf(_SC_PHYS_PAGES)) *
                                           static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE)) / 2;
-    if (o.samples > limit / sizeof(SampleRow)) {
+    if (range > limit / sizeof(SampleRow)) {
       throw InvalidInput(fmt::format(
           "ensemble: {} samples with per-sample output need {:.3g} GB, more than the {:.3g} GB allowed (half "
           "the memory); expected fewer samples or per-sample output off",
-          o.samples, static_cast<double>(row_bytes(o.samples)) / 1e9, static_cast<double>(limit) / 1e9));
+          range, static_cast<double>(row_bytes(range)) / 1e9, static_cast<double>(limit) / 1e9));
     }
   }
   const Path path = choose_path(sampler, o);
@@ -190,14 +214,13 @@ EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& o) {
     result.nominal.out[attitude_error] = 0.0;  // against itself, by definition
   }
   const Context context{sampler, o, path, result.nominal.final_state};
-  if (o.keep_rows) result.rows.resize(o.samples);
+  if (o.keep_rows) result.rows.resize(range);
 
-  const std::uint64_t blocks = (o.samples + kBlockSamples - 1) / kBlockSamples;
+  const std::uint64_t blocks = last_block - first_block;
   const std::uint64_t per_round = 4 * static_cast<std::uint64_t>(o.threads);
   std::vector<std::vector<SampleRow>> scratch(o.keep_rows ? 0 : per_round,
                                               std::vector<SampleRow>(kBlockSamples));
-  std::vector<RunningStats> block_stats(per_round * kOutputCount);
-  std::vector<std::int64_t> block_rejected(per_round), block_repaired(per_round);
+  std::vector<BlockSummary> block(per_round);
   const long long steps_per_sample = path == Path::exact ? 0 : batch_step_count(o.t_end, o.dt);
 
   for (std::uint64_t round = 0; round * per_round < blocks; ++round) {
@@ -209,18 +232,18 @@ EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& o) {
     const auto worker = [&] {
       for (std::uint64_t k; (k = next.fetch_add(1)) < nb;) {
         try {
-          const std::uint64_t first = (b0 + k) * kBlockSamples;
-          const std::uint64_t count = std::min(kBlockSamples, o.samples - first);
-          SampleRow* rows = o.keep_rows ? result.rows.data() + first : scratch[k].data();
-          run_block(context, first, count, rows);
-          RunningStats* st = &block_stats[k * kOutputCount];
-          std::fill(st, st + kOutputCount, RunningStats{});
-          block_rejected[k] = block_repaired[k] = 0;
+          const std::uint64_t offset = (b0 + k) * kBlockSamples;  // within the range
+          const std::uint64_t count = std::min(kBlockSamples, range - offset);
+          SampleRow* rows = o.keep_rows ? result.rows.data() + offset : scratch[k].data();
+          run_block(context, first_sample + offset, count, rows);
+          BlockSummary& b = block[k];
+          b = BlockSummary{};
+          b.index = first_block + b0 + k;
           for (std::uint64_t i = 0; i < count; ++i) {
-            for (int q = 0; q < kOutputCount; ++q)
-              st[q].add(rows[i].out[static_cast<std::size_t>(q)]);
-            block_rejected[k] += rows[i].rejected;
-            block_repaired[k] += rows[i].repaired ? 1 : 0;
+            for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
+              b.stats[q].add(rows[i].out[q]);
+            b.rejected += rows[i].rejected;
+            b.repaired += rows[i].repaired ? 1 : 0;
           }
         } catch (...) {
           const std::lock_guard lock(error_mutex);
@@ -236,15 +259,12 @@ EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& o) {
       t.join();
     if (error) std::rethrow_exception(error);
     for (std::uint64_t k = 0; k < nb; ++k) {  // merged in block order: independent of the threads
-      for (int q = 0; q < kOutputCount; ++q)
-        result.stats[static_cast<std::size_t>(q)].merge(
-            block_stats[k * kOutputCount + static_cast<std::size_t>(q)]);
-      result.rejected += block_rejected[k];
-      result.repaired += block_repaired[k];
+      merge_block(result, block[k]);
+      if (blocks_out) blocks_out->push_back(block[k]);
     }
-    result.completed = std::min(o.samples, (b0 + nb) * kBlockSamples);
+    result.completed = std::min(range, (b0 + nb) * kBlockSamples);
     if (o.on_progress) o.on_progress(result.completed);
-    if (result.completed < o.samples && o.stop_requested && o.stop_requested()) {
+    if (result.completed < range && o.stop_requested && o.stop_requested()) {
       result.interrupted = true;
       break;
     }

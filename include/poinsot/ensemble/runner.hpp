@@ -87,6 +87,19 @@ struct EnsembleResult {
   SampleRow nominal;  ///< the undispersed sample
 };
 
+/// The statistics of one block of kBlockSamples consecutive samples (the unit of merging).
+struct BlockSummary {
+  std::uint64_t index = 0;  ///< block number: samples [index·kBlockSamples, (index + 1)·kBlockSamples)
+  std::array<RunningStats, kOutputCount> stats;
+  std::int64_t rejected = 0, repaired = 0;
+};
+
+/// The number of blocks of `samples` samples.
+std::uint64_t block_count(std::uint64_t samples);
+/// Merges a block into the result's statistics and counts. Merging every block in index order gives the
+/// statistics of run_ensemble bit for bit, however the blocks were distributed (threads, MPI ranks).
+void merge_block(EnsembleResult& result, const BlockSummary& block);
+
 /// Bytes of the stored rows for `samples` samples.
 std::uint64_t row_bytes(std::uint64_t samples);
 
@@ -94,6 +107,13 @@ std::uint64_t row_bytes(std::uint64_t samples);
 /// unknown method, `exact` with a torque or a pivot, stored rows that would not fit in memory: refused before
 /// allocating, with the size), and the sampler's errors.
 EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& options);
+
+/// Runs the blocks [first_block, last_block) of an ensemble of options.samples samples (rows of those samples
+/// only; `completed` counts them) and appends their summaries in order to `blocks` when not null: the share
+/// of one process of a distributed run. Throws like run_ensemble, and for a block range outside the samples.
+EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions& options,
+                                   std::uint64_t first_block, std::uint64_t last_block,
+                                   std::vector<BlockSummary>* blocks);
 
 /// One sample alone (the same row run_ensemble computes for it).
 SampleRow run_sample(const Sampler& sampler, std::uint64_t index, const EnsembleOptions& options);
