@@ -13,8 +13,8 @@ packages=(
   libassimp-dev libgtest-dev libgmock-dev libbenchmark-dev
   # Python module, its tests and the plots
   python3 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest
-  # ensembles: counter-based random numbers (Random123, header-only)
-  librandom123-dev
+  # ensembles: counter-based random numbers (Random123, header-only); optional: MPI ranks, HDF5 tables
+  librandom123-dev libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py
   "$@"
 )
 

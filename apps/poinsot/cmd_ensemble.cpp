@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "ensemble_mpi.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/io/ensemble.hpp"
 #include "poinsot/io/run.hpp"
@@ -38,6 +39,7 @@ struct EnsembleCliOptions {
 };
 
 void run_ensemble_command(const EnsembleCliOptions& c) {
+  const MpiSession mpi;  // MPI_Init under mpirun (when built with MPI), nothing otherwise
   io::EnsembleScenario sc = io::load_ensemble_scenario(c.scenario);
   ensemble::EnsembleOptions o = io::ensemble_options(sc);
   if (c.samples > 0) o.samples = c.samples;
@@ -61,7 +63,8 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
     return;
   }
 
-  io::prepare_output_dir(dir);  // before anything is simulated
+  const bool root = mpi.rank() == 0;
+  if (root) io::prepare_output_dir(dir);  // before anything is simulated
   g_interrupted = 0;
   struct sigaction sa {
   }, old_int{};
@@ -70,7 +73,7 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   sa.sa_flags = SA_RESETHAND;
   sigaction(SIGINT, &sa, &old_int);
   o.stop_requested = [] { return g_interrupted != 0; };
-  const bool tty = isatty(STDERR_FILENO) == 1 && !c.json;
+  const bool tty = root && isatty(STDERR_FILENO) == 1 && !c.json;
   const auto start = std::chrono::steady_clock::now();
   o.on_progress = [&](std::uint64_t done) {
     if (!tty) return;
@@ -81,13 +84,14 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   };
   ensemble::EnsembleResult r;
   try {
-    r = ensemble::run_ensemble(sampler, o);
+    r = mpi.size() > 1 ? run_ensemble_mpi(mpi, sampler, o) : ensemble::run_ensemble(sampler, o);
   } catch (...) {
     sigaction(SIGINT, &old_int, nullptr);
     throw;
   }
   sigaction(SIGINT, &old_int, nullptr);
   if (tty) fmt::print(stderr, "\r\033[K");
+  if (!root) return;  // rank 0 writes and reports for all ranks
   if (o.keep_rows) io::write_file_atomic(dir + "/samples.csv", io::ensemble_csv(r));
   const std::string summary = io::ensemble_summary_json(sc, o, r);
   io::write_file_atomic(dir + "/summary.json", summary);
