@@ -16,6 +16,7 @@
 #include <CLI/CLI.hpp>
 
 #include "commands.hpp"
+#include "ensemble_hdf5.hpp"
 #include "ensemble_mpi.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/io/ensemble.hpp"
@@ -29,6 +30,9 @@ volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) {
   g_interrupted = 1;
 }
+
+// samples.csv is written for runs up to this many rows (about 300 bytes a row); samples.h5 for any size.
+constexpr std::size_t kCsvRows = 1000000;
 
 struct EnsembleCliOptions {
   std::string scenario, out;
@@ -92,7 +96,15 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   sigaction(SIGINT, &old_int, nullptr);
   if (tty) fmt::print(stderr, "\r\033[K");
   if (!root) return;  // rank 0 writes and reports for all ranks
-  if (o.keep_rows) io::write_file_atomic(dir + "/samples.csv", io::ensemble_csv(r));
+  std::string written;
+  if (o.keep_rows && r.rows.size() <= kCsvRows) {
+    io::write_file_atomic(dir + "/samples.csv", io::ensemble_csv(r));
+    written += dir + "/samples.csv, ";
+  }
+  if (o.keep_rows && hdf5_available()) {
+    write_ensemble_hdf5(dir + "/samples.h5", r);
+    written += dir + "/samples.h5, ";
+  }
   const std::string summary = io::ensemble_summary_json(sc, o, r);
   io::write_file_atomic(dir + "/summary.json", summary);
   if (c.json) {
@@ -110,7 +122,7 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
                  ensemble::kOutputNames[q], s.mean, std::sqrt(s.variance()), s.min, s.max,
                  ensemble::kOutputUnits[q]);
     }
-    fmt::print("written: {}{}/summary.json\n", o.keep_rows ? dir + "/samples.csv, " : "", dir);
+    fmt::print("written: {}{}/summary.json\n", written, dir);
   }
   if (r.interrupted) {
     fmt::print(stderr, "poinsot: interrupted: {} complete samples of {} written\n", r.completed, o.samples);

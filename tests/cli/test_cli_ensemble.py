@@ -79,3 +79,21 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(cli, tmp_path):
     (tmp_path / "tri.toml").write_text(text)
     r = cli("ensemble", tmp_path / "tri.toml", "--out", tmp_path / "tri")
     assert r.returncode == 2 and "triangle" in r.stderr and not (tmp_path / "tri").exists()
+
+
+def test_hdf5_table_equals_the_csv(cli, tmp_path):
+    h5py = __import__("pytest").importorskip("h5py")
+    scenario = write(tmp_path)
+    r = cli("ensemble", scenario, "--out", tmp_path / "h")
+    assert r.returncode == 0, r.stderr
+    if not (tmp_path / "h/samples.h5").exists():
+        __import__("pytest").skip("poinsot was built without HDF5")
+    table = rows(tmp_path / "h/samples.csv")
+    with h5py.File(tmp_path / "h/samples.h5") as f:
+        s = f["samples"]
+        assert s["moments"].shape == (64, 3) and s["quaternion_final"].shape == (64, 4)
+        assert list(s["index"][:]) == [int(t["index"]) for t in table]
+        for name in ("attitude_error", "energy_error", "first_flip_time"):
+            a = [float(t[name]) for t in table]
+            b = list(s[name][:])
+            assert all((x == y) or (x != x and y != y) for x, y in zip(a, b)), name
