@@ -214,7 +214,6 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
     result.nominal.out[attitude_error] = 0.0;  // against itself, by definition
   }
   const Context context{sampler, o, path, result.nominal.final_state};
-  if (o.keep_rows) result.rows.resize(range);
 
   const std::uint64_t blocks = last_block - first_block;
   const std::uint64_t per_round = 4 * static_cast<std::uint64_t>(o.threads);
@@ -226,6 +225,8 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
   for (std::uint64_t round = 0; round * per_round < blocks; ++round) {
     const std::uint64_t b0 = round * per_round;
     const std::uint64_t nb = std::min(per_round, blocks - b0);
+    // The rows grow round by round (amortised doubling), so an interrupted run never touched the rest.
+    if (o.keep_rows) result.rows.resize(std::min(range, (b0 + nb) * kBlockSamples));
     std::atomic<std::uint64_t> next{0};
     std::exception_ptr error;
     std::mutex error_mutex;

@@ -97,3 +97,25 @@ def test_hdf5_table_equals_the_csv(cli, tmp_path):
             a = [float(t[name]) for t in table]
             b = list(s[name][:])
             assert all((x == y) or (x != x and y != y) for x, y in zip(a, b)), name
+
+
+def test_ctrl_c_keeps_complete_rows(cli, tmp_path):
+    import os
+    import signal
+    import subprocess
+    import time
+
+    scenario = write(tmp_path)
+    proc = subprocess.Popen([os.environ["POINSOT_CLI"], "ensemble", str(scenario), "--samples", "3000000",
+                             "--threads", "1", "--out", str(tmp_path / "c")],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(0.7)
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert "interrupted" in err
+    summary = json.loads((tmp_path / "c/summary.json").read_text())
+    assert summary["interrupted"] and 0 < summary["completed"] < 3000000
+    table = rows(tmp_path / "c/samples.csv")
+    assert len(table) == summary["completed"] and int(table[-1]["index"]) == summary["completed"] - 1
+    assert all(t["omega_z"] not in (None, "") for t in table)
