@@ -25,18 +25,17 @@ struct DlmLanes {
 inline __attribute__((always_inline)) void rotate(DlmLanes& L, int i, double h) {
   const int j = (i + 1) % 3;
   const int k = (i + 2) % 3;
-  alignas(64) double s[B], c[B];
-  bool library = false;
+  alignas(64) double s[B], c[B], theta[B];
   for (int l = 0; l < B; ++l) {
-    const double theta = h * L.Pi[i][l] * L.inv_I[i][l];
-    dynamics::sin_cos_polynomial(theta, s[l], c[l]);
-    library |= !dynamics::sin_cos_uses_polynomial(theta);
+    theta[l] = h * L.Pi[i][l] * L.inv_I[i][l];
+    dynamics::sin_cos_polynomial(theta[l], s[l], c[l]);
   }
-  if (library) {  // angles beyond 1/4 rad: the C library, as dynamics::sin_cos does
-    for (int l = 0; l < B; ++l) {
-      const double theta = h * L.Pi[i][l] * L.inv_I[i][l];
-      if (!dynamics::sin_cos_uses_polynomial(theta)) dynamics::sin_cos(theta, s[l], c[l]);
-    }
+  int library = 0;  // angles beyond 1/4 rad: the C library, as dynamics::sin_cos does
+  for (int l = 0; l < B; ++l)
+    library |= !dynamics::sin_cos_uses_polynomial(theta[l]);
+  if (library) {
+    for (int l = 0; l < B; ++l)
+      if (!dynamics::sin_cos_uses_polynomial(theta[l])) dynamics::sin_cos(theta[l], s[l], c[l]);
   }
   for (int l = 0; l < B; ++l) {
     const double pj = L.Pi[j][l];
