@@ -39,7 +39,7 @@ struct EnsembleCliOptions {
   std::uint64_t samples = 0;
   unsigned threads = 0;
   long long sample = -1;
-  bool json = false, no_simd = false, no_per_sample = false;
+  bool json = false, plot = false, no_simd = false, no_per_sample = false;
 };
 
 void run_ensemble_command(const EnsembleCliOptions& c) {
@@ -124,6 +124,7 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
     }
     fmt::print("written: {}{}/summary.json\n", written, dir);
   }
+  if (c.plot && o.keep_rows) make_plots(dir, c.json);
   if (r.interrupted) {
     fmt::print(stderr, "poinsot: interrupted: {} complete samples of {} written\n", r.completed, o.samples);
     std::exit(130);
@@ -141,6 +142,8 @@ void register_ensemble(CLI::App& app) {
   cmd->add_option("--threads", opts->threads, "threads (default: all cores)")->check(CLI::PositiveNumber);
   cmd->add_option("--out", opts->out, "output folder");
   cmd->add_flag("--json", opts->json, "print summary.json on stdout");
+  cmd->add_flag("--plot", opts->plot,
+                "also draw histograms.png, cdf.png and scatter.png (Matplotlib; needs per-sample output)");
   cmd->add_option("--sample", opts->sample,
                   "run sample K alone through the single-body run (full trajectory)")
       ->check(CLI::NonNegativeNumber);

@@ -125,6 +125,8 @@ std::string env_or(const char* name, const char* fallback) {
   return v != nullptr && *v != '\0' ? std::string(v) : std::string(fallback);
 }
 
+}  // namespace
+
 /// Runs python/poinsot/plot.py on the run folder, with PYTHONPATH pointing at the build's python folder
 /// (POINSOT_PYTHON_DIR, overridden by the environment variable of the same name). Its output goes to
 /// stderr when stdout carries JSON.
@@ -170,6 +172,8 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
                                         python, script, dir, WIFEXITED(status) ? WEXITSTATUS(status) : -1));
   }
 }
+
+namespace {
 
 /// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE (or the projected RK4, `method =
 /// "rk4"` or --method rk4) on the constrained system, the

@@ -42,3 +42,25 @@ def test_bad_input_raises_value_error(tmp_path):
     bad.write_text(RACKET.read_text().replace("width = 0.02", "width = -0.02"))
     with pytest.raises(ValueError, match="width"):
         poinsot.ensemble(str(bad))
+
+
+def test_plot_ensemble_writes_the_figures(tmp_path):
+    import os
+    import subprocess
+
+    cli = os.environ.get("POINSOT_CLI")
+    if not cli:
+        pytest.skip("POINSOT_CLI is not set")
+    r = subprocess.run([cli, "ensemble", str(RACKET), "--samples", "200", "--out", str(tmp_path)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    from poinsot.plot import plot_run
+    from poinsot.plot_ensemble import load_ensemble, most_influential_input
+
+    written = plot_run(tmp_path)
+    assert {p.name for p in written} == {"histograms.png", "cdf.png", "scatter.png"}
+    assert all(p.stat().st_size > 1000 for p in written)
+    cols, _ = load_ensemble(tmp_path)
+    # The oracle of the "most influential input": a column built to be the output itself wins.
+    cols["I1"] = cols["attitude_error"].copy()
+    assert most_influential_input(cols, "attitude_error") == "I1"

@@ -41,6 +41,7 @@ std::string ensemble_csv(const ensemble::EnsembleResult& r) {
 std::string ensemble_summary_json(const EnsembleScenario& sc, const ensemble::EnsembleOptions& o,
                                   const ensemble::EnsembleResult& r) {
   json j;
+  j["kind"] = "ensemble";
   j["poinsot_version"] = kVersion;
   j["scenario"] = sc.base.name;
   j["source"] = sc.base.source;
