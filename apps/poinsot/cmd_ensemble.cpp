@@ -10,6 +10,8 @@
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 #include <thread>
 
 #include <fmt/format.h>
@@ -68,6 +70,7 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   }
 
   const bool root = mpi.rank() == 0;
+  const bool dir_existed = std::filesystem::exists(dir);
   if (root) io::prepare_output_dir(dir);  // before anything is simulated
   g_interrupted = 0;
   struct sigaction sa {
@@ -91,6 +94,8 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
     r = mpi.size() > 1 ? run_ensemble_mpi(mpi, sampler, o) : ensemble::run_ensemble(sampler, o);
   } catch (...) {
     sigaction(SIGINT, &old_int, nullptr);
+    std::error_code ignored;  // bad input found while sampling: leave no empty folder behind
+    if (root && !dir_existed) std::filesystem::remove(dir, ignored);
     throw;
   }
   sigaction(SIGINT, &old_int, nullptr);

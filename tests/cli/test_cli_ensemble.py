@@ -79,6 +79,12 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(cli, tmp_path):
     (tmp_path / "tri.toml").write_text(text)
     r = cli("ensemble", tmp_path / "tri.toml", "--out", tmp_path / "tri")
     assert r.returncode == 2 and "triangle" in r.stderr and not (tmp_path / "tri").exists()
+    # A reject policy that cannot find valid moments: capped, reported with the sample, nothing written.
+    text = SCENARIO.format(method="rk4", width="3.0").replace("[1.0, 2.0, 2.6]", "[1.0, 1.0, 1.999]")
+    (tmp_path / "cap.toml").write_text(text.replace("seed = 5", "seed = 5\nmax_tries = 2"))
+    r = cli("ensemble", tmp_path / "cap.toml", "--out", tmp_path / "cap")
+    assert r.returncode == 2 and "after 2 draws" in r.stderr and r.stderr.count("\n") == 1
+    assert not (tmp_path / "cap").exists()
 
 
 def test_hdf5_table_equals_the_csv(cli, tmp_path):

@@ -41,9 +41,10 @@ Scenario sample_scenario(const EnsembleScenario& scenario, const ensemble::Sampl
 /// (rad/s); numbers in shortest round-trip form, NaN as "nan".
 std::string ensemble_csv(const ensemble::EnsembleResult& result);
 
-/// summary.json ("kind": "ensemble"): the run (scenario, method, path, samples, seed, threads, wall time, body-steps/s), the
-/// validity counts, and per output its count, NaN count, mean, standard deviation, min, max and, when rows
-/// were kept, the percentiles P1, P5, P50, P95, P99, P99.9 and a 20-bin histogram over [min, max].
+/// summary.json ("kind": "ensemble"): the run (scenario, method, path, samples, seed, threads, wall time,
+/// body-steps/s), the validity counts, and per output its count, NaN count, mean, standard deviation, min,
+/// max and, when rows were kept, the percentiles P1, P5, P50, P95, P99, P99.9 and a 20-bin histogram over
+/// [min, max].
 std::string ensemble_summary_json(const EnsembleScenario& scenario, const ensemble::EnsembleOptions& options,
                                   const ensemble::EnsembleResult& result);
 
