@@ -125,3 +125,12 @@ def test_ctrl_c_keeps_complete_rows(cli, tmp_path):
     table = rows(tmp_path / "c/samples.csv")
     assert len(table) == summary["completed"] and int(table[-1]["index"]) == summary["completed"] - 1
     assert all(t["omega_z"] not in (None, "") for t in table)
+
+
+def test_the_examples_run(cli, source_dir, tmp_path):
+    for path in sorted((source_dir / "examples" / "ensemble").glob("*.toml")):
+        r = cli("ensemble", path, "--samples", "40", "--threads", "2", "--json", "--out", tmp_path / path.stem)
+        assert r.returncode == 0, f"{path.name}: {r.stderr}"
+        summary = json.loads(r.stdout)
+        assert summary["completed"] == 40
+        assert summary["outputs"]["attitude_error"]["count"] == 40, path.name
