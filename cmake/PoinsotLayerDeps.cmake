@@ -22,3 +22,13 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(IPOPT REQUIRED IMPORTED_TARGET ipopt)
 target_link_libraries(poinsot PRIVATE PkgConfig::IPOPT)
 # --- end optimal
+# --- ensemble: Random123's Philox (header-only; Debian 12 librandom123-dev) for the counter-based draws of
+# ensemble/counter_rng.cpp. The batched kernels are compiled without floating-point contraction, so that their
+# SIMD and scalar paths and the scalar rk4 and dlm of dynamics/ round identically also where FMA is available
+# (-march=native): GCC contracts a*b + c into an FMA by default in C++ (docs/ensemble.md).
+find_path(POINSOT_RANDOM123_INCLUDE_DIR Random123/philox.h REQUIRED)
+target_include_directories(poinsot SYSTEM PRIVATE ${POINSOT_RANDOM123_INCLUDE_DIR})
+file(GLOB _poinsot_ensemble_kernels ${CMAKE_CURRENT_SOURCE_DIR}/ensemble/batch_*.cpp
+     ${CMAKE_CURRENT_SOURCE_DIR}/dynamics/rk4.cpp ${CMAKE_CURRENT_SOURCE_DIR}/dynamics/dlm.cpp)
+set_source_files_properties(${_poinsot_ensemble_kernels} PROPERTIES COMPILE_OPTIONS "-ffp-contract=off")
+# --- end ensemble

@@ -17,6 +17,8 @@ packages=(
   python3 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest
   # the viewer: three.js inlined into view.html; headless Chromium and Selenium for its tests
   libjs-three chromium chromium-driver python3-selenium
+  # ensembles: counter-based random numbers (Random123, header-only); optional: MPI ranks, HDF5 tables
+  librandom123-dev libopenmpi-dev openmpi-bin libhdf5-dev python3-h5py
   "$@"
 )
 

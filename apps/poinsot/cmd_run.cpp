@@ -131,6 +131,8 @@ std::string env_or(const char* name, const char* fallback) {
   return v != nullptr && *v != '\0' ? std::string(v) : std::string(fallback);
 }
 
+}  // namespace
+
 /// Runs python/poinsot/plot.py on the run folder, with PYTHONPATH pointing at the build's python folder
 /// (POINSOT_PYTHON_DIR, overridden by the environment variable of the same name), or, for an installed tool
 /// whose build folder is gone, at the package installed beside it (<bindir>/POINSOT_PYTHON_INSTALL_REL). Its
@@ -185,6 +187,8 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
                                         python, script, dir, WIFEXITED(status) ? WEXITSTATUS(status) : -1));
   }
 }
+
+namespace {
 
 /// Runs `run(options)` with the progress bar and the SIGINT/SIGTERM handlers: a signal makes
 /// options.stop_requested true, and the run stops at its next sample (io/run.hpp, io/multibody_run.hpp).

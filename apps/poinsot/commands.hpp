@@ -2,6 +2,8 @@
 // The sub-commands of the poinsot tool. Each cmd_<name>.cpp defines one register_<name> that adds its
 // sub-command to the app and sets its callback; main.cpp calls them all. A callback reports bad input by
 // throwing poinsot::Error; main prints the message on one line and exits with status 2.
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace poinsot::cli {
@@ -24,5 +26,11 @@ void register_lambda(CLI::App& app);
 void register_view(CLI::App& app);
 // optimize (optimal reorientation)
 void register_optimize(CLI::App& app);
+// ensemble
+void register_ensemble(CLI::App& app);
+
+/// Runs python/poinsot/plot.py on an output folder (cmd_run.cpp); its output goes to stderr when stdout
+/// carries JSON. Throws ComputationFailed when Python or the script fails.
+void make_plots(const std::string& dir, bool stdout_is_json);
 
 }  // namespace poinsot::cli

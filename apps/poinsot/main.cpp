@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   poinsot::cli::register_view(app);
   // optimize (optimal reorientation)
   poinsot::cli::register_optimize(app);
+  // ensemble
+  poinsot::cli::register_ensemble(app);
 
   try {
     app.parse(argc, argv);

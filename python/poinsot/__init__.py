@@ -34,6 +34,7 @@ from ._core import (
     angular_momentum_body,
     angular_momentum_space,
     axisymmetric_free_motion,
+    ensemble,
     fast_top_precession_rate,
     free_body_theory,
     heavy_top_from,
@@ -98,6 +99,7 @@ __all__ = [
     "SimulationResult",
     "run",
     "RunResult",
+    "ensemble",
     "plot",
     "view",
 ]

@@ -397,8 +397,13 @@ def plot_run(folder):
 
     folder = Path(folder)
     with open(folder / "summary.json", encoding="utf-8") as f:
-        if json.load(f).get("kind") == "multibody":
-            return _plot_multibody_run(plt, folder)
+        kind = json.load(f).get("kind")
+    if kind == "multibody":
+        return _plot_multibody_run(plt, folder)
+    if kind == "ensemble":
+        from poinsot.plot_ensemble import plot_ensemble_run  # absolute: plot.py also runs as a script
+
+        return plot_ensemble_run(folder)
     cols, summary = load_run(folder)
     if len(cols["t"]) < 2:
         raise ValueError(f"plot: {folder / 'trajectory.csv'} has {len(cols['t'])} rows; expected at least 2")

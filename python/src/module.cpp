@@ -24,4 +24,5 @@ PYBIND11_MODULE(_core, m) {
   poinsot::python::bind_io(m);
   poinsot::python::bind_multibody(m);
   poinsot::python::bind_view(m);
+  poinsot::python::bind_ensemble(m);
 }

@@ -7,33 +7,9 @@
 #include "euler_rhs.hpp"
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/sin_cos.hpp"
 
 namespace poinsot::dynamics {
-
-namespace {
-
-/// sin θ and cos θ to within an ulp: Taylor polynomials for |θ| ≤ 1/4 (the truncation errors θ¹⁵/15! and
-/// θ¹⁶/16! are below 1e-18), the C library beyond. DLM's angles h Πᵢ/Iᵢ are small at useful steps, and five
-/// library calls would dominate the cost of a step.
-inline void sin_cos(double x, double& s, double& c) {
-  if (std::abs(x) > 0.25) {
-    s = std::sin(x);
-    c = std::cos(x);
-    return;
-  }
-  const double z = x * x;
-  s = x *
-      (1.0 + z * (-1.0 / 6 +
-                  z * (1.0 / 120 + z * (-1.0 / 5040 + z * (1.0 / 362880 + z * (-1.0 / 39916800 +
-                                                                               z * (1.0 / 6227020800.0)))))));
-  c = 1.0 +
-      z * (-0.5 + z * (1.0 / 24 +
-                       z * (-1.0 / 720 +
-                            z * (1.0 / 40320 + z * (-1.0 / 3628800 +
-                                                    z * (1.0 / 479001600 + z * (-1.0 / 87178291200.0)))))));
-}
-
-}  // namespace
 
 struct DlmIntegrator::Impl {
   Mat3 P;           // principal axes (columns) in the body frame, det = +1

@@ -1,0 +1,172 @@
+#include "ensemble_mpi.hpp"
+
+#include <climits>
+#include <cstdlib>
+#include <cstring>
+#include <type_traits>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+
+#ifdef POINSOT_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace poinsot::cli {
+
+static_assert(std::is_trivially_copyable_v<ensemble::BlockSummary>);
+
+bool mpi_launched() {
+#ifdef POINSOT_HAVE_MPI
+  return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr || std::getenv("PMI_SIZE") != nullptr;
+#else
+  return false;
+#endif
+}
+
+#ifdef POINSOT_HAVE_MPI
+
+namespace {
+
+/// Gathers each rank's bytes on rank 0, concatenated in rank order.
+std::vector<char> gather_bytes(const void* data, std::size_t bytes, int size) {
+  if (bytes > static_cast<std::size_t>(INT_MAX)) {
+    throw InvalidInput(
+        fmt::format("ensemble: {} bytes of rows on one rank exceed MPI's 2 GB message limit; "
+                    "expected per-sample output off or more ranks",
+                    bytes));
+  }
+  const int mine = static_cast<int>(bytes);
+  std::vector<int> counts(static_cast<std::size_t>(size)), displs(static_cast<std::size_t>(size));
+  MPI_Gather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+  long long total = 0;
+  for (int r = 0; r < size; ++r) {
+    displs[static_cast<std::size_t>(r)] = static_cast<int>(total);
+    total += counts[static_cast<std::size_t>(r)];
+  }
+  std::vector<char> all(static_cast<std::size_t>(total));
+  MPI_Gatherv(data, mine, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, 0, MPI_COMM_WORLD);
+  return all;
+}
+
+template <class T>
+std::vector<T> gather(const std::vector<T>& mine, int size) {
+  const std::vector<char> bytes = gather_bytes(mine.data(), mine.size() * sizeof(T), size);
+  std::vector<T> out(bytes.size() / sizeof(T));
+  if (!bytes.empty()) std::memcpy(static_cast<void*>(out.data()), bytes.data(), bytes.size());
+  return out;
+}
+
+/// A SampleRow as plain numbers, for the byte-wise gather (Eigen's types are not trivially copyable).
+struct FlatRow {
+  std::uint64_t index;
+  std::int64_t rejected, repaired;
+  double moments[3], misalignment, omega0[3], out[ensemble::kOutputCount], t, R[9], omega[3];
+};
+
+FlatRow flatten(const ensemble::SampleRow& r) {
+  FlatRow f{};
+  f.index = r.index;
+  f.rejected = r.rejected;
+  f.repaired = r.repaired ? 1 : 0;
+  f.misalignment = r.misalignment;
+  f.t = r.final_state.t;
+  for (int k = 0; k < 3; ++k) {
+    f.moments[k] = r.moments[k];
+    f.omega0[k] = r.omega0[k];
+    f.omega[k] = r.final_state.omega_body[k];
+    for (int j = 0; j < 3; ++j)
+      f.R[3 * k + j] = r.final_state.R(k, j);
+  }
+  for (int q = 0; q < ensemble::kOutputCount; ++q)
+    f.out[q] = r.out[static_cast<std::size_t>(q)];
+  return f;
+}
+
+ensemble::SampleRow unflatten(const FlatRow& f) {
+  ensemble::SampleRow r;
+  r.index = f.index;
+  r.rejected = static_cast<int>(f.rejected);
+  r.repaired = f.repaired != 0;
+  r.misalignment = f.misalignment;
+  r.final_state.t = f.t;
+  for (int k = 0; k < 3; ++k) {
+    r.moments[k] = f.moments[k];
+    r.omega0[k] = f.omega0[k];
+    r.final_state.omega_body[k] = f.omega[k];
+    for (int j = 0; j < 3; ++j)
+      r.final_state.R(k, j) = f.R[3 * k + j];
+  }
+  for (int q = 0; q < ensemble::kOutputCount; ++q)
+    r.out[static_cast<std::size_t>(q)] = f.out[q];
+  return r;
+}
+
+}  // namespace
+
+MpiSession::MpiSession() {
+  if (!mpi_launched()) return;
+  int initialized = 0;
+  MPI_Initialized(&initialized);
+  if (!initialized) MPI_Init(nullptr, nullptr);
+  active_ = true;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() {
+  if (active_) MPI_Finalize();
+}
+
+ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::Sampler& sampler,
+                                          const ensemble::EnsembleOptions& o) {
+  const std::uint64_t n = ensemble::block_count(o.samples);
+  const auto share = [&](int r) {
+    return n * static_cast<std::uint64_t>(r) / static_cast<std::uint64_t>(s.size());
+  };
+  std::vector<ensemble::BlockSummary> blocks;
+  ensemble::EnsembleResult mine =
+      ensemble::run_ensemble_blocks(sampler, o, share(s.rank()), share(s.rank() + 1), &blocks);
+  const std::vector<ensemble::BlockSummary> all_blocks = gather(blocks, s.size());
+  std::vector<FlatRow> flat;
+  flat.reserve(mine.rows.size());
+  for (const ensemble::SampleRow& row : mine.rows)
+    flat.push_back(flatten(row));
+  const std::vector<FlatRow> all_rows = gather(flat, s.size());
+  const long long counts[3] = {static_cast<long long>(mine.completed),
+                               static_cast<long long>(mine.body_steps), mine.interrupted ? 1LL : 0LL};
+  long long totals[3] = {0, 0, 0};
+  MPI_Reduce(counts, totals, 3, MPI_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
+  double wall = 0.0;
+  MPI_Reduce(&mine.wall_time_s, &wall, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+  if (s.rank() != 0) return mine;
+  ensemble::EnsembleResult r;
+  r.path = fmt::format("{} on {} MPI ranks", mine.path, s.size());
+  r.nominal = mine.nominal;
+  for (const ensemble::BlockSummary& b : all_blocks)  // in block order: rank order is block order
+    ensemble::merge_block(r, b);
+  r.rows.reserve(all_rows.size());
+  for (const FlatRow& f : all_rows)
+    r.rows.push_back(unflatten(f));
+  r.completed = static_cast<std::uint64_t>(totals[0]);
+  r.body_steps = totals[1];
+  r.wall_time_s = wall;
+  r.interrupted = totals[2] > 0;
+  return r;
+}
+
+#else
+
+MpiSession::MpiSession() = default;
+MpiSession::~MpiSession() = default;
+
+ensemble::EnsembleResult run_ensemble_mpi(const MpiSession&, const ensemble::Sampler& sampler,
+                                          const ensemble::EnsembleOptions& o) {
+  return ensemble::run_ensemble(sampler, o);
+}
+
+#endif
+
+}  // namespace poinsot::cli

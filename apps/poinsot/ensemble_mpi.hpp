@@ -1,0 +1,34 @@
+#pragma once
+// The MPI driver of `poinsot ensemble` (optional: built when CMake finds MPI, POINSOT_MPI=AUTO). Under mpirun
+// each rank runs a contiguous range of blocks of samples (ensemble::run_ensemble_blocks); rank 0 gathers the
+// block summaries and merges them in block order (ensemble::merge_block), so the statistics are those of one
+// process bit for bit, and gathers the rows (per-sample output on) in index order. Only rank 0 writes files.
+#include "poinsot/ensemble/runner.hpp"
+
+namespace poinsot::cli {
+
+/// True when MPI support was built and this process was started by an MPI launcher (OMPI_COMM_WORLD_SIZE or
+/// PMI_SIZE in the environment).
+bool mpi_launched();
+
+/// Initialises MPI on construction (when launched) and finalises it on destruction.
+class MpiSession {
+ public:
+  MpiSession();
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+
+ private:
+  int rank_ = 0, size_ = 1;
+  bool active_ = false;
+};
+
+/// Runs this rank's share and returns, on rank 0, the whole result (statistics merged in block order, rows
+/// in index order, body steps summed, wall time the longest rank's); on other ranks their share only.
+ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& session, const ensemble::Sampler& sampler,
+                                          const ensemble::EnsembleOptions& options);
+
+}  // namespace poinsot::cli

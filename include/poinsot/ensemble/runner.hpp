@@ -1,0 +1,121 @@
+#pragma once
+/// @file runner.hpp
+/// Runs an ensemble: draws the samples (sampler.hpp), advances them to t_end by the batched kernels (rk4,
+/// dlm: batch.hpp), the closed form (exact: dynamics::ExactFreeBody, whose cost does not depend on t) or the
+/// scalar integrators through dynamics::simulate (any other method, torque or a top), and computes each
+/// sample's outputs on the fly:
+///   first_flip_time       s, the first sign change of the intermediate-axis momentum (NaN: none; exact: NaN)
+///   flip_interval         s, between the first two flips (exact: the closed form)
+///   flip_interval_theory  s, 2K(k)/ω_p of the sample (free_body_theory.hpp; NaN with a torque or no flips)
+///   attitude_error        rad, the angle between the sample's final attitude and the nominal sample's
+///   energy_error          |E − E₀|/|E₀| at t_end (free body or gravity; NaN under other torques)
+///   L_space_error         |L − L₀|/|L₀| at t_end (free body; NaN otherwise)
+///
+/// Work is split into blocks of kBlockSamples consecutive samples; threads take whole blocks, and the
+/// statistics of the blocks are merged in block order after each round of blocks, so the results are
+/// bit-identical for any number of threads and with or without SIMD. Memory: the stored rows (when kept)
+/// plus O(threads · kBlockSamples), independent of the number of samples otherwise.
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "poinsot/ensemble/batch.hpp"
+#include "poinsot/ensemble/sampler.hpp"
+#include "poinsot/ensemble/statistics.hpp"
+
+namespace poinsot::ensemble {
+
+inline constexpr std::uint64_t kBlockSamples = 1024;
+
+enum Output {
+  first_flip_time,
+  flip_interval,
+  flip_interval_theory,
+  attitude_error,
+  energy_error,
+  L_space_error,
+  kOutputCount
+};
+/// The outputs' names, as in the CSV header and summary.json.
+inline constexpr const char* kOutputNames[kOutputCount] = {"first_flip_time",      "flip_interval",
+                                                           "flip_interval_theory", "attitude_error",
+                                                           "energy_error",         "L_space_error"};
+/// Their units.
+inline constexpr const char* kOutputUnits[kOutputCount] = {"s", "s", "s", "rad", "", ""};
+
+/// One sample's inputs and outputs.
+struct SampleRow {
+  std::uint64_t index = 0;
+  int rejected = 0;
+  bool repaired = false;
+  Vec3 moments = Vec3::Zero();  ///< kg·m²
+  double misalignment = 0.0;    ///< rad
+  Vec3 omega0 = Vec3::Zero();   ///< rad/s, body frame
+  std::array<double, kOutputCount> out{};
+  dynamics::State final_state;
+};
+
+struct EnsembleOptions {
+  std::uint64_t samples = 1000;
+  std::string method = "rk4";
+  double t_end = 10.0;  ///< s
+  double dt = 1e-3;     ///< s, the nominal step (fixed-step methods; the first step of adaptive ones)
+  double rtol = 1e-10, atol = 1e-12;  ///< adaptive methods
+  unsigned threads = 1;
+  Simd simd = Simd::automatic;
+  bool keep_rows = true;  ///< store every sample's row (percentiles, CSV); off: statistics only
+  /// Polled between rounds of blocks; true stops after the complete rows so far.
+  std::function<bool()> stop_requested;
+  /// Called after each round with the samples completed.
+  std::function<void(std::uint64_t done)> on_progress;
+  /// Refuse keep_rows when the rows would exceed this many bytes (0: half the physical memory).
+  std::uint64_t max_row_bytes = 0;
+};
+
+struct EnsembleResult {
+  std::vector<SampleRow> rows;  ///< in index order (keep_rows)
+  std::array<RunningStats, kOutputCount> stats;
+  std::uint64_t completed = 0;  ///< samples done (all, unless interrupted)
+  bool interrupted = false;
+  std::int64_t rejected = 0;  ///< redraws of the reject policy, all samples
+  std::int64_t repaired = 0;  ///< samples moved onto the valid cone
+  std::int64_t body_steps = 0;
+  double wall_time_s = 0.0;
+  std::string path;   ///< "batched rk4 (AVX2)", "exact", "scalar dop853", ...
+  SampleRow nominal;  ///< the undispersed sample
+};
+
+/// The statistics of one block of kBlockSamples consecutive samples (the unit of merging).
+struct BlockSummary {
+  std::uint64_t index = 0;  ///< block number: samples [index·kBlockSamples, (index + 1)·kBlockSamples)
+  std::array<RunningStats, kOutputCount> stats;
+  std::int64_t rejected = 0, repaired = 0;
+};
+
+/// The number of blocks of `samples` samples.
+std::uint64_t block_count(std::uint64_t samples);
+/// Merges a block into the result's statistics and counts. Merging every block in index order gives the
+/// statistics of run_ensemble bit for bit, however the blocks were distributed (threads, MPI ranks).
+void merge_block(EnsembleResult& result, const BlockSummary& block);
+
+/// Bytes of the stored rows for `samples` samples.
+std::uint64_t row_bytes(std::uint64_t samples);
+
+/// Runs the ensemble. Throws InvalidInput for bad options (samples = 0, threads = 0, t_end or dt <= 0, an
+/// unknown method, `exact` with a torque or a pivot, stored rows that would not fit in memory: refused before
+/// allocating, with the size), and the sampler's errors.
+EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& options);
+
+/// Runs the blocks [first_block, last_block) of an ensemble of options.samples samples (rows of those samples
+/// only; `completed` counts them) and appends their summaries in order to `blocks` when not null: the share
+/// of one process of a distributed run. Throws like run_ensemble, and for a block range outside the samples.
+EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions& options,
+                                   std::uint64_t first_block, std::uint64_t last_block,
+                                   std::vector<BlockSummary>* blocks);
+
+/// One sample alone (the same row run_ensemble computes for it).
+SampleRow run_sample(const Sampler& sampler, std::uint64_t index, const EnsembleOptions& options);
+
+}  // namespace poinsot::ensemble

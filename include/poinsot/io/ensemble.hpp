@@ -1,0 +1,51 @@
+#pragma once
+/// @file ensemble.hpp
+/// Ensemble scenarios: a single-body scenario file (scenario.hpp) with an `[ensemble]` section giving the
+/// number of samples, the seed and the dispersions (docs/ensemble.md), and what an ensemble run writes:
+/// samples.csv (one row per sample) and summary.json (statistics and percentiles of every output).
+#include <cstdint>
+#include <string>
+
+#include "poinsot/ensemble/runner.hpp"
+#include "poinsot/ensemble/sampler.hpp"
+#include "poinsot/io/scenario.hpp"
+
+namespace poinsot::io {
+
+struct EnsembleScenario {
+  Scenario base;  ///< the nominal body, state, torque, integrator and t_end
+  ensemble::Nominal nominal;
+  ensemble::Dispersions dispersions;
+  std::uint64_t samples = 1000;
+  std::uint64_t seed = 0;
+  bool per_sample = true;  ///< keep every sample's row (samples.csv, exact percentiles)
+};
+
+/// Reads a scenario file with an `[ensemble]` section. Throws InvalidInput (one line, `FILE:LINE:COLUMN:`,
+/// naming the key) on any problem: the scenario's own rules, an unknown key, a negative width, an unknown
+/// law, a nominal body the sampler refuses.
+EnsembleScenario load_ensemble_scenario(const std::string& path);
+/// The same from text (`source` names it in messages).
+EnsembleScenario parse_ensemble_scenario(std::string_view text, std::string_view source = "<string>",
+                                         std::string_view base_dir = "");
+
+/// The ensemble options of a scenario (samples, method, t_end, dt, tolerances).
+ensemble::EnsembleOptions ensemble_options(const EnsembleScenario& scenario);
+
+/// The single-body scenario of one sample (its body, initial state and torque; the base's method, step and
+/// output), to run with run_scenario.
+Scenario sample_scenario(const EnsembleScenario& scenario, const ensemble::Sample& sample);
+
+/// samples.csv: a header, then one row per sample: index, rejected, repaired, I1, I2, I3 (kg·m²),
+/// misalignment (rad), omega0 (rad/s), every output (runner.hpp), the final quaternion (w, x, y, z) and ω
+/// (rad/s); numbers in shortest round-trip form, NaN as "nan".
+std::string ensemble_csv(const ensemble::EnsembleResult& result);
+
+/// summary.json ("kind": "ensemble"): the run (scenario, method, path, samples, seed, threads, wall time,
+/// body-steps/s), the validity counts, and per output its count, NaN count, mean, standard deviation, min,
+/// max and, when rows were kept, the percentiles P1, P5, P50, P95, P99, P99.9 and a 20-bin histogram over
+/// [min, max].
+std::string ensemble_summary_json(const EnsembleScenario& scenario, const ensemble::EnsembleOptions& options,
+                                  const ensemble::EnsembleResult& result);
+
+}  // namespace poinsot::io

@@ -1,0 +1,167 @@
+// The batched classical Runge–Kutta method (batch.hpp): the free or constant-torque body in its principal
+// frame, y = (q, ω) with q̇ = ½ q ⊗ (0, ω) and ω̇ᵢ = gᵢ ωⱼ ωₖ + τᵢ/Iᵢ, gᵢ = (Iⱼ − Iₖ)/Iᵢ, exactly the
+// operations of dynamics/rk4.cpp (its principal-frame path), lane by lane.
+#include <cmath>
+
+#include "batch_kernels.hpp"
+#include "batch_lanes.hpp"
+#include "poinsot/so3/quaternion.hpp"
+
+namespace poinsot::ensemble::detail {
+namespace {
+
+struct Rk4Lanes {
+  alignas(64) double y[7][B];
+  alignas(64) double g[3][B];    // gyroscopic coefficients (Iⱼ − Iₖ)/Iᵢ
+  alignas(64) double tau[3][B];  // τᵢ · (1/Iᵢ), rad/s²
+  alignas(64) double k[4][7][B];
+  alignas(64) double tmp[7][B];
+};
+
+inline __attribute__((always_inline)) void rhs(const Rk4Lanes& L, const double (*y)[B], double (*d)[B]) {
+  for (int l = 0; l < B; ++l) {
+    const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
+    d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
+    d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
+    d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
+    d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+    d[4][l] = L.g[0][l] * w2 * w3 + L.tau[0][l];
+    d[5][l] = L.g[1][l] * w3 * w1 + L.tau[1][l];
+    d[6][l] = L.g[2][l] * w1 * w2 + L.tau[2][l];
+  }
+}
+
+// Torque-free lanes skip the "+ τ" (adding 0 would turn −0 into +0 and the scalar fast path adds nothing).
+inline __attribute__((always_inline)) void rhs_free(const Rk4Lanes& L, const double (*y)[B], double (*d)[B]) {
+  for (int l = 0; l < B; ++l) {
+    const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
+    d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
+    d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
+    d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
+    d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+    d[4][l] = L.g[0][l] * w2 * w3;
+    d[5][l] = L.g[1][l] * w3 * w1;
+    d[6][l] = L.g[2][l] * w1 * w2;
+  }
+}
+
+template <bool Free>
+inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h) {
+  const auto f = [&L](const double(*y)[B], double(*d)[B]) {
+    if constexpr (Free) {
+      rhs_free(L, y, d);
+    } else {
+      rhs(L, y, d);
+    }
+  };
+  f(L.y, L.k[0]);
+  for (int i = 0; i < 7; ++i)
+    for (int l = 0; l < B; ++l)
+      L.tmp[i][l] = L.y[i][l] + 0.5 * h * L.k[0][i][l];
+  f(L.tmp, L.k[1]);
+  for (int i = 0; i < 7; ++i)
+    for (int l = 0; l < B; ++l)
+      L.tmp[i][l] = L.y[i][l] + 0.5 * h * L.k[1][i][l];
+  f(L.tmp, L.k[2]);
+  for (int i = 0; i < 7; ++i)
+    for (int l = 0; l < B; ++l)
+      L.tmp[i][l] = L.y[i][l] + h * L.k[2][i][l];
+  f(L.tmp, L.k[3]);
+  for (int i = 0; i < 7; ++i)
+    for (int l = 0; l < B; ++l)
+      L.y[i][l] += h / 6 * (L.k[0][i][l] + 2 * (L.k[1][i][l] + L.k[2][i][l]) + L.k[3][i][l]);
+  // q ← q (3 − |q|²)/2 as in dynamics/rk4.cpp; |q|² summed in the order of Eigen's SSE2 reduction of a
+  // 4-vector there, (q₀² + q₂²) + (q₁² + q₃²).
+  for (int l = 0; l < B; ++l) {
+    const double n2 =
+        (L.y[0][l] * L.y[0][l] + L.y[2][l] * L.y[2][l]) + (L.y[1][l] * L.y[1][l] + L.y[3][l] * L.y[3][l]);
+    const double c = 0.5 * (3.0 - n2);
+    for (int i = 0; i < 4; ++i)
+      L.y[i][l] *= c;
+  }
+}
+
+// The rate ṡ of s = Σ eᵢ ωᵢ from ω̇ (the last right-hand side is not at the new state: recomputed per lane).
+inline __attribute__((always_inline)) void flip_rate(const Rk4Lanes& L, const FlipLanes& F, double* r) {
+  for (int l = 0; l < B; ++l) {
+    const double w1 = L.y[4][l], w2 = L.y[5][l], w3 = L.y[6][l];
+    r[l] = F.e[0][l] * (L.g[0][l] * w2 * w3 + L.tau[0][l]) + F.e[1][l] * (L.g[1][l] * w3 * w1 + L.tau[1][l]) +
+           F.e[2][l] * (L.g[2][l] * w1 * w2 + L.tau[2][l]);
+  }
+}
+
+template <bool Free>
+inline __attribute__((always_inline)) void steps(Rk4Lanes& L, FlipLanes& F, long long n, double h,
+                                                 int lanes) {
+  alignas(64) double s1[B], r1[B];
+  flip_component(F, L.y[4], L.y[5], L.y[6], F.s);
+  flip_rate(L, F, F.r);
+  for (long long i = 0; i < n; ++i) {
+    step<Free>(L, h);
+    flip_component(F, L.y[4], L.y[5], L.y[6], s1);
+    flip_rate(L, F, r1);
+    advance_flips(F, s1, r1, static_cast<double>(i) * h, static_cast<double>(i + 1) * h, lanes);
+  }
+}
+
+__attribute__((target("avx2"))) void steps_avx2(Rk4Lanes& L, FlipLanes& F, long long n, double h, int lanes,
+                                                bool free) {
+  free ? steps<true>(L, F, n, h, lanes) : steps<false>(L, F, n, h, lanes);
+}
+
+void steps_portable(Rk4Lanes& L, FlipLanes& F, long long n, double h, int lanes, bool free) {
+  free ? steps<true>(L, F, n, h, lanes) : steps<false>(L, F, n, h, lanes);
+}
+
+}  // namespace
+
+void run_rk4_batch(std::span<const Sample> samples, double t_end, long long n, bool avx2,
+                   std::span<LaneResult> results) {
+  auto L = std::make_unique<Rk4Lanes>();
+  auto F = std::make_unique<FlipLanes>();
+  const int lanes = static_cast<int>(samples.size());
+  bool free = true;
+  for (int l = 0; l < B; ++l) {
+    const Sample& s = samples[static_cast<std::size_t>(l < lanes ? l : 0)];  // idle lanes repeat lane 0
+    const bool aligned = s.axes == Mat3::Identity();
+    const Mat3 Rp = aligned ? s.initial.R : Mat3(s.initial.R * s.axes);
+    const Vec3 w = aligned ? s.initial.omega_body : Vec3(s.axes.transpose() * s.initial.omega_body);
+    const Quat q = so3::quaternion_from_rotation(Rp);
+    const double y0[7] = {q.w(), q.x(), q.y(), q.z(), w[0], w[1], w[2]};
+    for (int i = 0; i < 7; ++i)
+      L->y[i][l] = y0[i];
+    const Vec3& I = s.moments;
+    const Vec3 g((I[1] - I[2]) / I[0], (I[2] - I[0]) / I[1], (I[0] - I[1]) / I[2]);
+    const Vec3 tau_body = s.torque == TorqueKind::body ? s.torque_value : Vec3::Zero();
+    const Vec3 tau = aligned ? tau_body : Vec3(s.axes.transpose() * tau_body);
+    const Vec3 tau_over_I = tau.cwiseProduct(I.cwiseInverse());
+    free = free && s.torque == TorqueKind::none;
+    for (int i = 0; i < 3; ++i) {
+      L->g[i][l] = g[i];
+      L->tau[i][l] = tau_over_I[i];
+    }
+    const double moments[3] = {I[0], I[1], I[2]};
+    set_flip_weights(*F, l, moments);
+  }
+  const double h = t_end / static_cast<double>(n);
+  if (avx2) {
+    steps_avx2(*L, *F, n, h, lanes, free);
+  } else {
+    steps_portable(*L, *F, n, h, lanes, free);
+  }
+  for (int l = 0; l < lanes; ++l) {
+    const Sample& s = samples[static_cast<std::size_t>(l)];
+    const bool aligned = s.axes == Mat3::Identity();
+    LaneResult& r = results[static_cast<std::size_t>(l)];
+    r.final_state.t = t_end;
+    const Mat3 Rp = Quat(L->y[0][l], L->y[1][l], L->y[2][l], L->y[3][l]).toRotationMatrix();
+    const Vec3 w(L->y[4][l], L->y[5][l], L->y[6][l]);
+    r.final_state.R = aligned ? Rp : Mat3(Rp * s.axes.transpose());
+    r.final_state.omega_body = aligned ? w : Vec3(s.axes * w);
+    r.first_flip = F->first[l];
+    r.second_flip = F->second[l];
+    r.flips = F->count[l];
+  }
+}
+
+}  // namespace poinsot::ensemble::detail

@@ -1,0 +1,279 @@
+#include "poinsot/ensemble/runner.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/check.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/exact_free_body.hpp"
+#include "poinsot/dynamics/free_body_theory.hpp"
+#include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/simulation.hpp"
+#include "poinsot/so3/distance.hpp"
+
+namespace poinsot::ensemble {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+enum class Path { batched, exact, scalar };
+
+struct Context {
+  const Sampler& sampler;
+  const EnsembleOptions& options;
+  Path path;
+  dynamics::State nominal_final;
+};
+
+/// 2K(k)/ω_p of a free sample (NaN when it has no flips).
+double closed_form_flip_interval(const Sample& s) {
+  const Vec3 w = s.axes.transpose() * s.initial.omega_body;
+  int idx[3] = {0, 1, 2};
+  std::sort(idx, idx + 3, [&](int a, int b) { return s.moments[a] < s.moments[b]; });
+  const Vec3 I(s.moments[idx[0]], s.moments[idx[1]], s.moments[idx[2]]);
+  const Vec3 wp(w[idx[0]], w[idx[1]], w[idx[2]]);
+  const double f = dynamics::free_body_theory(I, wp).flip_interval();
+  return f > 0.0 ? f : kNaN;
+}
+
+/// Total energy (J) and L_space (kg·m²/s) of a state.
+std::pair<double, Vec3> invariants(const Sample& s, const Mat3& J, const dynamics::State& x) {
+  const Vec3 Jw = J * x.omega_body;
+  double E = 0.5 * x.omega_body.dot(Jw);
+  if (s.torque == TorqueKind::gravity) E -= s.mass * s.torque_value.dot(x.R * s.pivot_to_com);
+  return {E, x.R * Jw};
+}
+
+void fill_outputs(const Sample& s, const dynamics::State& final_state, double first, double second,
+                  const Context& c, SampleRow& row) {
+  row.index = s.index;
+  row.rejected = s.rejected;
+  row.repaired = s.repaired;
+  row.moments = s.moments;
+  row.misalignment = s.misalignment;
+  row.omega0 = s.initial.omega_body;
+  row.final_state = final_state;
+  const bool free = s.torque == TorqueKind::none;
+  // J about the rotation point: the centre of mass, or the pivot (parallel axes) for a top.
+  const Mat3 J = s.has_pivot ? s.body().inertia() : s.inertia_com();
+  const auto [E0, L0] = invariants(s, J, s.initial);
+  const auto [E1, L1] = invariants(s, J, final_state);
+  row.out[first_flip_time] = first;
+  row.out[flip_interval] = c.path == Path::exact ? closed_form_flip_interval(s) : second - first;
+  row.out[flip_interval_theory] = free ? closed_form_flip_interval(s) : kNaN;
+  row.out[attitude_error] = so3::angle_between(final_state.R, c.nominal_final.R);
+  row.out[energy_error] =
+      (free || s.torque == TorqueKind::gravity) ? std::abs(E1 - E0) / std::max(std::abs(E0), 1e-300) : kNaN;
+  row.out[L_space_error] = free && L0.norm() > 0.0 ? (L1 - L0).norm() / L0.norm() : kNaN;
+}
+
+/// Runs samples [first, first + count) into rows (count ≤ kBlockSamples) by the context's path.
+void run_block(const Context& c, std::uint64_t first, std::uint64_t count, SampleRow* rows) {
+  const EnsembleOptions& o = c.options;
+  if (c.path == Path::batched) {
+    std::vector<Sample> samples;
+    std::vector<LaneResult> lanes(kBatchLanes);
+    for (std::uint64_t b = 0; b < count; b += kBatchLanes) {
+      const std::uint64_t n = std::min<std::uint64_t>(kBatchLanes, count - b);
+      samples.clear();
+      for (std::uint64_t i = 0; i < n; ++i)
+        samples.push_back(c.sampler.draw(first + b + i));
+      run_batch(o.method, samples, o.t_end, o.dt, o.simd, lanes);
+      for (std::uint64_t i = 0; i < n; ++i)
+        fill_outputs(samples[i], lanes[i].final_state, lanes[i].first_flip, lanes[i].second_flip, c,
+                     rows[b + i]);
+    }
+    return;
+  }
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const Sample s = c.sampler.draw(first + i);
+    const dynamics::RigidBody body = s.body();
+    if (c.path == Path::exact) {
+      const dynamics::State x = dynamics::ExactFreeBody(body, s.initial).state_at(o.t_end);
+      fill_outputs(s, x, kNaN, kNaN, c, rows[i]);
+      continue;
+    }
+    const auto torque = s.torque_model(body);
+    auto integrator =
+        dynamics::make_integrator(o.method, body, torque, {.dt = o.dt, .rtol = o.rtol, .atol = o.atol});
+    const dynamics::SimulationResult r = dynamics::simulate(
+        body, torque, s.initial, *integrator, {.t_end = o.t_end, .sample_dt = o.t_end, .locate_flips = true});
+    const auto& f = r.flip_times;
+    fill_outputs(s, r.final_state, f.empty() ? kNaN : f[0], f.size() < 2 ? kNaN : f[1], c, rows[i]);
+  }
+}
+
+Path choose_path(const Sampler& sampler, const EnsembleOptions& o) {
+  const Sample nominal = sampler.nominal();
+  if (o.method == "exact") {
+    if (nominal.torque != TorqueKind::none || nominal.has_pivot) {
+      throw InvalidInput(
+          "ensemble: method \"exact\" solves the torque-free body only; expected rk4, dlm, dopri5, dop853 or "
+          "rattle with a torque or a pivot");
+    }
+    return Path::exact;
+  }
+  return batchable(o.method, nominal) ? Path::batched : Path::scalar;
+}
+
+void validate(const EnsembleOptions& o) {
+  if (o.samples == 0) throw InvalidInput("ensemble: samples = 0; expected at least 1");
+  if (o.threads == 0) throw InvalidInput("ensemble: threads = 0; expected at least 1");
+  require_positive("ensemble: t_end", o.t_end, "s");
+  require_positive("ensemble: dt", o.dt, "s");
+  // Builds one integrator to validate the method's name (the registry's own message lists the methods).
+  if (o.method != "exact") {
+    dynamics::make_integrator(o.method, dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3)), nullptr,
+                              {.dt = o.dt, .rtol = o.rtol, .atol = o.atol});
+  }
+}
+
+std::string path_name(Path p, const EnsembleOptions& o) {
+  if (p == Path::exact) return "exact (closed form per sample)";
+  if (p == Path::scalar) return "scalar " + o.method;
+  const bool avx2 = o.simd == Simd::automatic && simd_available();
+  return fmt::format("batched {} ({}, {} lanes)", o.method, avx2 ? "AVX2" : "portable", kBatchLanes);
+}
+
+}  // namespace
+
+std::uint64_t row_bytes(std::uint64_t samples) {
+  return samples * sizeof(SampleRow);
+}
+
+SampleRow run_sample(const Sampler& sampler, std::uint64_t index, const EnsembleOptions& options) {
+  EnsembleOptions one = options;
+  one.samples = 1;
+  validate(one);
+  const Path path = choose_path(sampler, options);
+  Context nominal_context{sampler, options, path, {}};
+  // The nominal sample by the same path: a Sampler without dispersions draws it for every index.
+  const Sampler undispersed(sampler.nominal_values(), Dispersions{}, sampler.seed());
+  SampleRow nominal;
+  run_block(Context{undispersed, options, path, {}}, 0, 1, &nominal);
+  nominal_context.nominal_final = nominal.final_state;
+  SampleRow row;
+  run_block(nominal_context, index, 1, &row);
+  return row;
+}
+
+void merge_block(EnsembleResult& result, const BlockSummary& block) {
+  for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
+    result.stats[q].merge(block.stats[q]);
+  result.rejected += block.rejected;
+  result.repaired += block.repaired;
+}
+
+std::uint64_t block_count(std::uint64_t samples) {
+  return (samples + kBlockSamples - 1) / kBlockSamples;
+}
+
+EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& o) {
+  return run_ensemble_blocks(sampler, o, 0, block_count(o.samples), nullptr);
+}
+
+EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions& o,
+                                   std::uint64_t first_block, std::uint64_t last_block,
+                                   std::vector<BlockSummary>* blocks_out) {
+  validate(o);
+  if (!(first_block <= last_block && last_block <= block_count(o.samples))) {
+    throw InvalidInput(fmt::format("ensemble: blocks [{}, {}) of {}; expected a range within the samples",
+                                   first_block, last_block, block_count(o.samples)));
+  }
+  const std::uint64_t first_sample = first_block * kBlockSamples;
+  const std::uint64_t end_sample = std::min(o.samples, last_block * kBlockSamples);
+  const std::uint64_t range = end_sample - first_sample;
+  const auto start = std::chrono::steady_clock::now();
+  if (o.keep_rows) {
+    const std::uint64_t limit = o.max_row_bytes > 0
+                                    ? o.max_row_bytes
+                                    : static_cast<std::uint64_t>(sysconf(_SC_PHYS_PAGES)) *
+                                          static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE)) / 2;
+    if (range > limit / sizeof(SampleRow)) {
+      throw InvalidInput(fmt::format(
+          "ensemble: {} samples with per-sample output need {:.3g} GB, more than the {:.3g} GB allowed (half "
+          "the memory); expected fewer samples or per-sample output off",
+          range, static_cast<double>(row_bytes(range)) / 1e9, static_cast<double>(limit) / 1e9));
+    }
+  }
+  const Path path = choose_path(sampler, o);
+  EnsembleResult result;
+  result.path = path_name(path, o);
+  {
+    const Sampler undispersed(sampler.nominal_values(), Dispersions{}, sampler.seed());
+    run_block(Context{undispersed, o, path, {}}, 0, 1, &result.nominal);
+    result.nominal.out[attitude_error] = 0.0;  // against itself, by definition
+  }
+  const Context context{sampler, o, path, result.nominal.final_state};
+
+  const std::uint64_t blocks = last_block - first_block;
+  const std::uint64_t per_round = 4 * static_cast<std::uint64_t>(o.threads);
+  std::vector<std::vector<SampleRow>> scratch(o.keep_rows ? 0 : per_round,
+                                              std::vector<SampleRow>(kBlockSamples));
+  std::vector<BlockSummary> block(per_round);
+  const long long steps_per_sample = path == Path::exact ? 0 : batch_step_count(o.t_end, o.dt);
+
+  for (std::uint64_t round = 0; round * per_round < blocks; ++round) {
+    const std::uint64_t b0 = round * per_round;
+    const std::uint64_t nb = std::min(per_round, blocks - b0);
+    // The rows grow round by round (amortised doubling), so an interrupted run never touched the rest.
+    if (o.keep_rows) result.rows.resize(std::min(range, (b0 + nb) * kBlockSamples));
+    std::atomic<std::uint64_t> next{0};
+    std::exception_ptr error;
+    std::mutex error_mutex;
+    const auto worker = [&] {
+      for (std::uint64_t k; (k = next.fetch_add(1)) < nb;) {
+        try {
+          const std::uint64_t offset = (b0 + k) * kBlockSamples;  // within the range
+          const std::uint64_t count = std::min(kBlockSamples, range - offset);
+          SampleRow* rows = o.keep_rows ? result.rows.data() + offset : scratch[k].data();
+          run_block(context, first_sample + offset, count, rows);
+          BlockSummary& b = block[k];
+          b = BlockSummary{};
+          b.index = first_block + b0 + k;
+          for (std::uint64_t i = 0; i < count; ++i) {
+            for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
+              b.stats[q].add(rows[i].out[q]);
+            b.rejected += rows[i].rejected;
+            b.repaired += rows[i].repaired ? 1 : 0;
+          }
+        } catch (...) {
+          const std::lock_guard lock(error_mutex);
+          if (!error) error = std::current_exception();
+        }
+      }
+    };
+    std::vector<std::thread> pool;
+    for (unsigned t = 1; t < std::min<std::uint64_t>(o.threads, nb); ++t)
+      pool.emplace_back(worker);
+    worker();
+    for (auto& t : pool)
+      t.join();
+    if (error) std::rethrow_exception(error);
+    for (std::uint64_t k = 0; k < nb; ++k) {  // merged in block order: independent of the threads
+      merge_block(result, block[k]);
+      if (blocks_out) blocks_out->push_back(block[k]);
+    }
+    result.completed = std::min(range, (b0 + nb) * kBlockSamples);
+    if (o.on_progress) o.on_progress(result.completed);
+    if (result.completed < range && o.stop_requested && o.stop_requested()) {
+      result.interrupted = true;
+      break;
+    }
+  }
+  if (o.keep_rows) result.rows.resize(result.completed);
+  result.body_steps = static_cast<std::int64_t>(result.completed) * steps_per_sample;
+  result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace poinsot::ensemble

@@ -1,0 +1,95 @@
+#include <cmath>
+#include <iterator>
+#include <thread>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "poinsot/io/ensemble.hpp"
+#include "poinsot/version.hpp"
+
+namespace poinsot::io {
+namespace {
+
+using json = nlohmann::ordered_json;
+
+json number(double x) {
+  return std::isfinite(x) ? json(x) : json(nullptr);
+}
+
+}  // namespace
+
+std::string ensemble_csv(const ensemble::EnsembleResult& r) {
+  std::string out = "index,rejected,repaired,I1,I2,I3,misalignment,omega0_x,omega0_y,omega0_z";
+  for (const char* name : ensemble::kOutputNames)
+    out += fmt::format(",{}", name);
+  out += ",q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z\n";
+  auto it = std::back_inserter(out);
+  for (const ensemble::SampleRow& row : r.rows) {
+    fmt::format_to(it, "{},{},{},{},{},{},{},{},{},{}", row.index, row.rejected, row.repaired ? 1 : 0,
+                   row.moments[0], row.moments[1], row.moments[2], row.misalignment, row.omega0[0],
+                   row.omega0[1], row.omega0[2]);
+    for (double x : row.out)
+      fmt::format_to(it, ",{}", x);
+    const Quat q = row.final_state.quaternion();
+    const Vec3& w = row.final_state.omega_body;
+    fmt::format_to(it, ",{},{},{},{},{},{},{}\n", q.w(), q.x(), q.y(), q.z(), w[0], w[1], w[2]);
+  }
+  return out;
+}
+
+std::string ensemble_summary_json(const EnsembleScenario& sc, const ensemble::EnsembleOptions& o,
+                                  const ensemble::EnsembleResult& r) {
+  json j;
+  j["kind"] = "ensemble";
+  j["poinsot_version"] = kVersion;
+  j["scenario"] = sc.base.name;
+  j["source"] = sc.base.source;
+  j["method"] = o.method;
+  j["path"] = r.path;
+  j["samples"] = o.samples;
+  j["completed"] = r.completed;
+  j["interrupted"] = r.interrupted;
+  j["seed"] = sc.seed;
+  j["threads"] = o.threads;
+  j["t_end"] = o.t_end;
+  j["dt"] = o.dt;
+  j["policy"] = ensemble::to_string(sc.dispersions.policy);
+  j["rejected_draws"] = r.rejected;
+  j["repaired_samples"] = r.repaired;
+  j["body_steps"] = r.body_steps;
+  j["wall_time_s"] = r.wall_time_s;
+  j["body_steps_per_s"] = number(r.wall_time_s > 0 ? static_cast<double>(r.body_steps) / r.wall_time_s : NAN);
+  j["samples_per_s"] = number(r.wall_time_s > 0 ? static_cast<double>(r.completed) / r.wall_time_s : NAN);
+  j["percentile_method"] = r.rows.empty() ? "none (per-sample output off: mean, std, min and max only)"
+                                          : "exact order statistics, linear interpolation (Hyndman-Fan 7)";
+  json outputs = json::object();
+  for (int q = 0; q < ensemble::kOutputCount; ++q) {
+    const ensemble::RunningStats& s = r.stats[static_cast<std::size_t>(q)];
+    json o_j;
+    o_j["unit"] = ensemble::kOutputUnits[q];
+    o_j["count"] = s.count;
+    o_j["nan_count"] = s.nan_count;
+    o_j["mean"] = number(s.count > 0 ? s.mean : NAN);
+    o_j["std"] = number(s.count > 1 ? std::sqrt(s.variance()) : NAN);
+    o_j["min"] = number(s.count > 0 ? s.min : NAN);
+    o_j["max"] = number(s.count > 0 ? s.max : NAN);
+    o_j["nominal"] = number(r.nominal.out[static_cast<std::size_t>(q)]);
+    if (!r.rows.empty() && s.count > 0) {
+      std::vector<double> v;
+      v.reserve(r.rows.size());
+      for (const auto& row : r.rows)
+        v.push_back(row.out[static_cast<std::size_t>(q)]);
+      json p = json::object();
+      for (double pc : ensemble::kPercentiles)
+        p[fmt::format("P{}", pc)] = number(ensemble::percentile(v, pc));
+      o_j["percentiles"] = p;
+      o_j["histogram"] = {{"lo", s.min}, {"hi", s.max}, {"counts", ensemble::histogram(v, s.min, s.max, 20)}};
+    }
+    outputs[ensemble::kOutputNames[q]] = o_j;
+  }
+  j["outputs"] = outputs;
+  return j.dump(2) + "\n";
+}
+
+}  // namespace poinsot::io

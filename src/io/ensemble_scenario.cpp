@@ -1,0 +1,156 @@
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/io/ensemble.hpp"
+#include "scenario_table.hpp"
+#include "toml_fields.hpp"
+
+namespace poinsot::io {
+namespace {
+
+using detail::Section;
+using detail::Source;
+
+ensemble::ScalarDispersion read_scalar(const Source& src, const Section& e, std::string_view key) {
+  ensemble::ScalarDispersion d;
+  const toml::table* t = e.table(key);
+  if (!t) return d;
+  const Section s(src, t, "ensemble." + std::string(key), {"law", "width", "relative", "truncation"},
+                  e.node(key));
+  try {
+    d.law = ensemble::law_from_string(s.string("law").value_or("normal"), s.label("law"));
+    d.width = s.number("width").value_or(0.0);
+    d.relative = s.boolean("relative").value_or(false);
+    d.truncation = s.number("truncation").value_or(3.0);
+    ensemble::validate(d, s.label("width"));
+  } catch (const InvalidInput& err) {
+    throw InvalidInput(detail::location(src, e.node(key)) + err.what());
+  }
+  return d;
+}
+
+ensemble::RotationDispersion read_rotation(const Source& src, const Section& e, std::string_view key) {
+  ensemble::RotationDispersion d;
+  const toml::table* t = e.table(key);
+  if (!t) return d;
+  const Section s(src, t, "ensemble." + std::string(key), {"law", "angle", "degrees"}, e.node(key));
+  try {
+    d.law = ensemble::rotation_law_from_string(s.string("law").value_or("cone"), s.label("law"));
+    const double scale = s.boolean("degrees").value_or(false) ? std::numbers::pi / 180.0 : 1.0;
+    d.angle = s.number("angle").value_or(0.0) * scale;
+    ensemble::validate(d, s.label("angle"));
+  } catch (const InvalidInput& err) {
+    throw InvalidInput(detail::location(src, e.node(key)) + err.what());
+  }
+  return d;
+}
+
+std::uint64_t read_count(const Section& e, std::string_view key, std::uint64_t fallback,
+                         std::uint64_t least) {
+  const auto x = e.number(key);
+  if (!x) return fallback;
+  if (!(*x >= static_cast<double>(least) && *x == std::floor(*x) && *x < 9.2e18)) {
+    e.fail(key, fmt::format("got {}, expected an integer >= {}", *x, least));
+  }
+  return static_cast<std::uint64_t>(*x);
+}
+
+}  // namespace
+
+EnsembleScenario parse_ensemble_scenario(std::string_view text, std::string_view source,
+                                         std::string_view base_dir) {
+  const Source src{std::string(source)};
+  toml::table root = detail::parse_toml(text, source);
+  const toml::table* ens = root["ensemble"].as_table();
+  if (!ens) {
+    throw InvalidInput(
+        fmt::format("{}: [ensemble]: missing; expected a section with samples, seed and the "
+                    "dispersions (docs/ensemble.md)",
+                    source));
+  }
+  const toml::table ensemble_table = *ens;
+  toml::table body_table = root;
+  body_table.erase("ensemble");
+  EnsembleScenario sc{.base = detail::single_scenario_from_table(body_table, source, base_dir),
+                      .nominal = {},
+                      .dispersions = {},
+                      .samples = 1000,
+                      .seed = 0,
+                      .per_sample = true};
+
+  const Section e(src, &ensemble_table, "ensemble",
+                  {"samples", "seed", "policy", "max_tries", "per_sample", "moments", "axes", "mass",
+                   "center_of_mass", "omega", "attitude", "torque"},
+                  root.get("ensemble"));
+  sc.samples = read_count(e, "samples", 1000, 1);
+  sc.seed = read_count(e, "seed", 0, 0);
+  sc.per_sample = e.boolean("per_sample").value_or(true);
+  ensemble::Dispersions& d = sc.dispersions;
+  try {
+    d.policy = ensemble::policy_from_string(e.string("policy").value_or("reject"), e.label("policy"));
+  } catch (const InvalidInput& err) {
+    throw InvalidInput(detail::location(src, e.node("policy")) + err.what());
+  }
+  d.max_tries = static_cast<int>(read_count(e, "max_tries", 100, 1));
+  d.moments = read_scalar(src, e, "moments");
+  d.axes = read_rotation(src, e, "axes");
+  d.mass = read_scalar(src, e, "mass");
+  d.center_of_mass = read_scalar(src, e, "center_of_mass");
+  d.omega = read_scalar(src, e, "omega");
+  d.attitude = read_rotation(src, e, "attitude");
+  d.torque = read_scalar(src, e, "torque");
+
+  ensemble::TorqueKind kind = ensemble::TorqueKind::none;
+  Vec3 value = Vec3::Zero();
+  const Section t(src, root["torque"].as_table(), "torque", {"type", "g", "value"});
+  if (sc.base.torque_type == "gravity") {
+    kind = ensemble::TorqueKind::gravity;
+    value = sc.base.gravity_space;
+  } else if (sc.base.torque_type == "body" || sc.base.torque_type == "space") {
+    kind = sc.base.torque_type == "body" ? ensemble::TorqueKind::body : ensemble::TorqueKind::space;
+    value = *t.vec3("value");
+  }
+  sc.nominal = ensemble::Nominal::from(sc.base.body, sc.base.initial, kind, value);
+  try {
+    const ensemble::Sampler check(sc.nominal, d, sc.seed);
+  } catch (const InvalidInput& err) {
+    throw InvalidInput(fmt::format("{}: {}", source, err.what()));
+  }
+  return sc;
+}
+
+EnsembleScenario load_ensemble_scenario(const std::string& path) {
+  const std::filesystem::path p(path);
+  EnsembleScenario sc = parse_ensemble_scenario(detail::read_text_file(path), path, p.parent_path().string());
+  sc.base.name = p.stem().string();
+  return sc;
+}
+
+ensemble::EnsembleOptions ensemble_options(const EnsembleScenario& sc) {
+  ensemble::EnsembleOptions o;
+  o.samples = sc.samples;
+  o.method = sc.base.method;
+  o.t_end = sc.base.simulation.t_end;
+  o.dt = sc.base.integrator.dt;
+  o.rtol = sc.base.integrator.rtol;
+  o.atol = sc.base.integrator.atol;
+  o.keep_rows = sc.per_sample;
+  return o;
+}
+
+Scenario sample_scenario(const EnsembleScenario& sc, const ensemble::Sample& s) {
+  Scenario x = sc.base;
+  x.name = fmt::format("{}_sample_{}", sc.base.name, s.index);
+  x.body = s.body();
+  x.body_description = fmt::format("ensemble sample {} of {}", s.index, sc.base.name);
+  x.initial = s.initial;
+  x.torque = s.torque_model(x.body);
+  if (s.torque == ensemble::TorqueKind::gravity) x.gravity_space = s.torque_value;
+  return x;
+}
+
+}  // namespace poinsot::io

@@ -1,0 +1,187 @@
+#include "poinsot/ensemble/runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/exact_free_body.hpp"
+#include "poinsot_test.hpp"
+
+namespace poinsot::ensemble {
+namespace {
+
+Sampler racket_sampler(TorqueKind torque = TorqueKind::none) {
+  Nominal n;
+  n.moments = Vec3(1.0, 2.0, 2.5);
+  n.omega_body = Vec3(0.05, 3.0, 0.05);
+  n.torque = torque;
+  n.torque_value = torque == TorqueKind::none ? Vec3::Zero() : Vec3(0.001, 0.0, 0.002);
+  Dispersions d;
+  d.moments = {Law::normal, 0.02, true};
+  d.axes = {RotationLaw::cone, 0.035};
+  d.omega = {Law::normal, 0.02, false};
+  return Sampler(n, d, 2026);
+}
+
+EnsembleOptions opts(std::uint64_t samples, const char* method, double t_end, double dt = 1e-3,
+                     unsigned threads = 1) {
+  EnsembleOptions o;
+  o.samples = samples;
+  o.method = method;
+  o.t_end = t_end;
+  o.dt = dt;
+  o.threads = threads;
+  return o;
+}
+
+bool same_bits(const RunningStats& a, const RunningStats& b) {
+  return a.count == b.count && a.nan_count == b.nan_count &&
+         std::memcmp(&a.mean, &b.mean, sizeof(double)) == 0 &&
+         std::memcmp(&a.m2, &b.m2, sizeof(double)) == 0 && a.min == b.min && a.max == b.max;
+}
+
+TEST(Runner, ResultsAreBitIdenticalForAnyThreadsAndWithOrWithoutSimd) {
+  for (const char* method : {"rk4", "dlm"}) {
+    // rk4: four blocks (the last partial), so that four threads each take one; dlm: two blocks (the cost of
+    // these tests under the sanitizers is in the per-sample set-up).
+    const std::uint64_t n = std::string_view(method) == "rk4" ? 3100 : 1100;
+    EnsembleOptions o = opts(n, method, 0.1, 0.01);
+    const EnsembleResult ref = run_ensemble(racket_sampler(), o);
+    EXPECT_EQ(ref.completed, n);
+    EXPECT_EQ(ref.body_steps, static_cast<std::int64_t>(n) * 10);
+    // Two threads without SIMD, and four threads with SIMD and statistics only (the same merge order).
+    for (const auto& [threads, simd] : {std::pair{2u, Simd::off}, std::pair{4u, Simd::automatic}}) {
+      EnsembleOptions p = o;
+      p.threads = threads;
+      p.simd = simd;
+      p.keep_rows = threads == 2;
+      const EnsembleResult r = run_ensemble(racket_sampler(), p);
+      for (int q = 0; q < kOutputCount; ++q)
+        EXPECT_TRUE(same_bits(r.stats[q], ref.stats[q]))
+            << method << " " << kOutputNames[q] << " threads " << threads;
+      for (std::size_t i = 0; i < r.rows.size(); ++i) {
+        ASSERT_EQ(r.rows[i].final_state.R, ref.rows[i].final_state.R);
+        ASSERT_EQ(std::memcmp(r.rows[i].out.data(), ref.rows[i].out.data(), sizeof(r.rows[i].out)), 0);
+      }
+    }
+  }
+}
+
+// The merged statistics against a two-pass computation over the stored rows: the mean to round-off (1e-14
+// relative), the variance to 1e-10 (Chan's merge loses a few digits for large δ² terms), min and max exactly.
+TEST(Runner, MergedStatisticsMatchATwoPassComputation) {
+  const EnsembleResult r = run_ensemble(racket_sampler(), opts(2000, "rk4", 4.0, 0.01, 2));
+  for (int q = 0; q < kOutputCount; ++q) {
+    std::vector<double> v;
+    for (const auto& row : r.rows)
+      if (!std::isnan(row.out[q])) v.push_back(row.out[q]);
+    const RunningStats& s = r.stats[q];
+    ASSERT_EQ(static_cast<std::size_t>(s.count), v.size()) << kOutputNames[q];
+    if (v.size() < 2) continue;
+    double mean = 0, var = 0;
+    for (double x : v)
+      mean += x;
+    mean /= static_cast<double>(v.size());
+    for (double x : v)
+      var += (x - mean) * (x - mean);
+    var /= static_cast<double>(v.size() - 1);
+    EXPECT_NEAR(s.mean, mean, 1e-14 * std::abs(mean) + 1e-300) << kOutputNames[q];
+    EXPECT_NEAR(s.variance(), var, 1e-10 * var) << kOutputNames[q];
+    EXPECT_EQ(s.min, *std::min_element(v.begin(), v.end()));
+    EXPECT_EQ(s.max, *std::max_element(v.begin(), v.end()));
+  }
+  // rk4 at h = 0.01 over 4 s: flip intervals agree with 2K(k)/ω_p to the method's error (~1e-6 relative).
+  for (const auto& row : r.rows)
+    if (!std::isnan(row.out[flip_interval])) {
+      EXPECT_NEAR(row.out[flip_interval], row.out[flip_interval_theory],
+                  1e-5 * row.out[flip_interval_theory]);
+    }
+  EXPECT_EQ(r.nominal.out[attitude_error], 0.0);
+}
+
+TEST(Runner, PercentilesAreExactOrderStatistics) {
+  std::vector<double> v;
+  for (int i = 100; i >= 0; --i)
+    v.push_back(i);  // 0..100 shuffled by reversal
+  EXPECT_EQ(percentile(v, 50), 50.0);
+  EXPECT_NEAR(percentile(v, 99.9), 99.9, 1e-12);
+  EXPECT_EQ(percentile(v, 1), 1.0);
+  v.push_back(std::numeric_limits<double>::quiet_NaN());
+  EXPECT_EQ(percentile(v, 100), 100.0);
+  const auto h = histogram(v, 0.0, 100.0, 4);
+  EXPECT_EQ(h, (std::vector<std::int64_t>{25, 25, 25, 26}));
+}
+
+TEST(Runner, ExactAndScalarPathsAgreeWithTheClosedFormAndTheTorquedPath) {
+  const Sampler s = racket_sampler();
+  const SampleRow e = run_sample(s, 17, opts(1, "exact", 3.0));
+  const Sample x = s.draw(17);
+  const dynamics::State direct = dynamics::ExactFreeBody(x.body(), x.initial).state_at(3.0);
+  EXPECT_EQ(e.final_state.R, direct.R);
+  // dop853 through dynamics::simulate reaches the same state to its tolerance.
+  const SampleRow d = run_sample(s, 17, opts(1, "dop853", 3.0, 0.01));
+  EXPECT_LT(test::max_abs_diff(d.final_state.R, direct.R), 1e-8);
+  // Constant body torque: batched rk4 and scalar dop853 agree to rk4's error.
+  const Sampler t = racket_sampler(TorqueKind::body);
+  const SampleRow a = run_sample(t, 5, opts(1, "rk4", 2.0));
+  const SampleRow b = run_sample(t, 5, opts(1, "dop853", 2.0));
+  EXPECT_LT(test::max_abs_diff(a.final_state.omega_body, b.final_state.omega_body), 1e-9);
+  EXPECT_TRUE(std::isnan(a.out[L_space_error]));
+}
+
+TEST(Runner, StopsBetweenRoundsKeepingCompleteRows) {
+  int calls = 0;
+  EnsembleOptions o = opts(20000, "rk4", 0.1, 0.01);
+  o.stop_requested = [&] { return ++calls >= 1; };
+  const EnsembleResult r = run_ensemble(racket_sampler(), o);
+  EXPECT_TRUE(r.interrupted);
+  EXPECT_EQ(r.completed, 4 * kBlockSamples);
+  EXPECT_EQ(r.rows.size(), r.completed);
+  EXPECT_EQ(r.rows.back().index, r.completed - 1);
+}
+
+TEST(Runner, RefusesBadOptionsBeforeAllocating) {
+  const Sampler s = racket_sampler();
+  try {
+    run_ensemble(s, opts(100000000000ULL, "rk4", 1.0));
+    FAIL();
+  } catch (const InvalidInput& e) {
+    test::expect_has(e.what(), {"100000000000 samples", "GB", "per-sample output off"});
+  }
+  EXPECT_THROW(run_ensemble(s, opts(0, "rk4", 1.0)), InvalidInput);
+  EXPECT_THROW(run_ensemble(s, opts(10, "euler", 1.0)), InvalidInput);
+  EXPECT_THROW(run_ensemble(s, opts(10, "rk4", -1.0)), InvalidInput);
+  EXPECT_THROW(run_ensemble(racket_sampler(TorqueKind::body), opts(10, "exact", 1.0)), InvalidInput);
+}
+
+}  // namespace
+}  // namespace poinsot::ensemble
+
+namespace poinsot::ensemble {
+namespace {
+
+// The distributed invariant (MPI ranks): blocks run in separate calls and merged in block order give the
+// statistics of one run bit for bit, and the rows of the two shares are the rows of the whole.
+TEST(Runner, BlockRangesMergedInOrderEqualOneRun) {
+  const EnsembleOptions o = opts(2100, "dlm", 0.2, 0.01);  // three blocks
+  const EnsembleResult whole = run_ensemble(racket_sampler(), o);
+  std::vector<BlockSummary> blocks;
+  const std::uint64_t n = block_count(o.samples), split = n / 2;
+  const EnsembleResult a = run_ensemble_blocks(racket_sampler(), o, 0, split, &blocks);
+  const EnsembleResult b = run_ensemble_blocks(racket_sampler(), o, split, n, &blocks);
+  ASSERT_EQ(blocks.size(), n);
+  EXPECT_EQ(a.rows.size() + b.rows.size(), whole.rows.size());
+  EXPECT_EQ(b.rows.front().index, split * kBlockSamples);
+  EXPECT_EQ(b.rows.front().final_state.R, whole.rows[split * kBlockSamples].final_state.R);
+  EnsembleResult merged;
+  for (const BlockSummary& block : blocks)
+    merge_block(merged, block);
+  for (int q = 0; q < kOutputCount; ++q)
+    EXPECT_TRUE(same_bits(merged.stats[q], whole.stats[q])) << kOutputNames[q];
+  EXPECT_EQ(merged.rejected, whole.rejected);
+  EXPECT_THROW(run_ensemble_blocks(racket_sampler(), o, 3, n + 1, nullptr), InvalidInput);
+}
+
+}  // namespace
+}  // namespace poinsot::ensemble
