@@ -121,9 +121,7 @@ struct ProjectedRk4::Impl {
           joint_value(joint, q[static_cast<std::size_t>(joint.body_a)], side(q, joint.body_b));
       const int offset = solver.joint_offset(static_cast<int>(j));
       rhs_joint.segment(offset, joint.rows()) = -g;
-      err = std::max(err, g.head<3>().cwiseAbs().maxCoeff() / length);
-      if (joint.perpendicular_count > 0)
-        err = std::max(err, g.tail(joint.perpendicular_count).cwiseAbs().maxCoeff());
+      err = std::max(err, joint_residual(joint, g, length));
     }
     return err;
   }

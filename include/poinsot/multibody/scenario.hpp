@@ -50,7 +50,7 @@ struct RunSummary {
   double max_energy_error = 0.0;                    ///< max |E(t) − E(0)|, J
   double max_joint_gap = 0.0;                       ///< m
   double max_joint_angle = 0.0;                     ///< dimensionless
-  double max_orthogonality = 0.0;                   ///< max |RᵀR − I|
+  double max_orthogonality = 0.0;                   ///< max ‖RᵀR − I‖_F
   double mean_newton_iterations = 0.0;  ///< RATTLE's position stages, or RK4's joint projections, per step
   int max_newton_iterations = 0;
   bool tree_solver = true;
@@ -70,7 +70,7 @@ struct RunSummary {
 /// every step is RunSummary::max_energy_error), `kinetic` T (J), `potential` V (J, loads.hpp: gravity,
 /// springs, constant forces), `linear_momentum` |Σ m v| (kg·m/s), `L_space_x`, `L_space_y`, `L_space_z` the
 /// angular momentum about the space origin Σ (x × m v + R J ω) (kg·m²/s), `joint_gap` (m), `joint_angle`
-/// (dimensionless) and `orthogonality` max |RᵀR − I| (dimensionless), the maxima over joints and bodies of
+/// (dimensionless) and `orthogonality` max ‖RᵀR − I‖_F (dimensionless), the maxima over joints and bodies of
 /// ConstraintViolation.
 ///
 /// On a ComputationFailed the rows already written stay in both files and the exception propagates.
