@@ -366,7 +366,7 @@ def _plot_constraints(plt, diag, summary, out):
         ax.set_ylabel(label)
         ax.grid(alpha=0.3, which="both")
         if not np.any(diag[key]):
-            why = " (no hinge or weld joint)" if key == "joint_angle" else ""
+            why = " (no joint with rotation rows)" if key == "joint_angle" else ""
             ax.text(0.02, 0.85, f"exactly 0 at every row{why}", transform=ax.transAxes, fontsize=9)
     axes[2].set_xlabel("time t (s)")
     fig.suptitle(f"Constraint violation: {_multibody_title(summary)}\n(exact zeros drawn at {ZERO_FLOOR:g})",

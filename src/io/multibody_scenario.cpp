@@ -89,8 +89,7 @@ struct Reader {
   std::vector<Vec3> com;  ///< per body, m, body frame
 
   const multibody::BodyState& side(int index) const {
-    return index == kWorld ? multibody::world_body_state()
-                           : sc.initial.bodies[static_cast<std::size_t>(index)];
+    return multibody::side_state(sc.initial.bodies, index);
   }
   /// A point of a body, given in its frame, relative to its centre of mass; a point of the world as is.
   Vec3 to_model(int body, const Vec3& p) const {

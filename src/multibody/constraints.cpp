@@ -20,6 +20,20 @@ Vec3 point_a_from_b(const Joint& joint, const BodyState& a, const BodyState& b) 
   return r;
 }
 
+// d = x_a + R_a A − x_b − R_b B: the point rows (m).
+Vec3 point_rows_value(const Joint& joint, const BodyState& a, const BodyState& b) {
+  Vec3 d = a.x_space - b.x_space;
+  d.noalias() += a.R_space_body * joint.point_a;
+  d.noalias() -= b.R_space_body * joint.point_b;
+  return d;
+}
+
+// (R_a p_k)·(R_b u_k): perpendicularity row k.
+double perpendicular_row_value(const Joint& joint, const BodyState& a, const BodyState& b, int k) {
+  const auto ku = static_cast<std::size_t>(k);
+  return (a.R_space_body * joint.p_a[ku]).dot(b.R_space_body * joint.u_b[ku]);
+}
+
 }  // namespace
 
 JointVector joint_value(const Joint& joint, const BodyState& a, const BodyState& b) {
@@ -32,13 +46,30 @@ JointVector joint_value(const Joint& joint, const BodyState& a, const BodyState&
       g(k) = (b.R_space_body * n).dot(r) - n.dot(joint.point_b);
     }
   } else {
-    g.head<3>() = a.x_space + a.R_space_body * joint.point_a - b.x_space - b.R_space_body * joint.point_b;
+    g.head<3>() = point_rows_value(joint, a, b);
   }
-  for (int k = 0; k < joint.perpendicular_count; ++k) {
-    const auto ku = static_cast<std::size_t>(k);
-    g(t + k) = (a.R_space_body * joint.p_a[ku]).dot(b.R_space_body * joint.u_b[ku]);
-  }
+  for (int k = 0; k < joint.perpendicular_count; ++k)
+    g(t + k) = perpendicular_row_value(joint, a, b, k);
   return g;
+}
+
+double scaled_joint_value(const Joint& joint, const BodyState& a, const BodyState& b, double scale,
+                          double length, double* out) {
+  if (joint.sliding) {
+    const JointVector g = joint_value(joint, a, b);
+    Eigen::Map<JointVector>(out, g.size()) = scale * g;
+    return joint_residual(joint, g, length);
+  }
+  const Vec3 d = point_rows_value(joint, a, b);
+  Eigen::Map<Vec3> point_rows(out);
+  point_rows = scale * d;
+  double err = d.cwiseAbs().maxCoeff() / length;
+  for (int k = 0; k < joint.perpendicular_count; ++k) {
+    const double gk = perpendicular_row_value(joint, a, b, k);
+    out[3 + k] = scale * gk;
+    err = std::max(err, std::abs(gk));
+  }
+  return err;
 }
 
 void joint_jacobians(const Joint& joint, const BodyState& a, const BodyState& b, JointJacobian& G_a,

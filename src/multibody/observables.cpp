@@ -12,11 +12,6 @@
 #include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::multibody {
-namespace {
-const BodyState& side(const State& s, int index) {
-  return index == kWorld ? world_body_state() : s.bodies[static_cast<std::size_t>(index)];
-}
-}  // namespace
 
 double kinetic_energy(const System& system, const State& state) {
   double T = 0.0;
@@ -54,8 +49,8 @@ ConstraintViolation constraint_violation(const System& system, const State& stat
   for (const BodyState& s : state.bodies)
     v.orthogonality = std::max(v.orthogonality, so3::orthogonality_error(s.R_space_body));
   for (const Joint& joint : system.joints()) {
-    const BodyState& a = side(state, joint.body_a);
-    const BodyState& b = side(state, joint.body_b);
+    const BodyState& a = side_state(state.bodies, joint.body_a);
+    const BodyState& b = side_state(state.bodies, joint.body_b);
     const int t = joint.translation_rows();
     const JointVector g = joint_value(joint, a, b);
     v.joint_gap = std::max(v.joint_gap, g.head(t).norm());

@@ -86,15 +86,11 @@ struct Rattle::Impl {
     }
   }
 
-  const BodyState& side(const std::vector<BodyState>& bodies, int index) const {
-    return index == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(index)];
-  }
-
   // Jacobians at the positions of `bodies`, and the factorisation of the KKT matrix there.
   void factor_at(const std::vector<BodyState>& bodies) {
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
-      joint_jacobians(joint, bodies[static_cast<std::size_t>(joint.body_a)], side(bodies, joint.body_b),
+      joint_jacobians(joint, bodies[static_cast<std::size_t>(joint.body_a)], side_state(bodies, joint.body_b),
                       G_a[j], G_b[j]);
     }
     solver.factor(G_a, G_b);
@@ -137,8 +133,8 @@ struct Rattle::Impl {
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
       const JointVector l = lam.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
-      const JointLoads jl =
-          joint_loads(joint, bodies[static_cast<std::size_t>(joint.body_a)], side(bodies, joint.body_b), l);
+      const JointLoads jl = joint_loads(joint, bodies[static_cast<std::size_t>(joint.body_a)],
+                                        side_state(bodies, joint.body_b), l);
       out.joint_force_space[j] = jl.force_a_space;
       out.joint_torque_space[j] = jl.torque_a_space;
       phi[static_cast<std::size_t>(joint.body_a)] += jl.phi_a_body;
@@ -254,10 +250,10 @@ struct Rattle::Impl {
     const double minus_inv_h = -1.0 / hs;
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
-      const JointVector g =
-          joint_value(joint, next[static_cast<std::size_t>(joint.body_a)], side(next, joint.body_b));
-      err_joint = std::max(err_joint, joint_residual(joint, g, length));
-      rhs_joint.segment(solver.joint_offset(static_cast<int>(j)), joint.rows()) = minus_inv_h * g;
+      const double err = scaled_joint_value(joint, next[static_cast<std::size_t>(joint.body_a)],
+                                            side_state(next, joint.body_b), minus_inv_h, length,
+                                            rhs_joint.data() + solver.joint_offset(static_cast<int>(j)));
+      err_joint = std::max(err_joint, err);
     }
     return {err_body, err_joint};
   }

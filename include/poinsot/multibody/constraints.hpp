@@ -22,6 +22,8 @@
 /// N·m); body b receives the opposite, the force at the same point of space. In the 12 coordinates it also
 /// has an R-gradient part Φ = Rᵀ G_Rᵀ λ (body frame, N·m, its skew part is half the torque), which enters Λ.
 
+#include <vector>
+
 #include <Eigen/Core>
 
 #include "poinsot/multibody/model.hpp"
@@ -38,6 +40,10 @@ using JointJacobian = Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor, 
 
 /// The pose of the fixed world: x = 0, R = I, at rest.
 const BodyState& world_body_state();
+/// The state of a joint's side: bodies[index], or the world's for kWorld.
+inline const BodyState& side_state(const std::vector<BodyState>& bodies, int index) {
+  return index == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(index)];
+}
 
 /// The ω-block −R_a j(A) of the point rows on side a (their v-block is I): fixed size, computed in place.
 inline Mat3 point_rows_omega_jacobian_a(const Joint& joint, const Mat3& R_a) {
@@ -50,6 +56,10 @@ inline Mat3 point_rows_omega_jacobian_b(const Joint& joint, const Mat3& R_b) {
 
 /// g(x, R) for the joint (m for the translation rows, dimensionless for the perpendicularity rows).
 JointVector joint_value(const Joint& joint, const BodyState& a, const BodyState& b);
+/// The Newton loops' form of joint_value: writes scale·g into out[0 .. rows) and returns
+/// joint_residual(joint, g, length), with the point rows on a fixed-size path (no JointVector).
+double scaled_joint_value(const Joint& joint, const BodyState& a, const BodyState& b, double scale,
+                          double length, double* out);
 /// G_a and G_b (G_b is meaningless when body b is the world).
 void joint_jacobians(const Joint& joint, const BodyState& a, const BodyState& b, JointJacobian& G_a,
                      JointJacobian& G_b);
