@@ -20,20 +20,6 @@ Vec3 point_a_from_b(const Joint& joint, const BodyState& a, const BodyState& b) 
   return r;
 }
 
-// d = x_a + R_a A − x_b − R_b B: the point rows (m).
-Vec3 point_rows_value(const Joint& joint, const BodyState& a, const BodyState& b) {
-  Vec3 d = a.x_space - b.x_space;
-  d.noalias() += a.R_space_body * joint.point_a;
-  d.noalias() -= b.R_space_body * joint.point_b;
-  return d;
-}
-
-// (R_a p_k)·(R_b u_k): perpendicularity row k.
-double perpendicular_row_value(const Joint& joint, const BodyState& a, const BodyState& b, int k) {
-  const auto ku = static_cast<std::size_t>(k);
-  return (a.R_space_body * joint.p_a[ku]).dot(b.R_space_body * joint.u_b[ku]);
-}
-
 }  // namespace
 
 JointVector joint_value(const Joint& joint, const BodyState& a, const BodyState& b) {
@@ -53,23 +39,11 @@ JointVector joint_value(const Joint& joint, const BodyState& a, const BodyState&
   return g;
 }
 
-double scaled_joint_value(const Joint& joint, const BodyState& a, const BodyState& b, double scale,
-                          double length, double* out) {
-  if (joint.sliding) {
-    const JointVector g = joint_value(joint, a, b);
-    Eigen::Map<JointVector>(out, g.size()) = scale * g;
-    return joint_residual(joint, g, length);
-  }
-  const Vec3 d = point_rows_value(joint, a, b);
-  Eigen::Map<Vec3> point_rows(out);
-  point_rows = scale * d;
-  double err = d.cwiseAbs().maxCoeff() / length;
-  for (int k = 0; k < joint.perpendicular_count; ++k) {
-    const double gk = perpendicular_row_value(joint, a, b, k);
-    out[3 + k] = scale * gk;
-    err = std::max(err, std::abs(gk));
-  }
-  return err;
+double sliding_scaled_joint_value(const Joint& joint, const BodyState& a, const BodyState& b, double scale,
+                                  double length, double* out) {
+  const JointVector g = joint_value(joint, a, b);
+  Eigen::Map<JointVector>(out, g.size()) = scale * g;
+  return joint_residual(joint, g, length);
 }
 
 void joint_jacobians(const Joint& joint, const BodyState& a, const BodyState& b, JointJacobian& G_a,

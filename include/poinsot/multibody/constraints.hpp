@@ -22,6 +22,8 @@
 /// N·m); body b receives the opposite, the force at the same point of space. In the 12 coordinates it also
 /// has an R-gradient part Φ = Rᵀ G_Rᵀ λ (body frame, N·m, its skew part is half the torque), which enters Λ.
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,12 +56,39 @@ inline Mat3 point_rows_omega_jacobian_b(const Joint& joint, const Mat3& R_b) {
   return so3::times_hat(R_b, joint.point_b);
 }
 
+/// d = x_a + R_a A − x_b − R_b B: the point rows' value (m).
+inline Vec3 point_rows_value(const Joint& joint, const BodyState& a, const BodyState& b) {
+  Vec3 d = a.x_space - b.x_space;
+  d.noalias() += a.R_space_body * joint.point_a;
+  d.noalias() -= b.R_space_body * joint.point_b;
+  return d;
+}
+/// (R_a p_k)·(R_b u_k): perpendicularity row k's value (dimensionless).
+inline double perpendicular_row_value(const Joint& joint, const BodyState& a, const BodyState& b, int k) {
+  const auto ku = static_cast<std::size_t>(k);
+  return (a.R_space_body * joint.p_a[ku]).dot(b.R_space_body * joint.u_b[ku]);
+}
 /// g(x, R) for the joint (m for the translation rows, dimensionless for the perpendicularity rows).
 JointVector joint_value(const Joint& joint, const BodyState& a, const BodyState& b);
+/// scaled_joint_value for a sliding joint (the general path).
+double sliding_scaled_joint_value(const Joint& joint, const BodyState& a, const BodyState& b, double scale,
+                                  double length, double* out);
 /// The Newton loops' form of joint_value: writes scale·g into out[0 .. rows) and returns
-/// joint_residual(joint, g, length), with the point rows on a fixed-size path (no JointVector).
-double scaled_joint_value(const Joint& joint, const BodyState& a, const BodyState& b, double scale,
-                          double length, double* out);
+/// joint_residual(joint, g, length), with the point rows on a fixed-size path, inlined (no JointVector).
+inline double scaled_joint_value(const Joint& joint, const BodyState& a, const BodyState& b, double scale,
+                                 double length, double* out) {
+  if (joint.sliding) return sliding_scaled_joint_value(joint, a, b, scale, length, out);
+  const Vec3 d = point_rows_value(joint, a, b);
+  Eigen::Map<Vec3> point_rows(out);
+  point_rows = scale * d;
+  double err = d.cwiseAbs().maxCoeff() / length;
+  for (int k = 0; k < joint.perpendicular_count; ++k) {
+    const double gk = perpendicular_row_value(joint, a, b, k);
+    out[3 + k] = scale * gk;
+    err = std::max(err, std::abs(gk));
+  }
+  return err;
+}
 /// G_a and G_b (G_b is meaningless when body b is the world).
 void joint_jacobians(const Joint& joint, const BodyState& a, const BodyState& b, JointJacobian& G_a,
                      JointJacobian& G_b);
