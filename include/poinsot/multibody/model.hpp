@@ -58,8 +58,7 @@ struct Joint {
   Vec3 point_a = Vec3::Zero();  ///< joint point in body a's frame, from its centre of mass, m
   Vec3 point_b = Vec3::Zero();  ///< joint point in body b's frame (space frame for the world), m
   bool sliding = false;         ///< point a on a line through point b (2 rows) instead of on point b (3 rows)
-  std::array<Vec3, 2>
-      n_b{};  ///< sliding: the two unit normals of the line, body b frame (space for the world)
+  std::array<Vec3, 2> n_b{};    ///< sliding: unit normals of the line, b's frame (space for the world)
   int perpendicular_count = 0;  ///< 0 (ball), 1 (universal), 2 (hinge), 3 (weld, prismatic)
   std::array<Vec3, 3> p_a{};    ///< unit vectors fixed in body a
   std::array<Vec3, 3> u_b{};    ///< unit vectors fixed in body b (space frame for the world)
