@@ -355,7 +355,7 @@ def _plot_constraints(plt, diag, summary, out):
     fig, axes = plt.subplots(3, 1, figsize=(9, 8), sharex=True, constrained_layout=True)
     for ax, key, label, color in ((axes[0], "joint_gap", "largest joint gap (m)", "C0"),
                                   (axes[1], "joint_angle", "largest joint angle error\n(dimensionless ≈ rad)", "C1"),
-                                  (axes[2], "orthogonality", "max |RᵀR − I|\n(dimensionless)", "C2")):
+                                  (axes[2], "orthogonality", "max ‖RᵀR − I‖_F\n(dimensionless)", "C2")):
         ax.semilogy(t, np.maximum(np.abs(diag[key]), ZERO_FLOOR), color=color, lw=1.2)
         if key == "joint_gap":  # a length: RATTLE's Newton tolerance, not ε, is the reference
             ax.axhline(1e-12, color="0.4", lw=0.8, ls=":", label="1e-12 m (tested bound)")
@@ -366,7 +366,7 @@ def _plot_constraints(plt, diag, summary, out):
         ax.set_ylabel(label)
         ax.grid(alpha=0.3, which="both")
         if not np.any(diag[key]):
-            why = " (no hinge or weld joint)" if key == "joint_angle" else ""
+            why = " (no joint with rotation rows)" if key == "joint_angle" else ""
             ax.text(0.02, 0.85, f"exactly 0 at every row{why}", transform=ax.transAxes, fontsize=9)
     axes[2].set_xlabel("time t (s)")
     fig.suptitle(f"Constraint violation: {_multibody_title(summary)}\n(exact zeros drawn at {ZERO_FLOOR:g})",

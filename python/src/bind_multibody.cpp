@@ -167,6 +167,26 @@ void bind_system(py::module_& m) {
           py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("body_b"), py::arg("point_b"),
           py::arg("R_b_a"), POINSOT_DOC(multibody_System_add_weld))
       .def(
+          "add_universal",
+          [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, ArrayLike axis_a,
+             const py::object& b, ArrayLike pb, ArrayLike axis_b) {
+            return s.add_universal(name, body_ref(s, a, "body_a"), to_vec3(pa, "point_a"),
+                                   to_vec3(axis_a, "axis_a"), body_ref(s, b, "body_b"),
+                                   to_vec3(pb, "point_b"), to_vec3(axis_b, "axis_b"));
+          },
+          py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("axis_a"), py::arg("body_b"),
+          py::arg("point_b"), py::arg("axis_b"), POINSOT_DOC(multibody_System_add_universal))
+      .def(
+          "add_prismatic",
+          [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, ArrayLike axis_a,
+             const py::object& b, ArrayLike pb, ArrayLike R_b_a) {
+            return s.add_prismatic(name, body_ref(s, a, "body_a"), to_vec3(pa, "point_a"),
+                                   to_vec3(axis_a, "axis_a"), body_ref(s, b, "body_b"),
+                                   to_vec3(pb, "point_b"), to_mat3(R_b_a, "R_b_a"));
+          },
+          py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("axis_a"), py::arg("body_b"),
+          py::arg("point_b"), py::arg("R_b_a"), POINSOT_DOC(multibody_System_add_prismatic))
+      .def(
           "add_spring",
           [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, const py::object& b,
              ArrayLike pb, double stiffness, double damping, double rest_length) {

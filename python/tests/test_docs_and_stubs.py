@@ -45,6 +45,8 @@ def body_of(doc):
     (lambda: poinsot.analysis.lambda_from_state, "analysis_lambda_from_state"),
     (lambda: poinsot.load_scenario, "io_load_scenario"),
     (lambda: poinsot.multibody.System.add_hinge, "multibody_System_add_hinge"),
+    (lambda: poinsot.multibody.System.add_universal, "multibody_System_add_universal"),
+    (lambda: poinsot.multibody.System.add_prismatic, "multibody_System_add_prismatic"),
     (lambda: poinsot.multibody.Rattle.step, "multibody_Rattle_step"),
     (lambda: poinsot.multibody.ProjectedRk4.step, "multibody_ProjectedRk4_step"),
     (lambda: poinsot.multibody.run_scenario, "io_run_multibody_scenario"),

@@ -504,3 +504,56 @@ def test_projected_rk4_bad_arguments_name_the_field():
         mb.parse_scenario(base.format('method = "euler"'), "bad.toml")
     with pytest.raises(ValueError, match=r"^bad\.toml:.*\[simulation\] order: applies to method = \"rattle\" only"):
         mb.parse_scenario(base.format('method = "rk4"\norder = 2'), "bad.toml")
+
+
+def test_prismatic_joint_slides_along_its_line_under_gravity():
+    """A tilted body on an inclined line falls along it with g·e (closed form: constant acceleration, which
+    RATTLE and RK4 integrate exactly up to round-off); its rotation stays as it was."""
+    e = np.array([1.0, 0.5, -0.8]) / np.linalg.norm([1.0, 0.5, -0.8])
+    R0 = rot_y(0.7)
+    A = np.array([0.1, -0.2, 0.05])  # joint point, body frame, from the centre of mass
+    system = mb.System()
+    body = system.add_body("slider", 1.5, np.diag([0.02, 0.05, 0.08]))
+    system.add_prismatic("slide", body, A, R0.T @ e, mb.WORLD, [0, 0, 0], R0)
+    system.gravity = [0, 0, -G]
+    x0 = -R0 @ A
+    state = mb.State(bodies=[mb.BodyState(x_space=x0, R_space_body=R0, v_space=0.3 * e)])
+    mb.check_consistent(system, state)
+    a = -G * e[2]  # g·e
+    for integrator in (mb.Rattle(system, 1e-2), mb.ProjectedRk4(system, 1e-2)):
+        s = mb.State(bodies=[mb.BodyState(x_space=x0, R_space_body=R0, v_space=0.3 * e)])
+        integrator.step(s, steps=100)
+        t = s.time
+        np.testing.assert_allclose(s[0].x_space, x0 + (0.3 * t + 0.5 * a * t * t) * e, rtol=0, atol=1e-12)
+        np.testing.assert_allclose(s[0].R_space_body, R0, rtol=0, atol=1e-14)
+        v = mb.constraint_violation(system, s)
+        assert v.joint_gap < 1e-12 and v.joint_angle < 1e-13
+    # The joint carries the weight across the line: force on the body = −m (g − (g·e) e).
+    g = np.array([0, 0, -G])
+    reaction = mb.exact_multipliers(system, state).joint_force_space[0]
+    np.testing.assert_allclose(reaction, -1.5 * (g - g.dot(e) * e), rtol=0, atol=1e-13)
+
+
+def test_universal_joint_keeps_its_cross_pins_perpendicular():
+    """A link on a Cardan joint (outer pin along space x, inner pin along body y): the pivot stays put, the pins
+    stay perpendicular (checked in NumPy), and RATTLE conserves the energy to O(h²)."""
+    c = np.array([0.05, 0.02, -0.6])
+    system = mb.System()
+    link = system.add_body_from_inertia("link", 1.2, np.diag([0.05, 0.07, 0.03]))
+    system.add_universal("cardan", link, -c, [0, 1, 0], mb.WORLD, [0, 0, 0], [1, 0, 0])
+    system.gravity = [0, 0, -G]
+    R0 = rot_y(-0.3)
+    omega = np.array([math.cos(-0.3), 0.0, math.sin(-0.3)]) * 1.0 + np.array([0, 0.5, 0])
+    state = mb.State(bodies=[mb.BodyState(x_space=R0 @ c, R_space_body=R0, v_space=R0 @ np.cross(omega, c),
+                                          omega_body=omega)])
+    mb.check_consistent(system, state)
+    E0 = mb.total_energy(system, state)
+    rattle = mb.Rattle(system, 2e-3)
+    for _ in range(10):
+        rattle.step(state, steps=50)
+        R, x = state[0].R_space_body, state[0].x_space
+        assert np.linalg.norm(x - R @ c) < 1e-12  # the pivot (body point −c) stays at the origin
+        assert abs((R @ [0, 1, 0]).dot([1, 0, 0])) < 1e-12
+    assert abs(mb.total_energy(system, state) - E0) < 1e-4 * abs(E0)
+    with pytest.raises(ValueError, match="axis b"):
+        system.add_universal("bad", link, [0, 0, 0], [0, 1, 0], mb.WORLD, [0, 0, 0], [0, 0, 0])

@@ -6,6 +6,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/so3/projection.hpp"
 #include "poinsot/so3/quaternion.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::dynamics {
 
@@ -38,12 +39,11 @@ void validate_state(const State& s, const char* what) {
   require_finite(fmt::format("{}: t (s)", what), s.t);
   require_finite(fmt::format("{}: omega_body (rad/s)", what), s.omega_body);
   require_finite(fmt::format("{}: R", what), s.R);
-  const double err = so3::orthogonality_error(s.R);
-  if (!(err <= 1e-9) || !(s.R.determinant() > 0.0)) {
+  if (!so3::is_rotation(s.R)) {
     throw InvalidInput(
         fmt::format("{}: R is not a rotation (|R^T R - I| = {:.3g}, det = {:.6g}); expected a proper "
-                    "rotation to 1e-9",
-                    what, err, s.R.determinant()));
+                    "rotation to {:.0e}",
+                    what, so3::orthogonality_error(s.R), s.R.determinant(), so3::kRotationTolerance));
   }
 }
 

@@ -8,6 +8,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/so3/projection.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::inertia {
 namespace {
@@ -51,12 +52,12 @@ Mat3 shift_to_com(const Mat3& J_point, double mass, const Vec3& com, const Vec3&
 Mat3 reexpress(const Mat3& tensor_F, const Mat3& R_B_F) {
   require_finite("inertia: tensor (kg·m²)", tensor_F);
   require_finite("inertia: rotation", R_B_F);
-  const double err = so3::orthogonality_error(R_B_F);
-  if (!(err <= 1e-9) || !(R_B_F.determinant() > 0.0)) {
+  if (!so3::is_rotation(R_B_F)) {
     throw InvalidInput(fmt::format(
         "inertia: rotation {} has orthogonality error {} and determinant {}; expected a rotation (RᵀR = I "
-        "to 1e-9, det = +1)",
-        format_matrix(R_B_F), format_number(err, 3), format_number(R_B_F.determinant(), 6)));
+        "to {}, det = +1)",
+        format_matrix(R_B_F), format_number(so3::orthogonality_error(R_B_F), 3),
+        format_number(R_B_F.determinant(), 6), format_number(so3::kRotationTolerance)));
   }
   return symmetrised(R_B_F * tensor_F * R_B_F.transpose());
 }

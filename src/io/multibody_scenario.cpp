@@ -10,9 +10,11 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/multibody/constraints.hpp"
+#include "poinsot/multibody/joint_types.hpp"
 #include "poinsot/so3/axis_angle.hpp"
 #include "poinsot/so3/projection.hpp"
 #include "poinsot/so3/quaternion.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 #include "scenario_body.hpp"
 #include "scenario_table.hpp"
 #include "toml_fields.hpp"
@@ -45,12 +47,29 @@ Mat3 read_rotation(const Source& src, const Section& b) {
     return so3::rotation_from_axis_angle(axis.normalized(), *r.number("angle"));
   }
   const Mat3 M = *b.mat3("rotation");
-  if (so3::orthogonality_error(M) > 1e-9 || M.determinant() < 0) {
+  if (!so3::is_rotation(M, so3::kRotationInputTolerance)) {
     b.fail("rotation", fmt::format("got {}, expected {{ axis = [x, y, z], angle = a }} or a rotation matrix "
-                                   "(RᵀR = I to 1e-9, det R = +1)",
-                                   format_matrix(M)));
+                                   "(RᵀR = I to {}, det R = +1)",
+                                   format_matrix(M), format_number(so3::kRotationInputTolerance)));
   }
   return so3::project_to_so3(M);
+}
+
+/// The joint types that take an axis (axis_a, or with `second` axis_b), for messages: "hinge, universal or
+/// prismatic joints".
+std::string axis_joint_names(bool second = false) {
+  std::vector<std::string_view> names;
+  for (const multibody::JointTypeInfo& info : multibody::joint_types()) {
+    if (info.axes == multibody::JointAxes::none) continue;
+    if (second && info.axes == multibody::JointAxes::sliding) continue;
+    names.push_back(info.name);
+  }
+  std::string out;
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    if (k > 0) out += k + 1 == names.size() ? " or " : ", ";
+    out += names[k];
+  }
+  return out + " joints";
 }
 
 /// The array of tables `key` of the top level, or null.
@@ -70,8 +89,7 @@ struct Reader {
   std::vector<Vec3> com;  ///< per body, m, body frame
 
   const multibody::BodyState& side(int index) const {
-    return index == kWorld ? multibody::world_body_state()
-                           : sc.initial.bodies[static_cast<std::size_t>(index)];
+    return multibody::side_state(sc.initial.bodies, index);
   }
   /// A point of a body, given in its frame, relative to its centre of mass; a point of the world as is.
   Vec3 to_model(int body, const Vec3& p) const {
@@ -140,14 +158,18 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
                     {"name", "type", "body_a", "point_a", "body_b", "point_b", "axis_a", "axis_b"},
                     &(*joints)[j]);
     const std::string name = f.string("name").value_or(fmt::format("joint{}", j));
-    f.require("type", "\"ball\", \"hinge\" or \"weld\"");
+    f.require("type", multibody::joint_type_names());
     const std::string type = *f.string("type");
-    if (type != "ball" && type != "hinge" && type != "weld")
-      f.fail("type", fmt::format("got \"{}\", expected \"ball\", \"hinge\" or \"weld\"", type));
-    if (type != "hinge") {
-      for (const char* k : {"axis_a", "axis_b"})
-        if (f.has(k)) f.fail(k, fmt::format("given for a {} joint; only a hinge takes an axis", type));
-    }
+    const multibody::JointTypeInfo* info = multibody::find_joint_type(type);
+    if (info == nullptr)
+      f.fail("type", fmt::format("got \"{}\", expected {}", type, multibody::joint_type_names()));
+    using multibody::JointAxes;
+    const JointAxes axes = info->axes;
+    if (axes == JointAxes::none && f.has("axis_a"))
+      f.fail("axis_a", fmt::format("given for a {} joint; only {} take an axis", type, axis_joint_names()));
+    if ((axes == JointAxes::none || axes == JointAxes::sliding) && f.has("axis_b"))
+      f.fail("axis_b",
+             fmt::format("given for a {} joint; only {} take axis_b", type, axis_joint_names(true)));
     const int a = r.body_ref(f, "body_a", false, "");
     const int b = r.body_ref(f, "body_b", true, "world");
     const multibody::BodyState& sa = r.side(a);
@@ -158,15 +180,30 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
         f.has("point_b")
             ? r.to_model(b, *f.vec3("point_b"))
             : Vec3(sb.R_space_body.transpose() * (sa.x_space + sa.R_space_body * pa - sb.x_space));
+    // The relative rotation at t = 0, frozen by welds and prismatic joints.
+    const Mat3 R_b_a = sb.R_space_body.transpose() * sa.R_space_body;
+    if (axes != JointAxes::none)
+      f.require("axis_a", fmt::format("[x, y, z]: the {} axis in body a's frame", type));
+    if (axes == JointAxes::crossed)
+      f.require("axis_b",
+                "[x, y, z]: the cross-pin axis in body b's frame, perpendicular to axis_a at t = 0");
+    const Vec3 axis_a = f.vec3("axis_a").value_or(Vec3::Zero());
     located(f, "type", [&] {
-      if (type == "ball") return r.sc.system.add_ball(name, a, pa, b, pb);
-      if (type == "weld")
-        return r.sc.system.add_weld(name, a, pa, b, pb, sb.R_space_body.transpose() * sa.R_space_body);
-      f.require("axis_a", "[x, y, z]: the hinge axis in body a's frame");
-      const Vec3 axis_a = *f.vec3("axis_a");
-      const Vec3 axis_b =
-          f.vec3("axis_b").value_or(Vec3(sb.R_space_body.transpose() * (sa.R_space_body * axis_a)));
-      return r.sc.system.add_hinge(name, a, pa, axis_a, b, pb, axis_b);
+      switch (info->type) {
+        case multibody::JointType::ball:
+          return r.sc.system.add_ball(name, a, pa, b, pb);
+        case multibody::JointType::weld:
+          return r.sc.system.add_weld(name, a, pa, b, pb, R_b_a);
+        case multibody::JointType::hinge:
+          return r.sc.system.add_hinge(
+              name, a, pa, axis_a, b, pb,
+              f.vec3("axis_b").value_or(Vec3(sb.R_space_body.transpose() * (sa.R_space_body * axis_a))));
+        case multibody::JointType::universal:
+          return r.sc.system.add_universal(name, a, pa, axis_a, b, pb, *f.vec3("axis_b"));
+        case multibody::JointType::prismatic:
+          return r.sc.system.add_prismatic(name, a, pa, axis_a, b, pb, R_b_a);
+      }
+      return -1;
     });
   }
 }

@@ -17,6 +17,7 @@
 #include "poinsot/so3/euler_angles.hpp"
 #include "poinsot/so3/projection.hpp"
 #include "poinsot/so3/quaternion.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 #include "scenario_body.hpp"
 #include "scenario_orientation.hpp"
 #include "scenario_table.hpp"

@@ -11,6 +11,7 @@
 #include "poinsot/so3/euler_angles.hpp"
 #include "poinsot/so3/projection.hpp"
 #include "poinsot/so3/quaternion.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::io::detail {
 
@@ -29,11 +30,12 @@ Mat3 read_orientation(const Source& src, const Section& parent) {
   }
   if (how == "matrix") {
     const Mat3 m = *o.mat3(how);
-    if (so3::orthogonality_error(m) > 1e-6 || m.determinant() < 0.0) {
-      o.fail(how, fmt::format("got {} with ‖RᵀR − I‖ = {} and det = {}; expected a rotation matrix "
-                              "(orthogonal to 1e-6, det = +1)",
-                              format_matrix(m), format_number(so3::orthogonality_error(m), 3),
-                              format_number(m.determinant(), 6)));
+    if (!so3::is_rotation(m, so3::kRotationInputTolerance)) {
+      o.fail(how,
+             fmt::format("got {} with ‖RᵀR − I‖ = {} and det = {}; expected a rotation matrix "
+                         "(orthogonal to {}, det = +1)",
+                         format_matrix(m), format_number(so3::orthogonality_error(m), 3),
+                         format_number(m.determinant(), 6), format_number(so3::kRotationInputTolerance)));
     }
     return so3::project_to_so3(m);
   }

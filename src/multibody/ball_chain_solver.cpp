@@ -7,7 +7,7 @@
 
 #include "poinsot/core/assert.hpp"
 #include "poinsot/core/error.hpp"
-#include "poinsot/so3/hat.hpp"
+#include "poinsot/multibody/constraints.hpp"
 
 namespace poinsot::multibody::detail {
 namespace {
@@ -154,12 +154,13 @@ void BallChainSolver::factor(const std::vector<JointJacobian>& G_a, const std::v
 
 void BallChainSolver::factor_at(const std::vector<BodyState>& q) {
   POINSOT_ASSERT(q.size() == system_->bodies().size(), "one state per body of the system");
-  // Gω of the ball rows x_a + R_a A − x_b − R_b B: −R_a j(A) on side a, R_b j(B) on side b (constraints.hpp).
+  // The ω-blocks of the point rows, computed in place (no JointJacobian storage).
   const auto& joints = system_->joints();
   factor_with([&](std::size_t j, int s) -> Mat3 {
     const Joint& joint = joints[j];
-    if (s == 0) return so3::times_hat(q[static_cast<std::size_t>(joint.body_a)].R_space_body, -joint.point_a);
-    return so3::times_hat(q[static_cast<std::size_t>(joint.body_b)].R_space_body, joint.point_b);
+    if (s == 0)
+      return point_rows_omega_jacobian_a(joint, q[static_cast<std::size_t>(joint.body_a)].R_space_body);
+    return point_rows_omega_jacobian_b(joint, q[static_cast<std::size_t>(joint.body_b)].R_space_body);
   });
 }
 

@@ -148,9 +148,8 @@ void KktSolver::factor_at(const std::vector<BodyState>& bodies) {
   const auto& joints = system_->joints();
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const Joint& joint = joints[j];
-    const BodyState& b =
-        joint.body_b == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(joint.body_b)];
-    joint_jacobians(joint, bodies[static_cast<std::size_t>(joint.body_a)], b, G_a_[j], G_b_[j]);
+    joint_jacobians(joint, side_state(bodies, joint.body_a), side_state(bodies, joint.body_b), G_a_[j],
+                    G_b_[j]);
   }
   factor(G_a_, G_b_);
 }

@@ -9,10 +9,6 @@
 namespace poinsot::multibody {
 namespace {
 
-const BodyState& side(const std::vector<BodyState>& bodies, int index) {
-  return index == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(index)];
-}
-
 void add_point_force(BodyLoads& loads, const BodyState& s, const Vec3& f_space, const Vec3& X_body) {
   const Vec3 f_body = s.R_space_body.transpose() * f_space;
   loads.force_space += f_space;
@@ -40,8 +36,8 @@ void applied_loads(const System& system, const std::vector<BodyState>& bodies, s
     out[i].phi_body += 0.5 * so3::hat(tau_body);
   }
   for (const Spring& s : system.springs()) {
-    const BodyState& a = side(bodies, s.body_a);
-    const BodyState& b = side(bodies, s.body_b);
+    const BodyState& a = side_state(bodies, s.body_a);
+    const BodyState& b = side_state(bodies, s.body_b);
     const Vec3 ra = a.R_space_body * s.point_a;
     const Vec3 rb = b.R_space_body * s.point_b;
     const Vec3 d = a.x_space + ra - b.x_space - rb;
@@ -70,8 +66,8 @@ double potential_energy(const System& system, const std::vector<BodyState>& bodi
     V -= f.force_space.dot(s.x_space + s.R_space_body * f.point_body);
   }
   for (const Spring& s : system.springs()) {
-    const BodyState& a = side(bodies, s.body_a);
-    const BodyState& b = side(bodies, s.body_b);
+    const BodyState& a = side_state(bodies, s.body_a);
+    const BodyState& b = side_state(bodies, s.body_b);
     const double length =
         (a.x_space + a.R_space_body * s.point_a - b.x_space - b.R_space_body * s.point_b).norm();
     V += 0.5 * s.stiffness * (length - s.rest_length) * (length - s.rest_length);

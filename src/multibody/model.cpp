@@ -11,6 +11,7 @@
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::multibody {
 namespace {
@@ -29,6 +30,22 @@ Vec3 unit_axis(const std::string& what, const Vec3& axis) {
         fmt::format("{}: axis {} is zero; expected a non-zero vector", what, format_vector(axis)));
   }
   return axis / norm;
+}
+
+// The three rows that freeze the relative rotation at R_b_a = R_bᵀR_a (weld, prismatic): R_a e_k = R_b (R_b_a
+// e_k), so the pairs (e1, C e2), (e2, C e3), (e3, C e1) are perpendicular at the frozen rotation, and their
+// three rows are independent there (their normals are ∓ the three axes).
+void freeze_relative_rotation(const std::string& what, Joint& j, const Mat3& R_b_a) {
+  require_finite(what + ": relative rotation", R_b_a);
+  if (!so3::is_rotation(R_b_a)) {
+    throw InvalidInput(fmt::format("{}: relative rotation {} is not a rotation; expected RᵀR = I, det R = +1",
+                                   what, format_matrix(R_b_a)));
+  }
+  j.perpendicular_count = 3;
+  for (int k = 0; k < 3; ++k) {
+    j.p_a[static_cast<std::size_t>(k)] = Mat3::Identity().col(k);
+    j.u_b[static_cast<std::size_t>(k)] = R_b_a.col((k + 1) % 3);
+  }
 }
 
 }  // namespace
@@ -133,13 +150,6 @@ int System::add_hinge(const std::string& name, int body_a, const Vec3& point_a, 
 
 int System::add_weld(const std::string& name, int body_a, const Vec3& point_a, int body_b,
                      const Vec3& point_b, const Mat3& R_b_a) {
-  const std::string what = fmt::format("multibody joint '{}'", name);
-  require_finite(what + ": relative rotation", R_b_a);
-  if ((R_b_a.transpose() * R_b_a - Mat3::Identity()).cwiseAbs().maxCoeff() > 1e-9 ||
-      R_b_a.determinant() < 0) {
-    throw InvalidInput(fmt::format("{}: relative rotation {} is not a rotation; expected RᵀR = I, det R = +1",
-                                   what, format_matrix(R_b_a)));
-  }
   Joint j;
   j.name = name;
   j.type = JointType::weld;
@@ -147,13 +157,43 @@ int System::add_weld(const std::string& name, int body_a, const Vec3& point_a, i
   j.body_b = body_b;
   j.point_a = point_a;
   j.point_b = point_b;
-  j.perpendicular_count = 3;
-  // R_a e_k = R_b (R_b_a e_k): the pairs (e1, C e2), (e2, C e3), (e3, C e1) are perpendicular when welded,
-  // and their three rows are independent there (their normals are ∓ the three axes).
-  for (int k = 0; k < 3; ++k) {
-    j.p_a[static_cast<std::size_t>(k)] = Mat3::Identity().col(k);
-    j.u_b[static_cast<std::size_t>(k)] = R_b_a.col((k + 1) % 3);
-  }
+  freeze_relative_rotation(fmt::format("multibody joint '{}'", name), j, R_b_a);
+  return add_joint(j);
+}
+
+int System::add_universal(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a,
+                          int body_b, const Vec3& point_b, const Vec3& axis_b) {
+  const std::string what = fmt::format("multibody joint '{}'", name);
+  Joint j;
+  j.name = name;
+  j.type = JointType::universal;
+  j.body_a = body_a;
+  j.body_b = body_b;
+  j.point_a = point_a;
+  j.point_b = point_b;
+  j.perpendicular_count = 1;
+  j.p_a[0] = unit_axis(what + ": axis a", axis_a);
+  j.u_b[0] = unit_axis(what + ": axis b", axis_b);
+  return add_joint(j);
+}
+
+int System::add_prismatic(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a,
+                          int body_b, const Vec3& point_b, const Mat3& R_b_a) {
+  const std::string what = fmt::format("multibody joint '{}'", name);
+  const Vec3 axis = unit_axis(what + ": axis a", axis_a);
+  Joint j;
+  j.name = name;
+  j.type = JointType::prismatic;
+  j.body_a = body_a;
+  j.body_b = body_b;
+  j.point_a = point_a;
+  j.point_b = point_b;
+  freeze_relative_rotation(what, j, R_b_a);
+  // The sliding direction in b's frame, and two unit normals: the line rows (constraints.hpp).
+  const Vec3 axis_b = R_b_a * axis;
+  j.sliding = true;
+  j.n_b[0] = any_perpendicular(axis_b);
+  j.n_b[1] = axis_b.cross(j.n_b[0]).normalized();
   return add_joint(j);
 }
 

@@ -23,10 +23,8 @@ void acceleration_rhs(const System& system, const std::vector<BodyState>& bodies
   joint.resize(system.constraint_rows());
   for (std::size_t j = 0; j < system.joints().size(); ++j) {
     const Joint& jt = system.joints()[j];
-    const BodyState& b =
-        jt.body_b == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(jt.body_b)];
     joint.segment(solver.joint_offset(static_cast<int>(j)), jt.rows()) =
-        -joint_bias(jt, bodies[static_cast<std::size_t>(jt.body_a)], b);  // G a = −γ
+        -joint_bias(jt, side_state(bodies, jt.body_a), side_state(bodies, jt.body_b));  // G a = −γ
   }
 }
 
@@ -37,9 +35,6 @@ ExactMultipliers multipliers_from_accelerations(const System& system, const std:
                                                 const KktSolver& solver) {
   const auto nb = static_cast<std::size_t>(system.body_count());
   const auto nj = static_cast<std::size_t>(system.joint_count());
-  const auto side = [&](int index) -> const BodyState& {
-    return index == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(index)];
-  };
   ExactMultipliers out;
   out.acceleration_space.resize(nb);
   out.omega_dot_body.resize(nb);
@@ -55,7 +50,8 @@ ExactMultipliers multipliers_from_accelerations(const System& system, const std:
   for (std::size_t j = 0; j < nj; ++j) {
     const Joint& joint = system.joints()[j];
     const JointVector lambda = -minus_lambda.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
-    const JointLoads jl = joint_loads(joint, side(joint.body_a), side(joint.body_b), lambda);
+    const JointLoads jl =
+        joint_loads(joint, side_state(bodies, joint.body_a), side_state(bodies, joint.body_b), lambda);
     out.joint_force_space[j] = jl.force_a_space;
     out.joint_torque_space[j] = jl.torque_a_space;
     phi[static_cast<std::size_t>(joint.body_a)] += jl.phi_a_body;

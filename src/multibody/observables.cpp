@@ -9,13 +9,9 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/multibody/loads.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::multibody {
-namespace {
-const BodyState& side(const State& s, int index) {
-  return index == kWorld ? world_body_state() : s.bodies[static_cast<std::size_t>(index)];
-}
-}  // namespace
 
 double kinetic_energy(const System& system, const State& state) {
   double T = 0.0;
@@ -50,25 +46,17 @@ Vec3 angular_momentum(const System& system, const State& state) {
 
 ConstraintViolation constraint_violation(const System& system, const State& state) {
   ConstraintViolation v;
-  for (const BodyState& s : state.bodies) {
-    v.orthogonality =
-        std::max(v.orthogonality,
-                 (s.R_space_body.transpose() * s.R_space_body - Mat3::Identity()).cwiseAbs().maxCoeff());
-  }
+  for (const BodyState& s : state.bodies)
+    v.orthogonality = std::max(v.orthogonality, so3::orthogonality_error(s.R_space_body));
   for (const Joint& joint : system.joints()) {
-    const BodyState& a = side(state, joint.body_a);
-    const BodyState& b = side(state, joint.body_b);
+    const BodyState& a = side_state(state.bodies, joint.body_a);
+    const BodyState& b = side_state(state.bodies, joint.body_b);
+    const int t = joint.translation_rows();
     const JointVector g = joint_value(joint, a, b);
-    v.joint_gap = std::max(v.joint_gap, g.head<3>().norm());
+    v.joint_gap = std::max(v.joint_gap, g.head(t).norm());
     for (int k = 0; k < joint.perpendicular_count; ++k)
-      v.joint_angle = std::max(v.joint_angle, std::abs(g(3 + k)));
-    JointJacobian Ga, Gb;
-    joint_jacobians(joint, a, b, Ga, Gb);
-    Vec6 va, vb;
-    va << a.v_space, a.omega_body;
-    vb << b.v_space, b.omega_body;
-    const JointVector gdot = Ga * va + Gb * vb;
-    v.joint_velocity = std::max(v.joint_velocity, gdot.head<3>().norm());
+      v.joint_angle = std::max(v.joint_angle, std::abs(g(t + k)));
+    v.joint_velocity = std::max(v.joint_velocity, joint_velocity(joint, a, b).head(t).norm());
   }
   return v;
 }
@@ -88,9 +76,12 @@ void check_consistent(const System& system, const State& state) {
   }
   const ConstraintViolation v = constraint_violation(system, state);
   const double L = system.length_scale();
-  if (v.orthogonality > 1e-9) {
-    throw InvalidInput(fmt::format(
-        "multibody: a rotation has |RᵀR − I| = {:.3g}; expected a rotation (< 1e-9)", v.orthogonality));
+  for (const BodyState& s : state.bodies) {
+    if (!so3::is_rotation(s.R_space_body)) {
+      throw InvalidInput(
+          fmt::format("multibody: a rotation has |RᵀR − I| = {:.3g}; expected a rotation (< {:.0e})",
+                      so3::orthogonality_error(s.R_space_body), so3::kRotationTolerance));
+    }
   }
   if (v.joint_gap > 1e-9 * L || v.joint_angle > 1e-9) {
     throw InvalidInput(

@@ -64,10 +64,6 @@ struct ProjectedRk4::Impl {
     length = system.length_scale();
   }
 
-  const BodyState& side(const std::vector<BodyState>& bodies, int index) const {
-    return index == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(index)];
-  }
-
   // The right-hand side [(f, τ − ω × Jω); −γ] of the acceleration-level KKT system at q (loads kept).
   void acceleration_rhs(const std::vector<BodyState>& q) {
     detail::acceleration_rhs(system, q, solver, loads, rhs_body, rhs_joint);
@@ -117,13 +113,9 @@ struct ProjectedRk4::Impl {
     double err = 0.0;
     for (std::size_t j = 0; j < system.joints().size(); ++j) {
       const Joint& joint = system.joints()[j];
-      const JointVector g =
-          joint_value(joint, q[static_cast<std::size_t>(joint.body_a)], side(q, joint.body_b));
-      const int offset = solver.joint_offset(static_cast<int>(j));
-      rhs_joint.segment(offset, joint.rows()) = -g;
-      err = std::max(err, g.head<3>().cwiseAbs().maxCoeff() / length);
-      if (joint.perpendicular_count > 0)
-        err = std::max(err, g.tail(joint.perpendicular_count).cwiseAbs().maxCoeff());
+      err = std::max(err, scaled_joint_value(joint, q[static_cast<std::size_t>(joint.body_a)],
+                                             side_state(q, joint.body_b), -1.0, length,
+                                             rhs_joint.data() + solver.joint_offset(static_cast<int>(j))));
     }
     return err;
   }

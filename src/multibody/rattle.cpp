@@ -43,8 +43,6 @@ struct Rattle::Impl {
     const auto nj = static_cast<std::size_t>(system.joint_count());
     G_a.resize(nj);
     G_b.resize(nj);
-    G_omega_a.resize(nj);
-    G_omega_b.resize(nj);
     loads.resize(nb);
     loads_start.resize(nb);
     u.resize(nb);
@@ -88,20 +86,12 @@ struct Rattle::Impl {
     }
   }
 
-  const BodyState& side(const std::vector<BodyState>& bodies, int index) const {
-    return index == kWorld ? world_body_state() : bodies[static_cast<std::size_t>(index)];
-  }
-
   // Jacobians at the positions of `bodies`, and the factorisation of the KKT matrix there.
   void factor_at(const std::vector<BodyState>& bodies) {
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
-      joint_jacobians(joint, bodies[static_cast<std::size_t>(joint.body_a)], side(bodies, joint.body_b),
+      joint_jacobians(joint, bodies[static_cast<std::size_t>(joint.body_a)], side_state(bodies, joint.body_b),
                       G_a[j], G_b[j]);
-    }
-    for (std::size_t j = 0; j < G_a.size(); ++j) {
-      G_omega_a[j] = G_a[j].block<3, 3>(0, 3);
-      G_omega_b[j] = G_b[j].block<3, 3>(0, 3);
     }
     solver.factor(G_a, G_b);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -121,30 +111,17 @@ struct Rattle::Impl {
     return true;
   }
 
-  // gen[i] = Σ_j G_{j,i}ᵀ y_j (6-vector per body) for stacked multipliers y. The three ball rows of every
-  // joint have G = ±[I, Gω] (Gω cached as a fixed 3 × 3 block by factor_at); the perpendicularity rows of
-  // hinges and welds act on ω only.
+  // gen[i] = Σ_j G_{j,i}ᵀ y_j (6-vector per body) for stacked multipliers y, with the Jacobians factor_at
+  // computed.
   void accumulate_generalized(const Eigen::VectorXd& y) {
     for (Vec6& g : gen)
       g.setZero();
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
-      const int offset = solver.joint_offset(static_cast<int>(j));
-      const Vec3 f = y.segment<3>(offset);
-      Vec6& ga = gen[static_cast<std::size_t>(joint.body_a)];
-      ga.head<3>() += f;
-      ga.tail<3>().noalias() += G_omega_a[j].transpose() * f;
-      const int extra = joint.perpendicular_count;
-      if (extra > 0)
-        ga.tail<3>().noalias() +=
-            G_a[j].bottomRightCorner(extra, 3).transpose() * y.segment(offset + 3, extra);
-      if (joint.body_b == kWorld) continue;
-      Vec6& gb = gen[static_cast<std::size_t>(joint.body_b)];
-      gb.head<3>() -= f;
-      gb.tail<3>().noalias() += G_omega_b[j].transpose() * f;
-      if (extra > 0)
-        gb.tail<3>().noalias() +=
-            G_b[j].bottomRightCorner(extra, 3).transpose() * y.segment(offset + 3, extra);
+      Vec6* gb = joint.body_b == kWorld ? nullptr : &gen[static_cast<std::size_t>(joint.body_b)];
+      add_joint_generalized_forces(joint, G_a[j], G_b[j],
+                                   y.segment(solver.joint_offset(static_cast<int>(j)), joint.rows()),
+                                   gen[static_cast<std::size_t>(joint.body_a)], gb);
     }
   }
 
@@ -156,8 +133,8 @@ struct Rattle::Impl {
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
       const JointVector l = lam.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
-      const JointLoads jl =
-          joint_loads(joint, bodies[static_cast<std::size_t>(joint.body_a)], side(bodies, joint.body_b), l);
+      const JointLoads jl = joint_loads(joint, bodies[static_cast<std::size_t>(joint.body_a)],
+                                        side_state(bodies, joint.body_b), l);
       out.joint_force_space[j] = jl.force_a_space;
       out.joint_torque_space[j] = jl.torque_a_space;
       phi[static_cast<std::size_t>(joint.body_a)] += jl.phi_a_body;
@@ -269,26 +246,16 @@ struct Rattle::Impl {
       err_body = std::max(err_body, std::max(max_abs(rhs_body[i].head<3>()) / scale_u,
                                              max_abs(rhs_body[i].tail<3>()) / scale_w[i]));
     }
-    double max_gap = 0.0, err_angle = 0.0;
+    double err_joint = 0.0;
     const double minus_inv_h = -1.0 / hs;
     for (std::size_t j = 0; j < G_a.size(); ++j) {
       const Joint& joint = system.joints()[j];
-      const BodyState& a = next[static_cast<std::size_t>(joint.body_a)];
-      const BodyState& b = side(next, joint.body_b);
-      const int offset = solver.joint_offset(static_cast<int>(j));
-      Vec3 gap = a.x_space - b.x_space;
-      gap.noalias() += a.R_space_body * joint.point_a;
-      gap.noalias() -= b.R_space_body * joint.point_b;
-      max_gap = std::max(max_gap, max_abs(gap));
-      rhs_joint.segment<3>(offset) = minus_inv_h * gap;
-      for (int k = 0; k < joint.perpendicular_count; ++k) {
-        const auto ku = static_cast<std::size_t>(k);
-        const double gk = (a.R_space_body * joint.p_a[ku]).dot(b.R_space_body * joint.u_b[ku]);
-        err_angle = std::max(err_angle, std::abs(gk));
-        rhs_joint(offset + 3 + k) = minus_inv_h * gk;
-      }
+      const double err = scaled_joint_value(joint, next[static_cast<std::size_t>(joint.body_a)],
+                                            side_state(next, joint.body_b), minus_inv_h, length,
+                                            rhs_joint.data() + solver.joint_offset(static_cast<int>(j)));
+      err_joint = std::max(err_joint, err);
     }
-    return {err_body, std::max(max_gap / length, err_angle)};
+    return {err_body, err_joint};
   }
 
   Eigen::VectorXd& nu() { return substeps[current].nu; }
@@ -423,7 +390,6 @@ struct Rattle::Impl {
   std::size_t current = 0;
   double length = 1.0;
   std::vector<JointJacobian> G_a, G_b;
-  std::vector<Mat3> G_omega_a, G_omega_b;  // ω-blocks of the ball rows of G_a, G_b
   std::vector<BodyLoads> loads, loads_start;
   std::vector<Vec3> u, w, Jw, Jomega;
   std::vector<Vec3> gyro_solved;  // σ w × Jw in the residual last solved for

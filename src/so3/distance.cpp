@@ -8,8 +8,8 @@
 namespace poinsot::so3 {
 
 double angle_between(const Mat3& R1, const Mat3& R2) {
-  detail::require_rotation("angle_between: first rotation", R1, 1e-6);
-  detail::require_rotation("angle_between: second rotation", R2, 1e-6);
+  require_rotation("angle_between: first rotation", R1, kRotationInputTolerance);
+  require_rotation("angle_between: second rotation", R2, kRotationInputTolerance);
   const Quat q = detail::quaternion_of_rotation_unchecked(R1.transpose() * R2);
   return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w()));
 }

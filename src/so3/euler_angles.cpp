@@ -58,7 +58,7 @@ Mat3 rotation_from_euler(const EulerSequence& sequence, const Vec3& angles) {
 }
 
 Vec3 euler_from_rotation(const EulerSequence& sequence, const Mat3& R) {
-  detail::require_rotation(fmt::format("euler {}", sequence.name()), R, 1e-6);
+  require_rotation(fmt::format("euler {}", sequence.name()), R, kRotationInputTolerance);
   const Quat q = detail::quaternion_of_rotation_unchecked(R);
   // Bernardes & Viollet (2022) work with extrinsic sequences; the intrinsic sequence (a, b, c) is the
   // extrinsic (c, b, a) with the angles in reverse order.

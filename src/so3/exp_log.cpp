@@ -13,7 +13,7 @@ Mat3 exp_checked(const Vec3& v) {
 }
 
 Vec3 log(const Mat3& R) {
-  detail::require_rotation("so3::log", R, 1e-6);
+  require_rotation("so3::log", R, kRotationInputTolerance);
   const Quat q = detail::quaternion_of_rotation_unchecked(R);  // w >= 0
   const Vec3 qv = q.vec();
   const double s = qv.norm();  // sin(θ/2)

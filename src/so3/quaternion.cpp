@@ -29,7 +29,7 @@ Mat3 rotation_from_quaternion(const Quat& q) {
 }
 
 Quat quaternion_from_rotation(const Mat3& R, double tolerance) {
-  detail::require_rotation("quaternion_from_rotation", R, tolerance);
+  require_rotation("quaternion_from_rotation", R, tolerance);
   return detail::quaternion_of_rotation_unchecked(R);
 }
 

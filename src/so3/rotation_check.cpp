@@ -1,14 +1,22 @@
-#include "rotation_check.hpp"
+// "Is R a rotation?" (rotation_check.hpp) and the canonical quaternion of a checked rotation.
+#include "poinsot/so3/rotation_check.hpp"
+
+#include <cmath>
 
 #include <fmt/format.h>
 
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
-#include "poinsot/so3/projection.hpp"
 #include "poinsot/so3/quaternion.hpp"
+#include "rotation_check.hpp"
 
-namespace poinsot::so3::detail {
+namespace poinsot::so3 {
+
+bool is_rotation(const Mat3& R, double tolerance) {
+  if (!R.allFinite()) return false;
+  return orthogonality_error(R) <= tolerance && R.determinant() > 0.0;
+}
 
 void require_rotation(std::string_view what, const Mat3& R, double tolerance) {
   require_finite(what, R);
@@ -27,6 +35,10 @@ void require_rotation(std::string_view what, const Mat3& R, double tolerance) {
                     format_matrix(R), det));
   }
 }
+
+}  // namespace poinsot::so3
+
+namespace poinsot::so3::detail {
 
 Quat quaternion_of_rotation_unchecked(const Mat3& R) {
   Quat q(R);  // Eigen's conversion is Shepperd's method: branch on the largest of w², x², y², z².

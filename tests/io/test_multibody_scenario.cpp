@@ -109,6 +109,50 @@ axis_a = [0, 0, 1]
   expect_has(sc.body_descriptions[1], {"box", "mass 1 kg"});
 }
 
+TEST(MultibodyScenario, ParsesUniversalAndPrismaticJoints) {
+  const std::string bodies = R"(
+[[bodies]]
+name = "a"
+mass = 1
+inertia = [0.1, 0.2, 0.25]
+rotation = { axis = [0, 0, 1], angle = 0.4 }
+velocity = [1, -2, 0.5]
+omega_body = [0.3, 0.1, -0.2]
+[[bodies]]
+name = "b"
+mass = 2
+inertia = [0.2, 0.2, 0.3]
+position = [0, 1, 0]
+)";
+  const multibody::Scenario sc = parse_multibody_scenario(bodies + R"(
+[[joints]]
+type = "universal"
+body_a = "a"
+point_a = [0, 0, 0.5]
+axis_a = [1, 0, 0]
+axis_b = [0, 0, 1]
+[[joints]]
+type = "prismatic"
+body_a = "b"
+axis_a = [0, 0, 1]
+)",
+                                                          "t.toml");
+  ASSERT_EQ(sc.system.joint_count(), 2);
+  EXPECT_EQ(sc.system.joints()[0].type, multibody::JointType::universal);
+  EXPECT_EQ(sc.system.joints()[0].rows(), 4);
+  EXPECT_EQ(sc.system.joints()[1].type, multibody::JointType::prismatic);
+  EXPECT_EQ(sc.system.joints()[1].rows(), 5);
+  // Assembled at t = 0 (a's x axis turned about z stays perpendicular to space z; the prismatic joint by its
+  // default point b and frozen rotation), and the velocities are projected onto both joints.
+  multibody::check_consistent(sc.system, sc.initial);
+  EXPECT_LT(multibody::constraint_violation(sc.system, sc.initial).joint_velocity, 1e-14);
+  const std::string a = bodies + "[[joints]]\nbody_a = \"a\"\n";
+  expect_has(error_of(a + "type = \"universal\"\naxis_a = [1, 0, 0]\n"), {"[joints[0]] axis_b: missing"});
+  expect_has(error_of(a + "type = \"prismatic\"\n"), {"[joints[0]] axis_a: missing"});
+  expect_has(error_of(a + "type = \"prismatic\"\naxis_a = [1, 0, 0]\naxis_b = [1, 0, 0]\n"),
+             {"[joints[0]] axis_b: given for a prismatic joint; only hinge or universal joints take axis_b"});
+}
+
 TEST(MultibodyScenario, ErrorsNameTheFileTheEntryTheFieldTheValueAndTheExpectation) {
   const std::string a = "[[bodies]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 1]\n";
   expect_has(error_of("[[bodies]]\nname = \"a\"\nmass = -1\ninertia = [1, 1, 1]\n"),
@@ -118,13 +162,15 @@ TEST(MultibodyScenario, ErrorsNameTheFileTheEntryTheFieldTheValueAndTheExpectati
               "principal_moments, inertia, poinsot, shape, mesh, composite"});
   expect_has(error_of("[[bodies]]\ninertia = [1, 1, 1]\n"), {"[bodies[0]] mass: missing"});
   expect_has(error_of(a + "[[joints]]\ntype = \"slider\"\nbody_a = \"a\"\n"),
-             {"t.toml:6:8: [joints[0]] type: got \"slider\", expected \"ball\", \"hinge\" or \"weld\""});
+             {"t.toml:6:8: [joints[0]] type: got \"slider\", expected \"ball\", \"hinge\", \"weld\", "
+              "\"universal\" or \"prismatic\""});
   expect_has(error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"nobody\"\n"),
              {"t.toml:7:10: [joints[0]] body_a: got \"nobody\", expected the name of a body"});
   expect_has(error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"world\"\n"),
              {"[joints[0]] body_a: got \"world\", expected a body"});
-  expect_has(error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"a\"\naxis_a = [0, 0, 1]\n"),
-             {"[joints[0]] axis_a: given for a ball joint; only a hinge takes an axis"});
+  expect_has(
+      error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"a\"\naxis_a = [0, 0, 1]\n"),
+      {"[joints[0]] axis_a: given for a ball joint; only hinge, universal or prismatic joints take an axis"});
   expect_has(error_of(a + "[[joints]]\ntype = \"hinge\"\nbody_a = \"a\"\n"), {"[joints[0]] axis_a: missing"});
   expect_has(error_of(a + "[[joints]]\ntype = \"hinge\"\nbody_a = \"a\"\naxis_a = [0, 0, 0]\n"),
              {"t.toml:6:8: [joints[0]] type:", "axis", "zero"});

@@ -28,6 +28,11 @@ std::vector<Joint> sample_joints() {
   s.add_hinge("hinge", 0, Vec3(0.1, 0.2, 0.3), Vec3(1, 2, 3), 1, Vec3(0.2, 0, -0.1), Vec3(-1, 0, 2));
   s.add_weld("weld", 0, Vec3(0, 0, 0.5), 1, Vec3(0.5, 0, 0), random_rotation());
   s.add_hinge("world hinge", 0, Vec3(0.1, 0.2, 0.3), Vec3(0, 0, 1), kWorld, Vec3(1, 1, 1), Vec3(0, 1, 0));
+  s.add_universal("universal", 0, Vec3(0.2, -0.1, 0.3), Vec3(1, -1, 2), 1, Vec3(0.1, 0.3, 0), Vec3(2, 1, 0));
+  s.add_prismatic("prismatic", 0, Vec3(0.3, 0.1, -0.2), Vec3(1, 2, -1), 1, Vec3(-0.2, 0.1, 0.4),
+                  random_rotation());
+  s.add_prismatic("world prismatic", 0, Vec3(0.3, 0.1, -0.2), Vec3(0, 1, 1), kWorld, Vec3(1, 0, 2),
+                  random_rotation());
   return s.joints();
 }
 
@@ -92,10 +97,21 @@ TEST(Constraints, LoadsAreTheVirtualWorkOfTheMultiplier) {
     const JointLoads l = joint_loads(joint, a, b, lambda);
     const Vec3 Oa = a.R_space_body * a.omega_body, Ob = b.R_space_body * b.omega_body;
     const Vec3 pa_dot = a.v_space + Oa.cross(a.R_space_body * joint.point_a);
-    const Vec3 pb_dot = b.v_space + Ob.cross(b.R_space_body * joint.point_b);
+    // Body b receives the force at the point of space where it acts on a: its own point B for point rows,
+    // the current position of point A for the line rows of a sliding joint.
+    const Vec3 arm_b = joint.sliding ? Vec3(a.x_space + a.R_space_body * joint.point_a - b.x_space)
+                                     : Vec3(b.R_space_body * joint.point_b);
+    const Vec3 pb_dot = b.v_space + Ob.cross(arm_b);
     const double loads_power = l.force_a_space.dot(pa_dot) - l.force_a_space.dot(pb_dot) +
                                l.torque_a_space.dot(Oa) - l.torque_a_space.dot(Ob);
     EXPECT_NEAR(power, loads_power, 1e-13);
+    // Gᵀλ (the fixed-size path for point rows) is the product with the Jacobians.
+    Vec6 gen_a = Vec6::Zero(), gen_b = Vec6::Zero();
+    add_joint_generalized_forces(joint, Ga, Gb, lambda, gen_a, &gen_b);
+    EXPECT_LT((gen_a - Ga.transpose() * lambda).norm(), 1e-14);
+    EXPECT_LT((gen_b - Gb.transpose() * lambda).norm(), 1e-14);
+    // ġ of joint_velocity is G v.
+    EXPECT_LT((joint_velocity(joint, a, b) - (Ga * va + Gb * vb)).norm(), 1e-15);
     // Body torque from Φ: 2 vee(skew Φ_a) = G_θ,aᵀ λ.
     const Vec3 tau_a = Ga.rightCols<3>().transpose() * lambda;
     EXPECT_LT((2 * so3::vee(l.phi_a_body) - tau_a).norm(), 1e-14);

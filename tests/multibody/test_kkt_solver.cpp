@@ -177,5 +177,19 @@ TEST(KktSolver, RedundantConstraintsAreReported) {
   EXPECT_THROW(solver.factor(p.Ga, p.Gb), ComputationFailed);
 }
 
+TEST(KktSolver, UniversalAndPrismaticJointsTakeTheTreeAndSparsePaths) {
+  // 4 and 5 rows: padded 6 × 6 joint pivots in the tree order, any rows for SparseLU; never the ball chain.
+  System s;
+  for (int i = 0; i < 4; ++i)
+    s.add_body_from_inertia(test::indexed("c", i), 1.0 + i, Vec3(0.15 + 0.01 * i, 0.2, 0.3).asDiagonal());
+  s.add_universal("u", 0, Vec3(0.1, 0, 0), Vec3(1, 0, 0), kWorld, Vec3(1, 2, 3), Vec3(0, 1, 0));
+  s.add_prismatic("p", 1, Vec3(-0.3, 0.1, 0), Vec3(1, 1, 0), 0, Vec3(0.2, 0, 0.05), random_rotation());
+  s.add_universal("u2", 2, Vec3(0, 0.4, 0), Vec3(0, 0, 1), 1, Vec3(0, 0, 0.2), Vec3(1, 0, 0));
+  s.add_prismatic("p2", 3, Vec3(0, 0.1, 0.2), Vec3(0, 0, 1), 2, Vec3(0.3, 0, 0), random_rotation());
+  EXPECT_THROW(KktSolver(s, KktMethod::ball_chain), InvalidInput);
+  EXPECT_LT(solve_both(s, KktMethod::tree), kTol);
+  EXPECT_LT(solve_both(s, KktMethod::sparse_lu, KktMethod::sparse_lu), kTol);
+}
+
 }  // namespace
 }  // namespace poinsot::multibody

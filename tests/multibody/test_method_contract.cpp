@@ -117,14 +117,15 @@ TEST_P(MethodContract, MeasuredOrderIsTheDeclaredOrder) {
   EXPECT_NEAR(std::log2(e1 / e2), GetParam().order, 0.3) << "differences " << e1 << ", " << e2;
 }
 
-// 400 steps of 5 ms (2 s, the double pendulum swinging through the vertical): max |RᵀR − I| at round-off and
-// the joints closed to the methods' tolerance (1e-13 relative to the 1 m length scale, with margin).
+// 400 steps of 5 ms (2 s, the double pendulum swinging through the vertical): ‖RᵀR − I‖_F at round-off (a few
+// tens of ulp: the Frobenius norm sums nine entries of a few ulp each, so up to 3 times their largest) and the
+// joints closed to the methods' tolerance (1e-13 relative to the 1 m length scale, with margin).
 TEST_P(MethodContract, KeepsRotationsAndJoints) {
   const auto [sys, s0] = double_pendulum();
   const State s = run(sys, s0, 0.005, 400 / kSlowdown);
   const ConstraintViolation v = constraint_violation(sys, s);
   if (info().preserves.orthogonality) {
-    EXPECT_LT(v.orthogonality, 1e-14);
+    EXPECT_LT(v.orthogonality, 3e-14);
   }
   if (info().preserves.joints) {
     EXPECT_LT(v.joint_gap, 1e-12);

@@ -12,10 +12,14 @@
 ///
 /// where `Λ` (symmetric, J) is the body's orthogonality multiplier and `λ` the joints' reactions.
 ///
-/// Joints (all holonomic, all written in the 12 coordinates):
+/// Joints (all holonomic, all written in the 12 coordinates; their kinematics in constraints.hpp, the list of
+/// types in joint_types.hpp):
 /// - ball: `x_a + R_a A − x_b − R_b B = 0` (3 rows; multiplier = force on body a from b, space frame, N);
 /// - hinge: ball + `(R_a p_k)·(R_b u_b) = 0` for two unit vectors p_1, p_2 ⟂ u_a (2 rows, torques N·m);
-/// - weld: ball + three such perpendicularity rows that freeze the relative rotation.
+/// - universal: ball + one such row, `(R_a p)·(R_b u) = 0` for the two cross-pin axes (p in a, u in b);
+/// - weld: ball + three such perpendicularity rows that freeze the relative rotation;
+/// - prismatic: the weld's three rotation rows, and point A on the line through B along the axis s (fixed in
+///   b): `(R_b n_k)·(x_a + R_a A − x_b) − n_k·B = 0` for the two unit normals n_1, n_2 ⟂ s (2 rows, N).
 /// Body b may be the world (index `kWorld`; its point B is then given in the space frame).
 ///
 /// Loads: uniform gravity, constant forces at body points, constant torques, linear spring-dampers between
@@ -41,9 +45,11 @@ struct Body {
   Mat3 inertia_inverse = Mat3::Identity();  ///< J⁻¹ (J must be positive definite; K may be singular)
 };
 
-enum class JointType { ball, hinge, weld };
+/// The joint types; joint_types.hpp gives each its name, rows and axes.
+enum class JointType { ball, hinge, weld, universal, prismatic };
 
-/// One joint. Rows: 3 ball rows (always), then `perpendicular_count` rows `(R_a p_k)·(R_b u_k) = 0`.
+/// One joint. Rows: the translation rows (3 point rows, or 2 line rows when `sliding`), then
+/// `perpendicular_count` rows `(R_a p_k)·(R_b u_k) = 0` (constraints.hpp).
 struct Joint {
   std::string name;
   JointType type = JointType::ball;
@@ -51,10 +57,13 @@ struct Joint {
   int body_b = kWorld;          ///< index of body b or kWorld
   Vec3 point_a = Vec3::Zero();  ///< joint point in body a's frame, from its centre of mass, m
   Vec3 point_b = Vec3::Zero();  ///< joint point in body b's frame (space frame for the world), m
-  int perpendicular_count = 0;  ///< 0 (ball), 2 (hinge), 3 (weld)
+  bool sliding = false;         ///< point a on a line through point b (2 rows) instead of on point b (3 rows)
+  std::array<Vec3, 2> n_b{};    ///< sliding: unit normals of the line, b's frame (space for the world)
+  int perpendicular_count = 0;  ///< 0 (ball), 1 (universal), 2 (hinge), 3 (weld, prismatic)
   std::array<Vec3, 3> p_a{};    ///< unit vectors fixed in body a
   std::array<Vec3, 3> u_b{};    ///< unit vectors fixed in body b (space frame for the world)
-  int rows() const { return 3 + perpendicular_count; }
+  int translation_rows() const { return sliding ? 2 : 3; }
+  int rows() const { return translation_rows() + perpendicular_count; }
 };
 
 /// A linear spring-damper between a point of body a and a point of body b (or of the world):
@@ -107,6 +116,16 @@ class System {
   /// Weld joint: ball joint plus fixed relative rotation `R_b_a = R_bᵀ R_a` (R_a = R_b R_b_a).
   int add_weld(const std::string& name, int body_a, const Vec3& point_a, int body_b, const Vec3& point_b,
                const Mat3& R_b_a);
+  /// Universal (Cardan, Hooke) joint: ball joint plus the cross-pin axis `axis_a` (body a frame) kept
+  /// perpendicular to `axis_b` (body b frame, or space frame): two rotational degrees of freedom. Axes need
+  /// not be unit; they must be non-zero (the assembled state must have them perpendicular).
+  int add_universal(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a, int body_b,
+                    const Vec3& point_b, const Vec3& axis_b);
+  /// Prismatic (slider) joint: the relative rotation fixed at `R_b_a = R_bᵀ R_a` as for a weld, and point_a
+  /// kept on the line through point_b along `axis_a` (body a frame, the sliding direction; fixed in b as
+  /// R_b_a axis_a): one translational degree of freedom. The axis must be non-zero.
+  int add_prismatic(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a, int body_b,
+                    const Vec3& point_b, const Mat3& R_b_a);
 
   int add_spring(const Spring& spring);
   void add_force(const ConstantForce& force);

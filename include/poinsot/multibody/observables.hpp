@@ -17,10 +17,10 @@ Vec3 linear_momentum(const System& system, const State& state);
 Vec3 angular_momentum(const System& system, const State& state);
 
 struct ConstraintViolation {
-  double orthogonality = 0.0;   ///< max over bodies of max |RᵀR − I| entries (dimensionless)
-  double joint_gap = 0.0;       ///< max distance between joined points, m
-  double joint_angle = 0.0;     ///< max |(R_a p)·(R_b u)| of hinge and weld rows (dimensionless ≈ rad)
-  double joint_velocity = 0.0;  ///< max |ġ| of the ball rows, m/s
+  double orthogonality = 0.0;  ///< max over bodies of ‖RᵀR − I‖_F (so3::orthogonality_error, dimensionless)
+  double joint_gap = 0.0;    ///< max |translation rows|: distance between joined points (or to the line), m
+  double joint_angle = 0.0;  ///< max |(R_a p)·(R_b u)| of the perpendicularity rows (dimensionless ≈ rad)
+  double joint_velocity = 0.0;  ///< max |ġ| of the translation rows, m/s
 };
 ConstraintViolation constraint_violation(const System& system, const State& state);
 

@@ -44,7 +44,7 @@ struct RunSummary {
   double max_energy_error = 0.0;                    ///< max |E(t) − E(0)| over every step, J
   double max_joint_gap = 0.0;                       ///< m
   double max_joint_angle = 0.0;                     ///< dimensionless
-  double max_orthogonality = 0.0;                   ///< max |RᵀR − I|
+  double max_orthogonality = 0.0;                   ///< max ‖RᵀR − I‖_F
   double mean_newton_iterations = 0.0;  ///< RATTLE's position stages, or RK4's joint projections, per step
   int max_newton_iterations = 0;
   bool tree_solver = true;

@@ -9,6 +9,7 @@
 /// the first non-zero of x, y, z positive), so that results are deterministic.
 
 #include "poinsot/core/types.hpp"
+#include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::so3 {
 
@@ -18,8 +19,8 @@ Mat3 rotation_from_quaternion(const Quat& q);
 
 /// The canonical unit quaternion (w ≥ 0) of the rotation R, by Shepperd's method (largest of w², x², y², z²
 /// first; no loss of accuracy at any angle). R must be a rotation to within `tolerance` in ‖RᵀR − I‖_F
-/// and have det R > 0; the result is normalised. Throws InvalidInput otherwise.
-Quat quaternion_from_rotation(const Mat3& R, double tolerance = 1e-6);
+/// (so3::is_rotation) and have det R > 0; the result is normalised. Throws InvalidInput otherwise.
+Quat quaternion_from_rotation(const Mat3& R, double tolerance = kRotationInputTolerance);
 
 /// q normalised to unit length and to the canonical sign (w ≥ 0). Throws InvalidInput for a zero or
 /// non-finite q.
