@@ -15,3 +15,9 @@ target_link_libraries(poinsot PRIVATE assimp::assimp tomlplusplus::tomlplusplus)
 find_package(Boost 1.74 REQUIRED)
 target_link_libraries(poinsot PRIVATE Boost::headers)
 # --- end dynamics
+
+# --- io: tinyxml2 reads the robot description files (URDF, MJCF, SDF) of io/robot_model.cpp. Debian 12:
+# libtinyxml2-dev (target tinyxml2::tinyxml2).
+find_package(tinyxml2 REQUIRED)
+target_link_libraries(poinsot PRIVATE tinyxml2::tinyxml2)
+# --- end io

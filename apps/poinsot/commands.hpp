@@ -11,6 +11,8 @@ void register_rotation(CLI::App& app);
 
 // inertia (issue 3)
 void register_inertia(CLI::App& app);
+/// `poinsot inertia check` (cmd_inertia_check.cpp), added to the inertia sub-command.
+void register_inertia_check(CLI::App& inertia);
 
 // run (issue 6)
 void register_run(CLI::App& app);

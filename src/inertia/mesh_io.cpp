@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <system_error>
 #include <unordered_map>
 
 #include <assimp/postprocess.h>
@@ -84,7 +85,7 @@ struct Builder {
 
 }  // namespace
 
-TriangleMesh load_mesh(const std::string& path) {
+TriangleMesh load_mesh(const std::string& path, const MeshLimits& limits) {
   if (std::filesystem::is_directory(path)) {
     throw InvalidInput(
         fmt::format("mesh: \"{}\" is a folder; expected a mesh file (STL, OBJ, PLY, OFF)", path));
@@ -98,6 +99,12 @@ TriangleMesh load_mesh(const std::string& path) {
           fmt::format("mesh: \"{}\" is empty; expected a mesh file (STL, OBJ, PLY, OFF)", path));
     }
   }
+  std::error_code ec;
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > limits.max_file_bytes) {
+    throw InvalidInput(
+        fmt::format("mesh: \"{}\" is {} bytes; the limit is {} bytes (raise it with --max-mesh-bytes)", path,
+                    bytes, limits.max_file_bytes));
+  }
   Assimp::Importer importer;
   // Triangulate polygons; keep the file's winding and vertices (welding is done below, across meshes).
   const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
@@ -107,6 +114,14 @@ TriangleMesh load_mesh(const std::string& path) {
       if (ch == '\n' || ch == '\r') ch = ' ';
     throw InvalidInput(fmt::format("mesh: cannot read \"{}\" ({}); expected a mesh file (STL, OBJ, PLY, OFF)",
                                    path, reason.empty() ? "unknown format" : reason));
+  }
+  std::size_t faces = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i)
+    faces += scene->mMeshes[i]->mNumFaces;
+  if (faces > limits.max_triangles) {
+    throw InvalidInput(fmt::format(
+        "mesh: \"{}\" has {} faces; the limit is {} triangles (raise it with --max-mesh-triangles)", path,
+        faces, limits.max_triangles));
   }
   Builder b;
   b.add_node(*scene, *scene->mRootNode, aiMatrix4x4());

@@ -6,15 +6,25 @@
 /// (across all meshes of the file), so that edges can be matched for the diagnostics of mesh.hpp. Winding is
 /// never changed. Coordinates are taken as metres.
 
+#include <cstddef>
 #include <string>
 
 #include "poinsot/inertia/mesh.hpp"
 
 namespace poinsot::inertia {
 
-/// Reads `path`. Throws InvalidInput when the file cannot be read, is empty, is not a mesh that assimp can
-/// parse, or contains no triangle (the message names the file and assimp's reason).
-TriangleMesh load_mesh(const std::string& path);
+/// Resource limits of load_mesh, checked before the work they bound: the file size before the file is
+/// parsed, the triangle count (summed over the file's meshes) before the mesh is assembled and examined.
+struct MeshLimits {
+  std::size_t max_file_bytes = std::size_t{256} << 20;  ///< 256 MiB
+  std::size_t max_triangles = 5'000'000;
+};
+
+/// Reads `path`. Throws InvalidInput when the file cannot be read, is empty, is larger than
+/// limits.max_file_bytes or has more than limits.max_triangles triangles (the message names the limit and
+/// the option that raises it: --max-mesh-bytes, --max-mesh-triangles), is not a mesh that assimp can parse,
+/// or contains no triangle (the message names the file and assimp's reason).
+TriangleMesh load_mesh(const std::string& path, const MeshLimits& limits = {});
 
 /// Writes `mesh` as a binary STL file (for tests and benchmarks; normals computed from the winding). Throws
 /// InvalidInput when the file cannot be written.
