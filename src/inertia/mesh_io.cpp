@@ -90,6 +90,10 @@ TriangleMesh load_mesh(const std::string& path, const MeshLimits& limits) {
     throw InvalidInput(
         fmt::format("mesh: \"{}\" is a folder; expected a mesh file (STL, OBJ, PLY, OFF)", path));
   }
+  if (std::error_code ec; std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    // A device or a pipe (/dev/zero, a FIFO) would be read without end.
+    throw InvalidInput(fmt::format("mesh: \"{}\" is not a regular file; expected a mesh file", path));
+  }
   {
     std::ifstream probe(path, std::ios::binary);
     if (!probe)

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/core/text_file.hpp"
 #include "poinsot/inertia/mass_properties.hpp"
 #include "poinsot/so3/euler_angles.hpp"
 #include "robot_readers.hpp"
@@ -48,7 +49,7 @@ RobotModel read_robot_model(std::string text, const std::string& source, const s
 }
 
 RobotModel load_robot_model(const std::string& path, std::size_t max_bytes) {
-  std::string text = detail::read_file_limited(path, "model", max_bytes, "--max-file-bytes");
+  std::string text = read_file_limited(path, "model", max_bytes, "--max-file-bytes");
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   return read_robot_model(std::move(text), path, parent.empty() ? "." : parent.string());
 }

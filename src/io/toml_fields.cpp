@@ -11,6 +11,7 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/core/text_file.hpp"
 
 namespace poinsot::io::detail {
 
@@ -25,14 +26,7 @@ toml::table parse_toml(std::string_view text, std::string_view source) {
 }
 
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InvalidInput(fmt::format("scenario: cannot read \"{}\": {}; expected a readable TOML file", path,
-                                   std::strerror(errno)));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return read_file_limited(path, "scenario", default_max_file_bytes());
 }
 
 std::string location(const Source& source, const toml::node* node) {

@@ -110,30 +110,6 @@ std::optional<std::vector<double>> parse_numbers(std::string_view text) {
   return values;
 }
 
-std::string read_file_limited(const std::string& path, std::string_view what, std::size_t max_bytes,
-                              std::string_view raise_with) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw InvalidInput(fmt::format("{}: \"{}\" is a folder; expected a file", what, path));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidInput(fmt::format("{}: cannot read \"{}\"; expected a readable file", what, path));
-  const auto size = std::filesystem::file_size(path, ec);
-  if (!ec && size > max_bytes) {
-    throw InvalidInput(fmt::format("{}: \"{}\" is {} bytes; the limit is {} bytes (raise it with {})", what,
-                                   path, size, max_bytes, raise_with));
-  }
-  std::string text;
-  char buffer[65536];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > max_bytes) {
-      throw InvalidInput(fmt::format("{}: \"{}\" is over {} bytes, the limit (raise it with {})", what, path,
-                                     max_bytes, raise_with));
-    }
-  }
-  return text;
-}
-
 XmlSource::XmlSource(std::string text, std::string source)
     : text_(std::move(text)), source_(std::move(source)) {
   if (doc_.Parse(text_.data(), text_.size()) != tinyxml2::XML_SUCCESS) {

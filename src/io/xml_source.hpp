@@ -69,9 +69,4 @@ class XmlSource {
 /// finite number.
 std::optional<std::vector<double>> parse_numbers(std::string_view text);
 
-/// Reads a whole file of at most `max_bytes` bytes (resource limit). Throws InvalidInput `WHAT: cannot read
-/// "PATH"` or `WHAT: "PATH" is N bytes; the limit is M (raise it with OPTION)`.
-std::string read_file_limited(const std::string& path, std::string_view what, std::size_t max_bytes,
-                              std::string_view raise_with);
-
 }  // namespace poinsot::io::detail
