@@ -132,5 +132,26 @@ TEST_F(MeshIo, BadFilesGiveOneLineErrors) {
     EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
 }
 
+TEST_F(MeshIo, ResourceLimitsAreCheckedBeforeTheWork) {
+  const std::string cube = std::string(POINSOT_TEST_DATA_DIR) + "/inertia/cube_10cm.stl";  // 12 triangles
+  const auto refusal = [](const std::string& path, const MeshLimits& limits) {
+    try {
+      load_mesh(path, limits);
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("no throw");
+  };
+  MeshLimits few;
+  few.max_triangles = 11;
+  test::expect_has(refusal(cube, few), {"has 12 faces; the limit is 11 triangles", "--max-mesh-triangles"});
+  few.max_triangles = 12;
+  EXPECT_EQ(load_mesh(cube, few).triangles.size(), 12u);
+  MeshLimits small;
+  small.max_file_bytes = 100;
+  test::expect_has(refusal(cube, small), {"is 1814 bytes; the limit is 100 bytes", "--max-mesh-bytes"});
+  test::expect_has(refusal("/dev/zero", {}), {"\"/dev/zero\" is not a regular file"});
+}
+
 }  // namespace
 }  // namespace poinsot::inertia
