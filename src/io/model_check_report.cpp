@@ -77,7 +77,7 @@ std::string model_check_json(const ModelCheck& check) {
     links.push_back(std::move(l));
   }
   j["links"] = std::move(links);
-  return j.dump();
+  return j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 std::string model_check_text(const ModelCheck& check) {

@@ -61,6 +61,11 @@ ModelRepair repair_model(const RobotModel& model, const ModelCheck& check, Repai
         out.skipped.push_back(fmt::format("link {}: no usable geometry; tensor kept", link.name));
         continue;
       }
+      if (!c.geometry->props.inertia_com.allFinite()) {
+        out.skipped.push_back(
+            fmt::format("link {}: the geometry's tensor is not finite; tensor kept", link.name));
+        continue;
+      }
       J_file = inertia::reexpress(c.geometry->props.inertia_com, link.R_link_inertial.transpose());
     }
     if (link.value_spans.empty()) {
@@ -121,7 +126,7 @@ std::string model_repair_json(const ModelRepair& repair) {
   nlohmann::ordered_json j;
   j["edits"] = std::move(edits);
   j["skipped"] = repair.skipped;
-  return j.dump();
+  return j.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
 }
 
 }  // namespace poinsot::io

@@ -88,6 +88,7 @@ std::optional<GeometryInertia> geometry_inertia(const RobotLink& link, double ma
 /// inertia_com (link frame), principal_moments, principal_axes, valid, condition, amount, message,
 /// repair {inertia, moments_before, moments_after, distance} or null, geometry {source, volume, mass,
 /// center_of_mass, inertia_com, box_min, box_max} or null, implied_density, trace_ratio, warnings, notes.
+/// Bytes of names that are not UTF-8 are replaced by U+FFFD; a non-finite number is written as null.
 std::string model_check_json(const ModelCheck& check);
 
 /// The report as text for a terminal (one block per link).
