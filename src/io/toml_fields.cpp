@@ -20,8 +20,10 @@ toml::table parse_toml(std::string_view text, std::string_view source) {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    throw InvalidInput(
-        fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column, e.description()));
+    std::string why(e.description());  // may quote text over several lines: kept on one line
+    for (char& c : why)
+      if (c == '\n' || c == '\r') c = ' ';
+    throw InvalidInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column, why));
   }
 }
 

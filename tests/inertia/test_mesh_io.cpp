@@ -151,6 +151,14 @@ TEST_F(MeshIo, ResourceLimitsAreCheckedBeforeTheWork) {
   small.max_file_bytes = 100;
   test::expect_has(refusal(cube, small), {"is 1814 bytes; the limit is 100 bytes", "--max-mesh-bytes"});
   test::expect_has(refusal("/dev/zero", {}), {"\"/dev/zero\" is not a regular file"});
+  // Fuzzing findings: assimp asserted on an OFF file whose face counts disagree, and looped without end on a
+  // PLY header cut short; both are now one-line refusals.
+  test::expect_has(refusal(write("bad.off", "OFF\n8 6 0\n0 0 0\n 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n"), {}),
+                   {"bad.off", "cannot read"});
+  test::expect_has(
+      refusal(write("cut.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float  0 2 1\n3 0 1 3\n"),
+              {}),
+      {"cut.ply", "PLY header line 4: malformed property"});
 }
 
 }  // namespace
