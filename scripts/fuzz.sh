@@ -37,9 +37,9 @@ for name in "${harnesses[@]}"; do
   findings=build/fuzz/findings/$name
   mkdir -p "$work" "$findings"
   log=build/fuzz/$name.log
-  # -timeout=1: an input that runs over a second is a hang; -rss_limit_mb: no input may need 2 GB.
+  # -timeout: a run over FUZZ_TIMEOUT seconds (default 1) is a hang; -rss_limit_mb: no input may need 2 GB.
   nice -n 10 "$exe" "$work" "fuzz/corpus/$name" -dict="fuzz/dict/$name.dict" -max_total_time="$seconds" \
-    -timeout=1 -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$findings/" \
+    -timeout="${FUZZ_TIMEOUT:-1}" -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 -artifact_prefix="$findings/" \
     >"$log" 2>&1 || true
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo 0)
   cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1 || true)

@@ -71,14 +71,18 @@ struct Builder {
       }
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
         const aiFace& face = am.mFaces[f];
-        if (face.mNumIndices != 3) {
+        if (face.mNumIndices < 3) {
           ++dropped;
           continue;
         }
-        std::array<std::int32_t, 3> t{local[face.mIndices[0]], local[face.mIndices[1]],
-                                      local[face.mIndices[2]]};
-        if (mirrored) std::swap(t[1], t[2]);
-        mesh.triangles.push_back(t);
+        // A polygon as a fan from its first corner: the signed triangles sum to the polygon exactly (convex
+        // or not), so the mass-property integrals are those of the polygon.
+        for (unsigned k = 1; k + 1 < face.mNumIndices; ++k) {
+          std::array<std::int32_t, 3> t{local[face.mIndices[0]], local[face.mIndices[k]],
+                                        local[face.mIndices[k + 1]]};
+          if (mirrored) std::swap(t[1], t[2]);
+          mesh.triangles.push_back(t);
+        }
       }
     }
     for (unsigned c = 0; c < node.mNumChildren; ++c)
@@ -158,10 +162,10 @@ TriangleMesh load_mesh(const std::string& path, const MeshLimits& limits) {
   if (std::filesystem::path(path).extension() == ".ply" || std::filesystem::path(path).extension() == ".PLY")
     check_ply_header(path);
   Assimp::Importer importer;
-  // Validate the scene first (a malformed file is then an error, not an assertion inside assimp; found by
-  // fuzzing: an OFF file whose face counts disagree), then triangulate polygons; keep the file's winding
-  // and vertices (welding is done below, across meshes).
-  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate);
+  // Only validation, no post-processing: assimp's triangulation asserted on malformed OFF and PLY faces
+  // (found by fuzzing); a malformed scene is now an error, and polygons are triangulated below. The file's
+  // winding and vertices are kept (welding is done below, across meshes).
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
   if (scene == nullptr || scene->mRootNode == nullptr) {
     std::string reason = importer.GetErrorString();
     for (char& ch : reason)

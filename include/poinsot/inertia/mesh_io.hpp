@@ -1,10 +1,11 @@
 #pragma once
 /// @file mesh_io.hpp
 /// Reading triangle meshes with assimp (Open Asset Import Library): STL (ascii and binary), OBJ, PLY, OFF and
-/// every other format assimp knows. Polygons are triangulated by assimp; points and lines are dropped (and
-/// counted); node transforms of the scene are applied; vertices at exactly the same position are merged
-/// (across all meshes of the file), so that edges can be matched for the diagnostics of mesh.hpp. Winding is
-/// never changed. Coordinates are taken as metres.
+/// every other format assimp knows. Polygons are triangulated as fans from their first corner (exact for the
+/// mass properties of a planar polygon, convex or not; assimp's own triangulation asserted on malformed
+/// faces); points and lines are dropped (and counted); node transforms of the scene are applied; vertices at
+/// exactly the same position are merged (across all meshes of the file), so that edges can be matched for the
+/// diagnostics of mesh.hpp. Winding is never changed. Coordinates are taken as metres.
 
 #include <cstddef>
 #include <string>
