@@ -32,3 +32,8 @@ file(GLOB _poinsot_ensemble_kernels ${CMAKE_CURRENT_SOURCE_DIR}/ensemble/batch_*
      ${CMAKE_CURRENT_SOURCE_DIR}/dynamics/rk4.cpp ${CMAKE_CURRENT_SOURCE_DIR}/dynamics/dlm.cpp)
 set_source_files_properties(${_poinsot_ensemble_kernels} PROPERTIES COMPILE_OPTIONS "-ffp-contract=off")
 # --- end ensemble
+# --- io: tinyxml2 reads the robot description files (URDF, MJCF, SDF) of io/robot_model.cpp. Debian 12:
+# libtinyxml2-dev (target tinyxml2::tinyxml2).
+find_package(tinyxml2 REQUIRED)
+target_link_libraries(poinsot PRIVATE tinyxml2::tinyxml2)
+# --- end io

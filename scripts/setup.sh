@@ -10,7 +10,7 @@ packages=(
   build-essential cmake ninja-build g++ clang-format git pkg-config
   # C++ libraries
   libeigen3-dev libboost-math-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-  libassimp-dev libgtest-dev libgmock-dev libbenchmark-dev
+  libassimp-dev libtinyxml2-dev libgtest-dev libgmock-dev libbenchmark-dev
   # optimal control: the NLP solver of the direct method
   coinor-libipopt-dev
   # Python module, its tests and the plots

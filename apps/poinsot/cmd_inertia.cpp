@@ -306,7 +306,7 @@ void register_inertia(CLI::App& app) {
       throw InvalidInput(
           "inertia: no sub-command; expected one of point, rod, plate, box, sphere, cylinder, cone, "
           "ellipsoid, "
-          "capsule, torus, mesh, tensor, body");
+          "capsule, torus, mesh, tensor, body, check");
     }
   });
 
@@ -392,6 +392,7 @@ void register_inertia(CLI::App& app) {
     add_output_options(cmd, o);
     cmd->callback([o] { run_body(*o); });
   }
+  register_inertia_check(*inertia);
 }
 
 }  // namespace poinsot::cli

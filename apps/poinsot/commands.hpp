@@ -15,6 +15,8 @@ void register_completion(CLI::App& app);
 
 // inertia: mass properties, principal axes, validity
 void register_inertia(CLI::App& app);
+/// `poinsot inertia check` (cmd_inertia_check.cpp), added to the inertia sub-command.
+void register_inertia_check(CLI::App& inertia);
 
 // run: a scenario file, single-body or multibody
 void register_run(CLI::App& app);

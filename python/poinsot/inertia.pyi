@@ -59,6 +59,9 @@ def capsule(mass: float, radius: float, length: float) -> MassProperties:
 def check_inertia(J: numpy.typing.ArrayLike, rel_tol: float = ..., what: str = ...) -> dict:
     """Tests J (kg·m²) for finiteness, symmetry, I1 >= 0 and the triangle inequalities, each to `rel_tol · tr(J)` (symmetry: to rel_tol times the largest entry)."""
 
+def check_model(path: str, *, density_min: float = ..., density_max: float = ..., ratio_limit: float = ..., validity_tolerance: float = ...) -> object:
+    """Checks every link of `model`."""
+
 def classify(moments_ascending: numpy.typing.ArrayLike, rel_tol: float = ...) -> str:
     """Classify ascending moments with relative tolerance `rel_tol` (see the file comment)."""
 
@@ -118,6 +121,9 @@ def reexpress(tensor_F: numpy.typing.ArrayLike, R_B_F: numpy.typing.ArrayLike) -
 
 def repair_inertia(J: numpy.typing.ArrayLike) -> dict:
     """The nearest physically valid tensor to J (see the file comment)."""
+
+def repair_model(path: str, out: str, *, from_geometry: bool = ...) -> object:
+    """Edits `model.text` as described in the file comment; `check` is check_model(model, ...) (its repairs and geometry are used)."""
 
 def require_valid_inertia(J: numpy.typing.ArrayLike, what: str = ..., rel_tol: float = ...) -> None:
     """Throws InvalidInput with check_inertia's message unless J is valid."""

@@ -17,6 +17,10 @@
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/inertia/shapes.hpp"
 #include "poinsot/inertia/validity.hpp"
+#include "poinsot/io/model_check.hpp"
+#include "poinsot/io/model_repair.hpp"
+#include "poinsot/io/robot_model.hpp"
+#include "poinsot/io/summary.hpp"
 
 namespace poinsot::python {
 
@@ -345,8 +349,9 @@ void bind_inertia(py::module_& parent) {
       },
       py::arg("toml_text"), py::arg("base_dir") = ".",
       (std::string(POINSOT_DOC(inertia_parse_body)) + "\n\nReturns the dict of load_body_file.").c_str());
-  m.def("load_mesh", &inertia::load_mesh, py::arg("path"),
-        (std::string(POINSOT_DOC(inertia_load_mesh)) + "\n\n" + POINSOT_DOC(file_inertia_mesh_io)).c_str());
+  m.def(
+      "load_mesh", [](const std::string& path) { return inertia::load_mesh(path); }, py::arg("path"),
+      (std::string(POINSOT_DOC(inertia_load_mesh)) + "\n\n" + POINSOT_DOC(file_inertia_mesh_io)).c_str());
   m.def("write_binary_stl", &inertia::write_binary_stl, py::arg("mesh"), py::arg("path"),
         POINSOT_DOC(inertia_write_binary_stl));
   m.def(
@@ -377,6 +382,52 @@ void bind_inertia(py::module_& parent) {
            "(kg) or a density (kg/m³), or with shell=True the surface with a mass or an areal_density "
            "(kg/m²).\n\n") +
        POINSOT_DOC(inertia_mesh_mass_properties) + "\n\n" + POINSOT_DOC(file_inertia_mesh))
+          .c_str());
+
+  // Robot models (URDF, MJCF, SDF): the report is io::model_check_json, parsed, so that the command line and
+  // Python share one serialisation.
+  const auto check_options = [](double density_min, double density_max, double ratio_limit,
+                                double validity_tolerance) {
+    io::ModelCheckOptions o;
+    o.density_min = density_min;
+    o.density_max = density_max;
+    o.ratio_limit = ratio_limit;
+    o.validity_tolerance = validity_tolerance;
+    return o;
+  };
+  m.def(
+      "check_model",
+      [check_options](const std::string& path, double density_min, double density_max, double ratio_limit,
+                      double validity_tolerance) {
+        const auto model = io::load_robot_model(path);
+        const auto check =
+            io::check_model(model, check_options(density_min, density_max, ratio_limit, validity_tolerance));
+        return py::module_::import("json").attr("loads")(io::model_check_json(check));
+      },
+      py::arg("path"), py::kw_only(), py::arg("density_min") = 50.0, py::arg("density_max") = 25000.0,
+      py::arg("ratio_limit") = 10.0, py::arg("validity_tolerance") = inertia::kDefaultValidityTolerance,
+      (std::string(POINSOT_DOC(io_check_model)) +
+       "\n\nReads the model file `path` (robot_model.hpp) and returns the report as a dict (the keys of "
+       "model_check_json).\n\n" +
+       POINSOT_DOC(file_io_model_check))
+          .c_str());
+  m.def(
+      "repair_model",
+      [check_options](const std::string& path, const std::string& out, bool from_geometry) {
+        const auto model = io::load_robot_model(path);
+        const auto check =
+            io::check_model(model, check_options(50.0, 25000.0, 10.0, inertia::kDefaultValidityTolerance));
+        const auto repair = io::repair_model(
+            model, check, from_geometry ? io::RepairMode::from_geometry : io::RepairMode::nearest_valid);
+        io::write_file_atomic(out, repair.text);
+        return py::module_::import("json").attr("loads")(io::model_repair_json(repair));
+      },
+      py::arg("path"), py::arg("out"), py::kw_only(), py::arg("from_geometry") = false,
+      (std::string(POINSOT_DOC(io_repair_model)) +
+       "\n\nWrites the repaired copy of the model file `path` to `out` (atomically) and returns a dict: "
+       "edits "
+       "(link, inertia_before, inertia_after, distance) and skipped.\n\n" +
+       POINSOT_DOC(file_io_model_repair))
           .c_str());
 }
 

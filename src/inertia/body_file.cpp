@@ -12,6 +12,7 @@
 
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/core/text_file.hpp"
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/inertia/mesh_io.hpp"
 #include "poinsot/inertia/shapes.hpp"
@@ -197,8 +198,12 @@ BodyFileResult parse_body(const std::string& toml_text, const std::string& base_
   try {
     root = toml::parse(toml_text);
   } catch (const toml::parse_error& err) {
-    throw InvalidInput(fmt::format("body: TOML error at line {}: {}", err.source().begin.line,
-                                   std::string(err.description())));
+    // toml++ quotes the offending text, which may span lines: the message is kept on one line (found by
+    // fuzzing).
+    std::string why(err.description());
+    for (char& c : why)
+      if (c == '\n' || c == '\r') c = ' ';
+    throw InvalidInput(fmt::format("body: TOML error at line {}: {}", err.source().begin.line, why));
   }
   for (const auto& [k, v] : root) {
     if (k.str() != "part" && k.str() != "void") {
@@ -240,12 +245,9 @@ BodyFileResult parse_body(const std::string& toml_text, const std::string& base_
 }
 
 BodyFileResult load_body_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InvalidInput(fmt::format("body: cannot open \"{}\"; expected a readable TOML file", path));
-  std::stringstream ss;
-  ss << in.rdbuf();
+  const std::string text = read_file_limited(path, "body", default_max_file_bytes());
   const std::string base = std::filesystem::path(path).parent_path().string();
-  return parse_body(ss.str(), base.empty() ? "." : base);
+  return parse_body(text, base.empty() ? "." : base);
 }
 
 }  // namespace poinsot::inertia

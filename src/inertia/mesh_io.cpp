@@ -3,10 +3,15 @@
 #include <array>
 #include <bit>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <system_error>
 #include <unordered_map>
+#include <vector>
 
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -67,14 +72,18 @@ struct Builder {
       }
       for (unsigned f = 0; f < am.mNumFaces; ++f) {
         const aiFace& face = am.mFaces[f];
-        if (face.mNumIndices != 3) {
+        if (face.mNumIndices < 3) {
           ++dropped;
           continue;
         }
-        std::array<std::int32_t, 3> t{local[face.mIndices[0]], local[face.mIndices[1]],
-                                      local[face.mIndices[2]]};
-        if (mirrored) std::swap(t[1], t[2]);
-        mesh.triangles.push_back(t);
+        // A polygon as a fan from its first corner: the signed triangles sum to the polygon exactly (convex
+        // or not), so the mass-property integrals are those of the polygon.
+        for (unsigned k = 1; k + 1 < face.mNumIndices; ++k) {
+          std::array<std::int32_t, 3> t{local[face.mIndices[0]], local[face.mIndices[k]],
+                                        local[face.mIndices[k + 1]]};
+          if (mirrored) std::swap(t[1], t[2]);
+          mesh.triangles.push_back(t);
+        }
       }
     }
     for (unsigned c = 0; c < node.mNumChildren; ++c)
@@ -82,12 +91,90 @@ struct Builder {
   }
 };
 
+/// Checks the header of a PLY file before assimp reads it: assimp 5.2.5 loops without end on some malformed
+/// headers (found by fuzzing: a header cut short inside a property line). Accepted: "ply", then lines
+/// `format ascii|binary_little_endian|binary_big_endian V`, `comment ...`, `obj_info ...`, `element NAME N`,
+/// `property TYPE NAME` or `property list TYPE TYPE NAME`, up to `end_header`, within the first 64 KiB.
+void check_ply_header(const std::string& path) {
+  // Every element takes at least one byte: a count above the file's size is refused before assimp allocates
+  // for it (found by fuzzing: 3·10^8 faces declared in a 200-byte file).
+  std::error_code ec;
+  const auto file_bytes = static_cast<unsigned long long>(std::filesystem::file_size(path, ec));
+  std::ifstream in(path, std::ios::binary);
+  std::string header(65536, '\0');
+  in.read(header.data(), static_cast<std::streamsize>(header.size()));
+  header.resize(static_cast<std::size_t>(in.gcount()));
+  std::istringstream lines(header);
+  std::string line;
+  int number = 0;
+  const auto fail = [&](const std::string& why) {
+    throw InvalidInput(
+        fmt::format("mesh: \"{}\": PLY header line {}: {}; expected a PLY header ending in end_header", path,
+                    number, why));
+  };
+  while (std::getline(lines, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    std::istringstream words(line);
+    std::vector<std::string> w;
+    for (std::string word; words >> word;)
+      w.push_back(word);
+    if (number == 1) {
+      if (w.size() != 1 || w[0] != "ply") fail("not \"ply\"");
+      continue;
+    }
+    if (w.empty()) fail("empty");
+    const std::string& k = w[0];
+    if (k == "end_header") return;
+    if (k == "comment" || k == "obj_info") continue;
+    const bool ok =
+        (k == "format" && w.size() == 3 &&
+         (w[1] == "ascii" || w[1] == "binary_little_endian" || w[1] == "binary_big_endian")) ||
+        (k == "element" && w.size() == 3 && !w[2].empty() && w[2].size() <= 18 &&
+         w[2].find_first_not_of("0123456789") == std::string::npos && std::stoull(w[2]) <= file_bytes) ||
+        (k == "property" && (w.size() == 3 || (w.size() == 5 && w[1] == "list")));
+    if (!ok) fail("malformed " + k.substr(0, 20));
+  }
+  ++number;
+  fail("no end_header");
+}
+
+/// The vertex and face counts of an OFF file (the first two numbers after the keyword and comments) must not
+/// exceed the file's size in bytes, each vertex and face taking at least one: assimp allocates for the counts
+/// first (found by fuzzing: 4·10^24 vertices declared in a 100-byte file).
+void check_off_counts(const std::string& path) {
+  std::error_code ec;
+  const auto file_bytes = static_cast<double>(std::filesystem::file_size(path, ec));
+  std::ifstream in(path, std::ios::binary);
+  std::string token;
+  int counted = 0;
+  while (counted < 2 && in >> token) {
+    if (token.starts_with("#")) {
+      std::getline(in, token);
+      continue;
+    }
+    if (token.find("OFF") != std::string::npos) continue;
+    const double count = std::strtod(token.c_str(), nullptr);
+    if (!(count <= file_bytes)) {
+      throw InvalidInput(
+          fmt::format("mesh: \"{}\": OFF declares {} vertices or faces in a file of {} bytes; "
+                      "expected counts that the file can hold",
+                      path, token.substr(0, 30), static_cast<unsigned long long>(file_bytes)));
+    }
+    ++counted;
+  }
+}
+
 }  // namespace
 
-TriangleMesh load_mesh(const std::string& path) {
+TriangleMesh load_mesh(const std::string& path, const MeshLimits& limits) {
   if (std::filesystem::is_directory(path)) {
     throw InvalidInput(
         fmt::format("mesh: \"{}\" is a folder; expected a mesh file (STL, OBJ, PLY, OFF)", path));
+  }
+  if (std::error_code ec; std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    // A device or a pipe (/dev/zero, a FIFO) would be read without end.
+    throw InvalidInput(fmt::format("mesh: \"{}\" is not a regular file; expected a mesh file", path));
   }
   {
     std::ifstream probe(path, std::ios::binary);
@@ -98,15 +185,35 @@ TriangleMesh load_mesh(const std::string& path) {
           fmt::format("mesh: \"{}\" is empty; expected a mesh file (STL, OBJ, PLY, OFF)", path));
     }
   }
+  std::error_code ec;
+  if (const auto bytes = std::filesystem::file_size(path, ec); !ec && bytes > limits.max_file_bytes) {
+    throw InvalidInput(
+        fmt::format("mesh: \"{}\" is {} bytes; the limit is {} bytes (raise it with --max-mesh-bytes)", path,
+                    bytes, limits.max_file_bytes));
+  }
+  if (std::filesystem::path(path).extension() == ".ply" || std::filesystem::path(path).extension() == ".PLY")
+    check_ply_header(path);
+  if (std::filesystem::path(path).extension() == ".off" || std::filesystem::path(path).extension() == ".OFF")
+    check_off_counts(path);
   Assimp::Importer importer;
-  // Triangulate polygons; keep the file's winding and vertices (welding is done below, across meshes).
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
+  // Only validation, no post-processing: assimp's triangulation asserted on malformed OFF and PLY faces
+  // (found by fuzzing); a malformed scene is now an error, and polygons are triangulated below. The file's
+  // winding and vertices are kept (welding is done below, across meshes).
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
   if (scene == nullptr || scene->mRootNode == nullptr) {
     std::string reason = importer.GetErrorString();
     for (char& ch : reason)
       if (ch == '\n' || ch == '\r') ch = ' ';
     throw InvalidInput(fmt::format("mesh: cannot read \"{}\" ({}); expected a mesh file (STL, OBJ, PLY, OFF)",
                                    path, reason.empty() ? "unknown format" : reason));
+  }
+  std::size_t faces = 0;
+  for (unsigned i = 0; i < scene->mNumMeshes; ++i)
+    faces += scene->mMeshes[i]->mNumFaces;
+  if (faces > limits.max_triangles) {
+    throw InvalidInput(fmt::format(
+        "mesh: \"{}\" has {} faces; the limit is {} triangles (raise it with --max-mesh-triangles)", path,
+        faces, limits.max_triangles));
   }
   Builder b;
   b.add_node(*scene, *scene->mRootNode, aiMatrix4x4());

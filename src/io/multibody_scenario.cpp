@@ -1,5 +1,6 @@
 // Multibody scenario files: TOML → validated multibody::Scenario (see multibody_scenario.hpp).
 #include "poinsot/io/multibody_scenario.hpp"
+#include "poinsot/io/work_limits.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -285,6 +286,9 @@ multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::
   if (!(every >= 1.0 && every <= 1e9) || every != std::floor(every))
     sim.fail("output_every", fmt::format("got {}, expected an integer >= 1 (steps)", format_number(every)));
   sc.output_every = static_cast<int>(every);
+  const std::string where = detail::location(src, sim.node("duration")) + "[simulation] duration";
+  check_step_count(sc.duration / sc.dt, where, "duration / dt");
+  check_sample_count(sc.duration / sc.dt / sc.output_every, where, "duration / dt / output_every");
   if (const auto method = sim.string("method")) {
     try {
       sc.method = multibody::parse_multibody_method(*method, sim.label("method"));

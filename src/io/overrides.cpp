@@ -9,6 +9,7 @@
 #include "poinsot/core/format.hpp"
 #include "poinsot/io/multibody_scenario.hpp"
 #include "poinsot/io/scenario.hpp"
+#include "poinsot/io/work_limits.hpp"
 #include "poinsot/multibody/methods.hpp"
 
 namespace poinsot::io {
@@ -33,6 +34,9 @@ void apply_overrides(Scenario& sc, const ScenarioOverrides& o) {
   if (o.t_end) sc.simulation.t_end = positive_time("--t-end", *o.t_end);
   if (o.sample_dt) sc.simulation.sample_dt = positive_time("--sample-dt", *o.sample_dt);
   if (!o.out_dir.empty()) sc.out_dir = o.out_dir;
+  check_step_count(sc.simulation.t_end / sc.integrator.dt, "--t-end/--dt", "t_end / dt");
+  check_sample_count(sc.simulation.t_end / sc.simulation.sample_dt, "--t-end/--sample-dt",
+                     "t_end / sample_dt");
 }
 
 void apply_overrides(multibody::Scenario& sc, const ScenarioOverrides& o) {
@@ -46,6 +50,9 @@ void apply_overrides(multibody::Scenario& sc, const ScenarioOverrides& o) {
     sc.output_every =
         std::max(1, static_cast<int>(std::lround(positive_time("--sample-dt", *o.sample_dt) / sc.dt)));
   }
+  check_step_count(sc.duration / sc.dt, "--t-end/--dt", "duration / dt");
+  check_sample_count(sc.duration / sc.dt / sc.output_every, "--t-end/--sample-dt",
+                     "duration / dt / output_every");
 }
 
 }  // namespace poinsot::io

@@ -1,5 +1,6 @@
 // Scenario files: TOML → validated Scenario (see scenario.hpp and docs/scenario.md).
 #include "poinsot/io/scenario.hpp"
+#include "poinsot/io/work_limits.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -175,6 +176,9 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
   sc.simulation.t_end = positive(o, "t_end", "s");
   sc.simulation.sample_dt = o.has("sample_dt") ? positive(o, "sample_dt", "s") : sc.simulation.t_end / 1000.0;
   sc.out_dir = o.string("dir").value_or("");
+  const std::string where = detail::location(src, o.node("t_end")) + "[output] t_end";
+  check_step_count(sc.simulation.t_end / sc.integrator.dt, where, "t_end / dt");
+  check_sample_count(sc.simulation.t_end / sc.simulation.sample_dt, where, "t_end / sample_dt");
   return sc;
 }
 

@@ -11,6 +11,7 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/core/text_file.hpp"
 
 namespace poinsot::io::detail {
 
@@ -19,20 +20,15 @@ toml::table parse_toml(std::string_view text, std::string_view source) {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    throw InvalidInput(
-        fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column, e.description()));
+    std::string why(e.description());  // may quote text over several lines: kept on one line
+    for (char& c : why)
+      if (c == '\n' || c == '\r') c = ' ';
+    throw InvalidInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column, why));
   }
 }
 
 std::string read_text_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw InvalidInput(fmt::format("scenario: cannot read \"{}\": {}; expected a readable TOML file", path,
-                                   std::strerror(errno)));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return read_file_limited(path, "scenario", default_max_file_bytes());
 }
 
 std::string location(const Source& source, const toml::node* node) {

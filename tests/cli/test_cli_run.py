@@ -168,7 +168,7 @@ def test_unwritable_output_is_refused_before_simulating(cli, tmp_path):
 
 def test_sigterm_leaves_complete_files_marked_interrupted(source_dir, tmp_path):
     exe = os.environ["POINSOT_CLI"]
-    s = write(tmp_path, MINIMAL.replace('"exact"', '"rk4"\ndt = 1e-5').replace("t_end = 5.0", "t_end = 1e6")
+    s = write(tmp_path, MINIMAL.replace('"exact"', '"rk4"\ndt = 1e-5').replace("t_end = 5.0", "t_end = 1e3")
               .replace("sample_dt = 0.5", "sample_dt = 0.001"))
     out = tmp_path / "o"
     p = subprocess.Popen([exe, "run", str(s), "--out", str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -235,7 +235,7 @@ def _tty_run(exe, args, stop_after=None):
 
 def test_progress_bar_only_on_a_terminal_for_long_runs(tmp_path):
     exe = os.environ["POINSOT_CLI"]
-    long_run = write(tmp_path, MINIMAL.replace('"exact"', '"rk4"\ndt = 1e-5').replace("t_end = 5.0", "t_end = 1e6")
+    long_run = write(tmp_path, MINIMAL.replace('"exact"', '"rk4"\ndt = 1e-5').replace("t_end = 5.0", "t_end = 1e3")
                      .replace("sample_dt = 0.5", "sample_dt = 0.01"))
     # The bar appears after the first second (the run is stopped as soon as it shows, or after 30 s).
     rc, err = _tty_run(exe, ["run", long_run, "--out", tmp_path / "a"], stop_after=30)
@@ -354,7 +354,7 @@ def test_multibody_signal_leaves_complete_files_marked_interrupted(source_dir, t
     report printed with INTERRUPTED, exit status 128 + the signal."""
     exe = os.environ["POINSOT_CLI"]
     out = tmp_path / "o"
-    p = subprocess.Popen([exe, "run", str(source_dir / "examples" / "multibody" / "chain16.toml"), "--t-end", "1e6",
+    p = subprocess.Popen([exe, "run", str(source_dir / "examples" / "multibody" / "chain16.toml"), "--t-end", "1e3",
                           "--sample-dt", "0.001", "--out", str(out), "--quiet"], stdout=subprocess.PIPE,
                          stderr=subprocess.PIPE, text=True)
     csv = out / "trajectory.csv"

@@ -114,5 +114,12 @@ TEST(BodyFile, ErrorsNameThePartAndTheField) {
   EXPECT_THROW(load_body_file("/nonexistent/body.toml"), InvalidInput);
 }
 
+TEST(BodyFile, TomlErrorQuotingSeveralLinesIsOneLine) {
+  // toml++ quotes the offending text, here over two lines (a fuzzing finding).
+  const std::string m = message_of("degrees = tr\neu\n");
+  EXPECT_NE(m.find("TOML error at line 1"), std::string::npos) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+}
+
 }  // namespace
 }  // namespace poinsot::inertia

@@ -125,5 +125,34 @@ TEST_F(MeshIo, BadFilesGiveOneLineErrors) {
     EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
 }
 
+TEST_F(MeshIo, ResourceLimitsAreCheckedBeforeTheWork) {
+  const std::string cube = std::string(POINSOT_TEST_DATA_DIR) + "/inertia/cube_10cm.stl";  // 12 triangles
+  const auto refusal = [](const std::string& path, const MeshLimits& limits) {
+    try {
+      load_mesh(path, limits);
+    } catch (const InvalidInput& e) {
+      return std::string(e.what());
+    }
+    return std::string("no throw");
+  };
+  MeshLimits few;
+  few.max_triangles = 11;
+  test::expect_has(refusal(cube, few), {"has 12 faces; the limit is 11 triangles", "--max-mesh-triangles"});
+  few.max_triangles = 12;
+  EXPECT_EQ(load_mesh(cube, few).triangles.size(), 12u);
+  MeshLimits small;
+  small.max_file_bytes = 100;
+  test::expect_has(refusal(cube, small), {"is 1814 bytes; the limit is 100 bytes", "--max-mesh-bytes"});
+  test::expect_has(refusal("/dev/zero", {}), {"\"/dev/zero\" is not a regular file"});
+  // Fuzzing findings: assimp asserted on an OFF file whose face counts disagree, and looped without end on a
+  // PLY header cut short; both are now one-line refusals.
+  test::expect_has(refusal(write("bad.off", "OFF\n8 6 0\n0 0 0\n 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n"), {}),
+                   {"bad.off", "cannot read"});
+  test::expect_has(
+      refusal(write("cut.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float  0 2 1\n3 0 1 3\n"),
+              {}),
+      {"cut.ply", "PLY header line 4: malformed property"});
+}
+
 }  // namespace
 }  // namespace poinsot::inertia

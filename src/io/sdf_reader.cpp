@@ -1,0 +1,176 @@
+// The SDF (Gazebo) reader of robot_model.hpp: every <link> of every <model> (nested models included), its
+// <inertial> and its <collision>s (or <visual>s).
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/so3/quaternion.hpp"
+#include "robot_readers.hpp"
+
+namespace poinsot::io::detail {
+namespace {
+
+using tinyxml2::XMLElement;
+
+/// The <pose> child of `parent` (identity when absent): `x y z roll pitch yaw` (radians, or degrees with
+/// degrees="true"), or `x y z qx qy qz qw` with rotation_format="quat_xyzw". Returns false (and notes it)
+/// when the pose is relative to another frame than `own_frame` ("" accepts only the default).
+bool read_pose(const XmlSource& xml, const XMLElement& parent, const std::string& own_frame, Mat3& R, Vec3& p,
+               RobotLink& link) {
+  R = Mat3::Identity();
+  p = Vec3::Zero();
+  const XMLElement* pose = parent.FirstChildElement("pose");
+  if (pose == nullptr) return true;
+  if (const char* rel = pose->Attribute("relative_to"); rel != nullptr && *rel != '\0' && own_frame != rel) {
+    link.notes.push_back(
+        fmt::format("{}: relative_to=\"{}\" not understood; skipped", xml.where(*pose), rel));
+    return false;
+  }
+  const char* format = pose->Attribute("rotation_format");
+  const bool quat = format != nullptr && std::string_view(format) == "quat_xyzw";
+  if (format != nullptr && !quat && std::string_view(format) != "euler_rpy") {
+    throw InvalidInput(
+        fmt::format("{} rotation_format=\"{}\": expected euler_rpy or quat_xyzw", xml.where(*pose), format));
+  }
+  const char* text = pose->GetText();
+  if (text == nullptr) return true;
+  const std::vector<double> v = xml.numbers_text(*pose, quat ? 7 : 6);
+  p = Vec3(v[0], v[1], v[2]);
+  if (quat) {
+    R = so3::rotation_from_quaternion(so3::quaternion_wxyz(v[6], v[3], v[4], v[5]));
+  } else {
+    const bool degrees = pose->BoolAttribute("degrees", false);
+    const double unit = degrees ? std::numbers::pi / 180.0 : 1.0;
+    R = rotation_from_rpy(unit * Vec3(v[3], v[4], v[5]));
+  }
+  return true;
+}
+
+void read_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
+  link.has_inertial = true;
+  Mat3 R;
+  if (!read_pose(xml, inertial, link.name, R, link.com_link, link)) {
+    throw InvalidInput(fmt::format(
+        "{}: <pose relative_to> another frame; expected a pose relative to the link", xml.where(inertial)));
+  }
+  link.R_link_inertial = R;
+  link.mass = 1.0;  // SDF's default
+  if (const XMLElement* mass = inertial.FirstChildElement("mass")) link.mass = xml.numbers_text(*mass, 1)[0];
+  // SDF's defaults: ixx = iyy = izz = 1, products 0.
+  static constexpr const char* names[6] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
+  double v[6] = {1.0, 0.0, 0.0, 1.0, 0.0, 1.0};
+  std::vector<std::optional<TextSpan>> spans(6);
+  if (const XMLElement* in = inertial.FirstChildElement("inertia")) {
+    for (int k = 0; k < 6; ++k) {
+      if (const XMLElement* e = in->FirstChildElement(names[k])) {
+        v[k] = xml.numbers_text(*e, 1)[0];
+        spans[static_cast<std::size_t>(k)] = xml.text_span(*e);
+      }
+    }
+  }
+  link.inertia_file = tensor_from_entries(v[0], v[3], v[5], v[1], v[2], v[4]);
+  link.layout = TensorLayout::sdf_elements;
+  set_spans(link, spans);
+  finish_inertial(link);
+}
+
+double child_number(const XmlSource& xml, const XMLElement& shape, const char* name) {
+  const XMLElement* e = shape.FirstChildElement(name);
+  if (e == nullptr)
+    throw InvalidInput(fmt::format("{}: no <{}>; expected its size (m)", xml.where(shape), name));
+  return xml.numbers_text(*e, 1)[0];
+}
+
+Vec3 child_vector(const XmlSource& xml, const XMLElement& shape, const char* name) {
+  const XMLElement* e = shape.FirstChildElement(name);
+  if (e == nullptr)
+    throw InvalidInput(fmt::format("{}: no <{}>; expected 3 numbers (m)", xml.where(shape), name));
+  const std::vector<double> v = xml.numbers_text(*e, 3);
+  return Vec3(v[0], v[1], v[2]);
+}
+
+void read_shape(const XmlSource& xml, const XMLElement& holder, const std::string& base_dir,
+                RobotLink& link) {
+  LinkGeometry g;
+  g.element = holder.Name();
+  if (!read_pose(xml, holder, link.name, g.R_link_geometry, g.position_link, link)) return;
+  const XMLElement* geometry = holder.FirstChildElement("geometry");
+  const XMLElement* shape = geometry != nullptr ? geometry->FirstChildElement() : nullptr;
+  if (shape == nullptr) {
+    link.notes.push_back(fmt::format("{}: no <geometry> shape; skipped", xml.where(holder)));
+    return;
+  }
+  const std::string kind = shape->Name();
+  if (kind == "box") {
+    g.shape.kind = "box";
+    g.shape.size = child_vector(xml, *shape, "size");
+  } else if (kind == "sphere") {
+    g.shape.kind = "sphere";
+    g.shape.radius = child_number(xml, *shape, "radius");
+  } else if (kind == "cylinder" || kind == "capsule") {
+    g.shape.kind = kind;
+    g.shape.radius = child_number(xml, *shape, "radius");
+    g.shape.length = child_number(xml, *shape, "length");
+  } else if (kind == "ellipsoid") {
+    g.shape.kind = "ellipsoid";
+    g.shape.size = child_vector(xml, *shape, "radii");
+  } else if (kind == "mesh") {
+    g.shape.kind = "mesh";
+    const XMLElement* uri = shape->FirstChildElement("uri");
+    const char* file = uri != nullptr ? uri->GetText() : nullptr;
+    if (file == nullptr)
+      throw InvalidInput(fmt::format("{}: no <uri>; expected the mesh file", xml.where(*shape)));
+    g.mesh_path = resolve_mesh_path(file, base_dir);
+    if (g.mesh_path.empty()) {
+      link.notes.push_back(fmt::format("{}: mesh \"{}\" not found; skipped", xml.where(*shape), file));
+      return;
+    }
+    if (shape->FirstChildElement("scale") != nullptr) g.mesh_scale = child_vector(xml, *shape, "scale");
+  } else {
+    link.notes.push_back(fmt::format("{}: geometry <{}> not understood; skipped", xml.where(*shape), kind));
+    return;
+  }
+  link.geometry.push_back(std::move(g));
+}
+
+}  // namespace
+
+void read_sdf(const XmlSource& xml, const std::string& base_dir, RobotModel& model) {
+  // Every <link> whose parent is a <model>, in file order.
+  std::vector<const XMLElement*> stack{xml.root()};
+  std::vector<const XMLElement*> links;
+  while (!stack.empty()) {
+    const XMLElement* e = stack.back();
+    stack.pop_back();
+    if (std::string_view(e->Name()) == "link" && e->Parent() != nullptr &&
+        e->Parent()->ToElement() != nullptr &&
+        std::string_view(e->Parent()->ToElement()->Name()) == "model") {
+      links.push_back(e);
+      continue;
+    }
+    std::vector<const XMLElement*> children;
+    for (const XMLElement* c = e->FirstChildElement(); c != nullptr; c = c->NextSiblingElement())
+      children.push_back(c);
+    for (auto it = children.rbegin(); it != children.rend(); ++it)
+      stack.push_back(*it);
+  }
+  for (const XMLElement* e : links) {
+    RobotLink link;
+    const char* name = e->Attribute("name");
+    if (name == nullptr)
+      throw InvalidInput(fmt::format("{}: missing attribute name; expected the link's name", xml.where(*e)));
+    link.name = name;
+    link.line = e->GetLineNum();
+    if (const XMLElement* inertial = e->FirstChildElement("inertial")) read_inertial(xml, *inertial, link);
+    for (const char* element : {"collision", "visual"}) {
+      for (const XMLElement* g = e->FirstChildElement(element); g != nullptr;
+           g = g->NextSiblingElement(element))
+        read_shape(xml, *g, base_dir, link);
+      if (!link.geometry.empty()) break;
+    }
+    model.links.push_back(std::move(link));
+  }
+}
+
+}  // namespace poinsot::io::detail

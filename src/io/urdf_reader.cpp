@@ -1,0 +1,129 @@
+// The URDF reader of robot_model.hpp: <robot><link name><inertial>, <collision>, <visual>.
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+#include "robot_readers.hpp"
+
+namespace poinsot::io::detail {
+namespace {
+
+using tinyxml2::XMLElement;
+
+/// Pose of an <origin xyz rpy/> child of `parent` (identity when absent).
+void read_origin(const XmlSource& xml, const XMLElement& parent, Mat3& R, Vec3& p) {
+  R = Mat3::Identity();
+  p = Vec3::Zero();
+  const XMLElement* origin = parent.FirstChildElement("origin");
+  if (origin == nullptr) return;
+  if (auto xyz = xml.numbers_attribute(*origin, "xyz", 3)) p = Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]);
+  if (auto rpy = xml.numbers_attribute(*origin, "rpy", 3))
+    R = rotation_from_rpy(Vec3((*rpy)[0], (*rpy)[1], (*rpy)[2]));
+}
+
+double required_number(const XmlSource& xml, const XMLElement& e, const char* attribute) {
+  auto v = xml.numbers_attribute(e, attribute, 1);
+  if (!v)
+    throw InvalidInput(fmt::format("{}: missing attribute {}; expected a number", xml.where(e), attribute));
+  return (*v)[0];
+}
+
+void read_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
+  link.has_inertial = true;
+  Mat3 R;
+  read_origin(xml, inertial, R, link.com_link);
+  link.R_link_inertial = R;
+  const XMLElement* mass = inertial.FirstChildElement("mass");
+  if (mass == nullptr)
+    throw InvalidInput(
+        fmt::format("{}: no <mass value/>; expected the link's mass (kg)", xml.where(inertial)));
+  link.mass = required_number(xml, *mass, "value");
+  const XMLElement* in = inertial.FirstChildElement("inertia");
+  if (in == nullptr) {
+    throw InvalidInput(fmt::format("{}: no <inertia ixx ixy ixz iyy iyz izz/>; expected the tensor (kg·m²)",
+                                   xml.where(inertial)));
+  }
+  static constexpr const char* names[6] = {"ixx", "ixy", "ixz", "iyy", "iyz", "izz"};
+  double v[6];
+  std::vector<std::optional<TextSpan>> spans;
+  for (int k = 0; k < 6; ++k) {
+    v[k] = required_number(xml, *in, names[k]);
+    spans.push_back(xml.attribute_span(*in, names[k]));
+  }
+  link.inertia_file = tensor_from_entries(v[0], v[3], v[5], v[1], v[2], v[4]);
+  link.layout = TensorLayout::urdf_attributes;
+  set_spans(link, spans);
+  finish_inertial(link);
+}
+
+/// The shape of a <collision> or <visual> element, or nothing (with a note) for a geometry it does not know.
+void read_shape(const XmlSource& xml, const XMLElement& holder, const std::string& base_dir,
+                RobotLink& link) {
+  LinkGeometry g;
+  g.element = holder.Name();
+  read_origin(xml, holder, g.R_link_geometry, g.position_link);
+  const XMLElement* geometry = holder.FirstChildElement("geometry");
+  const XMLElement* shape = geometry != nullptr ? geometry->FirstChildElement() : nullptr;
+  if (shape == nullptr) {
+    link.notes.push_back(fmt::format("{}: no <geometry> shape; skipped", xml.where(holder)));
+    return;
+  }
+  const std::string kind = shape->Name();
+  if (kind == "box") {
+    g.shape.kind = "box";
+    auto size = xml.numbers_attribute(*shape, "size", 3);
+    if (!size)
+      throw InvalidInput(
+          fmt::format("{}: missing attribute size; expected 3 numbers (m)", xml.where(*shape)));
+    g.shape.size = Vec3((*size)[0], (*size)[1], (*size)[2]);
+  } else if (kind == "sphere") {
+    g.shape.kind = "sphere";
+    g.shape.radius = required_number(xml, *shape, "radius");
+  } else if (kind == "cylinder" || kind == "capsule") {
+    g.shape.kind = kind;
+    g.shape.radius = required_number(xml, *shape, "radius");
+    g.shape.length = required_number(xml, *shape, "length");
+  } else if (kind == "mesh") {
+    g.shape.kind = "mesh";
+    const char* file = shape->Attribute("filename");
+    if (file == nullptr) {
+      throw InvalidInput(
+          fmt::format("{}: missing attribute filename; expected the mesh file", xml.where(*shape)));
+    }
+    g.mesh_path = resolve_mesh_path(file, base_dir);
+    if (g.mesh_path.empty()) {
+      link.notes.push_back(fmt::format("{}: mesh \"{}\" not found; skipped", xml.where(*shape), file));
+      return;
+    }
+    if (auto scale = xml.numbers_attribute(*shape, "scale", 3))
+      g.mesh_scale = Vec3((*scale)[0], (*scale)[1], (*scale)[2]);
+  } else {
+    link.notes.push_back(fmt::format("{}: geometry <{}> not understood; skipped", xml.where(*shape), kind));
+    return;
+  }
+  link.geometry.push_back(std::move(g));
+}
+
+}  // namespace
+
+void read_urdf(const XmlSource& xml, const std::string& base_dir, RobotModel& model) {
+  for (const XMLElement* e = xml.root()->FirstChildElement("link"); e != nullptr;
+       e = e->NextSiblingElement("link")) {
+    RobotLink link;
+    const char* name = e->Attribute("name");
+    if (name == nullptr)
+      throw InvalidInput(fmt::format("{}: missing attribute name; expected the link's name", xml.where(*e)));
+    link.name = name;
+    link.line = e->GetLineNum();
+    if (const XMLElement* inertial = e->FirstChildElement("inertial")) read_inertial(xml, *inertial, link);
+    // Collision shapes describe the volume; visual ones stand in only when there is no collision shape.
+    for (const char* element : {"collision", "visual"}) {
+      for (const XMLElement* g = e->FirstChildElement(element); g != nullptr;
+           g = g->NextSiblingElement(element))
+        read_shape(xml, *g, base_dir, link);
+      if (!link.geometry.empty()) break;
+    }
+    model.links.push_back(std::move(link));
+  }
+}
+
+}  // namespace poinsot::io::detail
