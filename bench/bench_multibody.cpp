@@ -1,5 +1,5 @@
 // Cost per RATTLE step of a chain of N ball-jointed thin rods (1 m, 1 kg, radius 1 cm) released from
-// horizontal under gravity, dt = 1e-3 (issue 8). Counters: the energy error relative to the releasable
+// horizontal under gravity, dt = 1e-3. Counters: the energy error relative to the releasable
 // potential energy m g l N²/2, the largest joint gap (m) and the mean Newton iterations, over the benchmark's
 // run. Run: build/release/bench/bench_multibody --benchmark_counters_tabular=true The growth exponent is
 // fitted by Google Benchmark (BigO, "oN" expected).

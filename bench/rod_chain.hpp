@@ -1,4 +1,4 @@
-// The chain of issue 8's benchmark, shared by bench_multibody.cpp and the peer comparison (bench/peers/):
+// The chain of the benchmark, shared by bench_multibody.cpp and the peer comparison (bench/peers/):
 // N thin rods (1 m, 1 kg, radius 1 cm, a solid cylinder along the body x axis) joined by ball joints, link
 // 0's end (-0.5, 0, 0) pinned to the world origin, link i's (-0.5, 0, 0) to link i-1's (+0.5, 0, 0), gravity
 // (0, 0, -9.81) m/s². Released at rest, horizontal along +x.

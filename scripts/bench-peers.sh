@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The side-by-side comparison of issue 8: poinsot's RATTLE beside Bullet, ODE, MuJoCo and Simbody on the same
+# The side-by-side comparison: poinsot's RATTLE beside Bullet, ODE, MuJoCo and Simbody on the same
 # chain of ball-jointed rods, in one Google Benchmark program (bench/peers/, docs/benchmarks.md).
 #   1. installs the four peers' Debian packages with scripts/setup.sh (idempotent; they are not in its own list:
 #      poinsot and its CI do not need them),

@@ -8,6 +8,8 @@ set -euo pipefail
 packages=(
   # toolchain
   build-essential cmake ninja-build g++ clang-format git pkg-config
+  # the man pages, generated from the tool's own --help at build time
+  help2man
   # C++ libraries
   libeigen3-dev libboost-math-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libassimp-dev libtinyxml2-dev libgtest-dev libgmock-dev libbenchmark-dev

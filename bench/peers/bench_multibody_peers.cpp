@@ -1,5 +1,5 @@
 // Side-by-side cost and accuracy of poinsot's RATTLE and the peer libraries (Bullet, ODE, MuJoCo, Simbody) on
-// issue 8's chain of N ball-jointed thin rods (1 m, 1 kg, radius 1 cm) released from horizontal under
+// the benchmark chain of N ball-jointed thin rods (1 m, 1 kg, radius 1 cm) released from horizontal under
 // gravity, dt = 1e-3 s, in one process. Each library is registered when CMake found it
 // (POINSOT_PEER_<LIBRARY>); what each is configured with: its chain_<library>.cpp and docs/benchmarks.md.
 // After the runs, the growth exponent p of each library's CPU time per step, t ≈ c N^p, fitted by least

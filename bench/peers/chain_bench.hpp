@@ -1,4 +1,4 @@
-// The peer comparison of issue 8 ("Performance"): the same chain of ball-jointed rods (bench/rod_chain.hpp)
+// The peer comparison: the same chain of ball-jointed rods (bench/rod_chain.hpp)
 // stepped by poinsot's RATTLE and by each peer library, with the same counters measured the same way from
 // each library's body poses. One adapter per library (chain_<library>.cpp), each a class with
 //   explicit Adapter(int n);                  // build the chain of n links, released at rest (not timed)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the scenario of a chain of N ball-jointed thin rods (1 m, 1 kg, radius 1 cm) hung from the world at
-the origin and released from horizontal, the chain of issue 8's benchmark, on stdout.
+the origin and released from horizontal, the chain of the benchmark, on stdout.
 
     /usr/bin/python3 examples/multibody/make_chain.py 16 > chain16.toml      # examples/multibody/chain16.toml
     /usr/bin/python3 examples/multibody/make_chain.py 64 > chain64.toml

@@ -312,7 +312,7 @@ def _plot_paths(plt, traj, bodies, summary, out):
 
 def energy_scale(diag):
     """The energy the motion moves around (J): the largest kinetic energy or |V − V(0)| over the rows. The zero
-    of the potential is arbitrary, so |E0| is no scale (it can be 0 or huge); this is the issue's
+    of the potential is arbitrary, so |E0| is no scale (it can be 0 or huge); this is the
     "releasable energy". |E0| when both are 0 (a body at rest), 1 J if that is 0 too."""
     import numpy as np
 

@@ -1,7 +1,7 @@
 """`poinsot inertia`: shapes, meshes, tensors and body files; --json keys, --format urdf|mjcf|sdf, bad input.
 
 Oracles: closed forms (box, the lecture's square plate about its corner: 1/12, 7/12, 2/3 m a²), a cube mesh
-written here (exact for the divergence theorem), and the issue's worked triangle-inequality message."""
+written here (exact for the divergence theorem), and the worked triangle-inequality message of docs/inertia.md."""
 import json
 import math
 import re

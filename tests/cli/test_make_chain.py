@@ -1,4 +1,4 @@
-"""examples/multibody/make_chain.py: the generator of the chain scenarios (issue 8's benchmark chain)."""
+"""examples/multibody/make_chain.py: the generator of the chain scenarios (the benchmark chain)."""
 import json
 import subprocess
 import sys

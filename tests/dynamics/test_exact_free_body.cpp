@@ -42,7 +42,7 @@ void expect_matches_reference(const RigidBody& body, const State& s0, double t, 
   EXPECT_EQ(ex.t, t);
 }
 
-// The accuracy target of the issue: 1e-12 in ω and R at t = 100 s, both regimes, random bodies and states.
+// The accuracy target: 1e-12 in ω and R at t = 100 s, both regimes, random bodies and states.
 TEST(ExactFreeBody, MatchesReferenceAtHundredSecondsBothRegimes) {
   int largest = 0, smallest = 0;
   for (int trial = 0; trial < 6; ++trial) {
@@ -83,7 +83,7 @@ TEST(ExactFreeBody, NonDiagonalInertiaMatchesReference) {
 }
 
 // The tennis racket: spun about its intermediate axis with a small wobble, its handle flips over every
-// 2K(k)/ω_p seconds. Its orientation at t = 100 s to 1e-12 (the issue's headline figure).
+// 2K(k)/ω_p seconds. Its orientation at t = 100 s to 1e-12 (the headline figure of docs/exact.md).
 TEST(ExactFreeBody, TennisRacketAtHundredSeconds) {
   const RigidBody racket = RigidBody::from_principal_moments(Vec3(0.0015, 0.0160, 0.0170));  // kg·m²
   const State s0 = make_state(Mat3::Identity(), Vec3(0.05, 4.0, 0.05));                      // rad/s

@@ -54,7 +54,7 @@ TEST(FreeBodyTheory, FlipIntervalMatchesMeasuredSignChangesOfOmega2) {
     EXPECT_DOUBLE_EQ(th.omega_period(), 2.0 * flip);
     const std::vector<double> t = omega2_crossings(body, c.w, 4.2 * flip, 0.01 * flip);
     ASSERT_GE(t.size(), 4u);
-    // The mean interval over three flips to 1e-8 relative (issue); the crossings are located to ~1e-15 s.
+    // The mean interval over three flips to 1e-8 relative ; the crossings are located to ~1e-15 s.
     EXPECT_NEAR((t[3] - t[0]) / 3.0, flip, 1e-8 * flip);
     for (std::size_t i = 1; i < t.size(); ++i)
       EXPECT_NEAR(t[i] - t[i - 1], flip, 1e-10 * flip);

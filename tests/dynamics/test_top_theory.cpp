@@ -79,7 +79,7 @@ TEST(TopTheory, MatchesDirectIntegrationOverOneNutationPeriod) {
     // After exactly T_nut the axis is back where it started (θ and θ̇): T_nut is right to ~1e-10 relative.
     EXPECT_NEAR(static_cast<double>(y[0]), c.theta0, 1e-9);
     EXPECT_NEAR(static_cast<double>(y[1]), c.theta_dot0, 1e-9 * (1.0 + std::abs(f.a)));
-    // The precession over that period: the mean rate to 1e-9 relative (the issue asks 1e-6).
+    // The precession over that period: the mean rate to 1e-9 relative (the target is 1e-6).
     EXPECT_NEAR(static_cast<double>(y[2]), m.precession_per_nutation,
                 1e-9 * std::abs(m.precession_per_nutation));
     // The turning points bound the motion (sampled every step, so to within the step's reach).

@@ -34,7 +34,7 @@ void expect_sign_rule(const Mat3& A) {
 }
 
 TEST(PrincipalAxes, LecturePlateAboutItsCornerTo1e15) {
-  // The lecture's worked example, built as the issue says: the plate about its corner (shapes + parallel
+  // The lecture's worked example, built from its parts: the plate about its corner (shapes + parallel
   // axis), m = a = 1 and also m = 3, a = 0.2 (relative accuracy must not depend on the scale).
   for (const auto& [m, a] : {std::pair{1.0, 1.0}, std::pair{3.0, 0.2}}) {
     const Mat3 J = plate(m, a, a).inertia_about(Vec3(-a / 2, -a / 2, 0));

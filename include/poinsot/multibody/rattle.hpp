@@ -27,7 +27,7 @@
 /// Order 4 (RattleOptions::order = 4) composes three such steps of sizes γ₁h, γ₂h, γ₁h with
 /// γ₁ = 1/(2 − 2^{1/3}), γ₂ = 1 − 2γ₁ (the "triple jump" of Yoshida 1990 and Suzuki 1990; Hairer, Lubich &
 /// Wanner II.4): still symplectic, symmetric and momentum-conserving, fourth order, at three times the cost.
-/// Its energy error is O(h⁴): on the 64-link chain at h = 1e-3 its peak is 40 times smaller than
+/// Its energy error is O(h⁴): on the 64-link benchmark chain at h = 1e-3 its peak is 40 times smaller than
 /// order 2's.
 
 #include <memory>
