@@ -16,15 +16,8 @@ namespace poinsot {
 namespace {
 
 std::string message_of(const std::string& path, std::size_t limit) {
-  try {
-    read_file_limited(path, "thing", limit, "--max-thing");
-  } catch (const InvalidInput& e) {
-    const std::string m = e.what();
-    EXPECT_EQ(m.find('\n'), std::string::npos);
-    return m;
-  }
-  ADD_FAILURE() << "no InvalidInput for " << path;
-  return {};
+  return test::message_of<InvalidInput>([&] { read_file_limited(path, "thing", limit, "--max-thing"); },
+                                        path);
 }
 
 TEST(TextFile, ReadsAFileWithinTheLimitAndRefusesALargerOne) {

@@ -92,12 +92,8 @@ TEST(Dispersion, ThetaMinusSinIsAccurateOnBothSidesOfTheSeriesSwitch) {
 }
 
 TEST(Dispersion, RejectsNegativeWidthsAndBadLaws) {
-  try {
-    validate(ScalarDispersion{Law::normal, -0.1, true}, "[ensemble] moments");
-    FAIL();
-  } catch (const InvalidInput& e) {
-    test::expect_has(e.what(), {"[ensemble] moments", "-0.1", ">= 0"});
-  }
+  POINSOT_EXPECT_THROWS_MESSAGE(validate(ScalarDispersion{Law::normal, -0.1, true}, "[ensemble] moments"),
+                                InvalidInput, "[ensemble] moments", "-0.1", ">= 0");
   EXPECT_THROW(validate(RotationDispersion{RotationLaw::cone, 4.0}, "[ensemble] axes"), InvalidInput);
   EXPECT_THROW(validate(RotationDispersion{RotationLaw::normal, -1.0}, "[ensemble] axes"), InvalidInput);
   EXPECT_THROW(validate(ScalarDispersion{Law::truncated_normal, 0.1, false, 0.2}, "x"), InvalidInput);

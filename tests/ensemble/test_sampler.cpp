@@ -109,7 +109,8 @@ TEST(Sampler, AggressiveDispersionsStayValidAndTheCountsMatch) {
   EXPECT_EQ(repaired, invalid_first);
   // The fraction of invalid draws against a Monte Carlo estimate with another generator (mt19937): the
   // rejections form a geometric count with success probability 1 − p per sample, so the redraws per sample
-  // average p/(1 − p); both estimates agree within 5 binomial standard deviations of the smaller sample (N = 2000).
+  // average p/(1 − p); both estimates agree within 5 binomial standard deviations of the smaller sample (N =
+  // 2000).
   std::mt19937_64 g(1);
   std::uniform_real_distribution<double> u(0.5, 1.5);
   const int M = 40000;
@@ -146,12 +147,8 @@ TEST(Sampler, NormalDispersionsBeyondZeroAreRepairedOrRedrawnAndCounted) {
 TEST(Sampler, RefusesAnInvalidNominalBodyAndReportsAnExhaustedRejectLoop) {
   Nominal n;
   n.moments = Vec3(1.0, 1.0, 5.0);
-  try {
-    Sampler(n, Dispersions{}, 1);
-    FAIL();
-  } catch (const InvalidInput& e) {
-    test::expect_has(e.what(), {"nominal principal moments", "(1, 1, 5)", "triangle"});
-  }
+  POINSOT_EXPECT_THROWS_MESSAGE(Sampler(n, Dispersions{}, 1), InvalidInput, "nominal principal moments",
+                                "(1, 1, 5)", "triangle");
   // Two moments that nearly violate the triangle inequality and a huge dispersion: most draws are invalid,
   // and a cap of 2 draws is exhausted by some sample, with a message naming it.
   n.moments = Vec3(1.0, 1.0, 1.999);
@@ -159,16 +156,13 @@ TEST(Sampler, RefusesAnInvalidNominalBodyAndReportsAnExhaustedRejectLoop) {
   d.moments = {Law::normal, 3.0, true};
   d.max_tries = 2;
   const Sampler s(n, d, 1);
-  bool thrown = false;
-  for (std::uint64_t i = 0; i < 50 && !thrown; ++i) {
-    try {
-      s.draw(i);
-    } catch (const InvalidInput& e) {
-      thrown = true;
-      test::expect_has(e.what(), {"sample ", "after 2 draws", "policy reject"});
-    }
-  }
-  EXPECT_TRUE(thrown);
+  test::expect_has(test::message_of<InvalidInput>(
+                       [&] {
+                         for (std::uint64_t i = 0; i < 50; ++i)
+                           s.draw(i);
+                       },
+                       "one of 50 draws"),
+                   {"sample ", "after 2 draws", "policy reject"});
   d.max_tries = 0;
   EXPECT_THROW(Sampler(racket(), d, 1), InvalidInput);
   Dispersions neg;

@@ -128,12 +128,7 @@ TEST_F(MeshIo, BadFilesGiveOneLineErrors) {
 TEST_F(MeshIo, ResourceLimitsAreCheckedBeforeTheWork) {
   const std::string cube = std::string(POINSOT_TEST_DATA_DIR) + "/inertia/cube_10cm.stl";  // 12 triangles
   const auto refusal = [](const std::string& path, const MeshLimits& limits) {
-    try {
-      load_mesh(path, limits);
-    } catch (const InvalidInput& e) {
-      return std::string(e.what());
-    }
-    return std::string("no throw");
+    return test::message_of<InvalidInput>([&] { load_mesh(path, limits); }, path);
   };
   MeshLimits few;
   few.max_triangles = 11;

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::io {
 namespace {
@@ -36,15 +37,10 @@ TEST(OptimalScenario, ReadsTheProblem) {
 
 // Each message is one line that locates the key and says what was expected.
 void expect_error(const std::string& text, const std::string& needle) {
-  try {
-    parse_optimal_scenario(text, "s.toml", ".");
-    ADD_FAILURE() << "no error; expected " << needle;
-  } catch (const InvalidInput& e) {
-    const std::string msg = e.what();
-    EXPECT_NE(msg.find(needle), std::string::npos) << msg;
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-    EXPECT_EQ(msg.rfind("s.toml:", 0), 0u) << msg;
-  }
+  const std::string msg = test::message_of<InvalidInput>([&] { parse_optimal_scenario(text, "s.toml", "."); },
+                                                         "a scenario expected to fail naming " + needle);
+  test::expect_has(msg, {needle});
+  EXPECT_EQ(msg.rfind("s.toml:", 0), 0u) << msg;
 }
 
 TEST(OptimalScenario, LocatedErrors) {

@@ -23,12 +23,7 @@ shape = { type = "rod", length = 1.0, radius = 0.01 }
 )";
 
 std::string error_of(multibody::Scenario sc, const ScenarioOverrides& o) {
-  try {
-    apply_overrides(sc, o);
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "";
+  return test::message_of<InvalidInput>([&] { apply_overrides(sc, o); }, "apply_overrides");
 }
 
 TEST(Overrides, MultibodyStepDurationAndRowRate) {

@@ -31,15 +31,7 @@ const RobotLink& only_link(const RobotModel& m) {
 }
 
 std::string invalid_input(const std::string& text) {
-  try {
-    read_robot_model(text, "m.xml");
-  } catch (const InvalidInput& e) {
-    const std::string msg = e.what();
-    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
-    return msg;
-  }
-  ADD_FAILURE() << "no InvalidInput for: " << text;
-  return {};
+  return test::message_of<InvalidInput>([&] { read_robot_model(text, "m.xml"); }, text);
 }
 
 TEST(RobotModel, UrdfYawTurnsInertialXToLinkY) {
@@ -184,12 +176,8 @@ TEST(RobotModel, RefusalsAreOneLineNamingTheElement) {
 
 TEST(RobotModel, FileSizeLimitIsCheckedBeforeReading) {
   const std::string path = std::string(POINSOT_TEST_DATA_DIR) + "/models/valid_arm.urdf";
-  try {
-    load_robot_model(path, 100);
-    ADD_FAILURE() << "no InvalidInput";
-  } catch (const InvalidInput& e) {
-    expect_has(e.what(), {"valid_arm.urdf", "the limit is 100 bytes", "--max-file-bytes"});
-  }
+  POINSOT_EXPECT_THROWS_MESSAGE(load_robot_model(path, 100), InvalidInput, "valid_arm.urdf",
+                                "the limit is 100 bytes", "--max-file-bytes");
   EXPECT_EQ(load_robot_model(path).links.size(), 5u);
 }
 

@@ -15,19 +15,8 @@ namespace poinsot::so3 {
 namespace {
 
 using poinsot::test::expect_has;
+using poinsot::test::message_of;
 using poinsot::test::random_rotation;
-
-// The message of the InvalidInput `f` throws ("" and a failure if it throws none).
-template <class F>
-std::string error_of(F f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no InvalidInput";
-  return "";
-}
 
 // R (I + ε S) with S symmetric, ‖S‖_F = 1: RᵀR − I = 2εS + ε²S², so orthogonality_error = 2ε (1 + O(ε)).
 Mat3 perturbed(const Mat3& R, double eps) {
@@ -53,9 +42,10 @@ TEST(RotationCheck, RefusesReflectionsAndNonFiniteMatricesInOneLine) {
   Mat3 nan = Mat3::Identity();
   nan(0, 1) = std::nan("");
   EXPECT_FALSE(is_rotation(nan));
-  expect_has(error_of([] { require_rotation("weld", -Mat3::Identity()); }),
+  expect_has(message_of<InvalidInput>([] { require_rotation("weld", -Mat3::Identity()); }),
              {"weld: matrix", "has determinant -1; expected a proper rotation (det = +1)"});
-  const std::string far = error_of([] { require_rotation("so3::log", 2.0 * Mat3::Identity()); });
+  const std::string far =
+      message_of<InvalidInput>([] { require_rotation("so3::log", 2.0 * Mat3::Identity()); });
   expect_has(far, {"so3::log: matrix", "is not a rotation (|R^T R - I| = 5.2 > 1e-09); expected"});
   EXPECT_EQ(far.find('\n'), std::string::npos);
   EXPECT_THROW(require_rotation("r", nan), InvalidInput);
