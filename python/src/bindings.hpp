@@ -17,6 +17,8 @@ void bind_inertia(pybind11::module_& m);
 void bind_analysis(pybind11::module_& m);
 void bind_io(pybind11::module_& m);
 void bind_multibody(pybind11::module_& m);
+/// poinsot.multibody.System (bind_multibody_system.cpp), called by bind_multibody.
+void bind_multibody_system(pybind11::module_& m);
 void bind_view(pybind11::module_& m);
 void bind_ensemble(pybind11::module_& m);
 

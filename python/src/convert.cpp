@@ -107,4 +107,22 @@ py::array_t<double> array_from_buffer(std::vector<double>&& buffer, std::vector<
   return py::array_t<double>(shape, owned->data(), owner);
 }
 
+py::array_t<double> stack_vec3(const std::vector<Vec3>& v) {
+  std::vector<double> buf;
+  buf.reserve(3 * v.size());
+  for (const Vec3& x : v)
+    buf.insert(buf.end(), {x[0], x[1], x[2]});
+  return array_from_buffer(std::move(buf), {static_cast<py::ssize_t>(v.size()), 3});
+}
+
+py::array_t<double> stack_mat3(const std::vector<Mat3>& v) {
+  std::vector<double> buf;
+  buf.reserve(9 * v.size());
+  for (const Mat3& M : v)
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        buf.push_back(M(i, j));
+  return array_from_buffer(std::move(buf), {static_cast<py::ssize_t>(v.size()), 3, 3});
+}
+
 }  // namespace poinsot::python

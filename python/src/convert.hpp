@@ -56,6 +56,12 @@ py::array_t<double> from_quat(const Quat& q);
 /// capsule that deletes the vector when the last array referring to it goes away.
 py::array_t<double> array_from_buffer(std::vector<double>&& buffer, std::vector<py::ssize_t> shape);
 
+/// The vectors stacked as an (N, 3) array.
+py::array_t<double> stack_vec3(const std::vector<Vec3>& v);
+
+/// The matrices stacked as an (N, 3, 3) array, row by row.
+py::array_t<double> stack_mat3(const std::vector<Mat3>& v);
+
 }  // namespace poinsot::python
 
 namespace pybind11::detail {
