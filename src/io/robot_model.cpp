@@ -107,5 +107,24 @@ void set_spans(RobotLink& link, const std::vector<std::optional<TextSpan>>& span
     link.value_spans.push_back({span->begin, span->end});
 }
 
+RobotLink read_link_element(const XmlSource& xml, const tinyxml2::XMLElement& e, const std::string& base_dir,
+                            InertialReader read_inertial, ShapeReader read_shape) {
+  RobotLink link;
+  const char* name = e.Attribute("name");
+  if (name == nullptr)
+    throw InvalidInput(fmt::format("{}: missing attribute name; expected the link's name", xml.where(e)));
+  link.name = name;
+  link.line = e.GetLineNum();
+  if (const tinyxml2::XMLElement* inertial = e.FirstChildElement("inertial"))
+    read_inertial(xml, *inertial, link);
+  for (const char* element : {"collision", "visual"}) {
+    for (const tinyxml2::XMLElement* g = e.FirstChildElement(element); g != nullptr;
+         g = g->NextSiblingElement(element))
+      read_shape(xml, *g, base_dir, link);
+    if (!link.geometry.empty()) break;
+  }
+  return link;
+}
+
 }  // namespace detail
 }  // namespace poinsot::io

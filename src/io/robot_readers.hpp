@@ -26,4 +26,16 @@ void finish_inertial(RobotLink& link);
 /// cannot be edited in place).
 void set_spans(RobotLink& link, const std::vector<std::optional<TextSpan>>& spans);
 
+/// Reads a format's <inertial> element into a link.
+using InertialReader = void (*)(const XmlSource&, const tinyxml2::XMLElement&, RobotLink&);
+/// Reads a format's <collision> or <visual> element (the holder of a <geometry>) into a link's geometry;
+/// mesh paths resolve against the model's folder (the string).
+using ShapeReader = void (*)(const XmlSource&, const tinyxml2::XMLElement&, const std::string&, RobotLink&);
+
+/// A <link> of URDF or SDF, which share its layout: the name (an InvalidInput naming the element's line when
+/// it has none), the line, the inertial and the shapes: every <collision>, or every <visual> when the link
+/// has no collision shape (collision shapes describe the volume; visual ones only stand in for them).
+RobotLink read_link_element(const XmlSource& xml, const tinyxml2::XMLElement& e, const std::string& base_dir,
+                            InertialReader read_inertial, ShapeReader read_shape);
+
 }  // namespace poinsot::io::detail

@@ -155,22 +155,8 @@ void read_sdf(const XmlSource& xml, const std::string& base_dir, RobotModel& mod
     for (auto it = children.rbegin(); it != children.rend(); ++it)
       stack.push_back(*it);
   }
-  for (const XMLElement* e : links) {
-    RobotLink link;
-    const char* name = e->Attribute("name");
-    if (name == nullptr)
-      throw InvalidInput(fmt::format("{}: missing attribute name; expected the link's name", xml.where(*e)));
-    link.name = name;
-    link.line = e->GetLineNum();
-    if (const XMLElement* inertial = e->FirstChildElement("inertial")) read_inertial(xml, *inertial, link);
-    for (const char* element : {"collision", "visual"}) {
-      for (const XMLElement* g = e->FirstChildElement(element); g != nullptr;
-           g = g->NextSiblingElement(element))
-        read_shape(xml, *g, base_dir, link);
-      if (!link.geometry.empty()) break;
-    }
-    model.links.push_back(std::move(link));
-  }
+  for (const XMLElement* e : links)
+    model.links.push_back(read_link_element(xml, *e, base_dir, read_inertial, read_shape));
 }
 
 }  // namespace poinsot::io::detail

@@ -108,21 +108,7 @@ void read_shape(const XmlSource& xml, const XMLElement& holder, const std::strin
 void read_urdf(const XmlSource& xml, const std::string& base_dir, RobotModel& model) {
   for (const XMLElement* e = xml.root()->FirstChildElement("link"); e != nullptr;
        e = e->NextSiblingElement("link")) {
-    RobotLink link;
-    const char* name = e->Attribute("name");
-    if (name == nullptr)
-      throw InvalidInput(fmt::format("{}: missing attribute name; expected the link's name", xml.where(*e)));
-    link.name = name;
-    link.line = e->GetLineNum();
-    if (const XMLElement* inertial = e->FirstChildElement("inertial")) read_inertial(xml, *inertial, link);
-    // Collision shapes describe the volume; visual ones stand in only when there is no collision shape.
-    for (const char* element : {"collision", "visual"}) {
-      for (const XMLElement* g = e->FirstChildElement(element); g != nullptr;
-           g = g->NextSiblingElement(element))
-        read_shape(xml, *g, base_dir, link);
-      if (!link.geometry.empty()) break;
-    }
-    model.links.push_back(std::move(link));
+    model.links.push_back(read_link_element(xml, *e, base_dir, read_inertial, read_shape));
   }
 }
 
