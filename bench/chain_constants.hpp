@@ -1,5 +1,5 @@
-// The constants of the benchmark chain of ball-jointed thin rods (bench/rod_chain.hpp builds it in poinsot), kept
-// free of poinsot's headers so that the peer adapters in bench/peers/ can use them in any C++ standard
+// The constants of the benchmark chain of ball-jointed thin rods (bench/rod_chain.hpp builds it in poinsot),
+// kept free of poinsot's headers so that the peer adapters in bench/peers/ can use them in any C++ standard
 // (Simbody's headers compile only as C++17).
 #pragma once
 

@@ -25,8 +25,9 @@ bool same_state(const BodyState& a, const BodyState& b) {
 
 // Brings R to the nearest rotation (the orthogonal factor of its polar decomposition) by the Newton–Schulz
 // iteration R ← R (I − E/2), E = RᵀR − I. Writing R = U (I + S) (polar), E = 2S + S² and the step leaves
-// E′ ≈ −3S² ≈ −¾E²: from |E| < 1e-8 (RK4 leaves E at O(h⁵), ~1e-12 on the 64-link benchmark chain) one step is at
-// round-off and is not checked again. Returns false when E does not fall below 1e-15 (R far from a rotation).
+// E′ ≈ −3S² ≈ −¾E²: from |E| < 1e-8 (RK4 leaves E at O(h⁵), ~1e-12 on the 64-link benchmark chain) one step
+// is at round-off and is not checked again. Returns false when E does not fall below 1e-15 (R far from a
+// rotation).
 bool orthonormalize(Mat3& R) {
   for (int k = 0; k < 6; ++k) {
     Mat3 E = R.transpose() * R;

@@ -4,8 +4,8 @@
 #include <ctime>
 
 #include "poinsot/core/error.hpp"
-#include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/methods.hpp"
+#include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/scenario.hpp"
 
 namespace poinsot::multibody {

@@ -66,8 +66,9 @@ TEST_P(IntegratorContract, AgreesWithItsRegistryEntry) {
 // Error against the dop853 reference (rtol = atol = 1e-14: error ~1e-13) at T with n and 2n steps, on the
 // tumbling body (|ω| = 1.4 rad/s) with a constant body torque for the methods that take one. T and n put each
 // method in its asymptotic range with the finer error well above the reference's (measured: order 2, T = 1 s,
-// n = 50: 2.00 with errors ~1e-4; rk4 and dopri5, T = 1 s, n = 20: 3.99 and 5.03, errors 1e-8 and 6e-12; dop853,
-// T = 4 s, n = 10: 8.10, errors 5e-8 and 2e-10). The next error term shifts the measured order by O(h): ±0.2.
+// n = 50: 2.00 with errors ~1e-4; rk4 and dopri5, T = 1 s, n = 20: 3.99 and 5.03, errors 1e-8 and 6e-12;
+// dop853, T = 4 s, n = 10: 8.10, errors 5e-8 and 2e-10). The next error term shifts the measured order by
+// O(h): ±0.2.
 TEST_P(IntegratorContract, MeasuredOrderIsTheDeclaredOrder) {
   const State s0 = tumbling();
   const int p = info().order;

@@ -1,6 +1,6 @@
-// Tests of validity.hpp. Oracles: the worked message of docs/inertia.md, laminae (I1 + I2 = I3 exactly in theory),
-// random point clouds (always physical), and Dykstra's alternating projections as an independent computation
-// of the nearest valid moments.
+// Tests of validity.hpp. Oracles: the worked message of docs/inertia.md, laminae (I1 + I2 = I3 exactly in
+// theory), random point clouds (always physical), and Dykstra's alternating projections as an independent
+// computation of the nearest valid moments.
 #include "poinsot/inertia/validity.hpp"
 
 #include <array>

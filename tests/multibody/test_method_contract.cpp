@@ -118,8 +118,8 @@ TEST_P(MethodContract, MeasuredOrderIsTheDeclaredOrder) {
 }
 
 // 400 steps of 5 ms (2 s, the double pendulum swinging through the vertical): ‖RᵀR − I‖_F at round-off (a few
-// tens of ulp: the Frobenius norm sums nine entries of a few ulp each, so up to 3 times their largest) and the
-// joints closed to the methods' tolerance (1e-13 relative to the 1 m length scale, with margin).
+// tens of ulp: the Frobenius norm sums nine entries of a few ulp each, so up to 3 times their largest) and
+// the joints closed to the methods' tolerance (1e-13 relative to the 1 m length scale, with margin).
 TEST_P(MethodContract, KeepsRotationsAndJoints) {
   const auto [sys, s0] = double_pendulum();
   const State s = run(sys, s0, 0.005, 400 / kSlowdown);
