@@ -21,7 +21,7 @@ std::string message_of(const std::string& path, std::size_t limit) {
 }
 
 TEST(TextFile, ReadsAFileWithinTheLimitAndRefusesALargerOne) {
-  const auto path = std::filesystem::temp_directory_path() / "poinsot_text_file_test.txt";
+  const auto path = ::poinsot::test::temp_path("poinsot_text_file_test.txt");
   {
     std::ofstream out(path, std::ios::binary);
     out << "0123456789";

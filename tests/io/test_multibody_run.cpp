@@ -16,6 +16,7 @@
 
 #include "../multibody/multibody_fixtures.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::io {
 namespace {
@@ -24,7 +25,7 @@ namespace fs = std::filesystem;
 using multibody::Scenario;
 
 fs::path temp_dir(const std::string& name) {
-  const auto d = fs::temp_directory_path() / ("poinsot_io_multibody_run_" + name);
+  const auto d = ::poinsot::test::temp_path("poinsot_io_multibody_run_" + name);
   fs::remove_all(d);
   return d;
 }
@@ -84,8 +85,8 @@ TEST(MultibodyRun, DiagnosticsRowsAreTheObservablesOfTheTrajectoryRows) {
   sc.duration = 0.503;
   sc.output_every = 7;
   MultibodyRunOptions o;
-  o.trajectory_csv = (fs::temp_directory_path() / "poinsot_mb_diag_traj.csv").string();
-  o.diagnostics_csv = (fs::temp_directory_path() / "poinsot_mb_diag_diag.csv").string();
+  o.trajectory_csv = (::poinsot::test::temp_path("poinsot_mb_diag_traj.csv")).string();
+  o.diagnostics_csv = (::poinsot::test::temp_path("poinsot_mb_diag_diag.csv")).string();
   const MultibodyRunSummary s = run_multibody_scenario(sc, o);
   std::string traj_header, diag_header;
   const auto traj = read_rows(o.trajectory_csv, traj_header);
@@ -140,7 +141,7 @@ TEST(MultibodyRun, DiagnosticsEveryStepReachTheSummarysEnergyError) {
   sc.duration = 0.2;
   sc.output_every = 1;
   MultibodyRunOptions o;
-  o.diagnostics_csv = (fs::temp_directory_path() / "poinsot_mb_diag_every.csv").string();
+  o.diagnostics_csv = (::poinsot::test::temp_path("poinsot_mb_diag_every.csv")).string();
   const MultibodyRunSummary s = run_multibody_scenario(sc, o);
   std::string header;
   const auto diag = read_rows(o.diagnostics_csv, header);

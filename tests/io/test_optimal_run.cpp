@@ -1,4 +1,5 @@
 #include "poinsot/io/optimal_run.hpp"
+#include "poinsot_test.hpp"
 
 #include <gtest/gtest.h>
 
@@ -42,7 +43,7 @@ TEST(OptimalRun, SphereEnergyRunIsVerifiedAndDeterministic) {
   EXPECT_EQ(json, optimal_summary_json(run_optimal(sc)));
   EXPECT_NE(optimal_report(r).find("status: optimal (verified)"), std::string::npos);
 
-  const auto dir = std::filesystem::temp_directory_path() / "poinsot_test_optimal_run";
+  const auto dir = ::poinsot::test::temp_path("poinsot_test_optimal_run");
   std::filesystem::remove_all(dir);
   write_optimal_files(r, dir.string());
   for (const char* f : {"trajectory.csv", "control.csv", "costates.csv"})

@@ -11,6 +11,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/io/scenario.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::io {
 namespace {
@@ -18,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path temp_dir(const std::string& name) {
-  const auto d = fs::temp_directory_path() / ("poinsot_io_run_" + name);
+  const auto d = ::poinsot::test::temp_path("poinsot_io_run_" + name);
   fs::remove_all(d);
   return d;
 }

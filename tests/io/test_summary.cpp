@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::io {
 namespace {
@@ -77,7 +78,7 @@ TEST(Summary, TopKeys) {
 
 TEST(Summary, AtomicWriteReplacesTheFileAndLeavesNoTemporary) {
   namespace fs = std::filesystem;
-  const auto dir = fs::temp_directory_path() / "poinsot_io_test_atomic";
+  const auto dir = ::poinsot::test::temp_path("poinsot_io_test_atomic");
   fs::remove_all(dir);
   fs::create_directories(dir);
   const auto path = (dir / "summary.json").string();

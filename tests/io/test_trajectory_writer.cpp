@@ -15,7 +15,7 @@ namespace poinsot::io {
 namespace {
 
 std::filesystem::path temp_dir(const std::string& name) {
-  const auto d = std::filesystem::temp_directory_path() / ("poinsot_io_test_" + name);
+  const auto d = ::poinsot::test::temp_path("poinsot_io_test_" + name);
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;

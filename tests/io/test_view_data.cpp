@@ -9,6 +9,7 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/inertia/shapes.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::io {
 namespace {
@@ -59,7 +60,7 @@ TEST(ViewEquivalentShapes, ABoxAndAnEllipsoidComeBackWithTheirOwnSizes) {
 }
 
 TEST(ViewCsvFrames, ReadsTheKeptRowsExactlyAndRefusesABadNumber) {
-  const fs::path dir = fs::temp_directory_path() / "poinsot_io_view_data";
+  const fs::path dir = ::poinsot::test::temp_path("poinsot_io_view_data");
   fs::create_directories(dir);
   const fs::path p = dir / "t.csv";
   {

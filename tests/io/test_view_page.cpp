@@ -13,6 +13,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/io/run.hpp"
 #include "poinsot/io/scenario.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::io {
 namespace {
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 
 /// A finished run of the tennis racket (exact solution, 801 samples) in a fresh folder.
 fs::path racket_run(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("poinsot_io_view_" + name);
+  const fs::path dir = ::poinsot::test::temp_path("poinsot_io_view_" + name);
   fs::remove_all(dir);
   const Scenario sc = parse_scenario(R"(
 [body]
@@ -85,7 +86,7 @@ TEST(ViewPage, PageIsWithinItsSizeBoundAndEveryMarkerIsReplaced) {
 }
 
 TEST(ViewPage, RefusesAFolderWithoutAFinishedRunAndFramesOutOfRange) {
-  const fs::path dir = fs::temp_directory_path() / "poinsot_io_view_empty";
+  const fs::path dir = ::poinsot::test::temp_path("poinsot_io_view_empty");
   fs::remove_all(dir);
   fs::create_directories(dir);
   EXPECT_THROW(write_view_page(dir.string()), InvalidInput);

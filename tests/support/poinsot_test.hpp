@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <initializer_list>
 #include <limits>
 #include <random>
@@ -12,12 +13,20 @@
 #include <string>
 #include <string_view>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/types.hpp"
 
 namespace poinsot::test {
+
+/// A path in the temporary folder that no other test process uses at the same time: NAME followed by this
+/// process's id (tests of two build trees, or two CTest jobs, may run side by side on one machine).
+inline std::filesystem::path temp_path(const std::string& name) {
+  return std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+}
 
 inline constexpr double kEps = std::numeric_limits<double>::epsilon();  // 2.22e-16
 
