@@ -48,6 +48,20 @@ void freeze_relative_rotation(const std::string& what, Joint& j, const Mat3& R_b
   }
 }
 
+/// A joint of `type` named `name` joining point_a of body_a to point_b of body_b (body frames, m), its rows
+/// still to be filled by its add_* function.
+Joint joint_between(const std::string& name, JointType type, int body_a, const Vec3& point_a, int body_b,
+                    const Vec3& point_b) {
+  Joint j;
+  j.name = name;
+  j.type = type;
+  j.body_a = body_a;
+  j.body_b = body_b;
+  j.point_a = point_a;
+  j.point_b = point_b;
+  return j;
+}
+
 }  // namespace
 
 int System::add_body(const std::string& name, double mass, const Mat3& poinsot_com_body) {
@@ -118,13 +132,7 @@ int System::add_joint(Joint joint) {
 
 int System::add_ball(const std::string& name, int body_a, const Vec3& point_a, int body_b,
                      const Vec3& point_b) {
-  Joint j;
-  j.name = name;
-  j.type = JointType::ball;
-  j.body_a = body_a;
-  j.body_b = body_b;
-  j.point_a = point_a;
-  j.point_b = point_b;
+  Joint j = joint_between(name, JointType::ball, body_a, point_a, body_b, point_b);
   return add_joint(j);
 }
 
@@ -133,13 +141,7 @@ int System::add_hinge(const std::string& name, int body_a, const Vec3& point_a, 
   const std::string what = fmt::format("multibody joint '{}'", name);
   const Vec3 ua = unit_axis(what + ": axis a", axis_a);
   const Vec3 ub = unit_axis(what + ": axis b", axis_b);
-  Joint j;
-  j.name = name;
-  j.type = JointType::hinge;
-  j.body_a = body_a;
-  j.body_b = body_b;
-  j.point_a = point_a;
-  j.point_b = point_b;
+  Joint j = joint_between(name, JointType::hinge, body_a, point_a, body_b, point_b);
   j.perpendicular_count = 2;
   j.p_a[0] = any_perpendicular(ua);
   j.p_a[1] = ua.cross(j.p_a[0]);
@@ -150,13 +152,7 @@ int System::add_hinge(const std::string& name, int body_a, const Vec3& point_a, 
 
 int System::add_weld(const std::string& name, int body_a, const Vec3& point_a, int body_b,
                      const Vec3& point_b, const Mat3& R_b_a) {
-  Joint j;
-  j.name = name;
-  j.type = JointType::weld;
-  j.body_a = body_a;
-  j.body_b = body_b;
-  j.point_a = point_a;
-  j.point_b = point_b;
+  Joint j = joint_between(name, JointType::weld, body_a, point_a, body_b, point_b);
   freeze_relative_rotation(fmt::format("multibody joint '{}'", name), j, R_b_a);
   return add_joint(j);
 }
@@ -164,13 +160,7 @@ int System::add_weld(const std::string& name, int body_a, const Vec3& point_a, i
 int System::add_universal(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a,
                           int body_b, const Vec3& point_b, const Vec3& axis_b) {
   const std::string what = fmt::format("multibody joint '{}'", name);
-  Joint j;
-  j.name = name;
-  j.type = JointType::universal;
-  j.body_a = body_a;
-  j.body_b = body_b;
-  j.point_a = point_a;
-  j.point_b = point_b;
+  Joint j = joint_between(name, JointType::universal, body_a, point_a, body_b, point_b);
   j.perpendicular_count = 1;
   j.p_a[0] = unit_axis(what + ": axis a", axis_a);
   j.u_b[0] = unit_axis(what + ": axis b", axis_b);
@@ -181,13 +171,7 @@ int System::add_prismatic(const std::string& name, int body_a, const Vec3& point
                           int body_b, const Vec3& point_b, const Mat3& R_b_a) {
   const std::string what = fmt::format("multibody joint '{}'", name);
   const Vec3 axis = unit_axis(what + ": axis a", axis_a);
-  Joint j;
-  j.name = name;
-  j.type = JointType::prismatic;
-  j.body_a = body_a;
-  j.body_b = body_b;
-  j.point_a = point_a;
-  j.point_b = point_b;
+  Joint j = joint_between(name, JointType::prismatic, body_a, point_a, body_b, point_b);
   freeze_relative_rotation(what, j, R_b_a);
   // The sliding direction in b's frame, and two unit normals: the line rows (constraints.hpp).
   const Vec3 axis_b = R_b_a * axis;
