@@ -3,7 +3,14 @@ Chromium (Debian's chromium + chromium-driver, driven by python3-selenium) share
 
 WebGL in a headless container: Chromium renders with SwiftShader (software) when started with
 --use-angle=swiftshader --enable-unsafe-swiftshader; --disable-gpu or --use-gl=swiftshader leave no WebGL
-context in Chromium 156."""
+context in Chromium 156.
+
+Speed. Loading a page (parsing three.js, compiling shaders in software) is most of the time, so a page is
+loaded once and the tests on it run one after the other (pytest_collection_modifyitems groups the tests of
+one example); a test that finds the page already open puts it back in the state it opened in
+(`poinsotView.player.restore()`) instead of reloading it. Nothing waits a fixed time: every wait is for a
+condition (the page's `poinsotView.ready`, the time advancing), bounded by WAIT_S only so that a broken page
+fails instead of hanging; on a loaded machine the waits last longer and pass all the same."""
 import os
 import shutil
 import subprocess
@@ -15,6 +22,7 @@ SOURCE_DIR = Path(os.environ.get("POINSOT_SOURCE_DIR", Path(__file__).resolve().
 CHROMIUM = "/usr/bin/chromium"
 CHROMEDRIVER = "/usr/bin/chromedriver"
 WINDOW = (800, 520)  # CSS pixels; small, so that software rendering stays fast
+WAIT_S = 300  # the most any wait for the browser may take (s): a bound for a broken page, not a speed
 
 EXAMPLES = sorted(p.relative_to(SOURCE_DIR / "examples").as_posix()
                   for p in list((SOURCE_DIR / "examples").glob("*.toml")) +
@@ -62,6 +70,8 @@ def browser():
         options.add_argument(arg)
     options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=options)
+    driver.set_page_load_timeout(WAIT_S)
+    driver.set_script_timeout(WAIT_S)
     yield driver
     driver.quit()
 
@@ -70,13 +80,37 @@ class Page:
     """A view.html loaded in the browser, with helpers to read the page's state and pixels."""
 
     def __init__(self, driver, path, reuse=False):
+        """Opens `path`, or takes the page already open there: as the previous test left it with `reuse`,
+        else restored to the state it opened in."""
         self.driver = driver
         self.logs = []
         uri = Path(path).resolve().as_uri()
-        if reuse and driver.current_url == uri:
-            return  # the page the previous test left, as it left it
+        if driver.current_url == uri and self.js("return !!(window.poinsotView && window.poinsotView.ready)"):
+            if not reuse:
+                self.js("window.poinsotView.player.restore();")
+            return
         driver.get_log("browser")  # drop what earlier pages logged
         driver.get(uri)
+        self.wait_for("return !!(window.poinsotView && window.poinsotView.ready)", "the page to be ready")
+
+    def wait_for(self, script, what, *args):
+        """Waits until the JavaScript `script` returns a true value (polled every 20 ms, at most WAIT_S);
+        returns that value."""
+        from selenium.common.exceptions import TimeoutException
+        from selenium.webdriver.support.wait import WebDriverWait
+
+        try:
+            return WebDriverWait(self.driver, WAIT_S, poll_frequency=0.02).until(
+                lambda d: d.execute_script(script, *args))
+        except TimeoutException:
+            pytest.fail(f"waited {WAIT_S} s for {what}; the console says {self.console()}")
+
+    def resize(self, width, height):
+        """Sets the window's size (CSS pixels) and waits until the page has redrawn its canvas at that size."""
+        self.driver.set_window_size(width, height)
+        self.wait_for("var s = document.getElementById('stage'), c = s.querySelector('canvas');"
+                      "return c.clientWidth === s.clientWidth && c.clientHeight === s.clientHeight;",
+                      "the canvas to follow the window's size")
 
     def js(self, script, *args):
         return self.driver.execute_script(script, *args)
@@ -117,6 +151,18 @@ class Page:
         """Moves the time slider to t (s) as a user does: its value, then its input event."""
         self.js("var s = document.getElementById('time'); s.value = arguments[0];"
                 "s.dispatchEvent(new Event('input'));", t)
+
+
+def pytest_collection_modifyitems(items):
+    """Runs the tests of one example one after the other (in the order collected otherwise), so that its page
+    is loaded once: every test with the parameter `example` moves up to just after the first such test."""
+    first = {}
+    keys = []
+    for k, item in enumerate(items):
+        example = getattr(item, "callspec", None) and item.callspec.params.get("example")
+        keys.append((first.setdefault(example, k), k) if example else (k, k))
+    order = sorted(range(len(items)), key=lambda k: keys[k])
+    items[:] = [items[k] for k in order]
 
 
 @pytest.fixture

@@ -6,6 +6,8 @@ from pathlib import Path
 
 import pytest
 
+from conftest import WINDOW
+
 OUT = os.environ.get("POINSOT_VIEWER_SCREENSHOTS")
 
 # example, file name, fraction of the run's time, page set-up (JavaScript)
@@ -20,10 +22,13 @@ SHOTS = [
 @pytest.mark.skipif(not OUT, reason="set POINSOT_VIEWER_SCREENSHOTS=FOLDER to write the screenshots")
 @pytest.mark.parametrize("example,name,fraction,setup", SHOTS)
 def test_screenshot(example, name, fraction, setup, example_runs, load, browser):
-    browser.set_window_size(1200, 760)
     page = load(example_runs[example] / "view.html")
-    page.js("var p = window.poinsotView.player; p.seek(p.t0 + arguments[0] * (p.t1 - p.t0));" + setup, fraction)
-    assert page.pixels()[0] > 0.001
-    Path(OUT).mkdir(parents=True, exist_ok=True)
-    browser.save_screenshot(str(Path(OUT) / name))
+    page.resize(1200, 760)
+    try:
+        page.js("var p = window.poinsotView.player; p.seek(p.t0 + arguments[0] * (p.t1 - p.t0));" + setup, fraction)
+        assert page.pixels()[0] > 0.001
+        Path(OUT).mkdir(parents=True, exist_ok=True)
+        browser.save_screenshot(str(Path(OUT) / name))
+    finally:
+        page.resize(*WINDOW)  # the other tests on this page expect the usual size
     assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]

@@ -54,6 +54,8 @@
   }
   var overlays = [];
   scenes.forEach(function (s) { overlays = overlays.concat(s.overlays); });
+  overlays.forEach(function (o) { o.initial = o.on; });
+  var initialShape = main.shapeShown();
   camera.near = ctx.length * 1e-3; camera.far = ctx.length * 1e3;
   camera.updateProjectionMatrix();
   var orbit = new PV.Orbit(renderer.domElement, (poinsot ? 5.5 : 4.5) * ctx.length);
@@ -106,6 +108,19 @@
       player.render();
     },
     resetView: function () { orbit.reset(); player.render(); },
+    // Back to the state the page opened in: paused at the first frame, 1x, space-fixed camera, the view and
+    // every overlay as they were, the first shape, the help closed.
+    restore: function () {
+      player.playing = false; player.speed = 1; player.cameraMode = 'space';
+      document.getElementById('camera').value = 'space';
+      document.getElementById('help').hidden = true;
+      for (var k = 0; k < 3 && main.shapeShown() !== initialShape; k++) player.toggleShape();
+      overlays.forEach(function (o) {
+        if (o.on !== o.initial) { controls.boxes[o.key].checked = o.initial; player.showOverlay(o, o.initial); }
+      });
+      orbit.reset();
+      player.seek(player.t0);
+    },
     // Moves every object to the current time (no drawing).
     update: function () {
       player.where = track.locate(player.time);
@@ -177,6 +192,7 @@
     jointGap: function () { return data.kind === 'multibody' ? main.jointGap() : null; },
     // Sets the time (s) and moves the objects there without drawing (for tests that read the scene).
     moveTo: function (t) { player.time = Math.min(player.t1, Math.max(player.t0, t)); player.update(); },
+    ready: true,  // set last: the scenes are built and the first frame is drawn
     bodyQuaternion: function () {  // [w, x, y, z] of the body as drawn
       var g = data.kind === 'multibody' ? main.bodies[0].group : main.group;
       return [g.quaternion.w, g.quaternion.x, g.quaternion.y, g.quaternion.z];

@@ -69,6 +69,8 @@ PV.BodyScene = (function () {
     return u.box.visible ? 'box' : 'ellipsoid';
   };
 
+  BodyScene.prototype.shapeShown = function () { return this.shapes.userData.box.visible ? 'box' : 'ellipsoid'; };
+
   BodyScene.prototype.update = function (time, where) {
     var track = this.ctx.track;
     var q = track.value('q', time);

@@ -94,6 +94,10 @@ PV.MultibodyScene = (function () {
     return shown;
   };
 
+  MultibodyScene.prototype.shapeShown = function () {
+    return this.bodies[0].shapes.userData.box.visible ? 'box' : 'ellipsoid';
+  };
+
   MultibodyScene.prototype.update = function (time, where) {
     var track = this.ctx.track, states = [];
     this.bodies.forEach(function (b, k) {
