@@ -148,6 +148,7 @@ void read_bodies(Reader& r, const Section& top, const toml::table& root, std::st
     if (b.com != Vec3::Zero())
       description += "; positions and points in this frame, the trajectory follows the centre of mass";
     r.sc.body_descriptions.push_back(description);
+    r.sc.body_surfaces.push_back(b.surface);
   }
 }
 

@@ -33,6 +33,7 @@ using detail::Source;
 struct BodyPart {
   dynamics::RigidBody body;
   std::string description;
+  std::shared_ptr<const inertia::TriangleMesh> surface;
 };
 
 BodyPart read_body(const Source& src, const toml::table& root, std::string_view base_dir) {
@@ -69,7 +70,7 @@ BodyPart read_body(const Source& src, const toml::table& root, std::string_view 
     description += fmt::format("; held at a fixed pivot, mass {} kg, pivot to centre of mass {} m",
                                format_number(m), format_vector(*d));
   }
-  return {*body, description};
+  return {*body, description, b.surface};
 }
 
 dynamics::State read_initial(const Source& src, const toml::table& root) {
@@ -129,7 +130,8 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
               .method = "",
               .integrator = {},
               .simulation = {},
-              .out_dir = ""};
+              .out_dir = "",
+              .body_surface = body.surface};
 
   // [torque]
   const Section t(src, root["torque"].as_table(), "torque", {"type", "g", "value"});

@@ -16,6 +16,7 @@
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/inertia/mesh_io.hpp"
 #include "poinsot/inertia/shapes.hpp"
+#include "poinsot/inertia/tessellation.hpp"
 
 namespace poinsot::io::detail {
 namespace {
@@ -77,6 +78,23 @@ Mat3 axis_rotation(char axis) {
 std::string format_point(const Vec3& p) {
   return fmt::format("({}, {}, {})", format_number(p.x(), 7), format_number(p.y(), 7),
                      format_number(p.z(), 7));
+}
+
+/// The drawn surface of a shape (shapes.hpp frame, turned by `axes`: shape axis i → body axis), about its
+/// centre of mass; null for the shapes without a solid to draw (point, rod, thin shells). A plate is a box
+/// of no thickness.
+std::shared_ptr<const inertia::TriangleMesh> shape_surface(const inertia::ShapeSpec& spec, const Mat3& axes) {
+  inertia::TriangleMesh m;
+  if (spec.kind == "plate") {
+    m = inertia::box_mesh(Vec3(spec.size.x(), spec.size.y(), 0.0));
+  } else if (spec.kind == "point" || spec.kind == "rod" || spec.hollow) {
+    return nullptr;
+  } else {
+    m = inertia::tessellate(spec, kSurfaceSegments);
+  }
+  for (Vec3& v : m.vertices)
+    v = axes * v;
+  return std::make_shared<const inertia::TriangleMesh>(std::move(m));
 }
 
 BodyInertia from_shape(const Source& source, const Section& body, char default_axis) {
@@ -158,6 +176,7 @@ BodyInertia from_shape(const Source& source, const Section& body, char default_a
   out.inertia_com = mp.inertia_com;
   out.mass = mp.mass;
   out.com = mp.com;
+  out.surface = shape_surface(spec, has_axis && axis != 'z' ? axis_rotation(axis) : Mat3::Identity());
   std::string sizes;
   if (s.has("size")) sizes += fmt::format(" size {} m", describe(*s.node("size")));
   for (const char* k : {"radius", "inner_radius", "length", "height", "major_radius", "minor_radius"}) {
@@ -194,6 +213,10 @@ BodyInertia from_mesh(const Source& source, const Section& body, std::string_vie
   out.inertia_com = mp.inertia_com;
   out.mass = mp.mass;
   out.com = mp.com;
+  inertia::TriangleMesh surface = m;
+  for (Vec3& v : surface.vertices)
+    v -= mp.com;
+  out.surface = std::make_shared<const inertia::TriangleMesh>(std::move(surface));
   out.description =
       fmt::format("{}mesh {} ({} triangles), {} {} {}, mass {} kg, centre of mass {} m (mesh frame)",
                   shell ? "thin-shell " : "", file.string(), m.triangles.size(), by_mass ? "mass" : "density",

@@ -3,11 +3,13 @@
 // single-body scenario and for every `[[bodies]]` entry of a multibody one (docs/scenario.md,
 // docs/multibody.md): explicit tensors, a shape of the inertia layer, a mesh file or a composite body file.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 
 #include "poinsot/core/types.hpp"
+#include "poinsot/inertia/mesh.hpp"
 #include "toml_fields.hpp"
 
 namespace poinsot::io::detail {
@@ -25,7 +27,14 @@ struct BodyInertia {
   std::optional<double> mass;
   Vec3 com = Vec3::Zero();  ///< centre of mass in the body's frame (m); 0 but for meshes and composites
   std::string description;  ///< for the report, e.g. "box size [0.3, 0.1, 0.02] m, mass 0.4 kg (...)"
+  /// The body's surface about its centre of mass (body axes, m), for drawing: a shape's tessellation
+  /// (kSurfaceSegments around its axis), a mesh file's triangles; null for explicit tensors, composites and
+  /// the shapes without a solid (point, rod without radius, thin shells).
+  std::shared_ptr<const inertia::TriangleMesh> surface;
 };
+
+/// Segments around the axis of a curved shape's drawn surface (the inertia comes from the closed forms).
+inline constexpr int kSurfaceSegments = 48;
 
 /// Reads the inertia of the body table `body` (a Section whose valid keys include the six keys below and
 /// `mass`): exactly one of

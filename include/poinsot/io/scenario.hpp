@@ -23,6 +23,7 @@
 #include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/dynamics/state.hpp"
 #include "poinsot/dynamics/torque.hpp"
+#include "poinsot/inertia/mesh.hpp"
 
 namespace poinsot::io {
 
@@ -41,6 +42,9 @@ struct Scenario {
   dynamics::IntegratorOptions integrator;  ///< dt (s), rtol, atol
   dynamics::SimulationOptions simulation;  ///< t_end (s), sample_dt (s)
   std::string out_dir;  ///< [output] dir; empty: the CLI uses a folder named after the scenario
+  /// The body's surface about its centre of mass (body axes, m) when the file gives a shape or a mesh, for
+  /// drawing (view.html); null otherwise.
+  std::shared_ptr<const inertia::TriangleMesh> body_surface;
 };
 
 /// Parses and validates scenario text. `source` names it in messages (a path, or "<string>"); a relative mesh

@@ -6,9 +6,11 @@
 /// examples/multibody/): this layer computes, io serialises. Units SI throughout.
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "poinsot/inertia/mesh.hpp"
 #include "poinsot/multibody/kkt_solver.hpp"
 #include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/model.hpp"
@@ -31,6 +33,9 @@ struct Scenario {
   /// Per body (system order), how its inertia was given and where its centre of mass lies in the frame of
   /// its file, for the report; may be empty.
   std::vector<std::string> body_descriptions;
+  /// Per body (system order), its surface about its centre of mass (body frame, m) when the file gives a
+  /// shape or a mesh, for drawing (view.html); null otherwise. May be empty.
+  std::vector<std::shared_ptr<const inertia::TriangleMesh>> body_surfaces;
 };
 
 /// Projects every body's velocity onto the joint constraints, G v = 0, minimising the change of kinetic
