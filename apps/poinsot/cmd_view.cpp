@@ -14,7 +14,8 @@ void register_view(CLI::App& app) {
   auto dir = std::make_shared<std::string>();
   auto options = std::make_shared<io::ViewOptions>();
   auto* cmd = app.add_subcommand("view", "Write view.html: the 3-D page of a finished run (docs/viewer.md)");
-  cmd->add_option("out_dir", *dir, "the output folder of a finished `poinsot run`")->required();
+  cmd->add_option("out_dir", *dir, "the output folder of a finished `poinsot run` or `poinsot optimize`")
+      ->required();
   cmd->add_option(
       "--frames", options->frames,
       fmt::format("most frames in the page; longer runs are decimated (default {})", io::kViewFramesDefault));

@@ -22,8 +22,8 @@ def view(result_or_out_dir: Any, *, frames: int | None = None, scenario: str | o
          display: bool | None = None, height: int = 640) -> str:
     """Writes ``view.html`` into a finished run's folder and returns its path.
 
-    ``result_or_out_dir``: the folder of a finished run (``poinsot run ... --out DIR``), or the RunResult of
-    ``poinsot.run(scenario, out_dir)``. ``frames``: the most frames in the page (default
+    ``result_or_out_dir``: the folder of a finished run (``poinsot run ... --out DIR``, or ``poinsot optimize``'s
+    folder), or the RunResult of ``poinsot.run(scenario, out_dir)``. ``frames``: the most frames in the page (default
     ``_core.VIEW_FRAMES_DEFAULT``); longer runs are decimated. ``scenario``: the scenario file of the run, for
     the model (default: the path in summary.json, if it still reads). ``display``: show the page inline (an
     iframe); default: when running inside Jupyter. Raises ValueError (the library's one-line message) when the

@@ -43,6 +43,21 @@ std::vector<std::string> read_header(std::ifstream& in, const std::string& path)
 
 }  // namespace
 
+double rounded_for_drawing(double x) {
+  char buf[40];
+  const auto end = fmt::format_to_n(buf, sizeof buf, "{:.{}g}", x, kViewDrawDigits).out;
+  double r = 0.0;
+  std::from_chars(buf, end, r);
+  return r;
+}
+
+std::size_t csv_column(const CsvFrames& f, const std::string& name, const std::string& path) {
+  for (std::size_t i = 0; i < f.columns.size(); ++i)
+    if (f.columns[i] == name) return i;
+  throw InvalidInput(
+      fmt::format("view: \"{}\" has no column \"{}\"; expected the trajectory of a run", path, name));
+}
+
 std::vector<long long> frame_rows(long long rows, int max_frames) {
   std::vector<long long> kept;
   if (rows <= 0) return kept;

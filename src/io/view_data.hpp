@@ -19,6 +19,17 @@ struct CsvFrames {
   std::vector<std::vector<double>> values;  ///< per kept row, one number per column
 };
 
+/// Significant digits of the numbers the page only draws (multipliers, surfaces): three.js draws in single
+/// precision (7 digits), and 9 digits take half the text of a shortest round-trip double.
+inline constexpr int kViewDrawDigits = 9;
+
+/// `x` rounded to kViewDrawDigits significant digits: the double nearest to that decimal, whose shortest
+/// text has at most that many digits.
+double rounded_for_drawing(double x);
+
+/// The index of the column `name` of `f` (read from `path`); InvalidInput naming the column when absent.
+std::size_t csv_column(const CsvFrames& f, const std::string& name, const std::string& path);
+
 /// Indices of the rows kept out of `rows` for at most `max_frames` frames (see CsvFrames).
 std::vector<long long> frame_rows(long long rows, int max_frames);
 

@@ -2,8 +2,10 @@
 // assembled from the embedded template, style and scripts.
 #include "poinsot/io/view_page.hpp"
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <variant>
@@ -13,27 +15,26 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
+#include "poinsot/inertia/mesh.hpp"
 #include "poinsot/io/scenario_file.hpp"
 #include "poinsot/io/summary.hpp"
 #include "view_assets.hpp"
 #include "view_data.hpp"
+#include "view_json.hpp"
+#include "view_multipliers.hpp"
+#include "view_optimal.hpp"
 
 namespace poinsot::io {
 namespace {
 
 namespace fs = std::filesystem;
-using json = nlohmann::ordered_json;
-
-json vec(const Vec3& v) {
-  return json::array({v[0], v[1], v[2]});
-}
-
-json mat(const Mat3& m) {
-  json rows = json::array();
-  for (int i = 0; i < 3; ++i)
-    rows.push_back(json::array({m(i, 0), m(i, 1), m(i, 2)}));
-  return rows;
-}
+using json = detail::ViewJson;
+using detail::check_page_budget;
+using detail::frames_header;
+using detail::gather;
+using detail::mat;
+using detail::shapes_json;
+using detail::vec;
 
 Mat3 read_mat(const json& j) {
   Mat3 m;
@@ -43,16 +44,9 @@ Mat3 read_mat(const json& j) {
   return m;
 }
 
-json shapes_json(const Mat3& inertia_com, double mass) {
-  const EquivalentShapes s = equivalent_shapes(inertia_com, mass);
-  return {{"box_half_extents", vec(s.box_half_extents)},
-          {"ellipsoid_semi_axes", vec(s.ellipsoid_semi_axes)},
-          {"axes", mat(s.axes)}};
-}
-
 /// summary.json of a finished run in `dir`, or InvalidInput saying what is missing.
 json read_finished_summary(const std::string& dir) {
-  const std::string hint = "expected the output folder of a finished `poinsot run`";
+  const std::string hint = "expected the output folder of a finished `poinsot run` or `poinsot optimize`";
   if (!fs::is_directory(dir)) throw InvalidInput(fmt::format("view: \"{}\" is not a folder; {}", dir, hint));
   const fs::path summary = fs::path(dir) / "summary.json";
   const fs::path trajectory = fs::path(dir) / "trajectory.csv";
@@ -66,7 +60,7 @@ json read_finished_summary(const std::string& dir) {
   if (j.is_discarded() || !j.is_object()) {
     throw InvalidInput(fmt::format("view: \"{}\" is not valid JSON; {}", summary.string(), hint));
   }
-  if (j.value("kind", "") != "multibody") {
+  if (j.value("kind", "") != "multibody" && !detail::is_optimal_summary(j)) {
     const std::string status =
         j.contains("status") && j["status"].is_string() ? j["status"].get<std::string>() : "";
     if (status != "completed") {
@@ -76,16 +70,6 @@ json read_finished_summary(const std::string& dir) {
     }
   }
   return j;
-}
-
-/// The numbers a page's frames may hold: InvalidInput beyond kViewValuesMax, naming the frames that fit.
-void check_page_budget(const std::string& dir, long long frames, long long values_per_frame, int requested) {
-  if (frames * values_per_frame <= kViewValuesMax) return;
-  throw InvalidInput(fmt::format(
-      "view: --frames {} gives {} frames × {} numbers = {} numbers for \"{}\", more than a page holds ({}); "
-      "expected --frames ≤ {}",
-      requested, frames, values_per_frame, frames * values_per_frame, dir, kViewValuesMax,
-      kViewValuesMax / values_per_frame));
 }
 
 /// The scenario that made the run, when it can still be read: the given path, else the one in summary.json.
@@ -102,34 +86,6 @@ std::optional<AnyScenario> try_load_scenario(const ViewOptions& options, const j
     }
   }
   return std::nullopt;
-}
-
-std::size_t column(const CsvFrames& f, const std::string& name, const std::string& path) {
-  for (std::size_t i = 0; i < f.columns.size(); ++i)
-    if (f.columns[i] == name) return i;
-  throw InvalidInput(
-      fmt::format("view: \"{}\" has no column \"{}\"; expected the trajectory of a run", path, name));
-}
-
-/// The columns `names` of every frame, frame after frame.
-std::vector<double> gather(const CsvFrames& f, const std::vector<std::string>& names,
-                           const std::string& path) {
-  std::vector<std::size_t> idx;
-  for (const auto& n : names)
-    idx.push_back(column(f, n, path));
-  std::vector<double> out;
-  out.reserve(f.values.size() * idx.size());
-  for (const auto& row : f.values)
-    for (std::size_t i : idx)
-      out.push_back(row[i]);
-  return out;
-}
-
-json frames_header(const CsvFrames& f, const std::string& path) {
-  return {{"samples", f.rows},
-          {"frames", static_cast<long long>(f.values.size())},
-          {"stride", f.stride},
-          {"t", gather(f, {"t"}, path)}};
 }
 
 }  // namespace
@@ -167,6 +123,7 @@ json single_body_data(const std::string& dir, const json& summary, const ViewOpt
   Vec3 pivot_to_com = Vec3::Zero();
   Vec3 gravity = Vec3::Zero();
   bool from_scenario = false;
+  std::shared_ptr<const inertia::TriangleMesh> surface;
   if (auto any = try_load_scenario(options, summary)) {
     if (const auto* sc = std::get_if<Scenario>(&*any)) {
       // Used only when it still describes this run's body (same J about the rotation point).
@@ -176,6 +133,7 @@ json single_body_data(const std::string& dir, const json& summary, const ViewOpt
         mass = sc->body.mass();
         pivot_to_com = sc->body.pivot_to_com();
         gravity = sc->gravity_space;
+        surface = sc->body_surface;
       }
     }
   }
@@ -190,7 +148,7 @@ json single_body_data(const std::string& dir, const json& summary, const ViewOpt
   body["has_pivot"] = pivot_to_com.norm() > 0.0;
   body["model_from_scenario"] = from_scenario;
   // Without a mass the shapes are those of 1 kg (their proportions are the body's; the size is arbitrary).
-  body["shapes"] = shapes_json(inertia_com, mass > 0.0 ? mass : 1.0);
+  body["shapes"] = shapes_json(inertia_com, mass > 0.0 ? mass : 1.0, surface.get());
   j["body"] = body;
   j["torque"] = summary.value("torque", "none");
   j["gravity"] = vec(gravity);
@@ -200,6 +158,22 @@ json single_body_data(const std::string& dir, const json& summary, const ViewOpt
   return j;
 }
 
+const char* joint_type_name(multibody::JointType type) {
+  switch (type) {
+    case multibody::JointType::ball:
+      return "ball";
+    case multibody::JointType::hinge:
+      return "hinge";
+    case multibody::JointType::weld:
+      return "weld";
+    case multibody::JointType::universal:
+      return "universal";
+    case multibody::JointType::prismatic:
+      return "prismatic";
+  }
+  return "joint";
+}
+
 json multibody_data(const std::string& dir, const json& summary, const ViewOptions& options) {
   const std::string path = (fs::path(dir) / "trajectory.csv").string();
   const std::string diag_path = (fs::path(dir) / "diagnostics.csv").string();
@@ -207,7 +181,18 @@ json multibody_data(const std::string& dir, const json& summary, const ViewOptio
   const long long rows = count_csv_rows(path);
   const long long kept = static_cast<long long>(frame_rows(rows, options.frames).size());
   const int bodies_in_summary = summary.value("bodies", 0);
-  check_page_budget(dir, kept, 1 + 10LL * bodies_in_summary + (has_diag ? 1 : 0), options.frames);
+  // The model, when the scenario still reads and has the run's bodies (checked by name below).
+  std::optional<multibody::Scenario> mb;
+  if (auto any = try_load_scenario(options, summary)) {
+    if (auto* m = std::get_if<multibody::Scenario>(&*any)) {
+      if (m->system.body_count() == bodies_in_summary) mb = std::move(*m);
+    }
+  }
+  // Per frame: t, per body x, q, ω (10), energy_error; with the model, 6 multipliers per joint and per body.
+  const long long multiplier_values =
+      mb ? 6LL * (static_cast<long long>(mb->system.joints().size()) + bodies_in_summary) : 0;
+  check_page_budget(dir, kept, 1 + 10LL * bodies_in_summary + (has_diag ? 1 : 0) + multiplier_values,
+                    options.frames);
   const CsvFrames f = read_csv_frames(path, options.frames);
   if (f.values.size() < 2) {
     throw InvalidInput(fmt::format("view: \"{}\" has {} rows; expected at least 2", path, f.values.size()));
@@ -222,15 +207,23 @@ json multibody_data(const std::string& dir, const json& summary, const ViewOptio
     const CsvFrames d = read_csv_frames(diag_path, options.frames);
     if (d.rows == f.rows) j["energy_error"] = gather(d, {"energy_error"}, diag_path);
   }
-  std::optional<multibody::Scenario> mb;
-  if (auto any = try_load_scenario(options, summary)) {
-    if (auto* m = std::get_if<multibody::Scenario>(&*any)) {
-      bool same = m->system.body_count() == static_cast<int>(names.size());
-      for (int i = 0; same && i < m->system.body_count(); ++i)
-        same = m->system.bodies()[static_cast<std::size_t>(i)].name == names[static_cast<std::size_t>(i)];
-      if (same) mb = std::move(*m);
-    }
+  if (mb) {
+    bool same = mb->system.body_count() == static_cast<int>(names.size());
+    for (int i = 0; same && i < mb->system.body_count(); ++i)
+      same = mb->system.bodies()[static_cast<std::size_t>(i)].name == names[static_cast<std::size_t>(i)];
+    if (!same) mb.reset();
   }
+  FrameMultipliers multipliers;
+  if (mb) multipliers = frame_multipliers(mb->system, f, path);
+  // Frame after frame, the `width` numbers of item k of `count` from `all`.
+  const auto per_item = [&](const std::vector<double>& all, std::size_t k, std::size_t count) {
+    std::vector<double> out;
+    out.reserve(f.values.size() * 6);
+    for (std::size_t r = 0; r < f.values.size(); ++r)
+      for (std::size_t c = 0; c < 6; ++c)
+        out.push_back(all[(r * count + k) * 6 + c]);
+    return out;
+  };
   json bodies = json::array();
   for (std::size_t i = 0; i < names.size(); ++i) {
     const std::string& n = names[i];
@@ -243,26 +236,30 @@ json multibody_data(const std::string& dir, const json& summary, const ViewOptio
       const multibody::Body& body = mb->system.bodies()[i];
       b["mass"] = body.mass;
       b["inertia"] = mat(body.inertia);
-      b["shapes"] = shapes_json(body.inertia, body.mass);
+      b["shapes"] = shapes_json(body.inertia, body.mass,
+                                i < mb->body_surfaces.size() ? mb->body_surfaces[i].get() : nullptr);
+      b["lambda"] = per_item(multipliers.lambda, i, names.size());
     } else {
       b["mass"] = nullptr;
       b["shapes"] = nullptr;
+      b["lambda"] = nullptr;
     }
     bodies.push_back(b);
   }
   j["bodies"] = bodies;
   json joints = json::array();
   if (mb) {
-    for (const auto& jt : mb->system.joints()) {
-      const char* type = jt.type == multibody::JointType::ball    ? "ball"
-                         : jt.type == multibody::JointType::hinge ? "hinge"
-                                                                  : "weld";
+    const std::size_t count = mb->system.joints().size();
+    for (std::size_t k = 0; k < count; ++k) {
+      const multibody::Joint& jt = mb->system.joints()[k];
+      const char* type = joint_type_name(jt.type);
       joints.push_back({{"name", jt.name},
                         {"type", type},
                         {"body_a", jt.body_a},
                         {"point_a", vec(jt.point_a)},
                         {"body_b", jt.body_b},  // −1: the world (point_b in the space frame)
-                        {"point_b", vec(jt.point_b)}});
+                        {"point_b", vec(jt.point_b)},
+                        {"reaction", per_item(multipliers.reactions, k, count)}});
     }
   }
   j["joints"] = joints;
@@ -316,8 +313,13 @@ std::string view_data_json(const std::string& run_dir, const ViewOptions& option
   j["scenario"] = summary.value("scenario", "");
   j["method"] = summary.value("method", "");
   j["t_end"] = summary.value("t_end", 0.0);
-  j.update(summary.value("kind", "") == "multibody" ? multibody_data(run_dir, summary, options)
-                                                    : single_body_data(run_dir, summary, options));
+  if (detail::is_optimal_summary(summary)) {
+    j["method"] = "optimize, " + summary.value("status", std::string());
+    j.update(detail::optimal_view_data(run_dir, summary, options));
+  } else {
+    j.update(summary.value("kind", "") == "multibody" ? multibody_data(run_dir, summary, options)
+                                                      : single_body_data(run_dir, summary, options));
+  }
   return j.dump();
 }
 
@@ -338,10 +340,12 @@ std::string write_view_page(const std::string& run_dir, const ViewOptions& optio
   return path;
 }
 
-std::size_t view_page_size_bound(long long frames, long long values_per_frame, long long bodies) {
+std::size_t view_page_size_bound(long long frames, long long values_per_frame, long long bodies,
+                                 long long surface_triangles) {
   // The page's other data: summary.json's values (under 8 KiB) and per body its name, mass, inertia, shapes
   // and joints (under 2 KiB each, with names up to a few hundred characters).
-  const std::size_t other = 8 * 1024 + static_cast<std::size_t>(bodies) * 2048;
+  const std::size_t other = 8 * 1024 + static_cast<std::size_t>(bodies) * 2048 +
+                            static_cast<std::size_t>(surface_triangles) * kSurfaceBytesPerTriangle;
   return view_assets_size() + other + static_cast<std::size_t>(frames * values_per_frame) * 25;
 }
 

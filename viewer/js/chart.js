@@ -3,9 +3,10 @@
 PV.Chart = (function () {
   'use strict';
 
-  // series: [{label, color, values (one per frame)}]; yLabel names the quantity and its unit.
-  function Chart(canvas, t, series, yLabel, onSeek) {
-    this.canvas = canvas; this.t = t; this.series = series; this.yLabel = yLabel;
+  // series: [{label, color, values (one per frame, or one per time of its own `t`)}]; yLabel names the
+  // quantity and its unit; marks: times (s) drawn as dashed vertical lines (e.g. switches).
+  function Chart(canvas, t, series, yLabel, onSeek, marks) {
+    this.canvas = canvas; this.t = t; this.series = series; this.yLabel = yLabel; this.marks = marks || [];
     var lo = Infinity, hi = -Infinity;
     series.forEach(function (s) {
       s.values.forEach(function (v) { if (isFinite(v)) { lo = Math.min(lo, v); hi = Math.max(hi, v); } });
@@ -52,11 +53,16 @@ PV.Chart = (function () {
     c.fillText(t[t.length - 1].toPrecision(4), b.right - 10, b.bottom + 12);
     c.save(); c.translate(10, (b.top + b.bottom) / 2); c.rotate(-Math.PI / 2);
     c.fillText(this.yLabel, 0, 0); c.restore();
-    var step = Math.max(1, Math.floor(t.length / 1000));
+    c.strokeStyle = '#7f7f7f'; c.setLineDash([3, 3]);
+    this.marks.forEach(function (m) {
+      c.beginPath(); c.moveTo(self.x(m), b.top); c.lineTo(self.x(m), b.bottom); c.stroke();
+    });
+    c.setLineDash([]);
     this.series.forEach(function (s, k) {
+      var st = s.t || t, step = Math.max(1, Math.floor(st.length / 1000));
       c.strokeStyle = s.color; c.beginPath();
-      for (var i = 0; i < t.length; i += step) {
-        var X = self.x(t[i]), Y = self.y(s.values[i]);
+      for (var i = 0; i < st.length; i += step) {
+        var X = self.x(st[i]), Y = self.y(s.values[i]);
         if (i === 0) c.moveTo(X, Y); else c.lineTo(X, Y);
       }
       c.stroke();

@@ -43,7 +43,7 @@ PV.Controls = (function () {
         $('camera').value = $('camera').value === 'space' ? 'body' : 'space';
         p.cameraMode = $('camera').value; p.render();
       }],
-      ['b', 'box / ellipsoid of the same inertia', function () { p.toggleShape(); }],
+      ['b', 'the scenario\'s shape / box / ellipsoid of the same inertia', function () { p.toggleShape(); }],
       ['1 ... 9', 'toggle the overlays, in the order listed', null],
       ['h or ?', 'this help', function () { self.toggleHelp(); }]
     ];

@@ -13,11 +13,11 @@ PV.draw = (function () {
       var len = Math.sqrt(vec[0] * vec[0] + vec[1] * vec[1] + vec[2] * vec[2]);
       a.position.set(origin[0], origin[1], origin[2]);
       a.visible = a.userData.enabled !== false && len > 0;
+      a.userData.length = len;
       if (len === 0) return;
       a.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), v3(vec).divideScalar(len));
       var head = Math.min(len * 0.5, a.userData.headLength || len * a.userData.headFraction);
       a.setLength(len, head, head * 0.5);
-      a.userData.length = len;
     };
     return a;
   }
@@ -60,20 +60,51 @@ PV.draw = (function () {
     return new THREE.Quaternion().setFromRotationMatrix(m);
   }
 
-  // The uniform box and ellipsoid with the body's inertia (shapes from the data), as two meshes of a group,
-  // one of them visible.
+  // The body's own surface (shapes.surface: vertices and triangles about the centre of mass, body axes) as a
+  // mesh, both sides lit (a mesh file's winding is not trusted).
+  function surfaceMesh(surface, material) {
+    var g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(new Float32Array(surface.vertices), 3));
+    g.setIndex(surface.triangles);
+    g.computeVertexNormals();
+    return new THREE.Mesh(g, material);
+  }
+
+  // The body as drawn (shapes from the data, in a group in the body frame about the centre of mass): its own
+  // surface when the scenario gives a shape or mesh, and the uniform box and ellipsoid with its inertia
+  // (along its principal axes); one of them visible, the surface first. userData.order lists what
+  // userData.show(name) can show.
   function bodyShapes(shapes, color, minHalf) {
     var h = shapes.box_half_extents.map(function (x) { return Math.max(x, minHalf); });
     var a = shapes.ellipsoid_semi_axes.map(function (x) { return Math.max(x, minHalf); });
-    var material = new THREE.MeshPhongMaterial({ color: color, shininess: 30, transparent: true, opacity: 0.9 });
+    var material = new THREE.MeshPhongMaterial({ color: color, shininess: 30, transparent: true, opacity: 0.9,
+                                                 side: THREE.DoubleSide });
     var box = new THREE.Mesh(new THREE.BoxGeometry(2 * h[0], 2 * h[1], 2 * h[2]), material);
     var ell = new THREE.Mesh(new THREE.SphereGeometry(1, 32, 16), material);
     ell.scale.set(a[0], a[1], a[2]);
-    ell.visible = false;
+    var principal = new THREE.Group();
+    principal.quaternion.copy(basis(shapes.axes));
+    principal.add(box); principal.add(ell);
     var group = new THREE.Group();
-    group.quaternion.copy(basis(shapes.axes));
-    group.add(box); group.add(ell);
-    group.userData = { box: box, ellipsoid: ell, halfExtents: h };
+    group.add(principal);
+    var items = { box: box, ellipsoid: ell }, order = ['box', 'ellipsoid'];
+    if (shapes.surface) {
+      items.surface = surfaceMesh(shapes.surface, material);
+      group.add(items.surface);
+      order.unshift('surface');
+    }
+    group.userData = { box: box, ellipsoid: ell, surface: items.surface || null, halfExtents: h, order: order,
+                       shown: order[0] };
+    group.userData.show = function (name) {
+      order.forEach(function (k) { items[k].visible = k === name; });
+      group.userData.shown = name;
+    };
+    group.userData.next = function () {
+      var u = group.userData;
+      u.show(order[(order.indexOf(u.shown) + 1) % order.length]);
+      return u.shown;
+    };
+    group.userData.show(order[0]);
     return group;
   }
 

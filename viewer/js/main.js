@@ -39,9 +39,14 @@
   var track = buildTrack();
   var ctx = { data: data, track: track, scene: scene, length: 1, center: [0, 0, 0] };
   var scenes = [], poinsot = null, main;
+  var multipliers = null, optimal = null;
   if (data.kind === 'multibody') {
     main = new PV.MultibodyScene(ctx);
     scenes.push(main);
+    if (data.model_from_scenario) {  // the multipliers are computed from the model
+      multipliers = new PV.MultipliersScene(ctx, main);
+      scenes.push(multipliers);
+    }
   } else {
     main = new PV.BodyScene(ctx);
     scenes.push(main);
@@ -51,6 +56,10 @@
       scenes.push(poinsot);
     }
     if (data.top) scenes.push(new PV.TopScene(ctx, main));
+    if (data.optimal) {
+      optimal = new PV.OptimalScene(ctx, main);
+      scenes.push(optimal);
+    }
   }
   var overlays = [];
   scenes.forEach(function (s) { overlays = overlays.concat(s.overlays); });
@@ -73,6 +82,7 @@
     });
   });
 
+  function shapeName(shown) { return shown === 'surface' ? 'shape' : shown; }
   var player = {
     t0: data.t[0], t1: data.t[data.t.length - 1], n: track.n, time: data.t[0], speed: 1, playing: false,
     where: { i: 0, u: 0 }, cameraMode: 'space',
@@ -103,7 +113,7 @@
       var cb = document.getElementById('overlay-shape');
       if (cb) {
         var text = cb.parentNode.lastChild;
-        text.textContent = text.textContent.replace(/\((box|ellipsoid)\)/, '(' + shown + ')');
+        text.textContent = text.textContent.replace(/\((shape|box|ellipsoid)\)/, '(' + shapeName(shown) + ')');
       }
       player.render();
     },
@@ -119,6 +129,7 @@
         if (o.on !== o.initial) { controls.boxes[o.key].checked = o.initial; player.showOverlay(o, o.initial); }
       });
       orbit.reset();
+      if (initialChart && chart.key !== initialChart) player.showChart(initialChart);
       player.seek(player.t0);
     },
     // Moves every object to the current time (no drawing).
@@ -147,7 +158,7 @@
     }
   };
 
-  var chart = null, controls = null;
+  var chart = null, controls = null, initialChart = null;
   var chartCanvas = document.getElementById('chart');
   function column(name, width, k) {
     var out = [];
@@ -160,9 +171,33 @@
                          'E \u2212 E\u2080 (J)', player.seek);
   } else {
     var name = data.kind === 'multibody' ? 'w0' : 'omega_body';
-    chart = new PV.Chart(chartCanvas, data.t, ['x', 'y', 'z'].map(function (c, k) {
+    var omegaSeries = ['x', 'y', 'z'].map(function (c, k) {
       return { label: '\u03c9' + c, color: ['#d62728', '#2ca02c', '#1f77b4'][k], values: column(name, 3, k) };
-    }), (data.kind === 'multibody' ? data.bodies[0].name + ' ' : '') + '\u03c9 body (rad/s)', player.seek);
+    });
+    if (optimal) {  // a choice of charts: the control, the switching functions, omega
+      var views = optimal.chartViews(omegaSeries), select = document.getElementById('chart-view');
+      views.forEach(function (v) {
+        var opt = document.createElement('option');
+        opt.value = v.key; opt.textContent = v.label;
+        select.appendChild(opt);
+      });
+      select.hidden = false;
+      var showView = function (key) {
+        var v = views.filter(function (w) { return w.key === key; })[0];
+        chart = new PV.Chart(chartCanvas, data.t, v.series, v.yLabel, player.seek, v.marks);
+        chart.key = key;
+        select.value = key;
+        player.render();
+      };
+      select.addEventListener('change', function () { showView(select.value); });
+      chart = new PV.Chart(chartCanvas, data.t, views[0].series, views[0].yLabel, player.seek, views[0].marks);
+      chart.key = views[0].key;
+      player.showChart = showView;
+      initialChart = views[0].key;
+    } else {
+      chart = new PV.Chart(chartCanvas, data.t, omegaSeries, (data.kind === 'multibody' ? data.bodies[0].name +
+                           ' ' : '') + '\u03c9 body (rad/s)', player.seek);
+    }
   }
   controls = new PV.Controls(player, overlays);
 
@@ -189,6 +224,14 @@
     data: data, track: track, player: player, scene: scene,
     construction: poinsot,  // null unless torque-free
     probe: function () { return poinsot ? poinsot.probe() : null; },
+    // The drawn shapes of the body (or of every body): their three.js group's userData (shown, order, box,
+    // ellipsoid, surface).
+    bodyShapes: function () {
+      return (data.kind === 'multibody' ? main.bodies : [main]).map(function (b) { return b.shapes.userData; });
+    },
+    multipliers: function () { return multipliers ? multipliers.probe() : null; },
+    optimal: function () { return optimal ? optimal.probe() : null; },
+    chart: function () { return chart; },
     jointGap: function () { return data.kind === 'multibody' ? main.jointGap() : null; },
     // Sets the time (s) and moves the objects there without drawing (for tests that read the scene).
     moveTo: function (t) { player.time = Math.min(player.t1, Math.max(player.t0, t)); player.update(); },

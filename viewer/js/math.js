@@ -47,6 +47,40 @@ PV.math = (function () {
     return [q[0] / n, q[1] / n, q[2] / n, q[3] / n];
   }
 
-  return { dot: dot, cross: cross, norm: norm, scale: scale, add: add, sub: sub, lerp: lerp, matVec: matVec,
+  // Eigenvalues and unit eigenvectors of the symmetric matrix s = [xx, yy, zz, xy, xz, yz] by cyclic Jacobi
+  // rotations (converges quadratically; 50 sweeps are never reached): {values: [3], vectors: [3 arrays]},
+  // s = sum_k values[k] vectors[k] vectors[k]^T.
+  function symmetricEigen(s) {
+    var a = [[s[0], s[3], s[4]], [s[3], s[1], s[5]], [s[4], s[5], s[2]]];
+    var v = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];  // columns: the eigenvectors
+    for (var sweep = 0; sweep < 50; sweep++) {
+      var off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+      var scaleSq = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2] + 2 * off;
+      if (off <= 1e-32 * scaleSq) break;
+      for (var p = 0; p < 2; p++) {
+        for (var q = p + 1; q < 3; q++) {
+          if (a[p][q] === 0) continue;
+          var theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+          var t = (theta >= 0 ? 1 : -1) / (Math.abs(theta) + Math.sqrt(theta * theta + 1));
+          var c = 1 / Math.sqrt(t * t + 1), sn = t * c;
+          for (var k = 0; k < 3; k++) {  // a <- a G (columns p, q)
+            var akp = a[k][p], akq = a[k][q];
+            a[k][p] = c * akp - sn * akq; a[k][q] = sn * akp + c * akq;
+          }
+          for (k = 0; k < 3; k++) {  // a <- G^T a (rows p, q)
+            var apk = a[p][k], aqk = a[q][k];
+            a[p][k] = c * apk - sn * aqk; a[q][k] = sn * apk + c * aqk;
+          }
+          for (k = 0; k < 3; k++) {
+            var vkp = v[k][p], vkq = v[k][q];
+            v[k][p] = c * vkp - sn * vkq; v[k][q] = sn * vkp + c * vkq;
+          }
+        }
+      }
+    }
+    return { values: [a[0][0], a[1][1], a[2][2]], vectors: [column(v, 0), column(v, 1), column(v, 2)] };
+  }
+
+  return { symmetricEigen: symmetricEigen, dot: dot, cross: cross, norm: norm, scale: scale, add: add, sub: sub, lerp: lerp, matVec: matVec,
            column: column, rotate: rotate, rotateInverse: rotateInverse, slerp: slerp };
 })();

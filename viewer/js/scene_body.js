@@ -47,7 +47,8 @@ PV.BodyScene = (function () {
     ctx.scene.add(this.trail);
 
     this.overlays = [
-      { key: 'shape', label: 'body (box)', objects: [this.shapes], on: true },
+      { key: 'shape', label: 'body (' + (body.shapes.surface ? 'shape' : 'box') + ')', objects: [this.shapes],
+        on: true },
       { key: 'axes', label: 'principal axes', objects: [this.axes], on: true },
       { key: 'omega', label: '\u03c9 arrow', objects: [this.omegaArrow], on: true },
       { key: 'L', label: 'L arrow', objects: [this.momentumArrow], on: true },
@@ -59,17 +60,17 @@ PV.BodyScene = (function () {
       ['#ff7f0e', '\u03c9, rad/s (scaled)'], ['#9467bd', 'L, kg\u00b7m\u00b2/s (scaled)'],
       ['#555555', 'trail of a body point']
     ];
+    var n = body.shapes.surface_triangles;
+    if (n) {
+      this.legend.push(['#c8a165', body.shapes.surface ? 'the scenario\'s shape (' + n + ' triangles); b: box, ellipsoid'
+                                                     : 'a mesh of ' + n + ' triangles, too many to draw: its box']);
+    }
   }
 
-  // Toggles the box and the ellipsoid of the same inertia.
-  BodyScene.prototype.toggleShape = function () {
-    var u = this.shapes.userData;
-    u.box.visible = !u.box.visible;
-    u.ellipsoid.visible = !u.box.visible;
-    return u.box.visible ? 'box' : 'ellipsoid';
-  };
+  // Shows the next of the scenario's surface (when it has one), the box and the ellipsoid of the same inertia.
+  BodyScene.prototype.toggleShape = function () { return this.shapes.userData.next(); };
 
-  BodyScene.prototype.shapeShown = function () { return this.shapes.userData.box.visible ? 'box' : 'ellipsoid'; };
+  BodyScene.prototype.shapeShown = function () { return this.shapes.userData.shown; };
 
   BodyScene.prototype.update = function (time, where) {
     var track = this.ctx.track;

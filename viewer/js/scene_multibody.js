@@ -30,12 +30,14 @@ PV.MultibodyScene = (function () {
       var group = new THREE.Group();
       var shapes = b.shapes || { box_half_extents: [marker, marker, marker],
                                  ellipsoid_semi_axes: [marker, marker, marker],
-                                 axes: [[1, 0, 0], [0, 1, 0], [0, 0, 1]] };
+                                 axes: [[1, 0, 0], [0, 1, 0], [0, 0, 1]], surface: null };
       var mesh = D.bodyShapes(shapes, palette[k % palette.length], 0.25 * marker);
       group.add(mesh);
       ctx.scene.add(group);
       return { group: group, shapes: mesh };
     });
+    this.anySurface = data.bodies.some(function (b) { return b.shapes && b.shapes.surface; });
+    this.showShape(this.anySurface ? 'surface' : 'box');
     this.paths = new THREE.Group();
     data.bodies.forEach(function (b, k) {
       var pts = [];
@@ -84,19 +86,24 @@ PV.MultibodyScene = (function () {
     if (gn > 0) this.legend.push(['#2ca02c', 'gravity g = ' + gn.toPrecision(3) + ' m/s\u00b2']);
   }
 
+  // Shows the next of: the scenario's surfaces (where given; the box elsewhere), the boxes, the ellipsoids.
   MultibodyScene.prototype.toggleShape = function () {
-    var shown = 'box';
-    this.bodies.forEach(function (b) {
-      var u = b.shapes.userData;
-      u.box.visible = !u.box.visible; u.ellipsoid.visible = !u.box.visible;
-      shown = u.box.visible ? 'box' : 'ellipsoid';
-    });
-    return shown;
+    var order = ['surface', 'box', 'ellipsoid'];
+    var next = order[(order.indexOf(this.shown) + 1) % 3];
+    if (next === 'surface' && !this.anySurface) next = 'box';
+    this.showShape(next);
+    return next;
   };
 
-  MultibodyScene.prototype.shapeShown = function () {
-    return this.bodies[0].shapes.userData.box.visible ? 'box' : 'ellipsoid';
+  MultibodyScene.prototype.showShape = function (name) {
+    this.shown = name;
+    this.bodies.forEach(function (b) {
+      var u = b.shapes.userData;
+      u.show(u.order.indexOf(name) >= 0 ? name : 'box');
+    });
   };
+
+  MultibodyScene.prototype.shapeShown = function () { return this.shown; };
 
   MultibodyScene.prototype.update = function (time, where) {
     var track = this.ctx.track, states = [];

@@ -22,6 +22,9 @@ inline constexpr int kViewFramesDefault = 2000;       ///< default most frames i
 inline constexpr int kViewFramesMin = 2;              ///< fewest frames a page may ask for
 inline constexpr int kViewFramesMax = 100000;         ///< most frames a page may ask for
 inline constexpr long long kViewValuesMax = 2000000;  ///< most numbers in a page's frames (≤ 50 MB of text)
+/// Most triangles of a body's surface (shape or mesh from the scenario) drawn in a page; a larger mesh is
+/// drawn as the equivalent box (the page says so).
+inline constexpr long long kViewSurfaceTrianglesMax = 10000;
 
 struct ViewOptions {
   /// Most frames in the page, in [kViewFramesMin, kViewFramesMax]; longer runs are decimated.
@@ -51,8 +54,14 @@ std::string write_view_page(const std::string& run_dir, const ViewOptions& optio
 
 /// An upper bound of the size (bytes) of a page of `frames` frames with `values_per_frame` numbers each
 /// (12 for a single body: t, q, ω, energy, L; for a multibody file 1 + 10 per body, + 1 with
-/// diagnostics.csv) and `bodies` bodies: the embedded scripts, 8 KiB + 2 KiB per body of other data, and 25
-/// bytes per number.
-std::size_t view_page_size_bound(long long frames, long long values_per_frame, long long bodies = 1);
+/// diagnostics.csv; with the model 6 per joint and per body more) and `bodies` bodies whose drawn surfaces
+/// have `surface_triangles` triangles in all: the embedded scripts, 8 KiB + 2 KiB per body of other data,
+/// 25 bytes per number and kSurfaceBytesPerTriangle per surface triangle.
+std::size_t view_page_size_bound(long long frames, long long values_per_frame, long long bodies = 1,
+                                 long long surface_triangles = 0);
+
+/// Bytes of page per triangle of a drawn surface: its 3 indices (at most 11 characters each) and at most 3
+/// vertices of 3 numbers of 9 digits (at most 16 characters each), with commas: 36 + 144.
+inline constexpr std::size_t kSurfaceBytesPerTriangle = 180;
 
 }  // namespace poinsot::io

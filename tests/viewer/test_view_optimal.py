@@ -1,0 +1,106 @@
+"""`poinsot view` on a `poinsot optimize` folder: the control torque, its bounds, the target attitude and the
+chart of the control and the switching functions, read back from the page and checked against the run's files.
+
+Oracles: trajectory.csv (the torque drawn at a frame is R(q) u of that row, to round-off), control.csv (the
+chart's control is its columns exactly), summary.json (the switches marked are its switch times), the
+scenario (the bounds and the target), and Pontryagin's principle for a per-axis bound in minimum time,
+u_i = -u_max,i sign(sigma_i) (docs/optimal_control.md): every marked switch of axis i is a zero of sigma_i in
+the chart (its sign changes between the costate samples around it), and between switches the chart's control
+has the sign of -sigma_i. The Bilimoria & Wie slew takes 0.3 s to solve."""
+import csv
+import json
+
+import numpy as np
+import pytest
+
+from conftest import SOURCE_DIR
+
+SLEW = SOURCE_DIR / "examples" / "optimal" / "sphere_slew.toml"
+
+
+def rows(path):
+    with open(path) as f:
+        r = [line for line in csv.reader(f) if line and not line[0].startswith("#")]
+    return r[0], np.array([[float(x) for x in line] for line in r[1:]])
+
+
+def rotation(q):
+    w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+@pytest.fixture(scope="module")
+def slew(cli, tmp_path_factory):
+    out = tmp_path_factory.mktemp("optimal") / "slew"
+    r = cli("optimize", SLEW, "--out", out)
+    assert r.returncode == 0, r.stdout + r.stderr
+    r = cli("view", out)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == str(out / "view.html")
+    return out
+
+
+@pytest.mark.parametrize("example", ["optimal/sphere_slew.toml"])
+def test_torque_bounds_and_target_as_drawn(example, slew, load):
+    page = load(slew / "view.html")
+    summary = json.loads((slew / "summary.json").read_text())
+    assert summary["optimal"]
+    names, traj = rows(slew / "trajectory.csv")
+    col = {c: k for k, c in enumerate(names)}
+    n = page.js("return window.poinsotView.track.n")
+    assert n == len(traj)  # every row is a frame
+    idx = sorted(set(np.linspace(0, n - 1, 40).astype(int).tolist()))
+    drawn = page.js("""var v = window.poinsotView, out = [];
+        arguments[0].forEach(function (i) { v.moveTo(v.data.t[i]); out.push(v.optimal()); });
+        return out;""", idx)
+    for i, d in zip(idx, drawn):
+        i = np.flatnonzero(traj[:, 0] == traj[i, 0])[-1]  # a switch has two rows at one time: the page shows the second
+        R = rotation(traj[i, [col[c] for c in ("qw", "qx", "qy", "qz")]])
+        u = traj[i, [col["ux"], col["uy"], col["uz"]]]
+        assert np.linalg.norm(np.array(d["torque"]) - R @ u) <= 1e-12 * np.sqrt(3), (i, d["torque"], R @ u)
+    assert drawn[0]["bounds"] == pytest.approx([1.0, 1.0, 1.0], rel=1e-15)  # torque_max of the file
+    assert drawn[0]["boundsFollowBody"]
+    target = np.array(drawn[0]["target"])
+    assert abs(target @ [0.0, 1.0, 0.0, 0.0]) == pytest.approx(1.0, abs=1e-15)  # the file's final quaternion
+    # The body drawn at the end is at the target: the manoeuvre ends where the ghost stands.
+    page.js("window.poinsotView.moveTo(window.poinsotView.player.t1);")
+    q_end = np.array(page.js("return window.poinsotView.bodyQuaternion()"))
+    assert 2 * np.arccos(min(1.0, abs(q_end @ target))) <= 1e-6
+    assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]
+
+
+@pytest.mark.parametrize("example", ["optimal/sphere_slew.toml"])
+def test_chart_of_control_and_switching_functions(example, slew, load):
+    page = load(slew / "view.html")
+    summary = json.loads((slew / "summary.json").read_text())
+    switches = summary["indirect"]["switches"]
+    assert len(switches) == 5  # Bilimoria & Wie's five switches
+    chart = "var c = window.poinsotView.chart(); return {key: c.key, marks: c.marks, series: c.series.map(" \
+            "function (s) { return {t: s.t, values: s.values}; })};"
+    control = page.js(chart)
+    assert control["key"] == "control"
+    assert control["marks"] == [s["t"] for s in switches]
+    _, ctrl = rows(slew / "control.csv")
+    for k, s in enumerate(control["series"]):
+        assert s["t"] == ctrl[:, 0].tolist() and s["values"] == ctrl[:, 1 + k].tolist()
+
+    chart_pixels = "var c = document.getElementById('chart'); return c.toDataURL();"
+    before = page.js(chart_pixels)
+    page.js("var s = document.getElementById('chart-view'); s.value = 'sigma'; s.dispatchEvent(new Event('change'));")
+    assert page.js(chart_pixels) != before  # the chart redrew
+    sigma = page.js(chart)
+    assert sigma["key"] == "sigma" and sigma["marks"] == control["marks"]
+    t = np.array(sigma["series"][0]["t"])
+    for s in switches:
+        values = np.array(sigma["series"][s["axis"] - 1]["values"])
+        before = np.searchsorted(t, s["t"] - 1e-9, "left") - 1  # the samples either side of the switch (some
+        after = np.searchsorted(t, s["t"] + 1e-9, "right")      # grids have a sample at it, where sigma is 0)
+        assert values[before] * values[after] < 0, s  # sigma_axis changes sign at the switch
+    umax = 1.0
+    for axis in range(3):  # u_i = -u_max sign(sigma_i), away from the switches
+        sig = np.array(sigma["series"][axis]["values"])
+        u = np.interp(t, ctrl[:, 0], ctrl[:, 1 + axis])
+        away = np.abs(sig) > 1e-6 * np.abs(sig).max()
+        assert np.all(np.abs(u[away] + umax * np.sign(sig[away])) <= 1e-9), axis
