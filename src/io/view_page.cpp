@@ -215,7 +215,7 @@ json multibody_data(const std::string& dir, const json& summary, const ViewOptio
   }
   FrameMultipliers multipliers;
   if (mb) multipliers = frame_multipliers(mb->system, f, path);
-  // Frame after frame, the `width` numbers of item k of `count` from `all`.
+  // Frame after frame, the 6 numbers of item k (of `count` items a frame) in `all`.
   const auto per_item = [&](const std::vector<double>& all, std::size_t k, std::size_t count) {
     std::vector<double> out;
     out.reserve(f.values.size() * 6);
