@@ -55,6 +55,18 @@ def example_runs(cli, tmp_path_factory):
 
 
 @pytest.fixture(scope="session")
+def slew_run(cli, tmp_path_factory):
+    """examples/optimal/sphere_slew.toml solved by `poinsot optimize` (0.3 s) and its page by `poinsot view`."""
+    out = tmp_path_factory.mktemp("optimal") / "slew"
+    r = cli("optimize", SOURCE_DIR / "examples" / "optimal" / "sphere_slew.toml", "--out", out)
+    assert r.returncode == 0, r.stdout + r.stderr
+    r = cli("view", out)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.strip() == str(out / "view.html")
+    return out
+
+
+@pytest.fixture(scope="session")
 def browser():
     """One headless Chromium for every test of the session."""
     webdriver = pytest.importorskip("selenium.webdriver", reason="python3-selenium is not installed")

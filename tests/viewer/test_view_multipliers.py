@@ -8,8 +8,8 @@ the final state): the page recomputes them from trajectory.csv's last row and ke
 quaternion's round trip through the CSV, 1e-16, amplified by the constraint solve). (2) Between, Newton's law
 for every body, independent of the multipliers' code: m (a - g) = the sum of the joint forces on it (+F on
 body a, -F on body b), a from trajectory.csv's velocities by the five-point central difference over the rows
-next to the frame (error h^4/30 |v^(5)| plus the integrator's O(dt^2): 1e-3 of the forces' scale is far above both and far
-below the force of a wrong sign, joint or body)."""
+next to the frame (error h^4/30 |v^(5)| plus the integrator's O(dt^2): 1e-3 of the forces' scale is far above
+both and far below the force of a wrong sign, joint or body)."""
 import csv
 
 import numpy as np

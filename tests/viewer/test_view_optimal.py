@@ -13,9 +13,6 @@ import json
 import numpy as np
 import pytest
 
-from conftest import SOURCE_DIR
-
-SLEW = SOURCE_DIR / "examples" / "optimal" / "sphere_slew.toml"
 
 
 def rows(path):
@@ -31,15 +28,9 @@ def rotation(q):
                      [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
-@pytest.fixture(scope="module")
-def slew(cli, tmp_path_factory):
-    out = tmp_path_factory.mktemp("optimal") / "slew"
-    r = cli("optimize", SLEW, "--out", out)
-    assert r.returncode == 0, r.stdout + r.stderr
-    r = cli("view", out)
-    assert r.returncode == 0, r.stderr
-    assert r.stdout.strip() == str(out / "view.html")
-    return out
+@pytest.fixture
+def slew(slew_run):
+    return slew_run
 
 
 @pytest.mark.parametrize("example", ["optimal/sphere_slew.toml"])

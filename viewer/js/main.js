@@ -67,7 +67,8 @@
   var initialShape = main.shapeShown();
   camera.near = ctx.length * 1e-3; camera.far = ctx.length * 1e3;
   camera.updateProjectionMatrix();
-  var orbit = new PV.Orbit(renderer.domElement, (poinsot ? 5.5 : 4.5) * ctx.length);
+  // The camera's distance: the construction is larger than the body, the torque's bounds too.
+  var orbit = new PV.Orbit(renderer.domElement, (poinsot ? 5.5 : optimal ? 7 : 4.5) * ctx.length);
 
   document.getElementById('title').textContent = (data.title || data.scenario.split('/').pop()) + '  (' +
       data.method + ', ' +

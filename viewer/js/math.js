@@ -81,6 +81,7 @@ PV.math = (function () {
     return { values: [a[0][0], a[1][1], a[2][2]], vectors: [column(v, 0), column(v, 1), column(v, 2)] };
   }
 
-  return { symmetricEigen: symmetricEigen, dot: dot, cross: cross, norm: norm, scale: scale, add: add, sub: sub, lerp: lerp, matVec: matVec,
+  return { symmetricEigen: symmetricEigen, dot: dot, cross: cross, norm: norm, scale: scale, add: add, sub: sub,
+           lerp: lerp, matVec: matVec,
            column: column, rotate: rotate, rotateInverse: rotateInverse, slerp: slerp };
 })();

@@ -62,8 +62,9 @@ PV.BodyScene = (function () {
     ];
     var n = body.shapes.surface_triangles;
     if (n) {
-      this.legend.push(['#c8a165', body.shapes.surface ? 'the scenario\'s shape (' + n + ' triangles); b: box, ellipsoid'
-                                                     : 'a mesh of ' + n + ' triangles, too many to draw: its box']);
+      this.legend.push(['#c8a165', body.shapes.surface
+                                       ? 'the scenario\'s shape (' + n + ' triangles); b: box, ellipsoid'
+                                       : 'a mesh of ' + n + ' triangles, too many to draw: its box']);
     }
   }
 

@@ -2,19 +2,28 @@
 // body a (the force, N, and the couple, N·m, space frame) as arrows from the joint's point; at every body's
 // centre of mass the principal constraint stresses: the eigen-decomposition of ∫σ dv = −R Λ Rᵀ (N·m), each
 // principal direction as a pair of arrows pointing out (tension, > 0) or in (compression, < 0), as long as
-// the principal value. Each kind has one scale over the whole run (its largest value is a fixed fraction of
-// the scene), stated in the legend. The data are per frame (view_multipliers.hpp): joints[k].reaction
+// the principal value. Each kind has one scale over the whole run (see the constructor), stated in the
+// legend. The data are per frame (view_multipliers.hpp): joints[k].reaction
 // (Fx Fy Fz Cx Cy Cz), bodies[i].lambda (Λ's symmetric part, body frame: xx yy zz xy xz yz).
 PV.MultipliersScene = (function () {
   'use strict';
   var M = PV.math, D = PV.draw;
   var FORCE = 0xd62728, COUPLE = 0x9467bd, TENSION = 0xe6550d, COMPRESSION = 0x3182bd;
 
-  // The largest `norm` of the field `name` over the frames.
-  function largest(track, name, norm) {
-    var m = 0;
-    for (var i = 0; i < track.n; i++) m = Math.max(m, norm(track.at(name, i)));
-    return m;
+  // Per frame, the largest `norm` of the fields `names` (array of one value per frame).
+  function largest(track, names, norm) {
+    var out = [];
+    for (var i = 0; i < track.n; i++) {
+      var m = 0;
+      names.forEach(function (name) { m = Math.max(m, norm(track.at(name, i))); });
+      out.push(m);
+    }
+    return out;
+  }
+  // The value below which a fraction `p` of `values` lie (p = 1: the largest).
+  function quantile(values, p) {
+    var s = values.slice().sort(function (a, b) { return a - b; });
+    return s.length ? s[Math.min(s.length - 1, Math.floor(p * s.length))] : 0;
   }
   function forceNorm(r) { return M.norm([r[0], r[1], r[2]]); }
   function coupleNorm(r) { return M.norm([r[3], r[4], r[5]]); }
@@ -23,33 +32,43 @@ PV.MultipliersScene = (function () {
   }
   function short(v) { return v.toPrecision(3); }
 
+  // An arrow drawn over the bodies: a reaction along a rod, or a stress along its axis, lies inside it.
+  function overlayArrow(color) {
+    var a = D.arrow(color);
+    [a.line, a.cone].forEach(function (part) { part.material.depthTest = false; part.renderOrder = 10; });
+    return a;
+  }
+
   // `multibody` is the MultibodyScene (its joints' balls and bodies' groups are placed before this updates).
   function MultipliersScene(ctx, multibody) {
     var data = ctx.data, track = ctx.track, span = 2 * ctx.length;
     this.ctx = ctx; this.multibody = multibody;
     data.joints.forEach(function (j, k) { track.fields['r' + k] = { data: j.reaction, width: 6, kind: 'vec' }; });
     data.bodies.forEach(function (b, i) { track.fields['s' + i] = { data: b.lambda, width: 6, kind: 'vec' }; });
-    var fmax = 0, cmax = 0, smax = 0;
-    data.joints.forEach(function (j, k) {
-      fmax = Math.max(fmax, largest(track, 'r' + k, forceNorm));
-      cmax = Math.max(cmax, largest(track, 'r' + k, coupleNorm));
-    });
-    data.bodies.forEach(function (b, i) { smax = Math.max(smax, largest(track, 's' + i, frobenius)); });
-    // m of arrow per N, per N·m, per N·m of principal stress integral: the largest a quarter of the scene.
-    this.forceScale = fmax > 0 ? 0.25 * span / fmax : 0;
-    this.coupleScale = cmax > 0 ? 0.25 * span / cmax : 0;
-    this.stressScale = smax > 0 ? 0.2 * span / smax : 0;
+    var joints = data.joints.map(function (j, k) { return 'r' + k; });
+    var bodies = data.bodies.map(function (b, i) { return 's' + i; });
+    var forces = largest(track, joints, forceNorm), couples = largest(track, joints, coupleNorm);
+    var stresses = largest(track, bodies, frobenius);
+    // m of arrow per N, per N·m, per N·m of principal stress integral: the frames' largest value at the 90th
+    // percentile over the run is a quarter (a fifth) of the scene, so that the whip of a chain, a few frames
+    // of large forces, does not shrink every other frame's arrows to nothing (those frames' are longer).
+    var fmax = quantile(forces, 1), cmax = quantile(couples, 1), smax = quantile(stresses, 1);
+    var f90 = quantile(forces, 0.9) || fmax, c90 = quantile(couples, 0.9) || cmax;
+    var s90 = quantile(stresses, 0.9) || smax;
+    this.forceScale = f90 > 0 ? 0.25 * span / f90 : 0;
+    this.coupleScale = c90 > 0 ? 0.25 * span / c90 : 0;
+    this.stressScale = s90 > 0 ? 0.2 * span / s90 : 0;
     this.least = { force: 1e-9 * fmax, couple: 1e-9 * cmax };  // below: round-off, not drawn
 
     this.reactions = data.joints.map(function (j) {
-      var force = D.arrow(FORCE), couple = D.arrow(COUPLE);
+      var force = overlayArrow(FORCE), couple = overlayArrow(COUPLE);
       ctx.scene.add(force); ctx.scene.add(couple);
       return { force: force, couple: couple };
     });
     this.stresses = data.bodies.map(function () {
       var arrows = [];
       for (var k = 0; k < 6; k++) {  // principal direction k >> 1, the side of the centre k & 1
-        var a = D.arrow(TENSION);
+        var a = overlayArrow(TENSION);
         ctx.scene.add(a);
         arrows.push(a);
       }
@@ -122,7 +141,8 @@ PV.MultipliersScene = (function () {
           var a = self.stresses[i][2 * k], d = new THREE.Vector3(0, 1, 0).applyQuaternion(a.quaternion);
           var p = a.position, away = (p.x - c.x) * d.x + (p.y - c.y) * d.y + (p.z - c.z) * d.z >= -1e-12 *
               a.userData.length;
-          out.push({ value: self.stressScale > 0 ? (away ? 1 : -1) * a.userData.length / self.stressScale : 0, direction: [d.x, d.y, d.z] });
+          out.push({ value: self.stressScale > 0 ? (away ? 1 : -1) * a.userData.length / self.stressScale : 0,
+                     direction: [d.x, d.y, d.z] });
         }
         return out;
       })

@@ -13,12 +13,15 @@ PV.OptimalScene = (function () {
     this.ctx = ctx; this.body = body; this.optimal = o;
     ctx.track.fields.u = { data: o.u, width: 3, kind: 'vec' };
     this.scale = 1.2 * body.length / o.torque_norm_limit;  // m per N·m: the largest torque allowed
-    this.arrow = D.arrow(TORQUE);
+    this.arrow = D.arrow(TORQUE);  // drawn over the body, which it starts inside
+    [this.arrow.line, this.arrow.cone].forEach(function (part) {
+      part.material.depthTest = false; part.renderOrder = 10;
+    });
     ctx.scene.add(this.arrow);
 
     // The bounds turn with the body (they bound the body-frame torque).
     var s = this.scale, m = o.torque_max;
-    var lines = new THREE.LineBasicMaterial({ color: TORQUE, transparent: true, opacity: 0.5 });
+    var lines = new THREE.LineBasicMaterial({ color: TORQUE, transparent: true, opacity: 0.5, depthTest: false });
     if (o.bound === 'norm') {
       this.bounds = new THREE.Group();
       for (var k = 0; k < 3; k++) {
@@ -28,7 +31,9 @@ PV.OptimalScene = (function () {
           p[(k + 1) % 3] = m[0] * s * Math.cos(a); p[(k + 2) % 3] = m[0] * s * Math.sin(a);
           circle.push(p);
         }
-        this.bounds.add(D.loop(circle, TORQUE));
+        var loop = D.loop(circle, TORQUE);
+        loop.material.depthTest = false;
+        this.bounds.add(loop);
       }
     } else {
       this.bounds = new THREE.LineSegments(
@@ -54,7 +59,9 @@ PV.OptimalScene = (function () {
       { key: 'torque', label: 'control torque u', objects: [this.arrow], on: true },
       { key: 'bounds', label: 'torque bounds', objects: [this.bounds], on: true }
     ];
-    if (this.ghostPose) this.overlays.push({ key: 'target', label: 'target attitude', objects: [this.ghostPose], on: true });
+    if (this.ghostPose) {
+      this.overlays.push({ key: 'target', label: 'target attitude', objects: [this.ghostPose], on: true });
+    }
     var bound = o.bound === 'norm' ? '\u2016u\u2016 \u2264 ' + m[0] + ' N\u00b7m'
                                    : '|u\u1d62| \u2264 (' + m.join(', ') + ') N\u00b7m';
     this.legend = [
