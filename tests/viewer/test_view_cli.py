@@ -87,3 +87,24 @@ def test_a_run_too_large_for_the_frames_is_refused(cli, tmp_path):
     r = cli("view", run, "--frames", "999")
     assert r.returncode == 0, r.stderr
     assert (run / "view.html").stat().st_size > 999 * bodies * 10
+
+
+def test_an_optimize_folder_without_its_scenario_is_refused(cli, slew_run, tmp_path):
+    """The optimal page takes the body, the bounds and the target from the scenario: without it, one line."""
+    copy = tmp_path / "slew"
+    shutil.copytree(slew_run, copy)
+    (copy / "view.html").unlink()
+    summary = json.loads((copy / "summary.json").read_text())
+    summary["scenario"] = str(tmp_path / "moved.toml")
+    (copy / "summary.json").write_text(json.dumps(summary))
+    line = refused(cli("view", copy))
+    assert "is a `poinsot optimize` folder whose scenario" in line and "expected --scenario FILE" in line, line
+    assert not (copy / "view.html").exists()
+    r = cli("view", copy, "--scenario", SOURCE_DIR / "examples" / "optimal" / "sphere_slew.toml")
+    assert r.returncode == 0, r.stderr
+    pages = [(d / "view.html").read_text(encoding="utf-8") for d in (copy, slew_run)]
+    assert pages[0].replace(str(tmp_path / "moved.toml"), summary_path(slew_run)) == pages[1]
+
+
+def summary_path(run):
+    return json.loads((run / "summary.json").read_text())["scenario"]
