@@ -199,7 +199,7 @@ BodyInertia from_mesh(const Source& source, const Section& body, std::string_vie
   const bool shell = s.boolean("shell").value_or(false);
   inertia::MeshOptions options;
   options.flip_inward = s.boolean("flip_inward").value_or(false);
-  const inertia::TriangleMesh m = located(s, "file", [&] { return inertia::load_mesh(file.string()); });
+  inertia::TriangleMesh m = located(s, "file", [&] { return inertia::load_mesh(file.string()); });
   const inertia::MassProperties mp = located(s, "file", [&, by_mass = by_mass, amount = amount] {
     if (shell) {
       return by_mass ? inertia::mesh_shell_mass_properties_with_mass(m, amount)
@@ -213,13 +213,13 @@ BodyInertia from_mesh(const Source& source, const Section& body, std::string_vie
   out.inertia_com = mp.inertia_com;
   out.mass = mp.mass;
   out.com = mp.com;
-  inertia::TriangleMesh surface = m;
-  for (Vec3& v : surface.vertices)
+  const std::size_t triangles = m.triangles.size();
+  for (Vec3& v : m.vertices)  // the mesh itself becomes the surface (no copy of a large mesh)
     v -= mp.com;
-  out.surface = std::make_shared<const inertia::TriangleMesh>(std::move(surface));
+  out.surface = std::make_shared<const inertia::TriangleMesh>(std::move(m));
   out.description =
       fmt::format("{}mesh {} ({} triangles), {} {} {}, mass {} kg, centre of mass {} m (mesh frame)",
-                  shell ? "thin-shell " : "", file.string(), m.triangles.size(), by_mass ? "mass" : "density",
+                  shell ? "thin-shell " : "", file.string(), triangles, by_mass ? "mass" : "density",
                   format_number(amount), by_mass ? "kg" : (shell ? "kg/m²" : "kg/m³"),
                   format_number(mp.mass, 7), format_point(mp.com));
   return out;
