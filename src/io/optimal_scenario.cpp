@@ -53,6 +53,8 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   const detail::BodyInertia body = detail::read_body_inertia(src, b, base_dir, 'z');
   sc.body_description = body.description;
   sc.problem.inertia_body = body.inertia_com;
+  sc.body_mass = body.mass;
+  sc.body_surface = body.surface;
 
   const Section oc(src, root["optimal_control"].as_table(), "optimal_control",
                    {"objective", "torque_bound", "torque_max", "rate_max", "final_time", "energy_weight",

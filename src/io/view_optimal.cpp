@@ -86,11 +86,13 @@ ViewJson optimal_view_data(const std::string& dir, const ViewJson& summary, cons
   body["inertia"] = mat(J);
   body["principal_moments"] = vec(rb.principal_moments());
   body["inertia_axes"] = mat(rb.principal_axes());
-  body["mass"] = nullptr;
+  const double mass = sc.body_mass.value_or(0.0);
+  body["mass"] = mass > 0.0 ? ViewJson(mass) : ViewJson(nullptr);
   body["pivot_to_com"] = vec(Vec3::Zero());
   body["has_pivot"] = false;
   body["model_from_scenario"] = true;
-  body["shapes"] = shapes_json(J, 1.0, nullptr);  // no mass: the proportions of 1 kg
+  // Without a mass the box and ellipsoid are those of 1 kg (the body's proportions, an arbitrary size).
+  body["shapes"] = shapes_json(J, mass > 0.0 ? mass : 1.0, sc.body_surface.get());
   j["body"] = body;
   j["torque"] = "optimal";
   j["gravity"] = vec(Vec3::Zero());

@@ -12,6 +12,7 @@
 #include "../../src/io/view_data.hpp"
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/io/multibody_scenario.hpp"
+#include "poinsot/io/optimal_scenario.hpp"
 #include "poinsot/io/scenario.hpp"
 #include "poinsot_test.hpp"
 
@@ -80,6 +81,24 @@ TEST(ViewSurface, TensorsAndRodsHaveNoSurfaceAndMultibodyBodiesKeepTheirs) {
     ASSERT_TRUE(s);
     EXPECT_TRUE(upper(*s).isApprox(Vec3(0.5, 0.01, 0.01), 1e-15));
   }
+}
+
+TEST(ViewSurface, AnOptimalScenarioKeepsItsBodysShapeAndMass) {
+  const OptimalScenario sc = parse_optimal_scenario(R"(
+[body]
+shape = { type = "box", size = [0.4, 0.2, 0.1], mass = 3.0 }
+[optimal_control]
+objective = "minimum_time"
+torque_bound = "per_axis"
+torque_max = [1.0, 1.0, 1.0]
+[optimal_control.final]
+orientation = { quaternion = [0.0, 1.0, 0.0, 0.0] }
+)",
+                                                    "<test>", "");
+  ASSERT_TRUE(sc.body_surface && sc.body_mass);
+  EXPECT_EQ(*sc.body_mass, 3.0);
+  EXPECT_TRUE(upper(*sc.body_surface).isApprox(Vec3(0.2, 0.1, 0.05), 1e-15));  // the box's half sizes
+  EXPECT_TRUE(lower(*sc.body_surface).isApprox(Vec3(-0.2, -0.1, -0.05), 1e-15));
 }
 
 TEST(ViewDrawDigits, RoundsToNineSignificantDigitsWhoseShortestTextIsThatShort) {

@@ -19,9 +19,12 @@
 ///
 /// Throws InvalidInput located at the key for every malformed or invalid value (the problem's own checks,
 /// optimal::validate, are applied and located at [optimal_control]).
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "poinsot/inertia/mesh.hpp"
 #include "poinsot/optimal/direct_collocation.hpp"
 #include "poinsot/optimal/problem.hpp"
 
@@ -35,6 +38,10 @@ struct OptimalScenario {
   optimal::ReorientationProblem problem;
   optimal::CollocationOptions collocation;
   std::string out_dir;  ///< empty: the default
+  /// For drawing (view.html): the body's mass (kg) when the file gives one, and its surface about the centre
+  /// of mass (body axes, m) when it gives a shape or a mesh, else null.
+  std::optional<double> body_mass;
+  std::shared_ptr<const inertia::TriangleMesh> body_surface;
 };
 
 OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view source,
