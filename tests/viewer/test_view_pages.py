@@ -93,15 +93,3 @@ def test_keyboard_shortcuts_and_controls(example, example_runs, load):
     keys.send_keys(Keys.SPACE).perform()
     assert not page.js(state)[0]
     assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]
-
-
-def test_a_body_at_rest_has_no_construction_and_no_error(cli, tmp_path, load):
-    """L = 0 has no invariable plane: the page draws the body alone, with nothing NaN in the console."""
-    (tmp_path / "rest.toml").write_text('[body]\nprincipal_moments = [1, 2, 3]\n[initial]\nomega_body = [0, 0, 0]\n'
-                                        '[integrator]\nmethod = "exact"\n[output]\nt_end = 1\n')
-    r = cli("run", tmp_path / "rest.toml", "--out", tmp_path / "run", "--html", "--quiet")
-    assert r.returncode == 0, r.stderr
-    page = load(tmp_path / "run" / "view.html")
-    assert page.js("return window.poinsotView.construction") is None
-    assert page.pixels()[0] > 0.001
-    assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]

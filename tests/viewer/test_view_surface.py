@@ -11,11 +11,14 @@ import math
 import numpy as np
 import pytest
 
-CYLINDER = """title = "A cylinder along x"
+from conftest import SOURCE_DIR
+
+# At rest, also: L = 0 has no invariable plane, so the page draws no construction.
+CYLINDER = """title = "A cylinder along x, at rest"
 [body]
 shape = { type = "cylinder", radius = 0.05, length = 0.4, mass = 2.0, axis = "x" }
 [initial]
-omega_body = [0.3, 2.0, 0.5]
+omega_body = [0, 0, 0]
 [integrator]
 method = "exact"
 [output]
@@ -46,9 +49,9 @@ def volume_and_centroid(vertices, triangles):
     return v6.sum() / 6, (v6[:, None] * (a + b + c)).sum(axis=0) / (4 * v6.sum())
 
 
-def test_mesh_body_draws_its_mesh_and_cycles_the_shapes(example_runs, load, cli):
-    from conftest import SOURCE_DIR
-    page = load(example_runs["mesh_body.toml"] / "view.html")
+@pytest.mark.parametrize("example", ["mesh_body.toml"])
+def test_mesh_body_draws_its_mesh_and_cycles_the_shapes(example, example_runs, load):
+    page = load(example_runs[example] / "view.html")
     vertices, triangles = read_obj(SOURCE_DIR / "examples" / "meshes" / "l_bracket.obj")
     _, com = volume_and_centroid(vertices, triangles)
     (shape,) = page.js(SHAPES)
@@ -66,12 +69,27 @@ def test_mesh_body_draws_its_mesh_and_cycles_the_shapes(example_runs, load, cli)
         assert page.js(SHAPES)[0]["shown"] == expected
 
 
-@pytest.mark.parametrize("example", ["cylinder"])
-def test_shape_is_its_tessellation(example, cli, tmp_path, load):
-    (tmp_path / "c.toml").write_text(CYLINDER)
-    r = cli("run", tmp_path / "c.toml", "--out", tmp_path / "run", "--html", "--quiet")
+@pytest.fixture(scope="module")
+def cylinder(cli, tmp_path_factory):
+    root = tmp_path_factory.mktemp("cylinder")
+    (root / "c.toml").write_text(CYLINDER)
+    r = cli("run", root / "c.toml", "--out", root / "run", "--html", "--quiet")
     assert r.returncode == 0, r.stderr
-    page = load(tmp_path / "run" / "view.html")
+    return root / "run" / "view.html"
+
+
+@pytest.mark.parametrize("example", ["cylinder at rest"])
+def test_a_body_at_rest_has_no_construction_and_no_error(example, cylinder, load):
+    """L = 0 has no invariable plane: the page draws the body alone, with nothing NaN in the console."""
+    page = load(cylinder)
+    assert page.js("return window.poinsotView.construction") is None
+    assert page.pixels()[0] > 0.001
+    assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]
+
+
+@pytest.mark.parametrize("example", ["cylinder at rest"])
+def test_shape_is_its_tessellation(example, cylinder, load):
+    page = load(cylinder)
     (shape,) = page.js(SHAPES)
     v = np.array(shape["vertices"]).reshape(-1, 3)
     t = np.array(shape["triangles"]).reshape(-1, 3)
