@@ -13,6 +13,6 @@ if(TARGET poinsot_cli)
     set(_viewer_tests ${PROJECT_SOURCE_DIR}/tests/viewer/test_view_cli.py)
   endif()
   add_test(NAME viewer.pytest COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${_viewer_tests})
-  set_tests_properties(viewer.pytest PROPERTIES ENVIRONMENT
+  set_tests_properties(viewer.pytest PROPERTIES COST 100 ENVIRONMENT  # the longest: first (cli.cmake)
     "POINSOT_CLI=$<TARGET_FILE:poinsot_cli>;POINSOT_SOURCE_DIR=${PROJECT_SOURCE_DIR};PYTHONPATH=${CMAKE_BINARY_DIR}/python")
 endif()
