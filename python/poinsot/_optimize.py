@@ -182,7 +182,7 @@ _SOLVERS: list[tuple[Callable[[Any], Any], Callable[[Any, str], Any]]] = [
 
 def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tolerance: float | None = None,
              initial_intervals: int | None = None, max_mesh_iterations: int | None = None,
-             warn: bool = True) -> OptimalSolution:
+             plot: bool = False, warn: bool = True) -> OptimalSolution:
     """Solves an optimal reorientation as ``poinsot optimize`` does and returns the solution as NumPy arrays.
 
     ``problem``: the path of a scenario file with an ``[optimal_control]`` section (docs/optimal_control.md), a
@@ -190,7 +190,8 @@ def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tol
     {...}}}``), a ``poinsot.optimal.OptimalScenario``, or a ``poinsot.optimal.ReorientationProblem``.
     ``mesh_tolerance``, ``initial_intervals``, ``max_mesh_iterations`` replace the direct method's options
     (None: the scenario's, else the defaults). With ``out_dir`` the files of ``poinsot optimize`` (report.txt,
-    trajectory.csv, control.csv, costates.csv, summary.json) are written there.
+    trajectory.csv, control.csv, costates.csv, summary.json) are written there, and with ``plot=True`` also
+    the figures of ``poinsot optimize --plot`` (``poinsot.plot_optimal``; listed in ``figures``).
 
     Invalid input raises ValueError (TypeError for an object of another type) with poinsot's one-line message.
     A solution that is not verified optimal is returned with ``optimal`` False, its ``status`` saying what
@@ -206,11 +207,19 @@ def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tol
                         "poinsot.optimal.OptimalScenario or a poinsot.optimal.ReorientationProblem, got "
                         f"{type(problem).__name__}")
     folder = os.fspath(out_dir) if out_dir is not None else ""
+    if plot and not folder:
+        raise ValueError("plot: the figures are drawn from the solution's files; expected an out_dir")
     options = dict(mesh_tolerance=mesh_tolerance, initial_intervals=initial_intervals,
                    max_mesh_iterations=max_mesh_iterations)
     if any(v is not None for v in options.values()):
         prepared = prepared.with_options(**options)
     result = solve(prepared, folder)
+    if plot:
+        import dataclasses
+
+        from .plot import plot_run
+
+        result = dataclasses.replace(result, figures=plot_run(folder))
     if warn and not result.optimal:
         warnings.warn(f"poinsot.optimize: {result.status}", RuntimeWarning, stacklevel=2)
     return result

@@ -138,6 +138,26 @@ def test_files_are_written_and_agree(tmp_path, betts):
     assert r.out_dir == str(out)
 
 
+def test_plot_draws_the_figures_from_the_files(tmp_path):
+    pytest.importorskip("matplotlib")
+    r = poinsot.optimize(EXAMPLES / "sphere_slew.toml", out_dir=tmp_path, plot=True)
+    names = sorted(p.name for p in r.figures)
+    assert names == ["attitude_error.png", "hamiltonian.png", "omega.png", "switching.png", "torque.png"]
+    assert all((tmp_path / n).stat().st_size > 1000 for n in names)
+    with pytest.raises(ValueError, match="out_dir"):
+        poinsot.optimize(EXAMPLES / "sphere_slew.toml", plot=True)
+
+
+def test_plot_attitude_error_is_accurate_near_zero():
+    """The attitude-error figure's angle: 4 atan2(‖q − q_f‖, ‖q + q_f‖) keeps 1e-10 rad (2 acos would not)."""
+    from poinsot.plot_optimal import _quaternion_angle
+
+    a = np.array([1e-10, 0.3, math.pi])
+    q = np.column_stack([np.cos(a / 2), np.sin(a / 2) * 0.6, np.zeros(3), np.sin(a / 2) * 0.8])
+    assert np.allclose(_quaternion_angle(q, np.array([1.0, 0, 0, 0])), a, rtol=1e-12, atol=0)
+    assert _quaternion_angle(-q[:1], np.array([1.0, 0, 0, 0]))[0] == pytest.approx(1e-10, rel=1e-12)
+
+
 def test_scenario_objects_and_options():
     sc = poinsot.optimal.load_scenario(str(EXAMPLES / "betts.toml"))
     assert sc.name == "betts" and sc.problem.rate_max == 0.5

@@ -124,11 +124,22 @@ std::string optimal_report(const OptimalRun& r) {
 }
 
 std::string optimal_summary_json(const OptimalRun& r) {
+  const auto& p = r.scenario.problem;
   nlohmann::ordered_json j;
+  j["kind"] = "optimal";
   j["scenario"] = r.scenario.source;
   j["status"] = r.status;
   j["optimal"] = r.optimal;
-  j["objective"] = std::string(optimal::objective_name(r.scenario.problem.objective));
+  j["objective"] = std::string(optimal::objective_name(p.objective));
+  const Quat& qf = p.attitude_final;
+  j["problem"] = {
+      {"torque_bound", p.bound == optimal::TorqueBound::per_axis ? "per_axis" : "norm"},
+      {"torque_max", p.bound == optimal::TorqueBound::per_axis ? vec(p.torque_max)
+                                                               : nlohmann::ordered_json(p.torque_max[0])},
+      {"rate_max", p.has_rate_bound() ? nlohmann::ordered_json(p.rate_max) : nlohmann::ordered_json()},
+      {"free_final_attitude", p.free_final_attitude},
+      {"attitude_final", {qf.w(), qf.x(), qf.y(), qf.z()}},
+      {"omega_final", vec(p.omega_final)}};
   j["direct"] = {{"converged", r.direct.converged},
                  {"status", r.direct.status},
                  {"final_time", r.direct.final_time},
