@@ -103,7 +103,7 @@ TEST(TorqueTable, ReplayOfBettsOptimumReachesTheTarget) {
     so.sample_dt = 1.0;
     const dynamics::State end =
         dynamics::simulate(sc.body, sc.torque, sc.initial, *integrator, so).final_state;
-    EXPECT_LT(so3::angle_between(end.R, target), tol) << method;
+    EXPECT_LT(so3::angle_between(end.R_space_body, target), tol) << method;
     EXPECT_LT(end.omega_body.norm(), tol * 0.1) << method;
   }
   std::filesystem::remove_all(dir);
