@@ -16,6 +16,8 @@ reads ``DIR/trajectory.csv`` and ``DIR/summary.json`` (written by ``poinsot run`
 - ``top.png`` (tops only): the tip of the figure axis seen from above (along the vertical −g, or along L for a
   free symmetric top), showing precession and nutation.
 
+A ``poinsot optimize`` folder (``"kind": "optimal"``) gets the figures of ``poinsot.plot_optimal``.
+
 A multibody run (summary.json ``"kind": "multibody"``, with ``DIR/diagnostics.csv``) gets instead:
 
 - ``paths.png``: each body's centre of mass (m) in the x–z and x–y planes (equal axes), start and end marked;
@@ -404,6 +406,10 @@ def plot_run(folder):
         from poinsot.plot_ensemble import plot_ensemble_run  # absolute: plot.py also runs as a script
 
         return plot_ensemble_run(folder)
+    if kind == "optimal":
+        from poinsot.plot_optimal import plot_optimal_run  # absolute: plot.py also runs as a script
+
+        return plot_optimal_run(folder)
     cols, summary = load_run(folder)
     if len(cols["t"]) < 2:
         raise ValueError(f"plot: {folder / 'trajectory.csv'} has {len(cols['t'])} rows; expected at least 2")

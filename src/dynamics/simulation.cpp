@@ -1,5 +1,6 @@
 #include "poinsot/dynamics/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -109,7 +110,15 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
     result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
     return result;
   };
+  // The torque's breakpoints (a tabulated torque's jumps and kinks): no step straddles one, and the torque is
+  // told where each step starts (TorqueModel::enter_interval), so that stages at a breakpoint see one piece.
+  const std::vector<double> breaks = torque->breakpoints();
+  const auto next_stop = [&](double t, double limit) {
+    const auto it = std::upper_bound(breaks.begin(), breaks.end(), t);
+    return it != breaks.end() && *it < limit ? *it : limit;
+  };
   const auto take_step = [&](State& x, double h) {
+    torque->enter_interval(x.time);
     try {
       const StepResult r = integrator.step(x, h);
       ++result.steps;
@@ -143,11 +152,14 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
     double h = integrator.nominal_step() > 0.0 ? integrator.nominal_step() : options.sample_dt;
     while (s.time < options.t_end) {
       const State prev = s;
-      const double remaining = options.t_end - s.time;
+      const double stop = next_stop(s.time, options.t_end);
+      const double remaining = stop - s.time;
       const bool last = h >= remaining;
       const StepResult r = take_step(s, last ? remaining : h);
-      if (last && r.dt_taken == remaining) s.time = options.t_end;
-      h = r.dt_next;
+      const bool reached = last && r.dt_taken == remaining;
+      if (reached) s.time = stop;
+      // A step cut short at a breakpoint says nothing against the step proposed before it.
+      h = reached ? std::max(h, r.dt_next) : r.dt_next;
       after_step(prev);
       while (next <= n_intervals && sample_time(next) <= s.time) {
         const double ts = sample_time(next);
@@ -161,17 +173,21 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
   // Fixed-step methods: each sample interval is cut into n equal steps of at most the nominal step, so that
   // samples land exactly on the sample times (no interpolation of the samples).
   const double h_nominal = integrator.nominal_step();
+  // A sample interval holding breakpoints is cut at them first.
   for (; next <= n_intervals; ++next) {
-    const double a = s.time;
     const double b = sample_time(next);
-    const long long n =
-        h_nominal > 0.0 ? std::max(1LL, static_cast<long long>(std::ceil((b - a) / h_nominal - 1e-9))) : 1;
-    const double hh = (b - a) / static_cast<double>(n);
-    for (long long k = 0; k < n; ++k) {
-      const State prev = s;
-      take_step(s, hh);
-      if (k == n - 1) s.time = b;
-      after_step(prev);
+    while (s.time < b) {
+      const double a = s.time;
+      const double e = next_stop(a, b);
+      const long long n =
+          h_nominal > 0.0 ? std::max(1LL, static_cast<long long>(std::ceil((e - a) / h_nominal - 1e-9))) : 1;
+      const double hh = (e - a) / static_cast<double>(n);
+      for (long long k = 0; k < n; ++k) {
+        const State prev = s;
+        take_step(s, hh);
+        if (k == n - 1) s.time = e;
+        after_step(prev);
+      }
     }
     if (!emit(s)) return finish();
   }

@@ -90,9 +90,11 @@ std::string optimal_report(const OptimalRun& r) {
   if (!r.indirect.time.empty()) {
     o << fmt::format("  final time {} s, cost {}\n", format_number(r.indirect.final_time, 14),
                      format_number(r.indirect.cost, 14));
-    for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k)
-      o << fmt::format("  switch of u{} at t = {} s\n", r.indirect.switch_axes[k] + 1,
-                       format_number(r.indirect.switch_times[k], 12));
+    for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k) {
+      const int axis = r.indirect.switch_axes[k];
+      const std::string what = axis >= 0 ? fmt::format("switch of u{}", axis + 1) : "reversal of u (σ = 0)";
+      o << fmt::format("  {} at t = {} s\n", what, format_number(r.indirect.switch_times[k], 12));
+    }
     const auto& v = r.verification;
     o << "\nchecks:\n"
       << fmt::format("  Hamiltonian: mean {}, max deviation {}\n", format_number(v.hamiltonian_mean, 3),
@@ -124,11 +126,22 @@ std::string optimal_report(const OptimalRun& r) {
 }
 
 std::string optimal_summary_json(const OptimalRun& r) {
+  const auto& p = r.scenario.problem;
   nlohmann::ordered_json j;
+  j["kind"] = "optimal";
   j["scenario"] = r.scenario.source;
   j["status"] = r.status;
   j["optimal"] = r.optimal;
-  j["objective"] = std::string(optimal::objective_name(r.scenario.problem.objective));
+  j["objective"] = std::string(optimal::objective_name(p.objective));
+  const Quat& qf = p.attitude_final;
+  j["problem"] = {
+      {"torque_bound", p.bound == optimal::TorqueBound::per_axis ? "per_axis" : "norm"},
+      {"torque_max", p.bound == optimal::TorqueBound::per_axis ? vec(p.torque_max)
+                                                               : nlohmann::ordered_json(p.torque_max[0])},
+      {"rate_max", p.has_rate_bound() ? nlohmann::ordered_json(p.rate_max) : nlohmann::ordered_json()},
+      {"free_final_attitude", p.free_final_attitude},
+      {"attitude_final", {qf.w(), qf.x(), qf.y(), qf.z()}},
+      {"omega_final", vec(p.omega_final)}};
   j["direct"] = {{"converged", r.direct.converged},
                  {"status", r.direct.status},
                  {"final_time", r.direct.final_time},
@@ -146,7 +159,10 @@ std::string optimal_summary_json(const OptimalRun& r) {
                                 {"costate_omega_initial", vec(r.indirect.costate_omega_initial)}};
   ind["switches"] = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k)
-    ind["switches"].push_back({{"axis", r.indirect.switch_axes[k] + 1}, {"t", r.indirect.switch_times[k]}});
+    ind["switches"].push_back(
+        {{"axis", r.indirect.switch_axes[k] >= 0 ? nlohmann::ordered_json(r.indirect.switch_axes[k] + 1)
+                                                 : nlohmann::ordered_json()},
+         {"t", r.indirect.switch_times[k]}});
   j["indirect"] = ind;
   const auto& v = r.verification;
   j["checks"] = {{"passed", v.passed},

@@ -1,5 +1,6 @@
 // Scenario files: TOML → validated Scenario (see scenario.hpp and docs/scenario.md).
 #include "poinsot/io/scenario.hpp"
+#include "poinsot/io/torque_table.hpp"
 #include "poinsot/io/work_limits.hpp"
 
 #include <cerrno>
@@ -134,8 +135,10 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
               .body_surface = body.surface};
 
   // [torque]
-  const Section t(src, root["torque"].as_table(), "torque", {"type", "g", "value"});
+  const Section t(src, root["torque"].as_table(), "torque", {"type", "g", "value", "file"});
   sc.torque_type = t.string("type").value_or("none");
+  if (t.has("file") && sc.torque_type != "table")
+    t.fail("file", fmt::format("given with type = \"{}\"; only type = \"table\" takes file", sc.torque_type));
   if (sc.torque_type == "none") {
     for (const char* k : {"g", "value"})
       if (t.has(k))
@@ -156,8 +159,16 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
     const Vec3 v = *t.vec3("value");
     sc.torque = sc.torque_type == "body" ? dynamics::TorqueModel::constant_body(v)
                                          : dynamics::TorqueModel::constant_space(v);
+  } else if (sc.torque_type == "table") {
+    for (const char* k : {"g", "value"})
+      if (t.has(k)) t.fail(k, "given with type = \"table\"; expected file (a t,ux,uy,uz table) only");
+    t.require("file", "the path of a t,ux,uy,uz table (N·m, body frame), e.g. a control.csv");
+    std::filesystem::path file(*t.string("file"));
+    if (file.is_relative() && !base_dir.empty()) file = std::filesystem::path(base_dir) / file;
+    sc.torque = located(t, "file", [&] { return read_torque_table(file.string()); });
   } else {
-    t.fail("type", fmt::format("got \"{}\", expected one of none, gravity, body, space", sc.torque_type));
+    t.fail("type",
+           fmt::format("got \"{}\", expected one of none, gravity, body, space, table", sc.torque_type));
   }
 
   // [integrator]

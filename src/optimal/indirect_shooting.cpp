@@ -26,8 +26,35 @@ struct SwitchGuess {
   Vec3 initial_sign = Vec3::Ones();
   std::vector<double> times;
   std::vector<int> axes;
-  std::string singular;  // non-empty when u_i stays inside its bound over a stretch (singular arc)
+  std::string singular;           // non-empty when u_i stays inside its bound over a stretch (singular arc)
+  std::vector<double> reversals;  // norm bound: times where σ passes through 0 and u = −ū σ/‖σ‖ reverses
 };
+
+// Norm bound, minimum time: consecutive saturated samples of the direct solution whose torques are more
+// than 90° apart mark a zero of σ (the torque reverses through it, as for a sphere's eigenaxis slew at T/2);
+// the time is the zero of the component along the earlier torque, linearly interpolated.
+std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSolution& d) {
+  std::vector<double> out;
+  const double ubar = p.torque_max[0];
+  std::size_t last = d.time.size();
+  for (std::size_t j = 0; j < d.time.size(); ++j) {
+    if (d.torque_body[j].norm() < 0.5 * ubar) continue;
+    if (last < d.time.size() && d.torque_body[j].dot(d.torque_body[last]) < 0.0) {
+      const Vec3 e = d.torque_body[last].normalized();
+      double t0 = d.time[last];
+      for (std::size_t k = last; k < j; ++k) {
+        const double a = d.torque_body[k].dot(e), b = d.torque_body[k + 1].dot(e);
+        if ((a > 0) != (b > 0)) {
+          t0 = d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
+          break;
+        }
+      }
+      out.push_back(t0);
+    }
+    last = j;
+  }
+  return out;
+}
 
 SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d) {
   SwitchGuess g;
@@ -73,14 +100,17 @@ SwitchGuess read_switching_structure(const ReorientationProblem& p, const Direct
 class Shooter {
  public:
   Shooter(const ReorientationProblem& p, const ShootingOptions& o, const SwitchGuess& s, bool bang_bang)
-      : p_(p), o_(o), s_(s), bang_(bang_bang), J_inv_(p.inertia_body.inverse()) {
+      : p_(p),
+        o_(o),
+        s_(s),
+        bang_(bang_bang),
+        rev_(!bang_bang && !s.reversals.empty()),
+        J_inv_(p.inertia_body.inverse()) {
     R0_ = p.attitude_initial.toRotationMatrix();
     Rf_ = p.attitude_final.toRotationMatrix();
   }
 
-  int size() const {
-    return 6 + (p_.free_final_time() ? 1 : 0) + (bang_ ? static_cast<int>(s_.axes.size()) : 0);
-  }
+  int size() const { return 6 + (p_.free_final_time() ? 1 : 0) + static_cast<int>(knot_count()); }
 
   /// The torque on the arc that starts after the switches at times ≤ t_begin (bang-bang), from x.
   Vec3 arc_torque(const Eigen::VectorXd& x, double t_mid) const {
@@ -93,7 +123,11 @@ class Shooter {
     }
     return u;
   }
+  /// The unknown times between arcs: the switches (bang-bang) or the reversals (norm bound).
+  std::size_t knot_count() const { return bang_ ? s_.axes.size() : rev_ ? s_.reversals.size() : 0; }
   double switch_time(const Eigen::VectorXd& x, std::size_t k) const { return x[7 + static_cast<int>(k)]; }
+  /// The scale of the k-th knot's condition (σ times a torque, like H).
+  double knot_scale(std::size_t k) const { return bang_ ? p_.torque_max[s_.axes[k]] : p_.torque_max[0]; }
   double final_time(const Eigen::VectorXd& x) const { return p_.free_final_time() ? x[6] : p_.final_time; }
 
   /// Integrates from 0 to T; calls observe(t, y, u) at samples_per_arc points of each arc when asked.
@@ -104,8 +138,8 @@ class Shooter {
     if (!(T > 0.0)) return false;
     std::vector<double> knots{0.0};
     std::vector<std::size_t> order;
-    if (bang_) {
-      for (std::size_t k = 0; k < s_.axes.size(); ++k)
+    if (knot_count() > 0) {
+      for (std::size_t k = 0; k < knot_count(); ++k)
         order.push_back(k);
       std::sort(order.begin(), order.end(),
                 [&](auto a, auto b) { return switch_time(x, a) < switch_time(x, b); });
@@ -117,12 +151,22 @@ class Shooter {
     knots.push_back(T);
     const Vec3 p_theta0 = x.segment<3>(0);
     PmpState y = detail::pack(R0_, p_.omega_initial, 0.5 * R0_ * so3::hat(p_theta0), x.segment<3>(3), 0.0);
-    if (sigma_at_switch) sigma_at_switch->assign(s_.axes.size(), 0.0);
+    if (sigma_at_switch) sigma_at_switch->assign(knot_count(), 0.0);
+    // Reversals: on each arc u = −ū σ/‖σ‖ with σ's sign locked to the side of `side` (σ(0) on the first arc,
+    // reversed at each reversal), so that the control is continued smoothly through σ = 0 up to the arc's end
+    // and the knot conditions σ(t_k)·side = 0 are smooth in t_k.
+    Vec3 side = J_inv_ * x.segment<3>(3);
     for (std::size_t a = 0; a + 1 < knots.size(); ++a) {
       const double t0 = knots[a], t1 = knots[a + 1];
       const Vec3 u_arc = bang_ ? arc_torque(x, 0.5 * (t0 + t1)) : Vec3::Zero();
-      auto control = [&](const PmpState& yy) {
-        return bang_ ? u_arc : minimising_control(p_, Eigen::Map<const Vec3>(yy.data() + 21));
+      auto control = [&](const PmpState& yy) -> Vec3 {
+        if (bang_) return u_arc;
+        const Vec3 p_omega = Eigen::Map<const Vec3>(yy.data() + 21);
+        if (!rev_) return minimising_control(p_, p_omega);
+        const Vec3 sigma = J_inv_ * p_omega;
+        return sigma.norm() > 0.0
+                   ? Vec3(-p_.torque_max[0] * (sigma.dot(side) < 0.0 ? -1.0 : 1.0) * sigma.normalized())
+                   : Vec3::Zero();
       };
       auto rhs = [&](const PmpState& yy, PmpState& dy, double) {
         detail::pmp_rhs(p_, J_inv_, yy, dy, control(yy));
@@ -138,9 +182,11 @@ class Shooter {
         }
         observe(ts, y, control(y));
       }
-      if (sigma_at_switch && a + 1 < knots.size() - 1) {
+      if (a + 1 < knots.size() - 1) {
+        const Vec3 sigma = J_inv_ * Eigen::Map<const Vec3>(y.data() + 21);
         const std::size_t k = order[a];
-        (*sigma_at_switch)[k] = (J_inv_ * Eigen::Map<const Vec3>(y.data() + 21))[s_.axes[k]];
+        if (sigma_at_switch) (*sigma_at_switch)[k] = bang_ ? sigma[s_.axes[k]] : sigma.dot(side.normalized());
+        side = -side;
       }
     }
     return true;
@@ -169,9 +215,8 @@ class Shooter {
     F.segment<3>(3) = (v.omega - p_.omega_final) * T;
     int row = 6;
     if (p_.free_final_time()) F[row++] = detail::hamiltonian(p_, J_inv_, v, uT);
-    if (bang_)
-      for (std::size_t k = 0; k < sigma.size(); ++k)
-        F[row++] = sigma[k] * p_.torque_max[s_.axes[k]];
+    for (std::size_t k = 0; k < sigma.size(); ++k)
+      F[row++] = sigma[k] * knot_scale(k);
     return F.allFinite();
   }
 
@@ -179,9 +224,56 @@ class Shooter {
   const ReorientationProblem& p_;
   ShootingOptions o_;
   const SwitchGuess& s_;
-  bool bang_;
+  bool bang_, rev_;
   Mat3 J_inv_, R0_, Rf_;
 };
+
+/// Newton's method with a backtracking line search on the shooting residual, from x (F = its residual);
+/// stops at norm ≤ o.tolerance, after o.max_iterations, or when no step decreases the residual. Returns the
+/// iterations taken; x, F and norm are the last accepted iterate; `stalled` tells whether it stopped because
+/// no step decreased the residual.
+int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x, Eigen::VectorXd& F,
+           double& norm, bool& stalled) {
+  int it = 0;
+  stalled = false;
+  for (; it < o.max_iterations && norm > o.tolerance; ++it) {
+    const int n = shooter.size();
+    Eigen::MatrixXd Jac(n, n);
+    for (int j = 0; j < n; ++j) {
+      const double scale = j < 3   ? x.segment<3>(0).cwiseAbs().maxCoeff()
+                           : j < 6 ? x.segment<3>(3).cwiseAbs().maxCoeff()
+                                   : std::abs(x[j]);
+      const double h = 1e-7 * std::max({std::abs(x[j]), 1e-2 * scale, 1e-12});
+      Eigen::VectorXd xp = x, Fp;
+      xp[j] += h;
+      if (!shooter.residual(xp, Fp)) {
+        xp[j] = x[j] - h;
+        if (!shooter.residual(xp, Fp)) break;
+        Jac.col(j) = (F - Fp) / h;
+      } else {
+        Jac.col(j) = (Fp - F) / h;
+      }
+    }
+    const Eigen::VectorXd step = Jac.colPivHouseholderQr().solve(-F);
+    double alpha = 1.0;
+    bool accepted = false;
+    for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
+      Eigen::VectorXd xn = x + alpha * step, Fn;
+      if (shooter.residual(xn, Fn) && Fn.cwiseAbs().maxCoeff() < (1.0 - 1e-4 * alpha) * norm) {
+        x = xn;
+        F = Fn;
+        norm = Fn.cwiseAbs().maxCoeff();
+        accepted = true;
+        break;
+      }
+    }
+    if (!accepted) {
+      stalled = true;
+      break;
+    }
+  }
+  return it;
+}
 
 }  // namespace
 
@@ -224,7 +316,9 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
                  " rad/s); state-constrained arcs are not handled by the shooting method";
     return out;
   }
-  const SwitchGuess sw = out.bang_bang ? read_switching_structure(p, d) : SwitchGuess{};
+  SwitchGuess sw = out.bang_bang ? read_switching_structure(p, d) : SwitchGuess{};
+  if (p.objective == Objective::minimum_time && p.bound == TorqueBound::norm)
+    sw.reversals = read_reversals(p, d);
   if (!sw.singular.empty()) {
     out.status = "not applied: " + sw.singular + "; singular arcs are not handled by the shooting method";
     return out;
@@ -247,6 +341,8 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   if (p.free_final_time()) x[6] = d.final_time;
   for (std::size_t k = 0; k < sw.times.size(); ++k)
     x[7 + static_cast<int>(k)] = sw.times[k];
+  for (std::size_t k = 0; k < sw.reversals.size(); ++k)
+    x[7 + static_cast<int>(k)] = sw.reversals[k];
 
   Eigen::VectorXd F;
   if (!shooter.residual(x, F)) {
@@ -254,52 +350,39 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     return out;
   }
   double norm = F.cwiseAbs().maxCoeff();
-  int it = 0;
-  for (; it < o.max_iterations && norm > o.tolerance; ++it) {
-    const int n = shooter.size();
-    Eigen::MatrixXd Jac(n, n);
-    for (int j = 0; j < n; ++j) {
-      const double scale = j < 3   ? x.segment<3>(0).cwiseAbs().maxCoeff()
-                           : j < 6 ? x.segment<3>(3).cwiseAbs().maxCoeff()
-                                   : std::abs(x[j]);
-      const double h = 1e-7 * std::max({std::abs(x[j]), 1e-2 * scale, 1e-12});
-      Eigen::VectorXd xp = x, Fp;
-      xp[j] += h;
-      if (!shooter.residual(xp, Fp)) {
-        xp[j] = x[j] - h;
-        if (!shooter.residual(xp, Fp)) break;
-        Jac.col(j) = (F - Fp) / h;
-      } else {
-        Jac.col(j) = (Fp - F) / h;
-      }
+  bool stalled = false;
+  int it = newton(shooter, o, x, F, norm, stalled);
+  // The residual's floor is the integration's error: when Newton stalls just above the tolerance, polish
+  // once with a tenfold tighter integration (e.g. the reversal of a sphere's slew: 3.5e-12 at 1e-13).
+  ShootingOptions used = o;
+  if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
+    ShootingOptions tight = o;
+    tight.integration_tolerance = o.integration_tolerance / 10.0;
+    const Shooter polish(p, tight, sw, out.bang_bang);
+    if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
+      F = Fp;
+      norm = Fp.cwiseAbs().maxCoeff();
+      it += newton(polish, tight, x, F, norm, stalled);
+      used = tight;
     }
-    const Eigen::VectorXd step = Jac.colPivHouseholderQr().solve(-F);
-    double alpha = 1.0;
-    bool accepted = false;
-    for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
-      Eigen::VectorXd xn = x + alpha * step, Fn;
-      if (shooter.residual(xn, Fn) && Fn.cwiseAbs().maxCoeff() < (1.0 - 1e-4 * alpha) * norm) {
-        x = xn;
-        F = Fn;
-        norm = Fn.cwiseAbs().maxCoeff();
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) break;
   }
+  // Still stalled within 10× the tolerance with the tighter integration: the residual's round-off floor.
+  const bool floor = norm > o.tolerance && stalled && used.integration_tolerance < o.integration_tolerance &&
+                     norm <= 10.0 * o.tolerance;
+  const Shooter result_shooter(p, used, sw, out.bang_bang);
   out.iterations = it;
   out.residual = norm;
-  out.converged = norm <= o.tolerance;
-  out.status = out.converged ? "converged"
-                             : "not converged: shooting residual " + format_number(norm, 3) + " after " +
-                                   std::to_string(it) + " Newton iterations";
-  out.final_time = shooter.final_time(x);
+  out.converged = norm <= o.tolerance || floor;
+  out.status = floor           ? "converged (residual " + format_number(norm, 3) + " at its round-off floor)"
+               : out.converged ? "converged"
+                               : "not converged: shooting residual " + format_number(norm, 3) + " after " +
+                                     std::to_string(it) + " Newton iterations";
+  out.final_time = result_shooter.final_time(x);
   out.costate_attitude_initial = x.segment<3>(0);
   out.costate_omega_initial = x.segment<3>(3);
-  for (std::size_t k = 0; k < sw.axes.size(); ++k) {
-    out.switch_times.push_back(shooter.switch_time(x, k));
-    out.switch_axes.push_back(sw.axes[k]);
+  for (std::size_t k = 0; k < result_shooter.knot_count(); ++k) {
+    out.switch_times.push_back(result_shooter.switch_time(x, k));
+    out.switch_axes.push_back(out.bang_bang ? sw.axes[k] : -1);
   }
   {  // ascending switching times
     std::vector<std::size_t> idx(out.switch_times.size());
@@ -317,7 +400,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     out.switch_axes = a;
   }
   const Mat3 J_inv = p.inertia_body.inverse();
-  shooter.propagate(x, nullptr, [&](double t, const PmpState& y, const Vec3& u) {
+  result_shooter.propagate(x, nullptr, [&](double t, const PmpState& y, const Vec3& u) {
     const detail::PmpView v = detail::unpack(y);
     out.time.push_back(t);
     out.attitude.push_back(v.R);
@@ -335,7 +418,8 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     knots.insert(knots.end(), out.switch_times.begin(), out.switch_times.end());
     knots.push_back(out.final_time);
     for (std::size_t a = 0; a + 1 < knots.size(); ++a)
-      out.arcs.push_back({knots[a], knots[a + 1], shooter.arc_torque(x, 0.5 * (knots[a] + knots[a + 1]))});
+      out.arcs.push_back(
+          {knots[a], knots[a + 1], result_shooter.arc_torque(x, 0.5 * (knots[a] + knots[a + 1]))});
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
@@ -30,6 +31,13 @@ class TorqueModel {
   virtual Vec3 gravity_space() const { return Vec3::Zero(); }
   /// A short description for reports: "none", "body (0, 0, 0.1) N·m", "gravity (0, 0, -9.81) m/s²", ...
   virtual std::string describe() const = 0;
+  /// Times (s, ascending) where τ(t) jumps or has a kink (a tabulated torque); empty for smooth models. The
+  /// simulation driver ends a step at each of them, so that no step straddles one.
+  virtual std::vector<double> breakpoints() const { return {}; }
+  /// Called by the simulation driver before each step with the step's start time (s), for models with
+  /// breakpoints: every stage of the step, including one exactly at a breakpoint ending it, then evaluates
+  /// the piece the step lies in. Smooth models ignore it.
+  virtual void enter_interval(double /*t_begin*/) const {}
 
   /// No torque.
   static std::shared_ptr<const TorqueModel> none();

@@ -7,7 +7,8 @@
 ///   control.csv     t, u body (N·m): piecewise linear in t, with two rows at each switch (left and right
 ///                   values), so that linear interpolation replays a bang-bang control exactly
 ///   costates.csv    t, p_θ, p_ω, σ = J⁻¹p_ω, H
-///   summary.json    the same as `--json`
+///   summary.json    the same as `--json`: "kind": "optimal", status, the problem's bounds and target, both
+///                   methods' results, the checks and the interpretation
 /// Every CSV starts with a `# status: ...` line; a solution that is not verified optimal says
 /// "not converged" there, in the report and in summary.json, and keeps the best iterate.
 #include <string>

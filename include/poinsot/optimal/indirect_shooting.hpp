@@ -21,8 +21,15 @@
 /// and the order of its sign changes) is read from the direct solution's torques, and the switching times
 /// are unknowns of the Newton iteration with the conditions σ_i(t_s) = 0, so the switches are exact.
 /// Shooting: single shooting over the arcs between switches (integration by Runge–Kutta–Fehlberg 7(8) at
-/// rtol = atol = integration_tolerance); the Jacobian by forward differences.
-/// Not handled: active rate bounds (state constraints; the solver reports them and does not claim
+/// rtol = atol = integration_tolerance); the Jacobian by forward differences. When Newton stalls within 100×
+/// the tolerance it is resumed with a tenfold tighter integration; a residual that then still stalls within
+/// 10× the tolerance is the round-off floor of the residual and is accepted as converged (the status says
+/// so). Norm bound, minimum time: where the direct solution's torque turns by more than 90° between
+/// consecutive saturated samples, σ passes through 0 and u = −ū σ/‖σ‖ reverses (the eigenaxis slew of a
+/// sphere at T/2). Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of
+/// σ at the start of the arc ending there; on each arc the control is continued through σ = 0 without
+/// flipping, so the conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a
+/// sphere). Not handled: active rate bounds (state constraints; the solver reports them and does not claim
 /// optimality), singular arcs (|u_i| strictly inside its bound over an interval of the direct solution).
 #include <string>
 #include <vector>
@@ -57,7 +64,7 @@ struct IndirectSolution {
   Vec3 costate_attitude_initial = Vec3::Zero();  ///< p_θ(0)
   Vec3 costate_omega_initial = Vec3::Zero();     ///< p_ω(0)
   std::vector<double> switch_times;              ///< s, ascending (bang-bang)
-  std::vector<int> switch_axes;                  ///< body axis 0, 1, 2 of each switch
+  std::vector<int> switch_axes;                  ///< body axis 0, 1, 2 of each switch; −1: a reversal
   std::vector<ControlArc> arcs;                  ///< bang-bang arcs, in order
 
   // Samples (arc ends included, so each switch appears twice, once per side).

@@ -1,0 +1,129 @@
+// The tabulated torque: its interpolation (linear pieces, jumps at repeated times, zero outside), the piece
+// announced by the driver at a breakpoint, its errors, and replays through the simulation driver against the
+// closed form of a sphere (J = j I: ω̇ = τ/j about a fixed axis, so the angle is the double integral of τ/j).
+#include "poinsot/dynamics/tabulated_torque.hpp"
+
+#include <limits>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/methods.hpp"
+#include "poinsot/dynamics/simulation.hpp"
+#include "poinsot/dynamics/state.hpp"
+#include "poinsot/so3/distance.hpp"
+#include "poinsot/so3/exp_log.hpp"
+#include "poinsot_test.hpp"
+
+namespace poinsot::test {
+namespace {
+
+using dynamics::TabulatedTorque;
+
+const Vec3 kAxis = Vec3(1.0, 2.0, 2.0) / 3.0;
+
+/// +u n on [0, T/2), −u n on [T/2, T]: the bang-bang rest-to-rest slew of a sphere about n.
+TabulatedTorque bang_bang(double u, double T) {
+  return TabulatedTorque({0.0, T / 2, T / 2, T}, {u * kAxis, u * kAxis, -u * kAxis, -u * kAxis}, "bang-bang");
+}
+
+Vec3 at(const TabulatedTorque& tau, double t) {
+  return tau.torque_body(t, Mat3::Identity(), Vec3::Zero());
+}
+
+TEST(TabulatedTorque, InterpolatesLinearlyJumpsAtRepeatedTimesAndIsZeroOutside) {
+  const TabulatedTorque tau({1.0, 2.0, 2.0, 4.0},
+                            {Vec3(1, 0, 0), Vec3(3, 0, 0), Vec3(0, 2, 0), Vec3(0, 4, 0)}, "t");
+  EXPECT_EQ(at(tau, 1.5), Vec3(2, 0, 0));
+  EXPECT_EQ(at(tau, 3.0), Vec3(0, 3, 0));
+  EXPECT_EQ(at(tau, 2.0), Vec3(0, 2, 0));  // at a jump: the right-hand value
+  EXPECT_EQ(at(tau, 4.0), Vec3(0, 4, 0));
+  EXPECT_EQ(at(tau, 0.999), Vec3::Zero());
+  EXPECT_EQ(at(tau, 4.001), Vec3::Zero());
+  EXPECT_EQ(tau.breakpoints(), (std::vector<double>{1.0, 2.0, 4.0}));
+  // A step announced on [1, 2] sees the left piece up to and including t = 2; one on [2, 4] the right one.
+  tau.enter_interval(1.25);
+  EXPECT_EQ(at(tau, 2.0), Vec3(3, 0, 0));
+  EXPECT_EQ(at(tau, 1.0), Vec3(1, 0, 0));
+  tau.enter_interval(2.0);
+  EXPECT_EQ(at(tau, 2.0), Vec3(0, 2, 0));
+  EXPECT_EQ(at(tau, 3.0), Vec3(0, 3, 0));  // away from the piece's ends the announcement changes nothing
+  // Before and after the table: zero up to and including its ends.
+  tau.enter_interval(0.0);
+  EXPECT_EQ(at(tau, 1.0), Vec3::Zero());
+  tau.enter_interval(4.0);
+  EXPECT_EQ(at(tau, 4.0), Vec3::Zero());
+  EXPECT_NE(tau.describe().find("4 rows"), std::string::npos) << tau.describe();
+}
+
+TEST(TabulatedTorque, RejectsMalformedTables) {
+  const auto rejects = [](std::vector<double> t, std::vector<Vec3> u, const char* what) {
+    try {
+      TabulatedTorque(std::move(t), std::move(u), "table.csv");
+      ADD_FAILURE() << what << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+    }
+  };
+  const Vec3 z = Vec3::Zero();
+  rejects({0.0}, {z}, "at least two rows");
+  rejects({0.0, 1.0}, {z}, "one torque per time");
+  rejects({0.0, 2.0, 1.0}, {z, z, z}, "ascending");
+  rejects({0.0, 1.0, 1.0, 1.0, 2.0}, {z, z, z, z, z}, "at most two rows");
+  rejects({0.0, 0.0, 1.0}, {z, z, z}, "starts or ends");
+  rejects({0.0, std::nan(""), 1.0}, {z, z, z}, "finite");
+  rejects({0.0, 1.0}, {z, Vec3(0, std::numeric_limits<double>::infinity(), 0)}, "row 2");
+}
+
+/// Replays `tau` on the sphere J = j I from rest with `method` and returns the final state at t_end.
+dynamics::State replay(const std::shared_ptr<const TabulatedTorque>& tau, double j, double t_end,
+                       const char* method, double dt) {
+  const auto body = dynamics::RigidBody::from_principal_moments(Vec3::Constant(j));
+  dynamics::IntegratorOptions opt;
+  opt.dt = dt;
+  opt.rtol = 1e-13;
+  opt.atol = 1e-13;
+  auto integrator = dynamics::make_integrator(method, body, tau, opt);
+  dynamics::SimulationOptions so;
+  so.t_end = t_end;
+  so.sample_dt = 0.37;  // sample times unrelated to the switch
+  return dynamics::simulate(body, tau, dynamics::State{}, *integrator, so).final_state;
+}
+
+TEST(TabulatedTorque, BangBangReplayReachesTheClosedFormSlewWithEveryMethod) {
+  // Θ = u T² / (4 j): rest to rest about n; then at rest (τ = 0 after the table) until t_end.
+  const double j = 2.0, u = 0.5, T = 3.3;
+  const double theta = u * T * T / (4 * j);
+  const auto tau = std::make_shared<const TabulatedTorque>(bang_bang(u, T));
+  const Mat3 target = so3::exp(theta * kAxis);
+  // dop853 and dopri5 at 1e-13 (the switch is a breakpoint: no step straddles it, so the error is the
+  // tolerance's); rk4 with dt = 0.01 not dividing T/2 (the driver cuts the steps at the switch): ω is linear
+  // in t on each piece, which RK4 integrates exactly, and the attitude's error is O(h⁴) per unit time.
+  // Without the breakpoints a stage on the wrong side of the switch costs h·Δτ/(6j) ≈ 1e-3 rad/s.
+  for (const auto& [method, dt, tol] :
+       {std::tuple{"dop853", 0.1, 1e-11}, std::tuple{"dopri5", 0.1, 1e-10}, std::tuple{"rk4", 0.01, 1e-9}}) {
+    const dynamics::State end = replay(tau, j, T + 0.5, method, dt);
+    EXPECT_LT(so3::angle_between(end.R_space_body, target), tol) << method;
+    EXPECT_LT(end.omega_body.norm(), tol) << method;
+  }
+}
+
+TEST(TabulatedTorque, LinearPieceReplayMatchesTheCubicAngle) {
+  // τ = (a + b t) n on [0, T]: ω = (a t + b t²/2)/j n, angle (a t²/2 + b t³/6)/j at T (then free drift at
+  // the final ω until t_end).
+  const double j = 1.5, a = 0.2, b = -0.1, T = 2.0, t_end = 2.5;
+  const auto tau = std::make_shared<const TabulatedTorque>(
+      std::vector<double>{0.0, T}, std::vector<Vec3>{a * kAxis, (a + b * T) * kAxis}, "ramp");
+  const double w_T = (a * T + b * T * T / 2) / j;
+  const double angle = (a * T * T / 2 + b * T * T * T / 6) / j + w_T * (t_end - T);
+  const dynamics::State end = replay(tau, j, t_end, "dop853", 0.1);
+  EXPECT_LT(so3::angle_between(end.R_space_body, so3::exp(angle * kAxis)), 1e-11);
+  EXPECT_LT((end.omega_body - w_T * kAxis).norm(), 1e-12);
+}
+
+}  // namespace
+}  // namespace poinsot::test
