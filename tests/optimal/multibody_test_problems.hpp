@@ -58,4 +58,25 @@ inline MultibodyProblem two_link_arm(double d1, double d2, double T, int interva
   return p;
 }
 
+/// One rod of the arm alone on the shoulder hinge, gravity off: rest at 0 to rest at Θ about z in T. The
+/// minimum of ∫u²dt for I θ̈ = u (I = J_zz + m (ℓ/2)² about the hinge) is u = 6IΘ/T² (1 − 2t/T),
+/// θ = Θ (3s² − 2s³) with s = t/T, and the cost 12 I² Θ² / T³.
+inline MultibodyProblem single_hinge(double theta, double T, int intervals) {
+  MultibodyProblem p;
+  const int rod = p.system.add_body_from_inertia("rod", 1.0, rod_inertia(1.0, 1.0, 0.05));
+  const int hinge = p.system.add_hinge("hinge", rod, Vec3(-0.5, 0, 0), Vec3::UnitZ(), multibody::kWorld,
+                                       Vec3::Zero(), Vec3::UnitZ());
+  p.initial_state = two_link_state(0.0, 0.0);
+  p.initial_state.bodies.resize(1);
+  p.final_state = two_link_state(theta, 0.0);
+  p.final_state.bodies.resize(1);
+  p.final_time = T;
+  p.intervals = intervals;
+  p.actuators = {{ActuatorKind::hinge_torque, hinge, 50.0}};
+  return p;
+}
+inline double single_hinge_inertia() {
+  return rod_inertia(1.0, 1.0, 0.05)(2, 2) + 0.25;
+}
+
 }  // namespace poinsot::optimal::testing
