@@ -12,7 +12,8 @@ torque, a description), ``DEFAULT_METHOD`` (simulate, scenario files), ``DEFAULT
 (``analysis.lambda_report``); ``multibody.METHODS`` and ``multibody.DEFAULT_METHOD`` for coupled bodies.
 
 Submodules: ``so3`` (rotations), ``inertia`` (mass properties), ``analysis`` (Λ and the constraint stress),
-``multibody`` (coupled bodies and joints integrated by RATTLE, their multipliers, scenario files), ``plot``
+``multibody`` (coupled bodies and joints integrated by RATTLE, their multipliers, scenario files), ``optimal``
+(optimal reorientation problems and scenarios; ``poinsot.optimize`` solves them), ``plot``
 (the figures of a run folder, Matplotlib: ``poinsot.plot.plot_run(folder)``).
 """
 from . import _core
@@ -44,6 +45,7 @@ from ._core import (
     load_scenario,
     make_integrator,
     multibody,
+    optimal,
     parse_scenario,
     potential_energy,
     sleeping_top_threshold,
@@ -57,6 +59,7 @@ from ._core import (
 from . import plot
 from ._simulate import RunResult, SimulationResult, run, scenario_toml, simulate
 from ._view import view
+from ._optimize import DirectSolution, OptimalSolution, optimize
 
 __all__ = [
     "__version__",
@@ -102,5 +105,9 @@ __all__ = [
     "ensemble",
     "plot",
     "view",
+    "optimal",
+    "optimize",
+    "OptimalSolution",
+    "DirectSolution",
 ]
 

@@ -319,6 +319,8 @@ from poinsot import analysis as analysis
 
 from poinsot import multibody as multibody
 
+from poinsot import optimal as optimal
+
 def _simulate(*args: Any, **kwargs: Any) -> dict: ...
 
 def _run_scenario(scenario: Scenario, out_dir: str) -> Tuple[str, str]: ...

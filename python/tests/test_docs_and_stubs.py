@@ -50,6 +50,9 @@ def body_of(doc):
     (lambda: poinsot.multibody.Rattle.step, "multibody_Rattle_step"),
     (lambda: poinsot.multibody.ProjectedRk4.step, "multibody_ProjectedRk4_step"),
     (lambda: poinsot.multibody.run_scenario, "io_run_multibody_scenario"),
+    (lambda: poinsot.optimal.load_scenario, "io_load_optimal_scenario"),
+    (lambda: poinsot.optimal.ReorientationProblem.torque_norm_limit,
+     "optimal_ReorientationProblem_torque_norm_limit"),
 ])
 def test_docstring_is_the_header_doc_comment(header_docs, obj, key):
     _, docs = header_docs

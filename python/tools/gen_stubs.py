@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the .pyi stubs of the compiled part of poinsot from the signatures pybind11 records.
 
-The stubs (python/poinsot/_core.pyi, so3.pyi, inertia.pyi, analysis.pyi, multibody.pyi) are committed so
+The stubs (python/poinsot/_core.pyi, so3.pyi, inertia.pyi, analysis.pyi, multibody.pyi, optimal.pyi) are committed so
 that editors see them in the source tree too; python/tests/test_stubs.py regenerates them in memory and fails when the
 committed files differ, so they cannot drift from the module. Run after changing a binding:
 
@@ -133,7 +133,7 @@ def module_stub(module, local: str) -> str:
             lines.append(f"{n}: {type(obj).__name__}\n")
     if not local:
         lines.append("__version__: str\n")
-        for sub in ("so3", "inertia", "analysis", "multibody"):
+        for sub in ("so3", "inertia", "analysis", "multibody", "optimal"):
             lines.append(f"from poinsot import {sub} as {sub}\n")
         lines.append("def _simulate(*args: Any, **kwargs: Any) -> dict: ...\n")
         lines.append("def _run_scenario(scenario: Scenario, out_dir: str) -> Tuple[str, str]: ...\n")
@@ -148,7 +148,7 @@ def stubs() -> dict[str, str]:
     import poinsot._core as core
 
     out = {"_core.pyi": module_stub(core, "")}
-    for sub in ("so3", "inertia", "analysis", "multibody"):
+    for sub in ("so3", "inertia", "analysis", "multibody", "optimal"):
         out[f"{sub}.pyi"] = module_stub(getattr(core, sub), sub)
     return out
 

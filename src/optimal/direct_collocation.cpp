@@ -274,16 +274,28 @@ DirectSolution extract(const CollocationNlp& nlp, const std::vector<double>& z,
 
 }  // namespace
 
-DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options) {
-  validate(problem);
+void validate(const CollocationOptions& options) {
   if (options.initial_intervals < 2 || options.max_intervals < options.initial_intervals)
     throw InvalidInput("collocation.initial_intervals: " + std::to_string(options.initial_intervals) +
                        "; expected 2 ≤ initial_intervals ≤ max_intervals (" +
                        std::to_string(options.max_intervals) + ")");
-  if (!(options.mesh_tolerance > 0.0) || !(options.nlp_tolerance > 0.0))
-    throw InvalidInput("collocation: mesh_tolerance " + format_number(options.mesh_tolerance) +
-                       " and nlp_tolerance " + format_number(options.nlp_tolerance) +
-                       "; expected positive values");
+  if (options.max_mesh_iterations < 1)
+    throw InvalidInput("collocation.max_mesh_iterations: " + std::to_string(options.max_mesh_iterations) +
+                       "; expected at least 1");
+  if (options.max_nlp_iterations < 1)
+    throw InvalidInput("collocation.max_nlp_iterations: " + std::to_string(options.max_nlp_iterations) +
+                       "; expected at least 1");
+  if (!(options.mesh_tolerance > 0.0) || !std::isfinite(options.mesh_tolerance))
+    throw InvalidInput("collocation.mesh_tolerance: " + format_number(options.mesh_tolerance) +
+                       "; expected a finite positive tolerance");
+  if (!(options.nlp_tolerance > 0.0) || !std::isfinite(options.nlp_tolerance))
+    throw InvalidInput("collocation.nlp_tolerance: " + format_number(options.nlp_tolerance) +
+                       "; expected a finite positive tolerance");
+}
+
+DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options) {
+  validate(problem);
+  validate(options);
 
   std::vector<double> tau(options.initial_intervals + 1);
   for (int k = 0; k <= options.initial_intervals; ++k)

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "optimal_test_problems.hpp"
 #include "poinsot/core/error.hpp"
@@ -72,6 +73,22 @@ TEST(DirectCollocation, RejectsBadOptions) {
   CollocationOptions opt;
   opt.initial_intervals = 1;
   EXPECT_THROW(solve_direct(testing::betts_problem(), opt), InvalidInput);
+  EXPECT_NO_THROW(validate(CollocationOptions{}));
+  const auto rejected = [](auto edit, const char* field) {
+    CollocationOptions o;
+    edit(o);
+    try {
+      validate(o);
+      ADD_FAILURE() << field << " accepted";
+    } catch (const InvalidInput& e) {
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  };
+  rejected([](CollocationOptions& o) { o.initial_intervals = 5000; }, "initial_intervals");
+  rejected([](CollocationOptions& o) { o.max_mesh_iterations = 0; }, "max_mesh_iterations");
+  rejected([](CollocationOptions& o) { o.max_nlp_iterations = 0; }, "max_nlp_iterations");
+  rejected([](CollocationOptions& o) { o.mesh_tolerance = std::nan(""); }, "mesh_tolerance");
+  rejected([](CollocationOptions& o) { o.nlp_tolerance = -1.0; }, "nlp_tolerance");
 }
 
 }  // namespace

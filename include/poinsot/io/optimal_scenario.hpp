@@ -5,17 +5,20 @@
 /// centre of mass) and the problem in `[optimal_control]`:
 ///
 ///     [optimal_control]
-///     objective = "minimum_time"        # minimum_energy (needs final_time), minimum_time_regularised
-///     (energy_weight) torque_bound = "per_axis"         # or "norm" torque_max = [50, 50, 50]         # N·m:
-///     three bounds per axis, one number for a norm bound rate_max = 0.5                    # rad/s, optional
-///     final_time = 10.0                 # s, minimum_energy only
-///     energy_weight = 1e-4              # s/(N·m)², minimum_time_regularised only
-///     mesh_tolerance = 1e-5             # direct method, optional
-///     initial_intervals = 10            # direct method, optional (2 … 4000)
-///     max_mesh_iterations = 10          # direct method, optional (1 … 100)
-///     [optimal_control.initial]         # orientation = { ... } as in [initial]; omega_body (rad/s)
-///     [optimal_control.final]
-///     [output] dir = "..."              # optional, default SCENARIO-optimize
+///     objective = "minimum_time"     # or minimum_energy (needs final_time),
+///                                    # minimum_time_regularised (needs energy_weight)
+///     torque_bound = "per_axis"      # or "norm"
+///     torque_max = [50, 50, 50]      # N·m: three bounds per axis, one number for a norm bound
+///     rate_max = 0.5                 # rad/s, optional
+///     final_time = 10.0              # s, minimum_energy only
+///     energy_weight = 1e-4           # s/(N·m)², minimum_time_regularised only
+///     mesh_tolerance = 1e-5          # direct method, optional
+///     initial_intervals = 10         # direct method, optional (2 … 4000)
+///     max_mesh_iterations = 10       # direct method, optional (1 … 100)
+///     [optimal_control.initial]      # orientation = { ... } as in [initial]; omega_body (rad/s)
+///     [optimal_control.final]        # the same, or free_attitude = true (detumbling)
+///     [output]
+///     dir = "..."                    # optional, default SCENARIO-optimize
 ///
 /// Throws InvalidInput located at the key for every malformed or invalid value (the problem's own checks,
 /// optimal::validate, are applied and located at [optimal_control]).
@@ -28,17 +31,21 @@
 namespace poinsot::io {
 
 struct OptimalScenario {
-  std::string name;  ///< the file's stem
-  std::string source;
-  std::string title;
-  std::string body_description;
-  optimal::ReorientationProblem problem;
-  optimal::CollocationOptions collocation;
-  std::string out_dir;  ///< empty: the default
+  std::string name;                         ///< the file's stem
+  std::string source;                       ///< the file's path (or "<string>", "<dict>")
+  std::string title;                        ///< the file's `title`, or empty
+  std::string body_description;             ///< how [body] gave the inertia
+  optimal::ReorientationProblem problem;    ///< the validated problem of [optimal_control]
+  optimal::CollocationOptions collocation;  ///< the direct method's options
+  std::string out_dir;                      ///< [output] dir; empty: the default
 };
 
+/// Parses scenario text; `source` names it in the messages and `base_dir` resolves relative mesh paths.
+/// Throws InvalidInput located at the offending key.
 OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view source,
                                        std::string_view base_dir);
+/// Reads and parses the file at `path` (name = its stem). Throws InvalidInput for an unreadable file or any
+/// invalid value.
 OptimalScenario load_optimal_scenario(const std::string& path);
 
 }  // namespace poinsot::io

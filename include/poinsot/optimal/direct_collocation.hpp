@@ -57,6 +57,10 @@ struct DirectSolution {
   int nlp_iterations = 0;  ///< Ipopt iterations, summed over the mesh iterations
 };
 
+/// Throws InvalidInput (one line naming the field) unless 2 ≤ initial_intervals ≤ max_intervals,
+/// max_mesh_iterations ≥ 1, max_nlp_iterations ≥ 1 and both tolerances are finite and positive.
+void validate(const CollocationOptions& options);
+
 /// Solves `problem` by collocation. Throws InvalidInput for an invalid problem or options; a solver failure
 /// is reported in `converged`/`status` with the best iterate kept.
 DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options = {});

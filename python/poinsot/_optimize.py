@@ -1,0 +1,216 @@
+"""poinsot.optimize: the optimal reorientation of a rigid body from Python (``poinsot optimize`` as a function).
+
+The C++ run (io/optimal_run.hpp: direct method, indirect method from its costates, verification,
+interpretation) runs with the GIL released; its samples come back as NumPy arrays.
+
+What ``optimize`` accepts is decided by the recognisers in ``_SOLVERS``, tried in order: each is a pair
+(recognise, solve), ``recognise(obj)`` returning a prepared input or None, ``solve(prepared, out_dir)`` the
+result. A new kind of system (a multibody system, say) is another pair, placed before the single-body one when
+its inputs could also look like a single-body scenario (a dict).
+"""
+from __future__ import annotations
+
+import json
+import os
+import warnings
+from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
+import numpy as np
+
+from . import _core
+from ._simulate import scenario_toml
+
+
+@dataclass(frozen=True)
+class DirectSolution:
+    """The direct method's (Hermite–Simpson collocation, Ipopt) solution, NumPy float64 arrays.
+
+    Samples at the mesh nodes and midpoints: ``t`` (n,) s, ``quaternion`` (n, 4) (w, x, y, z), body → space,
+    ``omega_body`` (n, 3) rad/s, ``torque_body`` (n, 3) N·m. ``node_time`` (m + 1,) s: the final mesh;
+    ``mesh_error`` (m,): the relative error between the nodes of each interval, ``max_mesh_error`` its largest.
+    Costates from the defect multipliers at the interval centres ``costate_time`` (m,) s:
+    ``costate_attitude_body`` p_θ (m, 3), ``costate_omega`` p_ω (m, 3). ``converged`` (every NLP solved and the
+    mesh error met), ``status``, ``final_time`` s, ``cost``, ``mesh_iterations``, ``nlp_iterations``.
+    """
+
+    converged: bool
+    status: str
+    final_time: float
+    cost: float
+    t: np.ndarray
+    quaternion: np.ndarray
+    omega_body: np.ndarray
+    torque_body: np.ndarray
+    node_time: np.ndarray
+    costate_time: np.ndarray
+    costate_attitude_body: np.ndarray
+    costate_omega: np.ndarray
+    mesh_error: np.ndarray
+    max_mesh_error: float
+    mesh_iterations: int
+    nlp_iterations: int
+
+
+@dataclass(frozen=True)
+class OptimalSolution:
+    """The result of ``poinsot.optimize``: the optimal manoeuvre, its checks and its interpretation.
+
+    ``optimal`` is True only when both methods converged and every check passed; ``status`` is then
+    "optimal (verified)", else "not converged: <what failed>" and the arrays hold the best iterate (the
+    indirect solution when it ran, else the direct one: ``method`` says which).
+
+    Samples (NumPy float64, one row a sample; a bang-bang switch appears twice, once per side): ``t`` (n,) s,
+    ``R`` (n, 3, 3) body → space, ``quaternion`` (n, 4) (w, x, y, z), ``omega_body`` (n, 3) rad/s,
+    ``torque_body`` (n, 3) N·m, ``L_space`` (n, 3) kg·m²/s. Costates at ``costate_t`` (k,) s (= ``t`` for the
+    indirect method, the interval centres for the direct one): ``costate_attitude_body`` p_θ (k, 3),
+    ``costate_omega`` p_ω (k, 3), ``switching_function`` σ = J⁻¹ p_ω (k, 3), ``hamiltonian`` H (k,) (NaN
+    from the direct method). ``switch_times`` (s,) s and ``switch_axes`` (body axes 0, 1, 2) of a bang-bang
+    control.
+
+    ``final_time`` s and ``cost`` (s, N²·m²·s or s per objective) of that solution; ``checks`` (dict: the
+    Hamiltonian's mean and deviation, the control gap, switching-sign violations, the costate drift, ‖RᵀR − I‖,
+    vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, the direct–indirect cost difference,
+    ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress, the eigenaxis
+    manoeuvre's cost and the saving, and the arrays ``lambda_body`` (n, 3, 3) J, ``stress_space`` (n, 3, 3)
+    N·m, ``momentum_space`` (n, 3)); ``direct`` (DirectSolution) and ``indirect`` (dict of the shooting's
+    values and arrays); ``summary`` (the dict of summary.json), ``report`` (the text ``poinsot optimize``
+    prints), ``out_dir`` (where the files went, or None), ``figures`` (paths of the PNGs drawn), ``kind``
+    ("rigid_body"), ``problem`` (the poinsot.optimal.ReorientationProblem solved).
+    """
+
+    kind: str
+    optimal: bool
+    status: str
+    method: str
+    objective: str
+    final_time: float
+    cost: float
+    t: np.ndarray
+    R: np.ndarray
+    quaternion: np.ndarray
+    omega_body: np.ndarray
+    torque_body: np.ndarray
+    L_space: np.ndarray
+    costate_t: np.ndarray
+    costate_attitude_body: np.ndarray
+    costate_omega: np.ndarray
+    switching_function: np.ndarray
+    hamiltonian: np.ndarray
+    switch_times: np.ndarray
+    switch_axes: list
+    checks: dict
+    interpretation: dict
+    direct: DirectSolution
+    indirect: dict
+    summary: dict
+    report: str
+    problem: Any
+    out_dir: str | None = None
+    figures: list = field(default_factory=list)
+
+    def __repr__(self) -> str:
+        head = "optimal (verified)" if self.optimal else f"NOT OPTIMAL ({self.status})"
+        return (f"OptimalSolution({head}, objective={self.objective}, method={self.method}, "
+                f"final_time={self.final_time:.12g} s, cost={self.cost:.12g}, samples={len(self.t)}, "
+                f"switches={len(self.switch_times)})")
+
+
+def _quaternions(R: np.ndarray) -> np.ndarray:
+    """(w, x, y, z) with w >= 0 of each rotation matrix, through the C++ conversion (so3)."""
+    return np.array([_core.so3.quaternion_from_rotation(r) for r in R]).reshape(len(R), 4)
+
+
+def _rotations(q: np.ndarray) -> np.ndarray:
+    return np.array([_core.so3.rotation_from_quaternion(x) for x in q]).reshape(len(q), 3, 3)
+
+
+def _single_body_input(obj: Any) -> Any:
+    """A poinsot.optimal.OptimalScenario from a path, a dict with the file's layout, a scenario or a problem;
+    None for anything else."""
+    opt = _core.optimal
+    if isinstance(obj, opt.OptimalScenario):
+        return obj
+    if isinstance(obj, opt.ReorientationProblem):
+        return opt.OptimalScenario(obj)
+    if isinstance(obj, Mapping):
+        return opt.parse_scenario(scenario_toml(obj), "<dict>", os.getcwd())
+    if isinstance(obj, (str, os.PathLike)):
+        return opt.load_scenario(os.fspath(obj))
+    return None
+
+
+def _solve_single_body(scenario: Any, out_dir: str) -> OptimalSolution:
+    raw = _core.optimal._run(scenario, out_dir)
+    problem = scenario.problem
+    J = np.asarray(problem.inertia_body)
+    direct = DirectSolution(**raw["direct"])
+    ind = raw["indirect"]
+    if len(ind["t"]):
+        method, src = "indirect", ind
+        R = ind["R"]
+        quaternion = _quaternions(R)
+        costate_t, hamiltonian = ind["t"], ind["hamiltonian"]
+        sigma = ind["switching_function"]
+    else:
+        method, src = "direct", raw["direct"]
+        quaternion = direct.quaternion
+        R = _rotations(quaternion)
+        costate_t = direct.costate_time
+        hamiltonian = np.full(len(costate_t), np.nan)
+        sigma = direct.costate_omega @ np.linalg.inv(J).T
+    summary = json.loads(raw["summary"])
+    interpretation = dict(summary.get("interpretation", {}))
+    interpretation.update(raw["interpretation"])
+    return OptimalSolution(
+        kind="rigid_body", optimal=raw["optimal"], status=raw["status"], method=method,
+        objective=problem.objective, final_time=src["final_time"], cost=src["cost"], t=src["t"], R=R,
+        quaternion=quaternion, omega_body=src["omega_body"], torque_body=src["torque_body"],
+        L_space=np.einsum("nij,nj->ni", R, src["omega_body"] @ J.T), costate_t=costate_t,
+        costate_attitude_body=src["costate_attitude_body"], costate_omega=src["costate_omega"],
+        switching_function=sigma, hamiltonian=hamiltonian, switch_times=ind["switch_times"],
+        switch_axes=list(ind["switch_axes"]), checks=summary["checks"], interpretation=interpretation,
+        direct=direct, indirect=ind, summary=summary, report=raw["report"], problem=problem,
+        out_dir=out_dir or None)
+
+
+# (recognise, solve) pairs, tried in order (see the module's docstring).
+_SOLVERS: list[tuple[Callable[[Any], Any], Callable[[Any, str], Any]]] = [
+    (_single_body_input, _solve_single_body),
+]
+
+
+def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tolerance: float | None = None,
+             initial_intervals: int | None = None, max_mesh_iterations: int | None = None,
+             warn: bool = True) -> OptimalSolution:
+    """Solves an optimal reorientation as ``poinsot optimize`` does and returns the solution as NumPy arrays.
+
+    ``problem``: the path of a scenario file with an ``[optimal_control]`` section (docs/optimal_control.md), a
+    dict with the same layout (``{"body": {...}, "optimal_control": {..., "initial": {...}, "final":
+    {...}}}``), a ``poinsot.optimal.OptimalScenario``, or a ``poinsot.optimal.ReorientationProblem``.
+    ``mesh_tolerance``, ``initial_intervals``, ``max_mesh_iterations`` replace the direct method's options
+    (None: the scenario's, else the defaults). With ``out_dir`` the files of ``poinsot optimize`` (report.txt,
+    trajectory.csv, control.csv, costates.csv, summary.json) are written there.
+
+    Invalid input raises ValueError (TypeError for an object of another type) with poinsot's one-line message.
+    A solution that is not verified optimal is returned with ``optimal`` False, its ``status`` saying what
+    failed and the best iterate in the arrays, and (unless ``warn=False``) a RuntimeWarning is issued: it is
+    never presented as optimal.
+    """
+    for recognise, solve in _SOLVERS:
+        prepared = recognise(problem)
+        if prepared is not None:
+            break
+    else:
+        raise TypeError("problem: expected a scenario path, a dict with the scenario's layout, a "
+                        "poinsot.optimal.OptimalScenario or a poinsot.optimal.ReorientationProblem, got "
+                        f"{type(problem).__name__}")
+    folder = os.fspath(out_dir) if out_dir is not None else ""
+    options = dict(mesh_tolerance=mesh_tolerance, initial_intervals=initial_intervals,
+                   max_mesh_iterations=max_mesh_iterations)
+    if any(v is not None for v in options.values()):
+        prepared = prepared.with_options(**options)
+    result = solve(prepared, folder)
+    if warn and not result.optimal:
+        warnings.warn(f"poinsot.optimize: {result.status}", RuntimeWarning, stacklevel=2)
+    return result
