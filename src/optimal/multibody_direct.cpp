@@ -8,6 +8,7 @@
 #include <Eigen/SVD>
 
 #include "hermite_simpson_dae.hpp"
+#include "multibody_controls.hpp"
 #include "multibody_minimal_model.hpp"
 #include "multibody_rotation_model.hpp"
 #include "poinsot/core/error.hpp"
@@ -83,9 +84,16 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
     const Eigen::VectorXd yf = model.state_vector(problem.final_state);
     const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
-    return solve_model(
+    MultibodyOptimum out = solve_model(
         problem, model, y0, yf, rows, options,
         [&](const double* w, double t) { return model.state_of(w, t); }, start);
+    // No multiplier is a variable here: the reactions and Λ of the continuous equations at each point's
+    // state and controls (one KKT solve each, multibody/multipliers.hpp).
+    for (std::size_t p = 0; p < out.states.size(); ++p) {
+      out.multipliers.push_back(multibody::exact_multipliers(
+          detail::system_with_controls(problem, out.controls[p]), out.states[p]));
+    }
+    return out;
   }
   const detail::MultibodyRotationModel model(problem);
   const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);

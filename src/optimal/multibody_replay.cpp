@@ -1,6 +1,7 @@
 // Re-simulation of an optimal control history by the multibody projected RK4 (multibody_direct.hpp).
 #include <algorithm>
 
+#include "multibody_controls.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/projected_rk4.hpp"
@@ -8,11 +9,9 @@
 #include "poinsot/so3/distance.hpp"
 
 namespace poinsot::optimal {
-namespace {
+namespace detail {
 
-/// The system with the actuators' torques `u` added as constant body-frame torques: a hinge motor u gives
-/// u·axis_a on body a and −u·axis_b on body b (the same couple in space while the hinge holds).
-multibody::System with_controls(const MultibodyProblem& problem, const Eigen::VectorXd& u) {
+multibody::System system_with_controls(const MultibodyProblem& problem, const Eigen::VectorXd& u) {
   multibody::System system = problem.system;
   int k = 0;
   for (const Actuator& a : problem.actuators) {
@@ -30,7 +29,7 @@ multibody::System with_controls(const MultibodyProblem& problem, const Eigen::Ve
   return system;
 }
 
-}  // namespace
+}  // namespace detail
 
 MultibodyReplay replay_controls(const MultibodyProblem& problem, const MultibodyOptimum& optimum,
                                 int steps_per_interval) {
@@ -44,7 +43,7 @@ MultibodyReplay replay_controls(const MultibodyProblem& problem, const Multibody
   state.time = 0.0;
   for (int n = 0; n < steps; ++n) {
     const double t = n * dt;
-    multibody::ProjectedRk4 rk4(with_controls(problem, control_at(optimum, t + 0.5 * dt)), dt);
+    multibody::ProjectedRk4 rk4(detail::system_with_controls(problem, control_at(optimum, t + 0.5 * dt)), dt);
     rk4.step(state);
     state.time = t + dt;
     const multibody::ConstraintViolation cv = multibody::constraint_violation(problem.system, state);

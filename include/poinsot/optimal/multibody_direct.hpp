@@ -44,8 +44,9 @@ struct MultibodyOptimum {
   std::vector<double> time;               ///< s, every collocation point (nodes and midpoints)
   std::vector<multibody::State> states;   ///< at every point
   std::vector<Eigen::VectorXd> controls;  ///< at every point, actuator order (N·m)
-  /// Rotation-matrix formulation only: each body's Λ (body frame, J) and each joint's reaction at every
-  /// point.
+  /// Each body's Λ (body frame, J) and each joint's reaction at every point: in rotation-matrix coordinates
+  /// the NLP's own variables (Λ, λ through multibody::joint_loads); in minimal coordinates those of the
+  /// continuous equations at the point's state and controls (multibody::exact_multipliers).
   std::vector<multibody::Multipliers> multipliers;
   double max_constraint_error = 0.0;  ///< largest |row| of the NLP's constraints at the last iterate
 };
