@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 
+#include <fmt/format.h>
 #include <Eigen/SVD>
 
 #include "hermite_simpson_dae.hpp"
@@ -112,6 +113,12 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
 }
 
 Eigen::VectorXd control_at(const MultibodyOptimum& optimum, double t) {
+  if (optimum.time.size() < 3 || optimum.controls.size() != optimum.time.size()) {
+    throw InvalidInput(
+        fmt::format("optimal control: control_at: the optimum has {} points and {} controls; "
+                    "expected a solution of solve_multibody (at least 3 points, one control each)",
+                    optimum.time.size(), optimum.controls.size()));
+  }
   const int points = static_cast<int>(optimum.time.size());
   const int intervals = (points - 1) / 2;
   const double T = optimum.time.back();

@@ -47,6 +47,8 @@ class MultibodyMinimalModel final : public CollocationModel {
   /// Throws InvalidInput unless the system is a tree of hinges rooted at the world with hinge motors only
   /// and no constant loads besides gravity.
   explicit MultibodyMinimalModel(const MultibodyProblem& problem);
+  MultibodyMinimalModel(const MultibodyMinimalModel&) = delete;  // path_ refers to tree_
+  MultibodyMinimalModel& operator=(const MultibodyMinimalModel&) = delete;
 
   int state_size() const override { return 2 * n_; }
   int point_size() const override { return 3 * n_ + static_cast<int>(controls_.size()); }

@@ -174,6 +174,7 @@ TEST(MultibodyDirect, BadInputIsOneLine) {
   q.actuators[1].index = 7;
   expect_invalid(q, "actuators[1]: joint: got index 7");
   q = p;
+  EXPECT_THROW(control_at(MultibodyOptimum{}, 0.0), InvalidInput);
   q.actuators.push_back({ActuatorKind::body_torque, 0, 1.0});
   expect_invalid(q, "coordinates = \"minimal\": a body torque is given", MultibodyCoordinates::minimal);
 }

@@ -57,6 +57,7 @@ struct MultibodyOptimum {
 MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options = {});
 
 /// The control at time t (s): the quadratic through the node, midpoint and node values of its interval.
+/// Throws InvalidInput for an optimum without points (not from solve_multibody).
 Eigen::VectorXd control_at(const MultibodyOptimum& optimum, double t);
 
 /// The re-simulation of an optimum's control history by the multibody projected RK4.
