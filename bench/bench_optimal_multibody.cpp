@@ -1,0 +1,143 @@
+// Optimal motions of coupled bodies: the rotation-matrix transcription against the minimal-coordinate one
+// (docs/optimal_control.md, "Multibody systems"). The argument "minimal" is 0 for the rotation-matrix
+// transcription, 1 for the minimal-coordinate one. Each benchmark runs once (Iterations(1)); its counters and
+// printed lines are the measurement:
+// - BM_ArmRandomBoundaryConditions: 100 rest-to-rest motions of the two-link arm between
+//   random configurations (fixed seed), N = 6 intervals, T = 1.5 s, each from the naive guess (linear
+//   interpolation of every state coordinate, all else zero), at most 200 Ipopt iterations: the fraction
+//   solved, the mean and median Ipopt iterations of the solved ones, the mean wall time per problem;
+// - BM_ArmFineMesh: the arm of the tests, (Δ1, Δ2) = (1, 0.5) rad, on N = 32, 64 and 128: the costs, printed
+//   in full (the rotation-matrix runs at N ≥ 64 take minutes).
+// Run: build/release/bench/bench_optimal_multibody --benchmark_counters_tabular=true
+//   [--benchmark_filter='Random|Fine.*N:32']
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "poinsot/optimal/multibody_direct.hpp"
+
+namespace {
+
+using namespace poinsot;
+using namespace poinsot::optimal;
+
+Mat3 rod_inertia(double m, double length, double radius) {
+  const double axial = 0.5 * m * radius * radius;
+  const double transverse = m * (3.0 * radius * radius + length * length) / 12.0;
+  return Vec3(axial, transverse, transverse).asDiagonal();
+}
+
+multibody::State arm_state(double th1, double th2) {
+  multibody::State s;
+  s.bodies.resize(2);
+  const Mat3 R1 = Eigen::AngleAxisd(th1, Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 R2 = Eigen::AngleAxisd(th1 + th2, Vec3::UnitZ()).toRotationMatrix();
+  s.bodies[0].R_space_body = R1;
+  s.bodies[0].x_space = R1 * Vec3(0.5, 0.0, 0.0);
+  s.bodies[1].R_space_body = R2;
+  s.bodies[1].x_space = R1 * Vec3(1.0, 0.0, 0.0) + R2 * Vec3(0.5, 0.0, 0.0);
+  return s;
+}
+
+// The two-link arm of tests/optimal/multibody_test_problems.hpp: rods of 1 kg, 1 m, radius 5 cm on hinges
+// about z, gravity −9.81 m/s² along y, both hinges driven with |u| ≤ 50 N·m.
+MultibodyProblem arm(double a1, double a2, double b1, double b2, double T, int intervals) {
+  MultibodyProblem p;
+  auto& sys = p.system;
+  const int l1 = sys.add_body_from_inertia("upper", 1.0, rod_inertia(1.0, 1.0, 0.05));
+  const int l2 = sys.add_body_from_inertia("fore", 1.0, rod_inertia(1.0, 1.0, 0.05));
+  const int shoulder = sys.add_hinge("shoulder", l1, Vec3(-0.5, 0, 0), Vec3::UnitZ(), multibody::kWorld,
+                                     Vec3::Zero(), Vec3::UnitZ());
+  const int elbow =
+      sys.add_hinge("elbow", l2, Vec3(-0.5, 0, 0), Vec3::UnitZ(), l1, Vec3(0.5, 0, 0), Vec3::UnitZ());
+  sys.set_gravity(Vec3(0.0, -9.81, 0.0));
+  p.initial_state = arm_state(a1, a2);
+  p.final_state = arm_state(b1, b2);
+  p.final_time = T;
+  p.intervals = intervals;
+  p.actuators = {{ActuatorKind::hinge_torque, shoulder, 50.0}, {ActuatorKind::hinge_torque, elbow, 50.0}};
+  return p;
+}
+
+MultibodyCoordinates coordinates(const benchmark::State& state) {
+  return state.range(0) == 0 ? MultibodyCoordinates::rotation_matrix : MultibodyCoordinates::minimal;
+}
+
+void BM_ArmRandomBoundaryConditions(benchmark::State& state) {
+  constexpr int kProblems = 100;
+  const double down = -0.5 * std::numbers::pi;
+  MultibodyOptions options;
+  options.coordinates = coordinates(state);
+  options.max_nlp_iterations = 200;
+  int solved = 0;
+  std::vector<double> iterations;
+  double seconds = 0.0, cost_sum = 0.0;
+  for (auto _ : state) {
+    std::mt19937_64 rng(20261124);
+    std::uniform_real_distribution<double> angle(-1.0, 1.0);
+    for (int k = 0; k < kProblems; ++k) {
+      const double a1 = down + angle(rng), a2 = angle(rng), b1 = down + angle(rng), b2 = angle(rng);
+      const MultibodyOptimum o = solve_multibody(arm(a1, a2, b1, b2, 1.5, 6), options);
+      seconds += o.wall_seconds;
+      if (o.converged) {
+        ++solved;
+        iterations.push_back(o.nlp_iterations);
+        cost_sum += o.cost;
+      }
+    }
+  }
+  std::sort(iterations.begin(), iterations.end());
+  double mean = 0.0;
+  for (const double i : iterations)
+    mean += i;
+  state.counters["problems"] = kProblems;
+  state.counters["solved_fraction"] = static_cast<double>(solved) / kProblems;
+  state.counters["mean_iterations"] =
+      iterations.empty() ? 0.0 : mean / static_cast<double>(iterations.size());
+  state.counters["median_iterations"] = iterations.empty() ? 0.0 : iterations[iterations.size() / 2];
+  state.counters["mean_wall_s"] = seconds / kProblems;
+  state.counters["mean_cost_solved"] = solved == 0 ? 0.0 : cost_sum / solved;
+  std::printf(
+      "arm random boundary conditions: coordinates %s: %d of %d solved, iterations mean %.1f median %.0f, "
+      "%.3f s per problem\n",
+      state.range(0) == 0 ? "rotation_matrix" : "minimal", solved, kProblems,
+      state.counters["mean_iterations"].value, state.counters["median_iterations"].value,
+      seconds / kProblems);
+}
+BENCHMARK(BM_ArmRandomBoundaryConditions)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("minimal")
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+void BM_ArmFineMesh(benchmark::State& state) {
+  MultibodyOptions options;
+  options.coordinates = coordinates(state);
+  const int intervals = static_cast<int>(state.range(1));
+  MultibodyOptimum o;
+  for (auto _ : state) {
+    const double down = -0.5 * std::numbers::pi;
+    o = solve_multibody(arm(down, 0.0, down + 1.0, 0.5, 1.5, intervals), options);
+  }
+  state.counters["converged"] = o.converged ? 1.0 : 0.0;
+  state.counters["iterations"] = o.nlp_iterations;
+  state.counters["wall_s"] = o.wall_seconds;
+  if (!o.converged) state.SkipWithError(o.status.c_str());
+  std::printf("arm fine mesh: coordinates %s N = %d: %s, cost %.14g, %d iterations, %.2f s\n",
+              state.range(0) == 0 ? "rotation_matrix" : "minimal", intervals, o.status.c_str(), o.cost,
+              o.nlp_iterations, o.wall_seconds);
+}
+BENCHMARK(BM_ArmFineMesh)
+    ->ArgsProduct({{0, 1}, {32, 64, 128}})
+    ->ArgNames({"minimal", "N"})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+}  // namespace

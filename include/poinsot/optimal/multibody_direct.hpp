@@ -1,0 +1,80 @@
+#pragma once
+/// @file multibody_direct.hpp
+/// Optimal motions of multibody systems by direct collocation (Hermite–Simpson, separated form; Betts 2010,
+/// §4.6) and Ipopt with the exact Hessian, in two independent formulations of the same problem
+/// (multibody_problem.hpp):
+///
+/// - `rotation_matrix`: the multibody layer's own equations in the coordinates (x, R) of every body, mass
+///   matrix blockdiag(m I, K ⊗ I), with the joint reactions λ, the orthogonality multipliers Λ and the
+///   projection multipliers of the stabilised index-2 form as NLP variables. Every equation is a polynomial
+///   of degree ≤ 2 (linear in the accelerations and the multipliers, quadratic constraints), so the
+///   derivatives are exact by construction (docs/optimal_control.md, "Multibody systems").
+/// - `minimal`: joint angles θ of a tree of hinges rooted at the world, with the inverse dynamics of the
+///   recursive Newton–Euler algorithm as the path equation RNEA(θ, θ̇, θ̈) = τ (no mass matrix is inverted),
+///   derivatives exact by forward automatic differentiation of second order.
+///
+/// Both minimise ∫ Σ u_i² dt at fixed T, from the full initial state to the final state, on N equal
+/// intervals. The naive initial guess is used: every state coordinate linearly interpolated between the two
+/// boundary states, every other variable zero. A result is `converged` only when Ipopt reports success;
+/// otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
+#include <string>
+#include <vector>
+
+#include "poinsot/multibody/multipliers.hpp"
+#include "poinsot/multibody/state.hpp"
+#include "poinsot/optimal/multibody_problem.hpp"
+
+namespace poinsot::optimal {
+
+enum class MultibodyCoordinates { rotation_matrix, minimal };
+
+struct MultibodyOptions {
+  MultibodyCoordinates coordinates = MultibodyCoordinates::rotation_matrix;
+  double nlp_tolerance = 1e-10;  ///< Ipopt's tol
+  int max_nlp_iterations = 500;
+  int print_level = 0;
+};
+
+struct MultibodyOptimum {
+  bool converged = false;  ///< Ipopt solved the NLP
+  std::string status;      ///< "converged", or Ipopt's status in words
+  int nlp_iterations = 0;
+  double cost = 0.0;                      ///< ∫ Σ u_i² dt, N²·m²·s
+  double wall_seconds = 0.0;              ///< building and solving the NLP
+  std::vector<double> time;               ///< s, every collocation point (nodes and midpoints)
+  std::vector<multibody::State> states;   ///< at every point
+  std::vector<Eigen::VectorXd> controls;  ///< at every point, actuator order (N·m)
+  /// Each body's Λ (body frame, J) and each joint's reaction at every point: in rotation-matrix coordinates
+  /// the NLP's own variables (Λ, λ through multibody::joint_loads); in minimal coordinates those of the
+  /// continuous equations at the point's state and controls (multibody::exact_multipliers).
+  std::vector<multibody::Multipliers> multipliers;
+  double max_constraint_error = 0.0;  ///< largest |row| of the NLP's constraints at the last iterate
+};
+
+/// Throws InvalidInput for an invalid problem (validate), and for `minimal` coordinates unless the system is
+/// a tree of hinges rooted at the world (each body the body_a of exactly one hinge, its body_b the world or
+/// a body of lower index) with only hinge-motor actuators and no constant loads besides gravity.
+MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options = {});
+
+/// The control at time t (s): the quadratic through the node, midpoint and node values of its interval.
+/// Throws InvalidInput for an optimum without points (not from solve_multibody).
+Eigen::VectorXd control_at(const MultibodyOptimum& optimum, double t);
+
+/// The re-simulation of an optimum's control history by the multibody projected RK4.
+struct MultibodyReplay {
+  multibody::State final_state;
+  double attitude_error = 0.0;     ///< max over bodies of the angle between R(T) and the target (rad)
+  double position_error = 0.0;     ///< max |x(T) − x_f| (m)
+  double velocity_error = 0.0;     ///< max over bodies of |v − v_f| (m/s) and |ω − ω_f| (rad/s)
+  double max_joint_gap = 0.0;      ///< over every step (m)
+  double max_orthogonality = 0.0;  ///< max ‖RᵀR − I‖_F over every step
+  int steps = 0;
+};
+
+/// Integrates the initial state over [0, T] with `steps_per_interval` projected-RK4 steps per collocation
+/// interval, the controls held at their value at each step's midpoint (a second-order approximation of the
+/// continuous control: the replay's error falls by 4 when the steps are halved).
+MultibodyReplay replay_controls(const MultibodyProblem& problem, const MultibodyOptimum& optimum,
+                                int steps_per_interval = 64);
+
+}  // namespace poinsot::optimal

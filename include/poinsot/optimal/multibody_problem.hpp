@@ -1,0 +1,53 @@
+#pragma once
+/// @file multibody_problem.hpp
+/// Optimal motions of a multibody system (multibody/model.hpp): drive a system of coupled rigid bodies from
+/// one consistent state to another in a fixed time T with actuated joints or body torques, minimising the
+/// control effort ∫ Σ u_i² dt (N²·m²·s). Solved by the direct transcriptions of multibody_direct.hpp, in
+/// rotation-matrix coordinates (the multibody layer's own equations) or in minimal coordinates.
+///
+/// Controls (`Actuator`), each with a bound |u_i| ≤ u_max (N·m) per component:
+/// - `hinge_torque`: a motor in a hinge joint: the torque u about the hinge axis on body a, and −u on body b
+///   (1 control; in body a's frame the torque is u·axis_a, in b's −u·axis_b);
+/// - `body_torque`: a torque on one body about its centre of mass, body frame (3 controls, e.g. thrusters).
+///
+/// Boundary conditions: the full initial state, and the final state of every coordinate the joints leave
+/// free (positions, attitudes, joint configurations and all velocities): `final_state` is a consistent
+/// state of the system; the final condition is that the state at T equals it, written on the tangent space
+/// of the constraints (multibody_direct.hpp).
+#include <string>
+#include <vector>
+
+#include "poinsot/multibody/model.hpp"
+#include "poinsot/multibody/state.hpp"
+
+namespace poinsot::optimal {
+
+enum class ActuatorKind { hinge_torque, body_torque };
+
+struct Actuator {
+  ActuatorKind kind = ActuatorKind::hinge_torque;
+  int index = 0;            ///< the hinge's joint index, or the body's index
+  double torque_max = 1.0;  ///< N·m, per component, > 0 (may be +inf: unbounded)
+  int controls() const { return kind == ActuatorKind::hinge_torque ? 1 : 3; }
+};
+
+struct MultibodyProblem {
+  multibody::System system;        ///< ball, hinge, weld and universal joints; gravity, constant loads
+  multibody::State initial_state;  ///< consistent (multibody::check_consistent), velocities on the joints
+  multibody::State final_state;    ///< consistent target at t = T
+  double final_time = 1.0;         ///< T, s
+  std::vector<Actuator> actuators;
+  int intervals = 20;  ///< Hermite–Simpson intervals (equal)
+};
+
+/// Total number of scalar controls.
+int control_count(const MultibodyProblem& problem);
+
+/// Throws InvalidInput, one line naming the field, unless: T > 0 and finite; 2 ≤ intervals ≤ 2000; the
+/// system has no springs and no prismatic joints (their loads or rows are not written for the
+/// transcriptions); every actuator names an existing hinge or body and has a bound > 0; there is at least one
+/// actuator; both states are consistent (multibody::check_consistent) and have joint velocities below 1e-9
+/// (relative); every hinge axis points the same way on both sides.
+void validate(const MultibodyProblem& problem);
+
+}  // namespace poinsot::optimal

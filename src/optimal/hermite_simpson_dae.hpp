@@ -1,0 +1,79 @@
+#pragma once
+/// @file hermite_simpson_dae.hpp (internal)
+/// The Hermite–Simpson transcription (separated form; Betts 2010, §4.6) of a differential-algebraic optimal
+/// control problem at fixed final time T, for any point model (CollocationModel):
+///
+///     ẏ = f(w),  c(w) = 0 at every collocation point,  w = (y, z, u),  y(0) = y₀,  A y(T) = b,
+///     minimise ∫ Σ_{i ∈ controls} w_i² dt  (Simpson's rule).
+///
+/// Mesh: N equal intervals of h = T/N. Points p = 0 … 2N: even p = node p/2, odd p = midpoint. Variables:
+/// w_p for every point (the point model's layout). Constraints, in this order:
+///   D_k = y_{k+1} − y_k − h/6 (f_k + 4 f_m + f_{k+1}),   M_k = y_m − ½(y_k + y_{k+1}) − h/8 (f_k − f_{k+1})
+///   (n_y rows each, interleaved per interval); then c at every point (the model's `first_path` at node 0,
+///   `path` elsewhere); then A y_{2N} − b. With Ipopt's Lagrangian σJ + yᵀg, the multipliers of D_k estimate
+///   −λ(t_k + h/2) (the costate of the minimum principle).
+#include <vector>
+
+#include "poinsot/core/types.hpp"
+#include "point_functions.hpp"
+#include "sparse_nlp.hpp"
+
+namespace poinsot::optimal::detail {
+
+class CollocationModel {
+ public:
+  virtual ~CollocationModel() = default;
+  virtual int state_size() const = 0;  ///< y = w[0 .. state_size)
+  virtual int point_size() const = 0;
+  virtual const std::vector<int>& control_indices() const = 0;  ///< where the controls sit in w
+  virtual const PointFunctions& rhs() const = 0;                ///< f(w), state_size rows
+  virtual const PointFunctions& first_path() const = 0;         ///< c(w) at node 0
+  virtual const PointFunctions& path() const = 0;               ///< c(w) at every other point
+  /// Bounds on w (±inf where none); `first_node` for node 0 (whose y the engine fixes to y₀ anyway).
+  virtual void variable_bounds(bool first_node, double* lower, double* upper) const = 0;
+};
+
+class HermiteSimpsonDae final : public SparseNlp {
+ public:
+  HermiteSimpsonDae(const CollocationModel& model, int intervals, double final_time, Eigen::VectorXd y0,
+                    Eigen::MatrixXd final_rows, Eigen::VectorXd final_values);
+
+  int intervals() const { return intervals_; }
+  int points() const { return 2 * intervals_ + 1; }
+  double step() const { return final_time_ / intervals_; }
+  const CollocationModel& model() const { return model_; }
+  /// Time of point p (s).
+  double point_time(int p) const { return 0.5 * step() * p; }
+  int path_row(int p) const;  ///< first row of point p's path constraints
+
+  int num_variables() const override { return model_.point_size() * points(); }
+  int num_constraints() const override;
+  void bounds(std::vector<double>& x_lower, std::vector<double>& x_upper, std::vector<double>& g_lower,
+              std::vector<double>& g_upper) const override;
+  double objective(const double* x) const override;
+  void objective_gradient(const double* x, double* gradient) const override;
+  void constraints(const double* x, double* g) const override;
+  int jacobian_nonzeros() const override { return static_cast<int>(jac_rows_.size()); }
+  void jacobian_structure(int* rows, int* cols) const override;
+  void jacobian_values(const double* x, double* values) const override;
+  int hessian_nonzeros() const override { return static_cast<int>(hess_rows_.size()); }
+  void hessian_structure(int* rows, int* cols) const override;
+  void hessian_values(const double* x, double sigma, const double* y, double* values) const override;
+
+ private:
+  double quadrature_weight(int p) const;  ///< Simpson weight of point p (s)
+  const PointFunctions& path_of(int p) const { return p == 0 ? model_.first_path() : model_.path(); }
+
+  const CollocationModel& model_;
+  int intervals_;
+  double final_time_;
+  Eigen::VectorXd y0_;
+  Eigen::MatrixXd final_rows_;
+  Eigen::VectorXd final_values_;
+  std::vector<int> jac_rows_, jac_cols_;
+  std::vector<int> hess_rows_, hess_cols_;
+  std::vector<std::vector<int>> hess_rhs_, hess_path_;  // per point: local pattern entry → global entry
+  std::vector<std::vector<int>> hess_objective_;        // per point: control k → global entry
+};
+
+}  // namespace poinsot::optimal::detail

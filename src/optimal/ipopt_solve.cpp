@@ -1,0 +1,145 @@
+// Ipopt's view of a SparseNlp (sparse_nlp.hpp).
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+#include <IpTNLP.hpp>
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+#include "sparse_nlp.hpp"
+
+namespace poinsot::optimal::detail {
+namespace {
+
+class SparseNlpAdapter : public Ipopt::TNLP {
+ public:
+  SparseNlpAdapter(const SparseNlp& nlp, const std::vector<double>& start) : nlp_(nlp), x_(start) {}
+
+  bool get_nlp_info(Ipopt::Index& n, Ipopt::Index& m, Ipopt::Index& nnz_jac, Ipopt::Index& nnz_h,
+                    IndexStyleEnum& style) override {
+    n = nlp_.num_variables();
+    m = nlp_.num_constraints();
+    nnz_jac = nlp_.jacobian_nonzeros();
+    nnz_h = nlp_.hessian_nonzeros();
+    style = C_STYLE;
+    return true;
+  }
+  bool get_bounds_info(Ipopt::Index, Ipopt::Number* xl, Ipopt::Number* xu, Ipopt::Index, Ipopt::Number* gl,
+                       Ipopt::Number* gu) override {
+    std::vector<double> a, b, c, d;
+    nlp_.bounds(a, b, c, d);
+    std::copy(a.begin(), a.end(), xl);
+    std::copy(b.begin(), b.end(), xu);
+    std::copy(c.begin(), c.end(), gl);
+    std::copy(d.begin(), d.end(), gu);
+    return true;
+  }
+  bool get_starting_point(Ipopt::Index, bool init_x, Ipopt::Number* x, bool, Ipopt::Number*, Ipopt::Number*,
+                          Ipopt::Index, bool, Ipopt::Number*) override {
+    if (init_x) std::copy(x_.begin(), x_.end(), x);
+    return true;
+  }
+  bool eval_f(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number& f) override {
+    f = nlp_.objective(x);
+    return std::isfinite(f);
+  }
+  bool eval_grad_f(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number* g) override {
+    nlp_.objective_gradient(x, g);
+    return true;
+  }
+  bool eval_g(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Index m, Ipopt::Number* g) override {
+    nlp_.constraints(x, g);
+    return std::all_of(g, g + m, [](double v) { return std::isfinite(v); });
+  }
+  bool eval_jac_g(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Index, Ipopt::Index, Ipopt::Index* rows,
+                  Ipopt::Index* cols, Ipopt::Number* values) override {
+    if (values == nullptr)
+      nlp_.jacobian_structure(rows, cols);
+    else
+      nlp_.jacobian_values(x, values);
+    return true;
+  }
+  bool eval_h(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number sigma, Ipopt::Index,
+              const Ipopt::Number* lambda, bool, Ipopt::Index, Ipopt::Index* rows, Ipopt::Index* cols,
+              Ipopt::Number* values) override {
+    if (values == nullptr)
+      nlp_.hessian_structure(rows, cols);
+    else
+      nlp_.hessian_values(x, sigma, lambda, values);
+    return true;
+  }
+  void finalize_solution(Ipopt::SolverReturn, Ipopt::Index n, const Ipopt::Number* x, const Ipopt::Number*,
+                         const Ipopt::Number*, Ipopt::Index m, const Ipopt::Number*,
+                         const Ipopt::Number* lambda, Ipopt::Number f, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities*) override {
+    x_.assign(x, x + n);
+    y_.assign(lambda, lambda + m);
+    f_ = f;
+  }
+
+  const std::vector<double>& x() const { return x_; }
+  const std::vector<double>& y() const { return y_; }
+  double f() const { return f_; }
+
+ private:
+  const SparseNlp& nlp_;
+  std::vector<double> x_, y_;
+  double f_ = 0.0;
+};
+
+const char* status_words(Ipopt::ApplicationReturnStatus s) {
+  switch (s) {
+    case Ipopt::Solve_Succeeded:
+      return "solved";
+    case Ipopt::Solved_To_Acceptable_Level:
+      return "solved to the acceptable level only";
+    case Ipopt::Infeasible_Problem_Detected:
+      return "infeasible problem detected";
+    case Ipopt::Search_Direction_Becomes_Too_Small:
+      return "search direction too small";
+    case Ipopt::Diverging_Iterates:
+      return "diverging iterates";
+    case Ipopt::Maximum_Iterations_Exceeded:
+      return "maximum iterations exceeded";
+    case Ipopt::Restoration_Failed:
+      return "restoration failed";
+    case Ipopt::Error_In_Step_Computation:
+      return "error in step computation";
+    case Ipopt::Maximum_CpuTime_Exceeded:
+      return "maximum CPU time exceeded";
+    case Ipopt::Invalid_Number_Detected:
+      return "invalid number detected";
+    default:
+      return "failed";
+  }
+}
+
+}  // namespace
+
+NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& start,
+                             const IpoptSettings& settings) {
+  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = new Ipopt::IpoptApplication(false);
+  app->Options()->SetIntegerValue("print_level", settings.print_level);
+  app->Options()->SetStringValue("sb", "yes");
+  if (const char* f = std::getenv("POINSOT_IPOPT_LOG")) app->Options()->SetStringValue("output_file", f);
+  app->Options()->SetNumericValue("tol", settings.tolerance);
+  app->Options()->SetIntegerValue("max_iter", settings.max_iterations);
+  app->Options()->SetStringValue("hessian_approximation", "exact");
+  app->Options()->SetStringValue("mu_strategy", "adaptive");
+  if (app->Initialize() != Ipopt::Solve_Succeeded) throw ComputationFailed("ipopt: initialisation failed");
+  Ipopt::SmartPtr<SparseNlpAdapter> adapter = new SparseNlpAdapter(nlp, start);
+  const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
+  NlpSolution out;
+  out.solved = status == Ipopt::Solve_Succeeded;
+  out.status = status_words(status);
+  if (auto stats = app->Statistics(); Ipopt::IsValid(stats)) out.iterations = stats->IterationCount();
+  out.x = adapter->x();
+  out.y = adapter->y();
+  out.objective = adapter->f();
+  return out;
+}
+
+}  // namespace poinsot::optimal::detail

@@ -1,0 +1,107 @@
+// Validation of a multibody optimal-control problem (multibody_problem.hpp).
+#include "poinsot/optimal/multibody_problem.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/multibody/constraints.hpp"
+#include "poinsot/multibody/observables.hpp"
+
+namespace poinsot::optimal {
+
+int control_count(const MultibodyProblem& problem) {
+  int n = 0;
+  for (const Actuator& a : problem.actuators)
+    n += a.controls();
+  return n;
+}
+
+namespace {
+
+void check_state(const MultibodyProblem& p, const multibody::State& s, const std::string& what) {
+  try {
+    multibody::check_consistent(p.system, s);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("optimal control: {}: {}", what, e.what()));
+  }
+  const double L = p.system.length_scale();
+  for (const multibody::Joint& j : p.system.joints()) {
+    const auto& a = multibody::side_state(s.bodies, j.body_a);
+    const auto& b = multibody::side_state(s.bodies, j.body_b);
+    const multibody::JointVector gdot = multibody::joint_velocity(j, a, b);
+    double speed = 1.0;
+    for (const auto& bs : s.bodies)
+      speed = std::max({speed, bs.v_space.norm() / L, bs.omega_body.norm()});
+    if (multibody::joint_residual(j, gdot, L) > 1e-9 * speed) {
+      throw InvalidInput(
+          fmt::format("optimal control: {}: joint '{}' has a velocity across it of {:.3g} (relative); "
+                      "expected velocities "
+                      "that keep the joint (at most 1e-9)",
+                      what, j.name, multibody::joint_residual(j, gdot, L) / speed));
+    }
+    if (j.type == multibody::JointType::hinge) {
+      const Vec3 ua = j.p_a[0].cross(j.p_a[1]);
+      if ((a.R_space_body * ua).dot(b.R_space_body * j.u_b[0]) < 0.0) {
+        throw InvalidInput(
+            fmt::format("optimal control: {}: hinge '{}' has axis_a opposite to axis_b; expected "
+                        "the two axes to point the same way",
+                        what, j.name));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+void validate(const MultibodyProblem& p) {
+  if (!(p.final_time > 0.0) || !std::isfinite(p.final_time)) {
+    throw InvalidInput(
+        fmt::format("optimal control: final_time: got {} s; expected a finite number > 0", p.final_time));
+  }
+  if (p.intervals < 2 || p.intervals > 2000) {
+    throw InvalidInput(
+        fmt::format("optimal control: intervals: got {}; expected an integer from 2 to 2000", p.intervals));
+  }
+  if (!p.system.springs().empty()) {
+    throw InvalidInput(
+        fmt::format("optimal control: spring '{}': springs are not supported by the optimal "
+                    "control transcriptions; expected none",
+                    p.system.springs()[0].name));
+  }
+  for (const multibody::Joint& j : p.system.joints()) {
+    if (j.sliding) {
+      throw InvalidInput(
+          fmt::format("optimal control: joint '{}': prismatic joints are not supported by the "
+                      "optimal control transcriptions; expected ball, hinge, weld or universal",
+                      j.name));
+    }
+  }
+  if (p.actuators.empty()) {
+    throw InvalidInput(
+        "optimal control: actuators: none given; expected at least one hinge or body torque (an unactuated "
+        "system cannot be steered)");
+  }
+  for (std::size_t i = 0; i < p.actuators.size(); ++i) {
+    const Actuator& a = p.actuators[i];
+    const std::string what = fmt::format("optimal control: actuators[{}]", i);
+    if (!(a.torque_max > 0.0)) {
+      throw InvalidInput(
+          fmt::format("{}: torque_max: got {} N·m; expected a number > 0", what, a.torque_max));
+    }
+    if (a.kind == ActuatorKind::hinge_torque) {
+      if (a.index < 0 || a.index >= p.system.joint_count() ||
+          p.system.joints()[static_cast<std::size_t>(a.index)].type != multibody::JointType::hinge) {
+        throw InvalidInput(fmt::format("{}: joint: got index {}; expected a hinge joint", what, a.index));
+      }
+    } else if (a.index < 0 || a.index >= p.system.body_count()) {
+      throw InvalidInput(
+          fmt::format("{}: body: got index {}; expected 0 to {}", what, a.index, p.system.body_count() - 1));
+    }
+  }
+  check_state(p, p.initial_state, "initial state");
+  check_state(p, p.final_state, "final state");
+}
+
+}  // namespace poinsot::optimal

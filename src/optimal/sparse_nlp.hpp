@@ -1,0 +1,50 @@
+#pragma once
+/// @file sparse_nlp.hpp (internal)
+/// A nonlinear program min f(x) s.t. g_L ≤ g(x) ≤ g_U, x_L ≤ x ≤ x_U with exact sparse first and second
+/// derivatives, independent of the solver, and its solution by Ipopt (ipopt_solve.cpp). The Jacobian and
+/// the lower triangle (row ≥ col) of the Hessian of the Lagrangian σ f + yᵀg are given as triplets whose
+/// structure is fixed.
+#include <string>
+#include <vector>
+
+namespace poinsot::optimal::detail {
+
+class SparseNlp {
+ public:
+  virtual ~SparseNlp() = default;
+  virtual int num_variables() const = 0;
+  virtual int num_constraints() const = 0;
+  virtual void bounds(std::vector<double>& x_lower, std::vector<double>& x_upper,
+                      std::vector<double>& g_lower, std::vector<double>& g_upper) const = 0;
+  virtual double objective(const double* x) const = 0;
+  virtual void objective_gradient(const double* x, double* gradient) const = 0;
+  virtual void constraints(const double* x, double* g) const = 0;
+  virtual int jacobian_nonzeros() const = 0;
+  virtual void jacobian_structure(int* rows, int* cols) const = 0;
+  virtual void jacobian_values(const double* x, double* values) const = 0;
+  virtual int hessian_nonzeros() const = 0;
+  virtual void hessian_structure(int* rows, int* cols) const = 0;
+  virtual void hessian_values(const double* x, double sigma, const double* y, double* values) const = 0;
+};
+
+struct IpoptSettings {
+  double tolerance = 1e-10;  ///< Ipopt's tol (scaled KKT error)
+  int max_iterations = 1000;
+  int print_level = 0;  ///< Ipopt's print_level (0 = silent)
+};
+
+struct NlpSolution {
+  bool solved = false;  ///< Ipopt returned Solve_Succeeded
+  std::string status;   ///< "solved", or Ipopt's return status in words
+  int iterations = 0;   ///< Ipopt iterations
+  double objective = 0.0;
+  std::vector<double> x;  ///< the last iterate
+  std::vector<double> y;  ///< constraint multipliers (Lagrangian σ f + yᵀg)
+};
+
+/// Solves `nlp` from `start` with Ipopt (exact Hessian, adaptive barrier). Throws ComputationFailed if Ipopt
+/// cannot be initialised; any other outcome is returned in `status`.
+NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& start,
+                             const IpoptSettings& settings);
+
+}  // namespace poinsot::optimal::detail

@@ -1,0 +1,82 @@
+#pragma once
+// Multibody optimal-control problems of the optimal/ tests: the planar two-link arm.
+#include <cmath>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+#include "poinsot/optimal/multibody_problem.hpp"
+
+namespace poinsot::optimal::testing {
+
+/// A solid cylinder of mass m, length ℓ and radius r along body x: J about its centre of mass (kg·m²).
+inline Mat3 rod_inertia(double m, double length, double radius) {
+  const double axial = 0.5 * m * radius * radius;
+  const double transverse = m * (3.0 * radius * radius + length * length) / 12.0;
+  return Vec3(axial, transverse, transverse).asDiagonal();
+}
+
+/// The arm's state at shoulder angle θ1, elbow angle θ2 (rad, about space z) and rates (rad/s): link 1 from
+/// the origin along Rz(θ1) x, link 2 from its tip along Rz(θ1 + θ2) x, links of length 1 m.
+inline multibody::State two_link_state(double th1, double th2, double w1 = 0.0, double w2 = 0.0) {
+  multibody::State s;
+  s.bodies.resize(2);
+  const Mat3 R1 = Eigen::AngleAxisd(th1, Vec3::UnitZ()).toRotationMatrix();
+  const Mat3 R2 = Eigen::AngleAxisd(th1 + th2, Vec3::UnitZ()).toRotationMatrix();
+  const Vec3 z = Vec3::UnitZ();
+  s.bodies[0].R_space_body = R1;
+  s.bodies[0].x_space = R1 * Vec3(0.5, 0.0, 0.0);
+  s.bodies[0].omega_body = w1 * z;
+  s.bodies[0].v_space = (w1 * z).cross(s.bodies[0].x_space);
+  s.bodies[1].R_space_body = R2;
+  s.bodies[1].x_space = R1 * Vec3(1.0, 0.0, 0.0) + R2 * Vec3(0.5, 0.0, 0.0);
+  s.bodies[1].omega_body = (w1 + w2) * z;
+  s.bodies[1].v_space =
+      (w1 * z).cross(R1 * Vec3(1.0, 0.0, 0.0)) + ((w1 + w2) * z).cross(R2 * Vec3(0.5, 0.0, 0.0));
+  return s;
+}
+
+/// The two-link arm (two rods of 1 kg, 1 m, radius 5 cm on hinges about z, gravity −9.81 m/s² along y), both
+/// hinges driven with |u| ≤ 50 N·m, rest hanging straight down (θ1 = −π/2, θ2 = 0) to rest at
+/// (−π/2 + Δ1, Δ2) in T at minimum ∫(u1² + u2²)dt.
+inline MultibodyProblem two_link_arm(double d1, double d2, double T, int intervals) {
+  MultibodyProblem p;
+  auto& sys = p.system;
+  const int l1 = sys.add_body_from_inertia("upper", 1.0, rod_inertia(1.0, 1.0, 0.05));
+  const int l2 = sys.add_body_from_inertia("fore", 1.0, rod_inertia(1.0, 1.0, 0.05));
+  const int shoulder = sys.add_hinge("shoulder", l1, Vec3(-0.5, 0, 0), Vec3::UnitZ(), multibody::kWorld,
+                                     Vec3::Zero(), Vec3::UnitZ());
+  const int elbow =
+      sys.add_hinge("elbow", l2, Vec3(-0.5, 0, 0), Vec3::UnitZ(), l1, Vec3(0.5, 0, 0), Vec3::UnitZ());
+  sys.set_gravity(Vec3(0.0, -9.81, 0.0));
+  const double down = -0.5 * std::numbers::pi;
+  p.initial_state = two_link_state(down, 0.0);
+  p.final_state = two_link_state(down + d1, d2);
+  p.final_time = T;
+  p.intervals = intervals;
+  p.actuators = {{ActuatorKind::hinge_torque, shoulder, 50.0}, {ActuatorKind::hinge_torque, elbow, 50.0}};
+  return p;
+}
+
+/// One rod of the arm alone on the shoulder hinge, gravity off: rest at 0 to rest at Θ about z in T. The
+/// minimum of ∫u²dt for I θ̈ = u (I = J_zz + m (ℓ/2)² about the hinge) is u = 6IΘ/T² (1 − 2t/T),
+/// θ = Θ (3s² − 2s³) with s = t/T, and the cost 12 I² Θ² / T³.
+inline MultibodyProblem single_hinge(double theta, double T, int intervals) {
+  MultibodyProblem p;
+  const int rod = p.system.add_body_from_inertia("rod", 1.0, rod_inertia(1.0, 1.0, 0.05));
+  const int hinge = p.system.add_hinge("hinge", rod, Vec3(-0.5, 0, 0), Vec3::UnitZ(), multibody::kWorld,
+                                       Vec3::Zero(), Vec3::UnitZ());
+  p.initial_state = two_link_state(0.0, 0.0);
+  p.initial_state.bodies.resize(1);
+  p.final_state = two_link_state(theta, 0.0);
+  p.final_state.bodies.resize(1);
+  p.final_time = T;
+  p.intervals = intervals;
+  p.actuators = {{ActuatorKind::hinge_torque, hinge, 50.0}};
+  return p;
+}
+inline double single_hinge_inertia() {
+  return rod_inertia(1.0, 1.0, 0.05)(2, 2) + 0.25;
+}
+
+}  // namespace poinsot::optimal::testing

@@ -1,0 +1,114 @@
+// The exact derivatives of the differential-algebraic Hermite–Simpson NLP, for both multibody point models
+// (rotation-matrix and minimal coordinates), against central finite differences.
+#include "../../src/optimal/hermite_simpson_dae.hpp"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "../../src/optimal/multibody_minimal_model.hpp"
+#include "../../src/optimal/multibody_rotation_model.hpp"
+#include "multibody_test_problems.hpp"
+
+namespace poinsot::optimal::detail {
+namespace {
+
+Eigen::MatrixXd dense_jacobian(const SparseNlp& nlp, const std::vector<double>& x) {
+  const auto nnz = static_cast<std::size_t>(nlp.jacobian_nonzeros());
+  std::vector<int> rows(nnz), cols(nnz);
+  std::vector<double> values(nnz);
+  nlp.jacobian_structure(rows.data(), cols.data());
+  nlp.jacobian_values(x.data(), values.data());
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(nlp.num_constraints(), nlp.num_variables());
+  for (std::size_t e = 0; e < nnz; ++e)
+    J(rows[e], cols[e]) += values[e];  // duplicates add, as in Ipopt
+  return J;
+}
+
+// ∇(σ f + yᵀ g) at x.
+Eigen::VectorXd lagrangian_gradient(const SparseNlp& nlp, const std::vector<double>& x, double sigma,
+                                    const Eigen::VectorXd& y) {
+  Eigen::VectorXd grad(nlp.num_variables());
+  nlp.objective_gradient(x.data(), grad.data());
+  return sigma * grad + dense_jacobian(nlp, x).transpose() * y;
+}
+
+// Checks ∂g/∂x and the lower triangle of ∇²(σ f + yᵀg) against central differences with step ε = 1e-6. The
+// difference quotients of the constraints (at most cubic in a step along one variable for the rotation-matrix
+// model, smooth for the minimal one) carry an error of order ε² · |third derivative| + 1e-16 / ε, about 1e-10
+// here; the tolerance 1e-6 (relative to the entry's size, at least 1) leaves a wide margin and still catches
+// a wrong or missing entry, whose size is of order 1.
+void check_derivatives(const SparseNlp& nlp, unsigned seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> d(-1.0, 1.0);
+  std::vector<double> x(static_cast<std::size_t>(nlp.num_variables()));
+  for (double& v : x)
+    v = d(rng);
+  Eigen::VectorXd y(nlp.num_constraints());
+  for (Eigen::Index i = 0; i < y.size(); ++i)
+    y(i) = d(rng);
+  const double sigma = 0.7;
+  const double eps = 1e-6;
+  const Eigen::MatrixXd J = dense_jacobian(nlp, x);
+  Eigen::MatrixXd H = Eigen::MatrixXd::Zero(nlp.num_variables(), nlp.num_variables());
+  {
+    const auto nnz = static_cast<std::size_t>(nlp.hessian_nonzeros());
+    std::vector<int> rows(nnz), cols(nnz);
+    std::vector<double> values(nnz);
+    nlp.hessian_structure(rows.data(), cols.data());
+    nlp.hessian_values(x.data(), sigma, y.data(), values.data());
+    for (std::size_t e = 0; e < nnz; ++e) {
+      ASSERT_GE(rows[e], cols[e]);
+      H(rows[e], cols[e]) += values[e];
+    }
+  }
+  Eigen::VectorXd gp(nlp.num_constraints()), gm(nlp.num_constraints());
+  double worst_jacobian = 0.0, worst_hessian = 0.0;
+  for (int i = 0; i < nlp.num_variables(); ++i) {
+    std::vector<double> xp = x, xm = x;
+    xp[static_cast<std::size_t>(i)] += eps;
+    xm[static_cast<std::size_t>(i)] -= eps;
+    nlp.constraints(xp.data(), gp.data());
+    nlp.constraints(xm.data(), gm.data());
+    const Eigen::VectorXd fd = (gp - gm) / (2.0 * eps);
+    for (Eigen::Index r = 0; r < fd.size(); ++r)
+      worst_jacobian = std::max(worst_jacobian, std::abs(fd(r) - J(r, i)) / std::max(1.0, std::abs(J(r, i))));
+    const Eigen::VectorXd hd =
+        (lagrangian_gradient(nlp, xp, sigma, y) - lagrangian_gradient(nlp, xm, sigma, y)) / (2.0 * eps);
+    for (int j = i; j < nlp.num_variables(); ++j)  // column i of the lower triangle
+      worst_hessian = std::max(worst_hessian, std::abs(hd(j) - H(j, i)) / std::max(1.0, std::abs(H(j, i))));
+  }
+  EXPECT_LT(worst_jacobian, 1e-6);
+  EXPECT_LT(worst_hessian, 1e-6);
+  // The objective's gradient: Simpson's rule of Σu², exact by hand.
+  Eigen::VectorXd grad(nlp.num_variables());
+  nlp.objective_gradient(x.data(), grad.data());
+  for (int i = 0; i < nlp.num_variables(); ++i) {
+    std::vector<double> xp = x, xm = x;
+    xp[static_cast<std::size_t>(i)] += eps;
+    xm[static_cast<std::size_t>(i)] -= eps;
+    EXPECT_NEAR((nlp.objective(xp.data()) - nlp.objective(xm.data())) / (2.0 * eps), grad(i), 1e-7);
+  }
+}
+
+TEST(HermiteSimpsonDae, RotationMatrixModelDerivativesAreExact) {
+  MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 2);
+  p.actuators.push_back({ActuatorKind::body_torque, 1, 5.0});  // a body torque as well
+  const MultibodyRotationModel model(p);
+  const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
+  const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
+  const HermiteSimpsonDae nlp(model, 1, 1.5, y0, rows, Eigen::VectorXd::Zero(3));
+  check_derivatives(nlp, 7);
+}
+
+TEST(HermiteSimpsonDae, MinimalModelDerivativesAreExact) {
+  const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 2);
+  const MultibodyMinimalModel model(p);
+  const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
+  const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(4, 4);
+  const HermiteSimpsonDae nlp(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(4));
+  check_derivatives(nlp, 11);
+}
+
+}  // namespace
+}  // namespace poinsot::optimal::detail
