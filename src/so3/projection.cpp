@@ -10,7 +10,7 @@
 namespace poinsot::so3 {
 
 double orthogonality_error(const Mat3& R) {
-  return (R.transpose() * R - Mat3::Identity()).norm();
+  return orthogonality_defect(R).norm();
 }
 
 Mat3 project_to_so3(const Mat3& M, double max_orthogonality_error) {

@@ -41,11 +41,4 @@ inline void sin_cosm1(double x, double& s, double& cm1) {
   sin_cosm1_polynomial(x, s, cm1);
 }
 
-/// sin θ and cos θ (θ in rad), cos θ = 1 + (cos θ − 1) of sin_cosm1.
-inline void sin_cos(double x, double& s, double& c) {
-  double cm1 = 0.0;
-  sin_cosm1(x, s, cm1);
-  c = 1.0 + cm1;
-}
-
 }  // namespace poinsot::dynamics
