@@ -84,9 +84,8 @@ TEST(MultibodyRoundoffGrowth, RattleRandomWalksAndProjectedRk4StaysBounded) {
     } else {
       // R + R(Q − I) rounds each of the 9 entries of R by ½ ulp a step, unbiased, so the Frobenius norm of
       // RᵀR − I random-walks at a few tenths of ε√N: measured 0.58 ε√N at 10^4.5 steps, exponent 0.57 over
-      // 1.5 decades (±0.1 over 20 members). Before the Newton fixed point and the increment form it was 6.9
-      // ε√N (the momentum residual at 1e-13 moved R), and the cheaper Q = c I + j(a) + a aᵀ/(1 + c) drifted
-      // linearly.
+      // 1.5 decades (±0.1 over 20 members). With Q = I + (Q − I) rounded before R Q it was 6.9 ε√N, and with
+      // the cheaper Q = c I + j(a) + a aᵀ/(1 + c) it drifted linearly.
       EXPECT_LT(p, 0.75) << info.name;
       EXPECT_LT(ratio, 2.0) << info.name;
     }
