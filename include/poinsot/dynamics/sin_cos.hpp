@@ -8,7 +8,7 @@
 
 namespace poinsot::dynamics {
 
-/// True when sin_cos evaluates its polynomials (|θ| ≤ 1/4), false when it calls the C library.
+/// True when sin_cosm1 evaluates its polynomials (|θ| ≤ 1/4), false when it calls the C library.
 inline bool sin_cos_uses_polynomial(double x) {
   return !(std::abs(x) > 0.25);
 }
