@@ -95,7 +95,7 @@ class SingleBodyRun final : public Run {
     o.dt = kDt;
     integrator_ = poinsot::dynamics::make_integrator(method_, body_, nullptr, o);
     state_ = {};
-    state_.R = R0;
+    state_.R_space_body = R0;
     state_.omega_body = omega0;
   }
   void advance(long n) override {
@@ -105,7 +105,7 @@ class SingleBodyRun final : public Run {
   Invariants sample() const override {
     return {poinsot::dynamics::kinetic_energy(body_, state_),
             poinsot::dynamics::angular_momentum_space(body_, state_),
-            poinsot::so3::orthogonality_error(state_.R)};
+            poinsot::so3::orthogonality_error(state_.R_space_body)};
   }
 
  private:

@@ -157,7 +157,7 @@ Factors error_factors(const Vec3& moments, const Mat3& R0, const Vec3& w0) {
   const RigidBody body = RigidBody::from_principal_moments(moments);
   EXPECT_EQ(body.principal_axes(), Mat3::Identity());  // the reference works in the principal frame
   State s0;
-  s0.R = R0;
+  s0.R_space_body = R0;
   s0.omega_body = w0;
   const ExactFreeBody exact(body, s0);
   const ExactFreeBody50 reference(moments, R0, w0);
@@ -173,7 +173,7 @@ Factors error_factors(const Vec3& moments, const Mat3& R0, const Vec3& w0) {
     const double w_dot = (Jw.cross(w)).cwiseQuotient(moments).norm();  // |ω̇| = |J⁻¹(Jω × ω)|
     const double limit_R = ulp_t * w.norm() + 8 * kEps;
     const double limit_w = ulp_t * w_dot + 8 * kEps * w.norm();
-    f.R = std::max(f.R, (d.R - R).cwiseAbs().maxCoeff() / limit_R);
+    f.R = std::max(f.R, (d.R_space_body - R).cwiseAbs().maxCoeff() / limit_R);
     f.omega = std::max(f.omega, (d.omega_body - w).cwiseAbs().maxCoeff() / limit_w);
   }
   return f;

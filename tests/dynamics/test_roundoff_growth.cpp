@@ -57,7 +57,7 @@ Growth measure(const std::string& method, const std::vector<long>& checkpoints) 
   options.dt = kDt;
   for (int m = 0; m < kMembers; ++m) {
     State s;
-    s.R = so3::exp(draws.vec(1e-3));
+    s.R_space_body = so3::exp(draws.vec(1e-3));
     s.omega_body = Vec3(0.01, 2.0, 0.01) + draws.vec(1e-3);
     const auto integrator = make_integrator(method, body, nullptr, options);
     const double T0 = kinetic_energy(body, s);
