@@ -22,7 +22,15 @@ namespace {
 using namespace poinsot::dynamics;
 
 constexpr double kEps = 0x1.0p-52;  // machine epsilon of double
+// Unoptimised builds (debug, ASan + UBSan, where a step costs ~100 times more) run a 4-member ensemble to 10⁴
+// steps and check the magnitude only; the release build runs the full test.
+#ifdef NDEBUG
 constexpr int kMembers = 20;
+constexpr bool kFull = true;
+#else
+constexpr int kMembers = 4;
+constexpr bool kFull = false;
+#endif
 constexpr double kDt = 1e-3;  // s
 
 // The ensemble: J = diag(1, 2, 3) kg·m², ω0 = (0.01, 2, 0.01) rad/s (near the intermediate axis: a flip
@@ -111,7 +119,8 @@ TEST_P(RoundoffGrowth, FollowsBrouwersLaw) {
   // Checkpoints at half decades from 10^3.5 to 10⁵ steps (2·10⁶ steps in all). Before ~10⁴ steps the start's
   // own rounding dominates; a bias of ~0.01 ε per step, the size the rotations had when they rounded
   // cos θ (dlm) or the 1 of the Cayley matrix (rattle), overtakes the random walk from ~3·10⁴ steps on.
-  const Growth g = measure(method, {3162, 10000, 31623, 100000});
+  const Growth g =
+      kFull ? measure(method, {3162, 10000, 31623, 100000}) : measure(method, {1000, 3162, 10000});
   std::vector<const std::vector<double>*> kept{&g.L_space, &g.L_norm};
   const char* names[] = {"L_space", "|L|", "energy"};
   // RATTLE keeps the free body's kinetic energy to round-off too (measured, rattle.hpp); DLM's energy error
@@ -121,12 +130,15 @@ TEST_P(RoundoffGrowth, FollowsBrouwersLaw) {
     const std::vector<double>& rms = *kept[k];
     const double p = exponent(g.steps, rms);
     const double ratio = rms.back() / (kEps * std::sqrt(static_cast<double>(g.steps.back())));
-    std::printf("%s %s: RMS %.3g at 1e5 steps = %.2f eps sqrt(N), fitted exponent %.2f\n", method.c_str(),
-                names[k], rms.back(), ratio, p);
+    std::printf("%s %s: RMS %.3g at %ld steps = %.2f eps sqrt(N), fitted exponent %.2f\n", method.c_str(),
+                names[k], rms.back(), g.steps.back(), ratio, p);
     // A random walk of the rounding fits p = 0.5; over 20 members the RMS at each checkpoint is known to
     // ~16 % (1/√(2·20)), so the slope over 1.5 decades to about ±0.1; a drift gives p → 1 (the biased
     // rounding gave 0.69 for dlm, whose drift only overtakes here, and 1.17 for rattle). 0.75 lies half-way.
-    EXPECT_LT(p, 0.75) << method << " " << names[k];
+    if (kFull) {
+      EXPECT_LT(p, 0.75) << method << " " << names[k];
+    }
+    // (Unoptimised builds, at 10⁴ steps: measured 0.40 and 0.19 ε√N; the biased rounding gave 1.34 and 2.0.)
     // Each step rounds the invariant's ingredients a handful of times at ½ ulp (five planar rotations of two
     // entries for dlm, one update of R and Π for rattle): k unbiased ½-ulp roundings a step give an RMS of
     // ~½ε√(kN/3); ε√N allows k = 12. Measured: 0.2 to 0.3 ε√N; the biased rounding gave 3.8 (dlm) and 5.4

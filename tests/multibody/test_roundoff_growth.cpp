@@ -18,7 +18,14 @@ namespace poinsot::multibody::test {
 namespace {
 
 constexpr double kEps = 0x1.0p-52;
+// Unoptimised builds (debug, ASan + UBSan) run 4 members to 10⁴ steps and check the magnitude only.
+#ifdef NDEBUG
 constexpr int kMembers = 20;
+constexpr bool kFull = true;
+#else
+constexpr int kMembers = 4;
+constexpr bool kFull = false;
+#endif
 constexpr double kDt = 1e-3;  // s
 
 // J = diag(1, 2, 3) kg·m², ω0 = (0.01, 2, 0.01) rad/s + δ, |δᵢ| ≤ 1e-3 rad/s, R0 = exp(j(ε)), |εᵢ| ≤ 1e-3
@@ -64,7 +71,8 @@ std::vector<double> orthogonality_rms(const MultibodyMethodInfo& info, const std
 }
 
 TEST(MultibodyRoundoffGrowth, RattleRandomWalksAndProjectedRk4StaysBounded) {
-  const std::vector<long> checkpoints{1000, 3162, 10000, 31623};
+  const std::vector<long> checkpoints =
+      kFull ? std::vector<long>{1000, 3162, 10000, 31623} : std::vector<long>{1000, 3162, 10000};
   for (const MultibodyMethodInfo& info : multibody_methods()) {
     const std::vector<double> rms = orthogonality_rms(info, checkpoints);
     double sx = 0, sy = 0, sxx = 0, sxy = 0;
@@ -86,7 +94,9 @@ TEST(MultibodyRoundoffGrowth, RattleRandomWalksAndProjectedRk4StaysBounded) {
       // RᵀR − I random-walks at a few tenths of ε√N: measured 0.58 ε√N at 10^4.5 steps, exponent 0.57 over
       // 1.5 decades (±0.1 over 20 members). With Q = I + (Q − I) rounded before R Q it was 6.9 ε√N, and with
       // the cheaper Q = c I + j(a) + a aᵀ/(1 + c) it drifted linearly.
-      EXPECT_LT(p, 0.75) << info.name;
+      if (kFull) {
+        EXPECT_LT(p, 0.75) << info.name;
+      }
       EXPECT_LT(ratio, 2.0) << info.name;
     }
   }
