@@ -30,16 +30,18 @@ struct DlmIntegrator::Impl {
     const int j = (i + 1) % 3;
     const int k = (i + 2) % 3;
     const double theta = h * Pi[i] * inv_I[i];
-    double s, c;
-    sin_cos(theta, s, c);
+    double s, cm1;  // sin θ, cos θ − 1
+    sin_cosm1(theta, s, cm1);
+    // As increments, so that only the sums round (sin_cos.hpp): the rounding is then unbiased and the
+    // invariants |Π|, L_space and RᵀR = I random-walk (Brouwer's law) instead of drifting.
     const double pj = Pi[j];
     const double pk = Pi[k];
-    Pi[j] = c * pj + s * pk;
-    Pi[k] = -s * pj + c * pk;
+    Pi[j] = pj + (cm1 * pj + s * pk);
+    Pi[k] = pk + (cm1 * pk - s * pj);
     const Vec3 rj = Rp.col(j);
     const Vec3 rk = Rp.col(k);
-    Rp.col(j) = c * rj + s * rk;
-    Rp.col(k) = -s * rj + c * rk;
+    Rp.col(j) = rj + (cm1 * rj + s * rk);
+    Rp.col(k) = rk + (cm1 * rk - s * rj);
   }
   void free_flow(double h) {
     rotate(0, 0.5 * h);

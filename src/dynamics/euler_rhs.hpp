@@ -14,6 +14,7 @@
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/state.hpp"
 #include "poinsot/dynamics/torque.hpp"
+#include "poinsot/so3/projection.hpp"
 #include "poinsot/so3/quaternion.hpp"
 
 namespace poinsot::dynamics::detail {
@@ -76,13 +77,12 @@ class EulerRhs {
   Vec3 inv_diag_ = Vec3::Zero();
 };
 
-/// One Björck–Bowie step towards the nearest rotation, R ← R − ½ R (RᵀR − I): for ‖RᵀR − I‖ = δ it leaves
+/// One Björck–Bowie step towards the nearest rotation (so3::bjorck_step): for ‖RᵀR − I‖ = δ it leaves
 /// O(δ²). The splitting and variational methods apply it every kReorthogonalizeEvery steps so that rounding
 /// errors, which otherwise accumulate like a random walk (‖RᵀR − I‖ ~ 3e-13 after 10⁶ steps), stay at the
 /// level of one step's round-off; it moves R by O(δ) = O(1e-15), below anything the methods resolve.
 inline void reorthogonalize(Mat3& R) {
-  const Mat3 E = R.transpose() * R - Mat3::Identity();
-  R -= 0.5 * (R * E);
+  so3::bjorck_step(R);
 }
 inline constexpr int kReorthogonalizeEvery = 16;
 

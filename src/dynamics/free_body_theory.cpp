@@ -11,6 +11,42 @@
 #include "poinsot/dynamics/jacobi_elliptic.hpp"
 
 namespace poinsot::dynamics {
+namespace {
+
+// Double-double arithmetic (Dekker 1971; Knuth's TwoSum): hi + lo carries ~106 bits, each operation
+// accurate to ~ε² relative.
+struct DoubleDouble {
+  double hi, lo;
+};
+DoubleDouble two_sum(double a, double b) {
+  const double s = a + b;
+  const double bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+DoubleDouble times(const DoubleDouble& a, double b) {
+  const double p = a.hi * b;
+  const double e = std::fma(a.hi, b, -p) + a.lo * b;
+  const double s = p + e;
+  return {s, e - (s - p)};
+}
+
+// I_i (I_i − I_j) ω_i², exactly up to ~ε² relative.
+DoubleDouble gap_term(double Ii, double Ij, double wi) {
+  return times(times(times(two_sum(Ii, -Ij), Ii), wi), wi);
+}
+
+// |L|² − 2T I2 = I3(I3 − I2)ω3² − I1(I2 − I1)ω1², the only gap with a cancellation: in double-double, so that
+// near the separatrix, where it decides k'² (and the period through ln(1/k')), it is accurate to a few ulps
+// of itself rather than of its terms (plain double lost ε·|terms|/|gap| relative: a phase error growing like
+// t·1e-6 at |gap| ~ 1e-10 |terms|).
+double separatrix_gap(const Vec3& I, const Vec3& w) {
+  const DoubleDouble a = gap_term(I[2], I[1], w[2]);
+  const DoubleDouble b = gap_term(I[0], I[1], w[0]);  // I1 (I1 − I2) ω1² ≤ 0
+  const DoubleDouble s = two_sum(a.hi, b.hi);
+  return s.hi + (s.lo + (a.lo + b.lo));
+}
+
+}  // namespace
 
 const char* to_string(FreeBodyRegime regime) {
   switch (regime) {
@@ -59,7 +95,7 @@ FreeBodyTheory free_body_theory(const Vec3& principal_moments, const Vec3& omega
   const Vec3& w = omega_principal;
   th.energy = 0.5 * (I[0] * w[0] * w[0] + I[1] * w[1] * w[1] + I[2] * w[2] * w[2]);
   th.momentum = Vec3(I[0] * w[0], I[1] * w[1], I[2] * w[2]).norm();
-  th.separatrix_gap = I[2] * (I[2] - I[1]) * w[2] * w[2] - I[0] * (I[1] - I[0]) * w[0] * w[0];
+  th.separatrix_gap = separatrix_gap(I, w);
 
   const double tol = kSymmetryTolerance * I[2];
   const bool sym12 = I[1] - I[0] <= tol;

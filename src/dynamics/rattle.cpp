@@ -94,10 +94,13 @@ StepResult RattleIntegrator::step(State& state, double dt) {
   }
   const Vec3 pi_plus = m.Pi;
   const Vec3 c = m.solve_cayley(h, pi_plus, t);
+  // F = cay(c) = I + W, W = α(j(c) + j(c)²), α = 2/(1 + |c|²) (so3::cayley), applied as increments so that
+  // only the sums R + R W and Π⁺ + Wᵀ Π⁺ round: the 1 on F's diagonal, rounded with the small terms, would
+  // make the same rounding step after step and the invariants drift linearly instead of random-walking.
   const Mat3 Cc = hat(c);
-  const Mat3 F = Mat3::Identity() + (2.0 / (1.0 + c.squaredNorm())) * (Cc + Cc * Cc);  // so3::cayley(c)
-  m.R = m.R * F;
-  m.Pi = F.transpose() * pi_plus;
+  const Mat3 W = (2.0 / (1.0 + c.squaredNorm())) * (Cc + Cc * Cc);
+  m.R += m.R * W;
+  m.Pi = pi_plus + W.transpose() * pi_plus;
   const Vec3 pi_minus = m.Pi;
   Vec3 tau1 = Vec3::Zero();
   if (!m.torque_free) {

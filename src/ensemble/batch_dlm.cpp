@@ -25,30 +25,31 @@ struct DlmLanes {
 inline __attribute__((always_inline)) void rotate(DlmLanes& L, int i, double h) {
   const int j = (i + 1) % 3;
   const int k = (i + 2) % 3;
-  alignas(64) double s[B], c[B], theta[B];
+  alignas(64) double s[B], cm1[B], theta[B];  // sin θ, cos θ − 1
   for (int l = 0; l < B; ++l) {
     theta[l] = h * L.Pi[i][l] * L.inv_I[i][l];
-    dynamics::sin_cos_polynomial(theta[l], s[l], c[l]);
+    dynamics::sin_cosm1_polynomial(theta[l], s[l], cm1[l]);
   }
-  int library = 0;  // angles beyond 1/4 rad: the C library, as dynamics::sin_cos does
+  int library = 0;  // angles beyond 1/4 rad: the C library, as dynamics::sin_cosm1 does
   for (int l = 0; l < B; ++l)
     library |= !dynamics::sin_cos_uses_polynomial(theta[l]);
   if (library) {
     for (int l = 0; l < B; ++l)
-      if (!dynamics::sin_cos_uses_polynomial(theta[l])) dynamics::sin_cos(theta[l], s[l], c[l]);
+      if (!dynamics::sin_cos_uses_polynomial(theta[l])) dynamics::sin_cosm1(theta[l], s[l], cm1[l]);
   }
+  // The rotation as increments, written as dynamics/dlm.cpp writes it.
   for (int l = 0; l < B; ++l) {
     const double pj = L.Pi[j][l];
     const double pk = L.Pi[k][l];
-    L.Pi[j][l] = c[l] * pj + s[l] * pk;
-    L.Pi[k][l] = -s[l] * pj + c[l] * pk;
+    L.Pi[j][l] = pj + (cm1[l] * pj + s[l] * pk);
+    L.Pi[k][l] = pk + (cm1[l] * pk - s[l] * pj);
   }
   for (int r = 0; r < 3; ++r) {
     for (int l = 0; l < B; ++l) {
       const double rj = L.R[r][j][l];
       const double rk = L.R[r][k][l];
-      L.R[r][j][l] = c[l] * rj + s[l] * rk;
-      L.R[r][k][l] = -s[l] * rj + c[l] * rk;
+      L.R[r][j][l] = rj + (cm1[l] * rj + s[l] * rk);
+      L.R[r][k][l] = rk + (cm1[l] * rk - s[l] * rj);
     }
   }
 }

@@ -13,6 +13,7 @@
 #include "poinsot/multibody/loads.hpp"
 #include "poinsot/so3/cayley.hpp"
 #include "poinsot/so3/hat.hpp"
+#include "poinsot/so3/projection.hpp"
 
 namespace poinsot::multibody {
 
@@ -23,18 +24,16 @@ bool same_state(const BodyState& a, const BodyState& b) {
          a.omega_body == b.omega_body;
 }
 
-// Brings R to the nearest rotation (the orthogonal factor of its polar decomposition) by the Newton–Schulz
-// iteration R ← R (I − E/2), E = RᵀR − I. Writing R = U (I + S) (polar), E = 2S + S² and the step leaves
-// E′ ≈ −3S² ≈ −¾E²: from |E| < 1e-8 (RK4 leaves E at O(h⁵), ~1e-12 on the 64-link benchmark chain) one step
-// is at round-off and is not checked again. Returns false when E does not fall below 1e-15 (R far from a
-// rotation).
+// Brings R to the nearest rotation (the orthogonal factor of its polar decomposition) by Björck–Bowie steps
+// (so3::bjorck_step, E′ ≈ −¾E² for E = RᵀR − I): from |E| < 1e-8 (RK4 leaves E at O(h⁵), ~1e-12 on the
+// 64-link benchmark chain) one step is at round-off and is not checked again. Returns false when E does not
+// fall below 1e-15 (R far from a rotation).
 bool orthonormalize(Mat3& R) {
   for (int k = 0; k < 6; ++k) {
-    Mat3 E = R.transpose() * R;
-    E.diagonal().array() -= 1.0;
+    const Mat3 E = so3::orthogonality_defect(R);
     const double e = E.cwiseAbs().maxCoeff();
     if (e <= 1e-15) return true;
-    R -= 0.5 * (R * E);
+    so3::bjorck_step(R, E);
     if (e < 1e-8) return true;
   }
   return false;

@@ -20,6 +20,10 @@ using so3::hat;
 
 namespace {
 
+// The relative momentum residual of a Newton iterate at its floating-point fixed point: a few roundings of
+// the terms (each ½ ulp relative to their magnitude) that cannot cancel.
+constexpr double kMomentumRoundoff = 4.0 * std::numeric_limits<double>::epsilon();
+
 // Largest absolute entry: the residual norms of the Newton test (no square root on the hot path).
 template <class V>
 double max_abs(const V& v) {
@@ -51,8 +55,8 @@ struct Rattle::Impl {
     Jomega.resize(nb);
     gyro_solved.resize(nb);
     scale_w.resize(nb);
-    Q.resize(nb);
-    Q_first.resize(nb);
+    Q_minus_I.resize(nb);
+    Q_minus_I_first.resize(nb);
     sigma.resize(nb);
     next.resize(nb);
     start.resize(nb);
@@ -152,8 +156,8 @@ struct Rattle::Impl {
     if (!stage1_ready && steps_taken > 0) {
       const double h0 = substeps.front().h;
       for (std::size_t i = 0; i < start.size(); ++i) {
-        RtRddK[i] = (2.0 / h0) * ((Q_first[i] - Mat3::Identity()) / h0 - hat(start[i].omega_body)) *
-                    system.bodies()[i].poinsot;
+        RtRddK[i] =
+            (2.0 / h0) * (Q_minus_I_first[i] / h0 - hat(start[i].omega_body)) * system.bodies()[i].poinsot;
       }
       fill_multipliers(stage1, start, lambda_first, loads_start, RtRddK);
     }
@@ -167,7 +171,7 @@ struct Rattle::Impl {
     if (!stage2_ready && steps_taken > 0) {
       const double h1 = substeps.back().h;
       for (std::size_t i = 0; i < next.size(); ++i) {
-        RtRddK[i] = (2.0 / h1) * (hat(next[i].omega_body) - (Mat3::Identity() - Q[i].transpose()) / h1) *
+        RtRddK[i] = (2.0 / h1) * (hat(next[i].omega_body) + Q_minus_I[i].transpose() / h1) *
                     system.bodies()[i].poinsot;
       }
       fill_multipliers(stage2, next, lambda_last, loads, RtRddK);
@@ -200,25 +204,27 @@ struct Rattle::Impl {
             "multibody: at t = {} s body '{}' turns by h|ω| = {} rad in one step; expected < 1 (reduce dt)",
             time, bodies[i].name, std::sqrt(s2)));
       }
-      // Q = I + j(a) + j(a)²/(1 + c) with j(a)² = a aᵀ − |a|² I. The identity is kept apart from the small
-      // terms (not folded into c = 1 − |a|²/(1 + c)): c's rounding would then enter Q at full size, and its
-      // slowly varying sign makes RᵀR − I drift linearly (4e-11 after 10⁶ steps of a chain, against 2e-13).
+      // Q = I + j(a) + j(a)²/(1 + c) with j(a)² = a aᵀ − |a|² I, kept as Q − I and applied as the increment
+      // R + R (Q − I): the identity never meets the small terms, so that only the sum rounds. Rounded into
+      // Q, the 1 (or c = 1 − |a|²/(1 + c)) would make nearly the same rounding step after step and RᵀR − I,
+      // the energy and the momenta drift linearly instead of random-walking (Brouwer's law).
       const double c = std::sqrt(1.0 - s2);
       const double inv = 1.0 / (1.0 + c);
-      Mat3& Qi = Q[i];
-      Qi.noalias() = inv * a * a.transpose();
-      Qi(0, 0) = (Qi(0, 0) - inv * s2) + 1.0;
-      Qi(1, 1) = (Qi(1, 1) - inv * s2) + 1.0;
-      Qi(2, 2) = (Qi(2, 2) - inv * s2) + 1.0;
-      Qi(1, 0) += a.z();
-      Qi(0, 1) -= a.z();
-      Qi(0, 2) += a.y();
-      Qi(2, 0) -= a.y();
-      Qi(2, 1) += a.x();
-      Qi(1, 2) -= a.x();
+      Mat3& A = Q_minus_I[i];
+      A.noalias() = inv * a * a.transpose();
+      A(0, 0) -= inv * s2;
+      A(1, 1) -= inv * s2;
+      A(2, 2) -= inv * s2;
+      A(1, 0) += a.z();
+      A(0, 1) -= a.z();
+      A(0, 2) += a.y();
+      A(2, 0) -= a.y();
+      A(2, 1) += a.x();
+      A(1, 2) -= a.x();
       sigma[i] = hs * inv;
       next[i].x_space = q[i].x_space + hs * u[i];
-      next[i].R_space_body.noalias() = q[i].R_space_body * Qi;
+      next[i].R_space_body.noalias() = q[i].R_space_body * A;
+      next[i].R_space_body += q[i].R_space_body;
 
       const Body& b = bodies[i];
       Jw[i].noalias() = b.inertia * w[i];
@@ -297,10 +303,14 @@ struct Rattle::Impl {
     double previous_err_body = std::numeric_limits<double>::infinity();
     for (;;) {
       const auto [err_body, err_joint] = position_residuals(q, hs, state.time, its == 0);
-      if (err_body <= tol && err_joint <= tol) break;
-      // Round-off floor: the positions have converged and the momentum residual, already tiny, stopped
-      // decreasing (long chains carry large reactions whose sums cannot cancel to 1e-13).
-      if (err_joint <= tol && err_body <= 1e3 * tol && err_body > 0.25 * previous_err_body) break;
+      // The momentum rows are solved to their floating-point fixed point, not only to the tolerance: the
+      // simplified Newton contracts with a steady ratio and sign from one step to the next, so a residual
+      // left at the tolerance is nearly the same error every step and the momenta and the energy would drift
+      // linearly (Brouwer's law needs the rounding alone). Converged once the positions are and the
+      // momentum residual is at round-off, or, already tiny, stopped falling: long chains carry large
+      // reactions whose sums cannot cancel below ~1e-13.
+      const bool falling = err_body <= 0.25 * previous_err_body;
+      if (err_joint <= tol && (err_body <= kMomentumRoundoff || (err_body <= 1e3 * tol && !falling))) break;
       previous_err_body = err_body;
       if (++its > options.max_iterations) {
         throw ComputationFailed(fmt::format(
@@ -318,7 +328,7 @@ struct Rattle::Impl {
     iterations += its;
     if (first) {  // what position_stage() needs, computed only when asked for
       lambda_first = (2.0 / hs) * sub.nu;
-      Q_first = Q;
+      Q_minus_I_first = Q_minus_I;
     }
 
     // Velocity stage at q_{n+1}: dampers see the extrapolated velocities 2V½ − Vₙ.
@@ -394,7 +404,7 @@ struct Rattle::Impl {
   std::vector<Vec3> u, w, Jw, Jomega;
   std::vector<Vec3> gyro_solved;  // σ w × Jw in the residual last solved for
   std::vector<double> scale_w;    // magnitude of the terms of each body's rotation rows, N·m·s
-  std::vector<Mat3> Q, Q_first;
+  std::vector<Mat3> Q_minus_I, Q_minus_I_first;  // the relative rotations Q of the substeps, less I
   std::vector<double> sigma;
   std::vector<BodyState> next, start;
   std::vector<Vec6> gen, rhs_body;

@@ -10,7 +10,7 @@
 namespace poinsot::so3 {
 
 double orthogonality_error(const Mat3& R) {
-  return (R.transpose() * R - Mat3::Identity()).norm();
+  return orthogonality_defect(R).norm();
 }
 
 Mat3 project_to_so3(const Mat3& M, double max_orthogonality_error) {
@@ -33,10 +33,11 @@ Mat3 project_to_so3(const Mat3& M, double max_orthogonality_error) {
   Mat3 u = svd.matrixU();
   const Mat3& v = svd.matrixV();
   if ((u * v.transpose()).determinant() < 0.0) u.col(2) = -u.col(2);
-  const Mat3 q = u * v.transpose();
+  Mat3 q = u * v.transpose();
   // The Jacobi SVD leaves U and V orthogonal to ~10 ulp; one step of Björck's iteration
-  // Q ← Q (3I − QᵀQ)/2, quadratically convergent, brings Q to round-off.
-  return q * (1.5 * Mat3::Identity() - 0.5 * (q.transpose() * q));
+  // Q ← Q − ½Q(QᵀQ − I), quadratically convergent, brings Q to round-off.
+  bjorck_step(q);
+  return q;
 }
 
 }  // namespace poinsot::so3

@@ -14,8 +14,10 @@
 /// sub-flow does), keeps R orthogonal to round-off (planar rotations), and keeps the energy error bounded
 /// (O(h²), no drift) over exponentially long times (backward error analysis; Hairer, Lubich & Wanner,
 /// Geometric Numerical Integration, §VII.5). Five sin/cos pairs per step (Taylor polynomials to round-off
-/// for angles below 1/4 rad). Every 16 steps one Björck step R ← R − ½R(RᵀR − I) removes the accumulated
-/// rounding (it moves R by ~1e-15), so ‖RᵀR − I‖ stays at round-off however long the run.
+/// for angles below 1/4 rad), each rotation applied as the increment x + ((cos θ − 1)x + sin θ y) so that
+/// the rounding of the invariants random-walks (Brouwer's law, docs/integrators.md). Every 16 steps one
+/// Björck step R ← R − ½R(RᵀR − I) removes the accumulated rounding (it moves R by ~1e-15), so ‖RᵀR − I‖
+/// stays at round-off however long the run.
 ///
 /// Torques enter as symmetric Strang kicks Π ← Π + (h/2) τ_body before and after the free flow. For gravity
 /// about a pivot (τ from the potential V(R) = −m gᵀ R d) a kick is the exact flow of V, so the method stays

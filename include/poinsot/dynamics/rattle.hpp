@@ -21,9 +21,10 @@
 ///
 /// Order 2, symplectic, time-reversible; conserves L_space = R Π to round-off (torque-free), |Π|, keeps R in
 /// SO(3) to round-off (F is a rotation by construction; every 16 steps one Björck step R ← R − ½R(RᵀR − I)
-/// removes the accumulated rounding), and the energy error bounded (no drift; for the free body the
-/// kinetic energy is in fact conserved to round-off, as measured). Cost: a Newton iteration of 2–3 solves
-/// of 3×3 systems per step, predicted from the previous step's Cayley vector.
+/// removes the accumulated rounding; F is applied as the increment R + R(F − I), so that the rounding of the
+/// invariants random-walks: Brouwer's law, docs/integrators.md), and the energy error bounded (no drift; for
+/// the free body the kinetic energy is in fact conserved to round-off, as measured). Cost: a Newton iteration
+/// of 2–3 solves of 3×3 systems per step, predicted from the previous step's Cayley vector.
 #include <memory>
 
 #include "poinsot/dynamics/integrator.hpp"
