@@ -59,6 +59,12 @@ std::vector<T> gather(const std::vector<T>& mine, int size) {
   return out;
 }
 
+/// A bucket of output `output`'s quantile sketch, for the byte-wise gather.
+struct FlatBucket {
+  std::int32_t output;
+  ensemble::QuantileBucket bucket;
+};
+
 /// A SampleRow as plain numbers, for the byte-wise gather (Eigen's types are not trivially copyable).
 struct FlatRow {
   std::uint64_t index;
@@ -130,6 +136,12 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
   ensemble::EnsembleResult mine =
       ensemble::run_ensemble_blocks(sampler, o, share(s.rank()), share(s.rank() + 1), &blocks);
   const std::vector<ensemble::BlockSummary> all_blocks = gather(blocks, s.size());
+  // The quantile sketches (per-sample output off) are integer counts: merged in any order, the same bits.
+  std::vector<FlatBucket> buckets;
+  for (int q = 0; q < ensemble::kOutputCount; ++q)
+    for (const ensemble::QuantileBucket& b : mine.sketches[static_cast<std::size_t>(q)].buckets())
+      buckets.push_back({q, b});
+  const std::vector<FlatBucket> all_buckets = gather(buckets, s.size());
   std::vector<FlatRow> flat;
   flat.reserve(mine.rows.size());
   for (const ensemble::SampleRow& row : mine.rows)
@@ -147,6 +159,8 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
   r.nominal = mine.nominal;
   for (const ensemble::BlockSummary& b : all_blocks)  // in block order: rank order is block order
     ensemble::merge_block(r, b);
+  for (const FlatBucket& f : all_buckets)
+    r.sketches[static_cast<std::size_t>(f.output)].add_bucket(f.bucket);
   r.rows.reserve(all_rows.size());
   for (const FlatRow& f : all_rows)
     r.rows.push_back(unflatten(f));

@@ -262,6 +262,12 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
     for (std::uint64_t k = 0; k < nb; ++k) {  // merged in block order: independent of the threads
       merge_block(result, block[k]);
       if (blocks_out) blocks_out->push_back(block[k]);
+      if (!o.keep_rows) {
+        const std::uint64_t count = std::min(kBlockSamples, range - (b0 + k) * kBlockSamples);
+        for (std::uint64_t i = 0; i < count; ++i)
+          for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
+            result.sketches[q].add(scratch[k][i].out[q]);
+      }
     }
     result.completed = std::min(range, (b0 + nb) * kBlockSamples);
     if (o.on_progress) o.on_progress(result.completed);

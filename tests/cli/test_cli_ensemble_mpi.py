@@ -46,3 +46,23 @@ def test_two_ranks_equal_one_process(cli, tmp_path):
     b = json.loads((tmp_path / "two/summary.json").read_text())
     assert a["outputs"] == b["outputs"]
     assert a["completed"] == b["completed"] == 2500
+
+
+@pytest.mark.skipif(not MPIEXEC, reason="poinsot was built without MPI")
+def test_two_ranks_without_rows_give_the_percentiles_of_one_process(cli, tmp_path):
+    # Per-sample output off: the percentiles come from the quantile sketches, whose integer counts are
+    # gathered from the ranks: the same numbers as one process, bit for bit.
+    path = tmp_path / "ens.toml"
+    path.write_text(SCENARIO)
+    one = cli("ensemble", path, "--threads", "1", "--no-per-sample", "--out", tmp_path / "one")
+    assert one.returncode == 0, one.stderr
+    two = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "2", os.environ["POINSOT_CLI"],
+                          "ensemble", str(path), "--threads", "1", "--no-per-sample", "--out",
+                          str(tmp_path / "two")], capture_output=True, text=True, timeout=120)
+    assert two.returncode == 0, two.stderr
+    a = json.loads((tmp_path / "one/summary.json").read_text())
+    b = json.loads((tmp_path / "two/summary.json").read_text())
+    assert "sketch" in a["percentile_method"]
+    assert set(a["outputs"]["attitude_error"]["percentiles"]) == {"P1", "P5", "P50", "P95", "P99", "P99.9"}
+    assert a["outputs"] == b["outputs"]
+    assert not (tmp_path / "two/samples.csv").exists()

@@ -13,8 +13,10 @@
 ///
 /// Work is split into blocks of kBlockSamples consecutive samples; threads take whole blocks, and the
 /// statistics of the blocks are merged in block order after each round of blocks, so the results are
-/// bit-identical for any number of threads and with or without SIMD. Memory: the stored rows (when kept)
-/// plus O(threads · kBlockSamples), independent of the number of samples otherwise.
+/// bit-identical for any number of threads and with or without SIMD. Without stored rows the outputs are
+/// also counted in quantile sketches (integer counts: the same for any threads or ranks), for percentiles.
+/// Memory: the stored rows (when kept) plus O(threads · kBlockSamples) and the sketches' buckets,
+/// independent of the number of samples otherwise.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -22,6 +24,7 @@
 #include <vector>
 
 #include "poinsot/ensemble/batch.hpp"
+#include "poinsot/ensemble/quantile_sketch.hpp"
 #include "poinsot/ensemble/sampler.hpp"
 #include "poinsot/ensemble/statistics.hpp"
 
@@ -77,6 +80,8 @@ struct EnsembleOptions {
 struct EnsembleResult {
   std::vector<SampleRow> rows;  ///< in index order (keep_rows)
   std::array<RunningStats, kOutputCount> stats;
+  /// Percentiles without the rows (keep_rows off; empty sketches otherwise): quantile_sketch.hpp.
+  std::array<QuantileSketch, kOutputCount> sketches;
   std::uint64_t completed = 0;  ///< samples done (all, unless interrupted)
   bool interrupted = false;
   std::int64_t rejected = 0;  ///< redraws of the reject policy, all samples
