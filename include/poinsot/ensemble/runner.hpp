@@ -10,6 +10,11 @@
 ///   attitude_error        rad, the angle between the sample's final attitude and the nominal sample's
 ///   energy_error          |E − E₀|/|E₀| at t_end (free body or gravity; NaN under other torques)
 ///   L_space_error         |L − L₀|/|L₀| at t_end (free body; NaN otherwise)
+///   precession_rate       rad/s, heavy tops: the mean precession rate of the axis (pivot → centre of mass)
+///                         about the vertical, measured by dynamics::AxisTracker on every step (NaN
+///                         otherwise)
+///   nutation_frequency    rad/s, heavy tops: 2π/T_nut from the minima of θ (NaN: fewer than two minima)
+///   nutation_amplitude    rad, heavy tops: θ_max − θ_min of the axis's angle from the vertical
 ///
 /// Work is split into blocks of kBlockSamples consecutive samples; threads take whole blocks, and the
 /// statistics of the blocks are merged in block order after each round of blocks, so the results are
@@ -39,14 +44,18 @@ enum Output {
   attitude_error,
   energy_error,
   L_space_error,
+  precession_rate,
+  nutation_frequency,
+  nutation_amplitude,
   kOutputCount
 };
 /// The outputs' names, as in the CSV header and summary.json.
-inline constexpr const char* kOutputNames[kOutputCount] = {"first_flip_time",      "flip_interval",
-                                                           "flip_interval_theory", "attitude_error",
-                                                           "energy_error",         "L_space_error"};
+inline constexpr const char* kOutputNames[kOutputCount] = {
+    "first_flip_time", "flip_interval",   "flip_interval_theory", "attitude_error",    "energy_error",
+    "L_space_error",   "precession_rate", "nutation_frequency",   "nutation_amplitude"};
 /// Their units.
-inline constexpr const char* kOutputUnits[kOutputCount] = {"s", "s", "s", "rad", "", ""};
+inline constexpr const char* kOutputUnits[kOutputCount] = {"s", "s",     "s",     "rad", "",
+                                                           "",  "rad/s", "rad/s", "rad"};
 
 /// One sample's inputs and outputs.
 struct SampleRow {
