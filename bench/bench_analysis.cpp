@@ -27,7 +27,7 @@ std::vector<State> random_states() {
   std::vector<State> out(kN);
   for (auto& s : out) {
     s.omega_body = Vec3(u(rng), u(rng), u(rng));
-    s.R = Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
+    s.R_space_body = Eigen::Quaterniond(u(rng), u(rng), u(rng), u(rng)).normalized().toRotationMatrix();
   }
   return out;
 }

@@ -87,7 +87,7 @@ void BM_ExactTennisRacketAt100s(benchmark::State& st) {
   const RigidBody body = racket();
   const State s0 = racket_start();
   for (auto _ : st)
-    benchmark::DoNotOptimize(ExactFreeBody(body, s0).state_at(100.0).R);
+    benchmark::DoNotOptimize(ExactFreeBody(body, s0).state_at(100.0).R_space_body);
 }
 BENCHMARK(BM_ExactTennisRacketAt100s);
 

@@ -259,7 +259,7 @@ void run(RunCliOptions& o) {
   io::prepare_output_dir(ro.out_dir);  // before anything is simulated
   const io::RunSummary s = run_guarded(o, sc.simulation.t_end, ro,
                                        [&](const io::RunOptions& r) { return io::run_scenario(sc, r); });
-  finish(o, ro.out_dir, io::summary_json(s), io::format_report(s), s.result.final_state.t);
+  finish(o, ro.out_dir, io::summary_json(s), io::format_report(s), s.result.final_state.time);
 }
 
 }  // namespace

@@ -79,13 +79,13 @@ FlatRow flatten(const ensemble::SampleRow& r) {
   f.rejected = r.rejected;
   f.repaired = r.repaired ? 1 : 0;
   f.misalignment = r.misalignment;
-  f.t = r.final_state.t;
+  f.t = r.final_state.time;
   for (int k = 0; k < 3; ++k) {
     f.moments[k] = r.moments[k];
     f.omega0[k] = r.omega0[k];
     f.omega[k] = r.final_state.omega_body[k];
     for (int j = 0; j < 3; ++j)
-      f.R[3 * k + j] = r.final_state.R(k, j);
+      f.R[3 * k + j] = r.final_state.R_space_body(k, j);
   }
   for (int q = 0; q < ensemble::kOutputCount; ++q)
     f.out[q] = r.out[static_cast<std::size_t>(q)];
@@ -98,13 +98,13 @@ ensemble::SampleRow unflatten(const FlatRow& f) {
   r.rejected = static_cast<int>(f.rejected);
   r.repaired = f.repaired != 0;
   r.misalignment = f.misalignment;
-  r.final_state.t = f.t;
+  r.final_state.time = f.t;
   for (int k = 0; k < 3; ++k) {
     r.moments[k] = f.moments[k];
     r.omega0[k] = f.omega0[k];
     r.final_state.omega_body[k] = f.omega[k];
     for (int j = 0; j < 3; ++j)
-      r.final_state.R(k, j) = f.R[3 * k + j];
+      r.final_state.R_space_body(k, j) = f.R[3 * k + j];
   }
   for (int q = 0; q < ensemble::kOutputCount; ++q)
     r.out[static_cast<std::size_t>(q)] = f.out[q];

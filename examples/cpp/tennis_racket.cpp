@@ -44,6 +44,6 @@ int main() {
   const ExactFreeBody exact(racket, initial);
   const State reference = exact.state_at(run.t_end);
   std::printf("orientation error of rattle at t = %g s: %.3e rad\n", run.t_end,
-              so3::angle_between(result.final_state.R, reference.R));
+              so3::angle_between(result.final_state.R_space_body, reference.R_space_body));
   return 0;
 }

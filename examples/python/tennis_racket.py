@@ -31,7 +31,7 @@ def main():
     print(f"principal moments I1, I2, I3 = {body.principal_moments} kg·m²")
     print(f"omega_body(0) = {scenario.initial.omega_body} rad/s")
     r = poinsot.simulate(scenario, method=a.method)  # the scenario's method ("exact") unless overridden
-    print(f"method {r.method}: {r.steps} steps to t = {r.final_state.t:g} s in {r.wall_time_s * 1e3:.1f} ms, "
+    print(f"method {r.method}: {r.steps} steps to t = {r.final_state.time:g} s in {r.wall_time_s * 1e3:.1f} ms, "
           f"{len(r)} samples")
 
     flips = r.flip_times

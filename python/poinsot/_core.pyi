@@ -186,11 +186,11 @@ class Scenario:
 class State:
     """The mutable state of a rotating body and the invariants computed from it on demand."""
     @property
-    def R(self) -> numpy.typing.NDArray[numpy.float64]: ...
-    @R.setter
-    def R(self, value: Any) -> None: ...
-    def __init__(self, *, t: float = ..., R: object = ..., quaternion: object = ..., omega_body: object = ...) -> None:
-        """A state at time t (s) with orientation R (body → space, 3×3) or quaternion (w, x, y, z), and body angular velocity omega_body (rad/s)."""
+    def R_space_body(self) -> numpy.typing.NDArray[numpy.float64]: ...
+    @R_space_body.setter
+    def R_space_body(self, value: Any) -> None: ...
+    def __init__(self, *, time: float = ..., R_space_body: object = ..., quaternion: object = ..., omega_body: object = ...) -> None:
+        """A state at time `time` (s) with orientation R_space_body (body → space, 3×3) or quaternion (w, x, y, z), and body angular velocity omega_body (rad/s)."""
     def __repr__(self) -> str:
         ...
     @property
@@ -202,9 +202,9 @@ class State:
     def quaternion(self) -> numpy.typing.NDArray[numpy.float64]:
         """The canonical unit quaternion (w ≥ 0) of R."""
     @property
-    def t(self) -> float: ...
-    @t.setter
-    def t(self, value: Any) -> None: ...
+    def time(self) -> float: ...
+    @time.setter
+    def time(self, value: Any) -> None: ...
 
 class TorqueModel:
     """External torques on the body, about its rotation point, returned in the body frame (N·m)."""

@@ -71,7 +71,7 @@ class SimulationResult:
 
     def __repr__(self) -> str:
         return (f"SimulationResult(method={self.method!r}, samples={len(self.t)}, steps={self.steps}, "
-                f"t_end={self.final_state.t:g} s, flips={len(self.flip_times)}, "
+                f"t_end={self.final_state.time:g} s, flips={len(self.flip_times)}, "
                 f"energy_rel_max={self.errors['energy_rel_max']:.3g})")
 
 
@@ -191,10 +191,10 @@ def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, ome
     elif any(x is not None for x in (omega_body, R, quaternion)):
         base = parts.get("initial")
         if base is not None and R is None and quaternion is None:
-            R = base.R
+            R = base.R_space_body
         if base is not None and omega_body is None:
             omega_body = base.omega_body
-        parts["initial"] = _core.State(R=R, quaternion=quaternion, omega_body=omega_body)
+        parts["initial"] = _core.State(R_space_body=R, quaternion=quaternion, omega_body=omega_body)
     if "initial" not in parts:
         raise ValueError("initial: missing; expected initial= (poinsot.State) or omega_body= (rad/s)")
     if torque is not None:

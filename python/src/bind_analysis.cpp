@@ -53,11 +53,11 @@ struct Trajectory {
   }
   State state(py::ssize_t i) const {
     State s;
-    s.t = t.data()[i];
+    s.time = t.data()[i];
     const double* r = R.data() + 9 * i;
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
-        s.R(a, b) = r[3 * a + b];
+        s.R_space_body(a, b) = r[3 * a + b];
     const double* p = w.data() + 3 * i;
     s.omega_body = Vec3(p[0], p[1], p[2]);
     return s;

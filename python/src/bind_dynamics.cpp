@@ -58,15 +58,16 @@ std::shared_ptr<TorqueModel> as_torque(const py::object& torque) {
       std::string(py::str(py::type::of(torque).attr("__name__"))));
 }
 
-State make_state(double t, const py::object& R, const py::object& quaternion, const py::object& omega_body) {
+State make_state(double time, const py::object& R_space_body, const py::object& quaternion,
+                 const py::object& omega_body) {
   State s;
-  s.t = t;
-  if (!R.is_none() && !quaternion.is_none())
-    throw py::value_error("state: give the orientation as R or as quaternion, not both");
-  if (!R.is_none()) s.R = to_mat3(R, "R");
+  s.time = time;
+  if (!R_space_body.is_none() && !quaternion.is_none())
+    throw py::value_error("state: give the orientation as R_space_body or as quaternion, not both");
+  if (!R_space_body.is_none()) s.R_space_body = to_mat3(R_space_body, "R_space_body");
   if (!quaternion.is_none()) {
     const Eigen::Vector4d q = to_vec4(quaternion, "quaternion");
-    s.R = so3::rotation_from_quaternion(so3::quaternion_wxyz(q[0], q[1], q[2], q[3]));
+    s.R_space_body = so3::rotation_from_quaternion(so3::quaternion_wxyz(q[0], q[1], q[2], q[3]));
   }
   if (!omega_body.is_none()) s.omega_body = to_vec3(omega_body, "omega_body");
   return s;
@@ -121,15 +122,17 @@ void bind_dynamics(py::module_& m) {
       });
 
   py::class_<State>(m, "State", POINSOT_DOC(file_dynamics_state))
-      .def(
-          py::init(&make_state), py::kw_only(), py::arg("t") = 0.0, py::arg("R") = py::none(),
-          py::arg("quaternion") = py::none(), py::arg("omega_body") = py::none(),
-          "A state at time t (s) with orientation R (body → space, 3×3) or quaternion (w, x, y, z), and body "
-          "angular velocity omega_body (rad/s). Defaults: t = 0, R = I, omega_body = 0.")
-      .def_readwrite("t", &State::t, POINSOT_DOC(dynamics_State_t))
+      .def(py::init(&make_state), py::kw_only(), py::arg("time") = 0.0, py::arg("R_space_body") = py::none(),
+           py::arg("quaternion") = py::none(), py::arg("omega_body") = py::none(),
+           "A state at time `time` (s) with orientation R_space_body (body → space, 3×3) or quaternion (w, "
+           "x, y, "
+           "z), and body angular velocity omega_body (rad/s). Defaults: time = 0, R_space_body = I, "
+           "omega_body = 0.")
+      .def_readwrite("time", &State::time, POINSOT_DOC(dynamics_State_time))
       .def_property(
-          "R", [](const State& s) { return from_mat3(s.R); },
-          [](State& s, ArrayLike R) { s.R = to_mat3(R, "R"); }, POINSOT_DOC(dynamics_State_R))
+          "R_space_body", [](const State& s) { return from_mat3(s.R_space_body); },
+          [](State& s, ArrayLike R) { s.R_space_body = to_mat3(R, "R_space_body"); },
+          POINSOT_DOC(dynamics_State_R_space_body))
       .def_property(
           "omega_body", [](const State& s) { return from_vec3(s.omega_body); },
           [](State& s, ArrayLike w) { s.omega_body = to_vec3(w, "omega_body"); },
@@ -141,7 +144,7 @@ void bind_dynamics(py::module_& m) {
           "omega_space", [](const State& s) { return from_vec3(s.omega_space()); },
           POINSOT_DOC(dynamics_State_omega_space))
       .def("__repr__", [](const State& s) {
-        return "State(t=" + format_number(s.t) + " s, quaternion=" + format_quaternion(s.quaternion()) +
+        return "State(time=" + format_number(s.time) + " s, quaternion=" + format_quaternion(s.quaternion()) +
                ", omega_body=" + format_vector(s.omega_body) + " rad/s)";
       });
 

@@ -40,10 +40,10 @@ struct Samples {
     L_space.reserve(3 * n);
   }
   void add(const RigidBody& body, const Vec3& g, const State& s) {
-    t.push_back(s.t);
+    t.push_back(s.time);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        R.push_back(s.R(i, j));
+        R.push_back(s.R_space_body(i, j));
     const Quat q = s.quaternion();
     quaternion.insert(quaternion.end(), {q.w(), q.x(), q.y(), q.z()});
     omega_body.insert(omega_body.end(), {s.omega_body[0], s.omega_body[1], s.omega_body[2]});
@@ -62,8 +62,9 @@ py::dict run_simulation(const RigidBody& body, const State& initial, const py::o
   auto integrator = dynamics::make_integrator(method, body, torque, integrator_options);
   const Vec3 g = torque->gravity_space();
   Samples samples;
-  if (keep_samples && simulation_options.sample_dt > 0.0 && simulation_options.t_end > initial.t) {
-    const double n = std::ceil((simulation_options.t_end - initial.t) / simulation_options.sample_dt) + 2.0;
+  if (keep_samples && simulation_options.sample_dt > 0.0 && simulation_options.t_end > initial.time) {
+    const double n =
+        std::ceil((simulation_options.t_end - initial.time) / simulation_options.sample_dt) + 2.0;
     if (n < 1e8) samples.reserve(static_cast<std::size_t>(n));
   }
   // The observer keeps the samples (when asked) and, about ten times a second, takes the GIL to let Python
@@ -194,7 +195,7 @@ void bind_exact(py::module_& m) {
                 const State s = e.state_at(t.data()[i]);
                 for (int a = 0; a < 3; ++a) {
                   for (int b = 0; b < 3; ++b)
-                    R[static_cast<std::size_t>(9 * i + 3 * a + b)] = s.R(a, b);
+                    R[static_cast<std::size_t>(9 * i + 3 * a + b)] = s.R_space_body(a, b);
                   w[static_cast<std::size_t>(3 * i + a)] = s.omega_body[a];
                 }
               }

@@ -55,8 +55,8 @@ def test_state_and_invariants_against_numpy():
     J = body.inertia
     for _ in range(20):
         R, w = random_rotation(rng), rng.normal(size=3)
-        s = State(t=1.5, R=R, omega_body=w)
-        assert s.t == 1.5 and np.array_equal(s.R, R) and np.array_equal(s.omega_body, w)
+        s = State(time=1.5, R_space_body=R, omega_body=w)
+        assert s.time == 1.5 and np.array_equal(s.R_space_body, R) and np.array_equal(s.omega_body, w)
         assert np.isclose(poinsot.kinetic_energy(body, s), 0.5 * w @ J @ w, rtol=1e-14)
         assert np.allclose(poinsot.angular_momentum_body(body, s), J @ w, rtol=1e-14)
         assert np.allclose(poinsot.angular_momentum_space(body, s), R @ J @ w, rtol=1e-13, atol=1e-15)
@@ -65,14 +65,14 @@ def test_state_and_invariants_against_numpy():
         assert q.shape == (4,) and q[0] >= 0 and np.allclose(so3.rotation_from_quaternion(q), R, atol=8 * EPS)
     # a state from a quaternion
     q = np.array([np.cos(0.3), 0, 0, np.sin(0.3)])
-    assert np.allclose(State(quaternion=q).R, so3.exp([0, 0, 0.6]), atol=4 * EPS)
+    assert np.allclose(State(quaternion=q).R_space_body, so3.exp([0, 0, 0.6]), atol=4 * EPS)
 
 
 def test_potential_energy_of_a_pivoted_body():
     body = RigidBody.from_principal_moments([1, 1, 0.5]).with_pivot(3.0, [0, 0, 0.2])
     g = np.array([0, 0, -9.81])
     R = so3.exp([0.4, 0, 0])
-    s = State(R=R, omega_body=[0, 0, 10])
+    s = State(R_space_body=R, omega_body=[0, 0, 10])
     assert np.isclose(poinsot.potential_energy(body, s, g), -3.0 * g @ R @ [0, 0, 0.2], rtol=1e-14)
     assert np.isclose(poinsot.total_energy(body, s, g),
                       poinsot.kinetic_energy(body, s) + poinsot.potential_energy(body, s, g), rtol=1e-15)
@@ -124,8 +124,8 @@ def test_wrong_shapes_and_dtypes_say_what_was_expected():
         RigidBody.from_principal_moments(["a", "b", "c"])
     with pytest.raises(ValueError, match=r"omega_body: expected an array of shape \(3,\), got shape \(3, 1\)"):
         State(omega_body=np.zeros((3, 1)))
-    with pytest.raises(ValueError, match="R or as quaternion, not both"):
-        State(R=np.eye(3), quaternion=[1, 0, 0, 0])
+    with pytest.raises(ValueError, match="R_space_body or as quaternion, not both"):
+        State(R_space_body=np.eye(3), quaternion=[1, 0, 0, 0])
     # integers, float32 and non-contiguous views are accepted and converted
     assert np.array_equal(RigidBody.from_principal_moments(np.array([1, 2, 3], dtype=np.int32)).principal_moments,
                           [1, 2, 3])

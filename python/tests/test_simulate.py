@@ -25,8 +25,8 @@ def test_result_arrays_have_the_documented_shapes_and_dtypes():
         assert a.dtype == np.float64 and a.shape == shape, name
     assert np.allclose(r.t, np.linspace(0, 1, n), rtol=0, atol=1e-12)
     assert r.steps == 1000 and r.method == "rk4" and r.torque == "none"
-    assert r.final_state.t == pytest.approx(1.0)
-    assert np.array_equal(r.R[-1], r.final_state.R) and np.array_equal(r.omega_body[-1], r.final_state.omega_body)
+    assert r.final_state.time == pytest.approx(1.0)
+    assert np.array_equal(r.R[-1], r.final_state.R_space_body) and np.array_equal(r.omega_body[-1], r.final_state.omega_body)
 
 
 def test_trajectory_is_handed_over_without_copying():
@@ -80,7 +80,7 @@ def test_same_numbers_as_the_command_line_json(tennis_racket, cli_exe, tmp_path)
     fin = summary["final"]
     # Same driver, same options: the same doubles (JSON prints them to round-trip exactly).
     assert np.array_equal(r.final_state.omega_body, fin["omega_body"])
-    assert np.array_equal(r.final_state.R, fin["R"])
+    assert np.array_equal(r.final_state.R_space_body, fin["R"])
     assert np.array_equal(r.flip_times, summary["events"]["flip_times"])
     assert r.steps == summary["steps"]
     assert r.errors["energy_rel_max"] == summary["invariants"]["energy_rel_error_max"]
@@ -139,7 +139,7 @@ def test_a_scenario_dict_equals_the_same_file(tmp_path):
     assert np.allclose(a.R[0], so3.exp([0, 0, 0.5]), atol=4 * EPS)
     # keyword arguments override the scenario's values
     d = poinsot.simulate(scenario, method="rk4", t_end=1.0)
-    assert d.method == "rk4" and d.final_state.t == pytest.approx(1.0)
+    assert d.method == "rk4" and d.final_state.time == pytest.approx(1.0)
 
 
 def test_constant_torque_by_callback_equals_the_builtin_torque():
@@ -214,7 +214,7 @@ def test_errors_are_value_errors_with_poinsots_message():
 def test_summary_only_run_keeps_no_samples():
     r = poinsot.simulate(body=BODY, omega_body=W0, method="dlm", dt=1e-3, t_end=1.0, keep_samples=False)
     assert len(r) == 0 and r.R.shape == (0, 3, 3) and r.steps == 1000
-    assert r.final_state.t == pytest.approx(1.0)
+    assert r.final_state.time == pytest.approx(1.0)
 
 
 def test_integrator_step_by_step_matches_simulate():
@@ -225,7 +225,7 @@ def test_integrator_step_by_step_matches_simulate():
         integ.step(s, 1e-2)
     r = poinsot.simulate(body=body, omega_body=W0, method="rk4", dt=1e-2, t_end=1.0, sample_dt=1.0)
     assert integ.name == "rk4" and integ.order == 4
-    assert np.abs(s.R - r.final_state.R).max() < 1e-14
+    assert np.abs(s.R_space_body - r.final_state.R_space_body).max() < 1e-14
 
 
 def test_plot_draws_the_figures_of_a_run_folder(tennis_racket, tmp_path):

@@ -12,7 +12,7 @@ def test_simulated_top_matches_the_exact_nutation_and_precession():
     body = poinsot.RigidBody.from_principal_moments([0.6, 0.6, 1.0]).with_pivot(1.0, [0, 0, 0.2])
     top = poinsot.heavy_top_from(body, g)
     assert top.I1 == pytest.approx(0.6 + 1.0 * 0.2**2, rel=1e-15) and top.I3 == 1.0 and top.length == 0.2
-    s = poinsot.State(R=so3.exp([0.5, 0, 0]), omega_body=[0, 0, 30.0])  # tilted 0.5 rad, released without precession
+    s = poinsot.State(R_space_body=so3.exp([0.5, 0, 0]), omega_body=[0, 0, 30.0])  # tilted 0.5 rad, released without precession
     ic = poinsot.top_initial_conditions(body, s, g)
     assert ic["theta"] == pytest.approx(0.5, rel=1e-15) and ic["omega3"] == 30.0 and ic["phi_dot"] == 0.0
     tm = poinsot.top_motion(top, ic["theta"], ic["theta_dot"], ic["phi_dot"], ic["omega3"])

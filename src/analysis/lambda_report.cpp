@@ -26,7 +26,7 @@ LambdaReport analyse_lambda(const dynamics::RigidBody& body, const dynamics::Sta
   // interval [a, b] into n = ⌈(b − a)/h⌉ equal steps (simulation.cpp), so the last step is (b − a)/n long.
   const double h_nominal = integrator->nominal_step();
   dynamics::Rk4Integrator back(body, torque, {.dt = h_nominal > 0.0 ? h_nominal : 1.0});
-  double previous_t = initial.t;
+  double previous_t = initial.time;
   bool first = true;
   const dynamics::Observer observer = [&](const dynamics::State& s) {
     if (first) {  // the initial state: already observed by the tracker's constructor
@@ -36,13 +36,13 @@ LambdaReport analyse_lambda(const dynamics::RigidBody& body, const dynamics::Sta
     tracker.observe(s);
     Mat3 lambda_integrator;
     if (!integrator->is_adaptive() && h_nominal > 0.0 && integrator->last_multiplier(lambda_integrator)) {
-      const double span = s.t - previous_t;
+      const double span = s.time - previous_t;
       const double n = std::max(1.0, std::ceil(span / h_nominal - 1e-9));
       dynamics::State mid = s;
       back.step(mid, -0.5 * span / n);
       tracker.compare_multiplier(mid, lambda_integrator);
     }
-    previous_t = s.t;
+    previous_t = s.time;
     return true;
   };
   dynamics::SimulationOptions sim;
@@ -56,7 +56,7 @@ LambdaReport analyse_lambda(const dynamics::RigidBody& body, const dynamics::Sta
   report.method = std::string(integrator->name());
   report.torque = torque->describe();
   report.principal_moments = body.principal_moments();
-  report.t_initial = initial.t;
+  report.t_initial = initial.time;
   report.t_end = options.t_end;
   report.sample_dt = options.sample_dt;
   report.dt = h_nominal;

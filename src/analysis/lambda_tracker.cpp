@@ -16,16 +16,16 @@ LambdaTracker::LambdaTracker(const dynamics::RigidBody& body,
   dynamics::validate_state(initial, "lambda: initial state");
   require_non_negative("lambda: volume (m³)", options_.volume_m3, "m³");
   props_.torque_free = torque_ == nullptr || torque_->is_zero();
-  props_.t_initial = initial.t;
+  props_.t_initial = initial.time;
   const Mat3 lambda0 = lambda_from_state(body_, initial, torque_.get());
   props_.lambda_initial = lambda0;
   props_.eigenvalues_initial = sorted_eigenvalues(lambda0);
   props_.lambda_scale = lambda0.norm();
-  props_.stress_initial = constraint_stress(lambda0, initial.R, options_.volume_m3);
+  props_.stress_initial = constraint_stress(lambda0, initial.R_space_body, options_.volume_m3);
 
   if (props_.torque_free) {
     if (const auto axi = detect_axisymmetry(body_, options_.axisymmetry_tolerance)) {
-      axisymmetric_.emplace(*axi, initial.omega_body, initial.t, options_.axisymmetry_tolerance);
+      axisymmetric_.emplace(*axi, initial.omega_body, initial.time, options_.axisymmetry_tolerance);
       const AxisymmetricLambda& a = *axisymmetric_;
       AxisymmetricCheck c;
       c.inertia = a.inertia();
@@ -45,7 +45,8 @@ LambdaTracker::LambdaTracker(const dynamics::RigidBody& body,
 }
 
 void LambdaTracker::compare_multiplier(const dynamics::State& at, const Mat3& lambda_integrator_body) {
-  const Vec3 tau = props_.torque_free ? Vec3::Zero() : Vec3(torque_->torque_body(at.t, at.R, at.omega_body));
+  const Vec3 tau =
+      props_.torque_free ? Vec3::Zero() : Vec3(torque_->torque_body(at.time, at.R_space_body, at.omega_body));
   const Mat3 lambda = lambda_from_state(body_, at, torque_.get());
   LambdaProperties& p = props_;
   p.has_integrator_multiplier = true;
@@ -56,13 +57,14 @@ void LambdaTracker::compare_multiplier(const dynamics::State& at, const Mat3& la
 }
 
 void LambdaTracker::observe(const dynamics::State& state) {
-  const Vec3 tau =
-      props_.torque_free ? Vec3::Zero() : Vec3(torque_->torque_body(state.t, state.R, state.omega_body));
+  const Vec3 tau = props_.torque_free
+                       ? Vec3::Zero()
+                       : Vec3(torque_->torque_body(state.time, state.R_space_body, state.omega_body));
   const Mat3 lambda = lambda_from_state(body_, state, torque_.get());
   const Vec3 eig = sorted_eigenvalues(lambda);
   LambdaProperties& p = props_;
   ++p.samples;
-  p.t_final = state.t;
+  p.t_final = state.time;
   p.lambda_final = lambda;
   p.eigenvalues_final = eig;
   p.eigenvalue_max_variation =
@@ -71,7 +73,7 @@ void LambdaTracker::observe(const dynamics::State& state) {
   p.max_eigenvalue_max = std::max(p.max_eigenvalue_max, eig[2]);
   const double T = dynamics::kinetic_energy(body_, state);
   p.trace_plus_2T_max = std::max(p.trace_plus_2T_max, std::abs(lambda.trace() + 2.0 * T));
-  const StressSummary s = summarize_stress(stress_integral_space(lambda, state.R));
+  const StressSummary s = summarize_stress(stress_integral_space(lambda, state.R_space_body));
   const double vm = options_.volume_m3 > 0.0 ? s.von_mises / options_.volume_m3 : s.von_mises;
   p.von_mises_max = std::max(p.von_mises_max, vm);
 
@@ -85,7 +87,7 @@ void LambdaTracker::observe(const dynamics::State& state) {
       c.eigenvector_residual_max =
           std::max(c.eigenvector_residual_max, (lambda * v - a.lambda3() * v).norm() / vn);
     }
-    const Mat3 E = a.E(state.t);
+    const Mat3 E = a.E(state.time);
     c.constant_matrix_deviation_max =
         std::max(c.constant_matrix_deviation_max, (E.transpose() * lambda * E - c.constant_matrix).norm());
   }

@@ -10,7 +10,7 @@ Vec3 angular_acceleration_body(const dynamics::RigidBody& body, const dynamics::
                                const dynamics::TorqueModel* torque) {
   const Vec3& w = state.omega_body;
   Vec3 rhs = -w.cross(body.inertia() * w);
-  if (torque != nullptr && !torque->is_zero()) rhs += torque->torque_body(state.t, state.R, w);
+  if (torque != nullptr && !torque->is_zero()) rhs += torque->torque_body(state.time, state.R_space_body, w);
   return body.inertia_inverse() * rhs;
 }
 

@@ -17,7 +17,7 @@ Mat3 stress_integral_space(const Mat3& lambda_body, const Mat3& R) {
 
 Mat3 stress_integral_space(const dynamics::RigidBody& body, const dynamics::State& state,
                            const dynamics::TorqueModel* torque) {
-  return stress_integral_space(lambda_from_state(body, state, torque), state.R);
+  return stress_integral_space(lambda_from_state(body, state, torque), state.R_space_body);
 }
 
 Mat3 steady_spin_stress_integral_body(const Mat3& poinsot_K, const Vec3& k_body, double rate) {

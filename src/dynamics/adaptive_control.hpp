@@ -90,7 +90,7 @@ struct AdaptiveLoop {
       y = vec7_of(state);
       fsal_valid = false;
     }
-    const double t = state.t;
+    const double t = state.time;
     if (!fsal_valid) fsal = f(t, y);
     double h = std::min(dt, opt.dt);
     if (!(h > 0.0)) {

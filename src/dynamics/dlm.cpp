@@ -83,16 +83,16 @@ DlmIntegrator::~DlmIntegrator() = default;
 StepResult DlmIntegrator::step(State& state, double dt) {
   Impl& m = *impl_;
   if (!m.resume.matches(state)) {
-    m.Rp = m.P_identity ? state.R : Mat3(state.R * m.P);
+    m.Rp = m.P_identity ? state.R_space_body : Mat3(state.R_space_body * m.P);
     const Vec3 w = m.P_identity ? state.omega_body : Vec3(m.P.transpose() * state.omega_body);
     m.Pi = w.cwiseQuotient(m.inv_I);
   }
-  const double t = state.t;
+  const double t = state.time;
   const double h = dt;
   if (m.torque_free) {
     m.free_flow(h);
   } else {
-    m.Pi += (0.5 * h) * m.torque_principal(t, state.R, m.Pi);  // opening kick
+    m.Pi += (0.5 * h) * m.torque_principal(t, state.R_space_body, m.Pi);  // opening kick
     m.free_flow(h);
     const Mat3 R1 = m.R_body();
     const Vec3 pi_free = m.Pi;
@@ -117,8 +117,8 @@ StepResult DlmIntegrator::step(State& state, double dt) {
     detail::reorthogonalize(m.Rp);
     m.steps_since_projection = 0;
   }
-  state.t = t + h;
-  state.R = m.R_body();
+  state.time = t + h;
+  state.R_space_body = m.R_body();
   state.omega_body = m.omega_body(m.Pi);
   m.resume.remember(state);
   return {h, dt_, 0};

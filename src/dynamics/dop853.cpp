@@ -329,8 +329,8 @@ State Dop853Integrator::dense_output(double t) const {
   const Vec7 y =
       r[0] + s * (r[1] + s1 * (r[2] + s * (r[3] + s1 * (r[4] + s * (r[5] + s1 * (r[6] + s * r[7]))))));
   State out;
-  out.t = t;
-  out.R = detail::rotation_of(y);
+  out.time = t;
+  out.R_space_body = detail::rotation_of(y);
   out.omega_body = y.tail<3>();
   return out;
 }

@@ -102,8 +102,8 @@ State Dopri5Integrator::dense_output(double t) const {
   const double s1 = 1.0 - s;
   const Vec7 y = m.rcont[0] + s * (m.rcont[1] + s1 * (m.rcont[2] + s * (m.rcont[3] + s1 * m.rcont[4])));
   State out;
-  out.t = t;
-  out.R = detail::rotation_of(y);
+  out.time = t;
+  out.R_space_body = detail::rotation_of(y);
   out.omega_body = y.tail<3>();
   return out;
 }

@@ -89,7 +89,7 @@ inline constexpr int kReorthogonalizeEvery = 16;
 /// y = (q, ω) of a State: the canonical unit quaternion of R (Shepperd) and the body angular velocity
 /// (rad/s).
 inline Vec7 vec7_of(const State& s) {
-  const Quat q = so3::quaternion_from_rotation(s.R);
+  const Quat q = so3::quaternion_from_rotation(s.R_space_body);
   Vec7 y;
   y << q.w(), q.x(), q.y(), q.z(), s.omega_body;
   return y;
@@ -102,9 +102,9 @@ struct ResumeCheck {
   Mat3 R_out = Mat3::Zero();
   Vec3 omega_out = Vec3::Zero();
   bool valid = false;
-  bool matches(const State& s) const { return valid && s.R == R_out && s.omega_body == omega_out; }
+  bool matches(const State& s) const { return valid && s.R_space_body == R_out && s.omega_body == omega_out; }
   void remember(const State& s) {
-    R_out = s.R;
+    R_out = s.R_space_body;
     omega_out = s.omega_body;
     valid = true;
   }
@@ -118,8 +118,8 @@ inline bool accept_step(Vec7& y, double t, State& state, ResumeCheck& resume) {
   const double qn = y.head<4>().norm();
   const bool unchanged = std::abs(qn - 1.0) <= 1e-8;
   if (!unchanged) y.head<4>() /= qn;
-  state.t = t;
-  state.R = rotation_of(y);
+  state.time = t;
+  state.R_space_body = rotation_of(y);
   state.omega_body = y.tail<3>();
   resume.remember(state);
   return unchanged;

@@ -40,16 +40,17 @@ Mat3 axis_rotation(int i, double a) {
 }  // namespace
 
 State axisymmetric_free_motion(double A, double C, const Vec3& axis_body, const State& initial, double t) {
-  const double dt = t - initial.t;
+  const double dt = t - initial.time;
   const Vec3& w0 = initial.omega_body;
   const double mu = axis_body.dot(w0);
   const double nu = (C / A - 1.0) * mu;  // rad/s: ω precesses about the axis at ν (ERRATA C11: not (A − C)/A)
   const Mat3 E = so3::exp((nu * dt) * axis_body);
   const Vec3 l_over_a = w0 + nu * axis_body;  // J ω0 / A
   State s;
-  s.t = t;
+  s.time = t;
   s.omega_body = E * w0;
-  s.R = initial.R * so3::exp(dt * l_over_a) * E.transpose();  // order R·E (ERRATA, "order of factors")
+  s.R_space_body = initial.R_space_body * so3::exp(dt * l_over_a) *
+                   E.transpose();  // order R·E (ERRATA, "order of factors")
   return s;
 }
 
@@ -202,7 +203,7 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
     theory_.omega_p = omega_p_;
     theory_.quarter_period = 0.5 * two_k_;
   }
-  const Mat3 r0 = initial.R * axes_;  // R_principal(t0)
+  const Mat3 r0 = initial.R_space_body * axes_;  // R_principal(t0)
   left_ = r0 * attitude_frame(w).transpose();
 }
 
@@ -252,13 +253,13 @@ Mat3 ExactFreeBody::attitude_frame(const Vec3& w) const {
 }
 
 State ExactFreeBody::state_at(double t) const {
-  const double dt = t - initial_.t;
+  const double dt = t - initial_.time;
   switch (kind_) {
     case Kind::steady: {
       State s;
-      s.t = t;
+      s.time = t;
       s.omega_body = initial_.omega_body;
-      s.R = initial_.R * so3::exp(dt * initial_.omega_body);
+      s.R_space_body = initial_.R_space_body * so3::exp(dt * initial_.omega_body);
       return s;
     }
     case Kind::axisymmetric:
@@ -275,9 +276,9 @@ State ExactFreeBody::state_at(double t) const {
   w[dn_axis_] = amplitude_[dn_axis_] * p.dn;
   const double phi = rate_lin_ * dt + rate1_ * (p.pi_minus_u - corr0_);
   State s;
-  s.t = t;
+  s.time = t;
   s.omega_body = axes_ * w;
-  s.R = left_ * axis_rotation(2, phi) * attitude_frame(w) * axes_.transpose();
+  s.R_space_body = left_ * axis_rotation(2, phi) * attitude_frame(w) * axes_.transpose();
   return s;
 }
 

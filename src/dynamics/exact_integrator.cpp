@@ -11,7 +11,7 @@ namespace poinsot::dynamics {
 namespace {
 
 bool same_state(const State& a, const State& b) {
-  return a.t == b.t && a.R == b.R && a.omega_body == b.omega_body;
+  return a.time == b.time && a.R_space_body == b.R_space_body && a.omega_body == b.omega_body;
 }
 
 class ExactIntegrator final : public Integrator {
@@ -25,7 +25,7 @@ class ExactIntegrator final : public Integrator {
   StepResult step(State& state, double dt) override {
     require_finite("exact: step dt (s)", dt);
     if (!solution_ || !same_state(state, last_)) solution_.emplace(body_, state);  // no heap allocation
-    state = solution_->state_at(state.t + dt);
+    state = solution_->state_at(state.time + dt);
     last_ = state;
     return StepResult{dt, dt, 0};
   }

@@ -20,7 +20,7 @@ double FlipDetector::component(const State& s) const {
 
 double FlipDetector::rate(const State& s) const {
   Vec3 rhs = -s.omega_body.cross(J_ * s.omega_body);
-  if (torque_ && !torque_->is_zero()) rhs += torque_->torque_body(s.t, s.R, s.omega_body);
+  if (torque_ && !torque_->is_zero()) rhs += torque_->torque_body(s.time, s.R_space_body, s.omega_body);
   return e2_.dot(rhs);
 }
 

@@ -82,10 +82,10 @@ RattleIntegrator::~RattleIntegrator() = default;
 StepResult RattleIntegrator::step(State& state, double dt) {
   Impl& m = *impl_;
   if (!m.resume.matches(state)) {
-    m.R = state.R;
+    m.R = state.R_space_body;
     m.Pi = m.J * state.omega_body;
   }
-  const double t = state.t;
+  const double t = state.time;
   const double h = dt;
   Vec3 tau0 = Vec3::Zero();
   if (!m.torque_free) {
@@ -129,8 +129,8 @@ StepResult RattleIntegrator::step(State& state, double dt) {
   m.w_minus = m.J_inv * pi_minus;
   m.tau_mean = 0.5 * (tau0 + tau1);
   m.has_step = true;
-  state.t = t + h;
-  state.R = m.R;
+  state.time = t + h;
+  state.R_space_body = m.R;
   state.omega_body = m.J_inv * m.Pi;
   m.resume.remember(state);
   return {h, dt_, 0};

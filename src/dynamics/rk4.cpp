@@ -69,7 +69,7 @@ StepResult Rk4Integrator::step(State& state, double dt) {
   if (!m.resume.matches(state)) {
     y = detail::vec7_of(state);
   }
-  const double t = state.t;
+  const double t = state.time;
   const double h = dt;
   const double h2 = 0.5 * h;
   if (m.fast) {
@@ -85,8 +85,8 @@ StepResult Rk4Integrator::step(State& state, double dt) {
   // 1/√|q|², which leaves |q| − 1 = O(δ²) (round-off) without a square root or a division in the chain
   // of dependent operations. R(q) is then orthogonal to round-off.
   y.head<4>() *= 0.5 * (3.0 - y.head<4>().squaredNorm());
-  state.t = t + h;
-  state.R = Quat(y[0], y[1], y[2], y[3]).toRotationMatrix();
+  state.time = t + h;
+  state.R_space_body = Quat(y[0], y[1], y[2], y[3]).toRotationMatrix();
   state.omega_body = y.tail<3>();
   m.resume.remember(state);
   return {h, dt_, 0};

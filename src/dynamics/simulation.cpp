@@ -35,7 +35,7 @@ class InvariantTracker {
       e.L_space_rel_max = std::max(e.L_space_rel_max, (L - L0_).norm() / L0_norm_);
       e.L_norm_rel_max = std::max(e.L_norm_rel_max, std::abs(L.norm() - L0_norm_) / L0_norm_);
     }
-    e.orthogonality_max = std::max(e.orthogonality_max, so3::orthogonality_error(s.R));
+    e.orthogonality_max = std::max(e.orthogonality_max, so3::orthogonality_error(s.R_space_body));
   }
 
  private:
@@ -49,11 +49,11 @@ class InvariantTracker {
 };
 
 void require_finite_state(const Integrator& integrator, const State& s, long long step) {
-  if (std::isfinite(s.t) && s.R.allFinite() && s.omega_body.allFinite()) return;
+  if (std::isfinite(s.time) && s.R_space_body.allFinite() && s.omega_body.allFinite()) return;
   throw ComputationFailed(fmt::format(
       "simulate: {} produced a non-finite state at step {} (t = {} s): omega_body = {} rad/s; expected "
       "finite values (a smaller step or a tighter tolerance?)",
-      integrator.name(), step, s.t, format_vector(s.omega_body)));
+      integrator.name(), step, s.time, format_vector(s.omega_body)));
 }
 
 struct DenseContext {
@@ -75,9 +75,9 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
   if (!torque) torque = TorqueModel::none();
   validate_state(initial, "simulate: initial state");
   require_finite("simulate: t_end (s)", options.t_end);
-  if (!(options.t_end > initial.t)) {
+  if (!(options.t_end > initial.time)) {
     throw InvalidInput(fmt::format("simulate: t_end = {} s; expected a time after the initial t = {} s",
-                                   options.t_end, initial.t));
+                                   options.t_end, initial.time));
   }
   require_positive("simulate: sample_dt", options.sample_dt, "s");
 
@@ -89,7 +89,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
   State s = initial;
   invariants.record(s, result.errors);
 
-  const double t0 = initial.t;
+  const double t0 = initial.time;
   const double span = options.t_end - t0;
   // Samples at t0 + i·sample_dt for i = 0..n−1 and t_end (a last sample closer than 1e-9·sample_dt to
   // t_end is t_end itself).
@@ -117,7 +117,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
       return r;
     } catch (const ComputationFailed& e) {
       throw ComputationFailed(fmt::format("simulate: {} failed at step {} (t = {} s): {}", integrator.name(),
-                                          result.steps + 1, x.t, e.what()));
+                                          result.steps + 1, x.time, e.what()));
     }
   };
   const DenseContext dense{&integrator, &flips};
@@ -132,8 +132,8 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
     if (!FlipDetector::sign_change(c0, c1)) return;
     result.flip_times.push_back(
         integrator.has_dense_output()
-            ? locate_sign_change(&dense_component, &dense, prev.t, s.t, c0, c1)
-            : FlipDetector::hermite_root(prev.t, s.t, c0, c1, flips.rate(prev), flips.rate(s)));
+            ? locate_sign_change(&dense_component, &dense, prev.time, s.time, c0, c1)
+            : FlipDetector::hermite_root(prev.time, s.time, c0, c1, flips.rate(prev), flips.rate(s)));
   };
 
   if (!emit(s)) return finish();
@@ -141,18 +141,18 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
 
   if (integrator.is_adaptive()) {
     double h = integrator.nominal_step() > 0.0 ? integrator.nominal_step() : options.sample_dt;
-    while (s.t < options.t_end) {
+    while (s.time < options.t_end) {
       const State prev = s;
-      const double remaining = options.t_end - s.t;
+      const double remaining = options.t_end - s.time;
       const bool last = h >= remaining;
       const StepResult r = take_step(s, last ? remaining : h);
-      if (last && r.dt_taken == remaining) s.t = options.t_end;
+      if (last && r.dt_taken == remaining) s.time = options.t_end;
       h = r.dt_next;
       after_step(prev);
-      while (next <= n_intervals && sample_time(next) <= s.t) {
+      while (next <= n_intervals && sample_time(next) <= s.time) {
         const double ts = sample_time(next);
         ++next;
-        if (!emit(ts == s.t ? s : integrator.dense_output(ts))) return finish();
+        if (!emit(ts == s.time ? s : integrator.dense_output(ts))) return finish();
       }
     }
     return finish();
@@ -162,7 +162,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
   // samples land exactly on the sample times (no interpolation of the samples).
   const double h_nominal = integrator.nominal_step();
   for (; next <= n_intervals; ++next) {
-    const double a = s.t;
+    const double a = s.time;
     const double b = sample_time(next);
     const long long n =
         h_nominal > 0.0 ? std::max(1LL, static_cast<long long>(std::ceil((b - a) / h_nominal - 1e-9))) : 1;
@@ -170,7 +170,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
     for (long long k = 0; k < n; ++k) {
       const State prev = s;
       take_step(s, hh);
-      if (k == n - 1) s.t = b;
+      if (k == n - 1) s.time = b;
       after_step(prev);
     }
     if (!emit(s)) return finish();

@@ -11,7 +11,7 @@
 namespace poinsot::dynamics {
 
 Quat State::quaternion() const {
-  return so3::quaternion_from_rotation(R);
+  return so3::quaternion_from_rotation(R_space_body);
 }
 
 double kinetic_energy(const RigidBody& body, const State& s) {
@@ -23,12 +23,12 @@ Vec3 angular_momentum_body(const RigidBody& body, const State& s) {
 }
 
 Vec3 angular_momentum_space(const RigidBody& body, const State& s) {
-  return s.R * (body.inertia() * s.omega_body);
+  return s.R_space_body * (body.inertia() * s.omega_body);
 }
 
 double potential_energy(const RigidBody& body, const State& s, const Vec3& gravity_space) {
   if (!body.has_pivot()) return 0.0;
-  return -body.mass() * gravity_space.dot(s.R * body.pivot_to_com());
+  return -body.mass() * gravity_space.dot(s.R_space_body * body.pivot_to_com());
 }
 
 double total_energy(const RigidBody& body, const State& s, const Vec3& gravity_space) {
@@ -36,14 +36,15 @@ double total_energy(const RigidBody& body, const State& s, const Vec3& gravity_s
 }
 
 void validate_state(const State& s, const char* what) {
-  require_finite(fmt::format("{}: t (s)", what), s.t);
+  require_finite(fmt::format("{}: t (s)", what), s.time);
   require_finite(fmt::format("{}: omega_body (rad/s)", what), s.omega_body);
-  require_finite(fmt::format("{}: R", what), s.R);
-  if (!so3::is_rotation(s.R)) {
+  require_finite(fmt::format("{}: R", what), s.R_space_body);
+  if (!so3::is_rotation(s.R_space_body)) {
     throw InvalidInput(
         fmt::format("{}: R is not a rotation (|R^T R - I| = {:.3g}, det = {:.6g}); expected a proper "
                     "rotation to {:.0e}",
-                    what, so3::orthogonality_error(s.R), s.R.determinant(), so3::kRotationTolerance));
+                    what, so3::orthogonality_error(s.R_space_body), s.R_space_body.determinant(),
+                    so3::kRotationTolerance));
   }
 }
 

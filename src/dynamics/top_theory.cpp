@@ -196,8 +196,8 @@ TopInitialConditions top_initial_conditions(const RigidBody& body, const State& 
   heavy_top_from(body, gravity_space);  // validates
   const Vec3 e = body.pivot_to_com().normalized();
   const Vec3 up = -gravity_space.normalized();
-  const Vec3 s = state.R * e;
-  const Vec3 sdot = state.R * state.omega_body.cross(e);
+  const Vec3 s = state.R_space_body * e;
+  const Vec3 sdot = state.R_space_body * state.omega_body.cross(e);
   TopInitialConditions ic;
   const double sin_theta = up.cross(s).norm();
   ic.theta = std::atan2(sin_theta, up.dot(s));

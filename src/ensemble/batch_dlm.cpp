@@ -147,7 +147,7 @@ void run_dlm_batch(std::span<const Sample> samples, double t_end, long long n, b
     const bool identity = P == Mat3::Identity();
     if (l < lanes) axes[static_cast<std::size_t>(l)] = P;
     // As DlmIntegrator::step converts a State.
-    const Mat3 Rp = identity ? s.initial.R : Mat3(s.initial.R * P);
+    const Mat3 Rp = identity ? s.initial.R_space_body : Mat3(s.initial.R_space_body * P);
     const Vec3 inv_I = body.principal_moments().cwiseInverse();
     const Vec3 w = identity ? s.initial.omega_body : Vec3(P.transpose() * s.initial.omega_body);
     const Vec3 Pi = w.cwiseQuotient(inv_I);
@@ -183,8 +183,8 @@ void run_dlm_batch(std::span<const Sample> samples, double t_end, long long n, b
       inv_I[a] = L->inv_I[a][l];
     }
     LaneResult& r = results[static_cast<std::size_t>(l)];
-    r.final_state.t = t_end;
-    r.final_state.R = identity ? Rp : Mat3(Rp * P.transpose());
+    r.final_state.time = t_end;
+    r.final_state.R_space_body = identity ? Rp : Mat3(Rp * P.transpose());
     const Vec3 w = Pi.cwiseProduct(inv_I);
     r.final_state.omega_body = identity ? w : Vec3(P * w);
     r.first_flip = F->first[l];

@@ -124,7 +124,7 @@ void run_rk4_batch(std::span<const Sample> samples, double t_end, long long n, b
   for (int l = 0; l < B; ++l) {
     const Sample& s = samples[static_cast<std::size_t>(l < lanes ? l : 0)];  // idle lanes repeat lane 0
     const bool aligned = s.axes == Mat3::Identity();
-    const Mat3 Rp = aligned ? s.initial.R : Mat3(s.initial.R * s.axes);
+    const Mat3 Rp = aligned ? s.initial.R_space_body : Mat3(s.initial.R_space_body * s.axes);
     const Vec3 w = aligned ? s.initial.omega_body : Vec3(s.axes.transpose() * s.initial.omega_body);
     const Quat q = so3::quaternion_from_rotation(Rp);
     const double y0[7] = {q.w(), q.x(), q.y(), q.z(), w[0], w[1], w[2]};
@@ -153,10 +153,10 @@ void run_rk4_batch(std::span<const Sample> samples, double t_end, long long n, b
     const Sample& s = samples[static_cast<std::size_t>(l)];
     const bool aligned = s.axes == Mat3::Identity();
     LaneResult& r = results[static_cast<std::size_t>(l)];
-    r.final_state.t = t_end;
+    r.final_state.time = t_end;
     const Mat3 Rp = Quat(L->y[0][l], L->y[1][l], L->y[2][l], L->y[3][l]).toRotationMatrix();
     const Vec3 w(L->y[4][l], L->y[5][l], L->y[6][l]);
-    r.final_state.R = aligned ? Rp : Mat3(Rp * s.axes.transpose());
+    r.final_state.R_space_body = aligned ? Rp : Mat3(Rp * s.axes.transpose());
     r.final_state.omega_body = aligned ? w : Vec3(s.axes * w);
     r.first_flip = F->first[l];
     r.second_flip = F->second[l];

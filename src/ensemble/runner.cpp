@@ -51,8 +51,8 @@ double closed_form_flip_interval(const Sample& s) {
 std::pair<double, Vec3> invariants(const Sample& s, const Mat3& J, const dynamics::State& x) {
   const Vec3 Jw = J * x.omega_body;
   double E = 0.5 * x.omega_body.dot(Jw);
-  if (s.torque == TorqueKind::gravity) E -= s.mass * s.torque_value.dot(x.R * s.pivot_to_com);
-  return {E, x.R * Jw};
+  if (s.torque == TorqueKind::gravity) E -= s.mass * s.torque_value.dot(x.R_space_body * s.pivot_to_com);
+  return {E, x.R_space_body * Jw};
 }
 
 /// A heavy top: gravity on a body held at a pivot away from its centre of mass. Its axis runs from the
@@ -79,7 +79,7 @@ void fill_outputs(const Sample& s, const dynamics::State& final_state, double fi
   row.out[first_flip_time] = first;
   row.out[flip_interval] = c.path == Path::exact ? closed_form_flip_interval(s) : second - first;
   row.out[flip_interval_theory] = free ? closed_form_flip_interval(s) : kNaN;
-  row.out[attitude_error] = so3::angle_between(final_state.R, c.nominal_final.R);
+  row.out[attitude_error] = so3::angle_between(final_state.R_space_body, c.nominal_final.R_space_body);
   row.out[energy_error] =
       (free || s.torque == TorqueKind::gravity) ? std::abs(E1 - E0) / std::max(std::abs(E0), 1e-300) : kNaN;
   row.out[L_space_error] = free && L0.norm() > 0.0 ? (L1 - L0).norm() / L0.norm() : kNaN;

@@ -50,7 +50,7 @@ Nominal Nominal::from(const dynamics::RigidBody& body, const dynamics::State& in
   n.mass = body.mass();
   n.pivot_to_com = body.pivot_to_com();
   n.omega_body = initial.omega_body;
-  n.R = initial.R;
+  n.R = initial.R_space_body;
   n.torque = torque;
   n.torque_value = torque_value;
   return n;
@@ -118,7 +118,7 @@ Sample Sampler::nominal() const {
   s.mass = nominal_.mass;
   s.pivot_to_com = nominal_.pivot_to_com;
   s.has_pivot = nominal_.has_pivot;
-  s.initial.R = nominal_.R;
+  s.initial.R_space_body = nominal_.R;
   s.initial.omega_body = nominal_.omega_body;
   s.torque = nominal_.torque;
   s.torque_value = nominal_.torque_value;
@@ -180,7 +180,7 @@ Sample Sampler::draw(std::uint64_t index) const {
   s.initial.omega_body = disperse(d.omega, nominal_.omega_body, omega);
   SampleStream attitude(seed_, index, Stream::attitude);
   if (d.attitude.law != RotationLaw::none)
-    s.initial.R = so3::exp(draw_rotation_vector(d.attitude, attitude)) * nominal_.R;
+    s.initial.R_space_body = so3::exp(draw_rotation_vector(d.attitude, attitude)) * nominal_.R;
   SampleStream torque(seed_, index, Stream::torque);
   s.torque_value = disperse(d.torque, nominal_.torque_value, torque);
   return s;

@@ -56,8 +56,9 @@ std::string format_report(const RunSummary& s) {
                  g(s.t_end), g(s.sample_dt), s.samples);
   if (!s.failure.empty()) fmt::format_to(o, "  FAILED: {}\n", s.failure);
   if (r.interrupted)
-    fmt::format_to(o, "  INTERRUPTED at t = {} s (the files are complete up to there)\n", g(r.final_state.t));
-  fmt::format_to(o, "  final: t = {} s, omega_body = {} rad/s\n", g(r.final_state.t),
+    fmt::format_to(o, "  INTERRUPTED at t = {} s (the files are complete up to there)\n",
+                   g(r.final_state.time));
+  fmt::format_to(o, "  final: t = {} s, omega_body = {} rad/s\n", g(r.final_state.time),
                  vec(r.final_state.omega_body));
 
   fmt::format_to(o, "\ninvariants: worst relative error over the run\n");

@@ -154,10 +154,10 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
   bool stopped = false;
   const dynamics::Observer observer = [&](const dynamics::State& s) {
     if (csv) csv->write(s);
-    if (tracker) tracker->add(s.t, s.R);
-    if (s.t > sc.initial.t) lambda.observe(s);  // the tracker observed the initial state itself
+    if (tracker) tracker->add(s.time, s.R_space_body);
+    if (s.time > sc.initial.time) lambda.observe(s);  // the tracker observed the initial state itself
     ++sum.samples;
-    if (options.on_sample) options.on_sample(s.t);
+    if (options.on_sample) options.on_sample(s.time);
     if (options.stop_requested && options.stop_requested()) {
       stopped = true;
       return false;

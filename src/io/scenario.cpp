@@ -76,10 +76,10 @@ dynamics::State read_initial(const Source& src, const toml::table& root) {
   const Section s(src, root["initial"].as_table(), "initial", {"omega_body", "omega_space", "orientation"});
   const auto how = s.exactly_one({"omega_body", "omega_space"}, "the angular velocity");
   dynamics::State state;
-  state.t = 0.0;
-  state.R = detail::read_orientation(src, s);
+  state.time = 0.0;
+  state.R_space_body = detail::read_orientation(src, s);
   const Vec3 w = *s.vec3(how);
-  state.omega_body = how == "omega_body" ? w : Vec3(state.R.transpose() * w);
+  state.omega_body = how == "omega_body" ? w : Vec3(state.R_space_body.transpose() * w);
   return state;
 }
 

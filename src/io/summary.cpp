@@ -26,10 +26,10 @@ using detail::vec;
 
 json state_json(const dynamics::State& s) {
   const Quat q = s.quaternion();
-  return {{"t", s.t},
+  return {{"t", s.time},
           {"omega_body", vec(s.omega_body)},
           {"omega_space", vec(s.omega_space())},
-          {"R", mat(s.R)},
+          {"R", mat(s.R_space_body)},
           {"quaternion", json::array({q.w(), q.x(), q.y(), q.z()})}};
 }
 

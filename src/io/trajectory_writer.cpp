@@ -33,10 +33,10 @@ TrajectoryCsvWriter::TrajectoryCsvWriter(const std::string& path, const dynamics
 void TrajectoryCsvWriter::write(const dynamics::State& s) {
   const Quat q = s.quaternion();
   const Vec3 Lb = dynamics::angular_momentum_body(body_, s);
-  const Vec3 Ls = s.R * Lb;
+  const Vec3 Ls = s.R_space_body * Lb;
   const double E = dynamics::total_energy(body_, s, gravity_space_);
   auto out = std::back_inserter(file_.buffer());
-  fmt::format_to(out, "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.t, q.w(), q.x(), q.y(), q.z(),
+  fmt::format_to(out, "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", s.time, q.w(), q.x(), q.y(), q.z(),
                  s.omega_body.x(), s.omega_body.y(), s.omega_body.z(), E, Ls.x(), Ls.y(), Ls.z(), Lb.x(),
                  Lb.y(), Lb.z());
   file_.line_done();

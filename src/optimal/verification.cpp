@@ -47,15 +47,15 @@ dynamics::State resimulate(const ReorientationProblem& p, const IndirectSolution
   opt.rtol = opt.atol = 1e-13;
   dynamics::Dop853Integrator integrator(body, torque, opt);
   dynamics::State state;
-  state.R = p.attitude_initial.toRotationMatrix();
+  state.R_space_body = p.attitude_initial.toRotationMatrix();
   state.omega_body = p.omega_initial;
   std::vector<ControlArc> arcs = s.arcs;
   if (!s.bang_bang) arcs = {{0.0, s.final_time, Vec3::Zero()}};
   double dt = opt.dt;
   for (const auto& arc : arcs) {
     *arc_torque = arc.torque_body;
-    while (arc.t_end - state.t > 1e-14 * s.final_time) {
-      const auto r = integrator.step(state, std::min(dt, arc.t_end - state.t));
+    while (arc.t_end - state.time > 1e-14 * s.final_time) {
+      const auto r = integrator.step(state, std::min(dt, arc.t_end - state.time));
       dt = std::max(r.dt_next, 1e-12);
     }
   }
@@ -109,7 +109,7 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
   const dynamics::State end = resimulate(p, s);
   // With a free final attitude the re-simulation is compared with the indirect solution's own R(T).
   r.resimulated_attitude_error = so3::angle_between(
-      end.R, p.free_final_attitude ? s.attitude.back() : p.attitude_final.toRotationMatrix());
+      end.R_space_body, p.free_final_attitude ? s.attitude.back() : p.attitude_final.toRotationMatrix());
   r.resimulated_rate_error = (end.omega_body - p.omega_final).norm();
   r.direct_indirect_difference = std::abs(d.cost - s.cost) / std::max(std::abs(s.cost), 1e-300);
 

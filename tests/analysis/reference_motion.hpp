@@ -29,13 +29,15 @@ inline Derivative rhs(const dynamics::RigidBody& body, const dynamics::TorqueMod
 /// One RK4 step of size h (s).
 inline dynamics::State rk4_step(const dynamics::RigidBody& body, const dynamics::TorqueModel* torque,
                                 const dynamics::State& s, double h) {
-  const Derivative k1 = rhs(body, torque, s.t, s.R, s.omega_body);
-  const Derivative k2 = rhs(body, torque, s.t + h / 2, s.R + h / 2 * k1.dR, s.omega_body + h / 2 * k1.dw);
-  const Derivative k3 = rhs(body, torque, s.t + h / 2, s.R + h / 2 * k2.dR, s.omega_body + h / 2 * k2.dw);
-  const Derivative k4 = rhs(body, torque, s.t + h, s.R + h * k3.dR, s.omega_body + h * k3.dw);
+  const Derivative k1 = rhs(body, torque, s.time, s.R_space_body, s.omega_body);
+  const Derivative k2 =
+      rhs(body, torque, s.time + h / 2, s.R_space_body + h / 2 * k1.dR, s.omega_body + h / 2 * k1.dw);
+  const Derivative k3 =
+      rhs(body, torque, s.time + h / 2, s.R_space_body + h / 2 * k2.dR, s.omega_body + h / 2 * k2.dw);
+  const Derivative k4 = rhs(body, torque, s.time + h, s.R_space_body + h * k3.dR, s.omega_body + h * k3.dw);
   dynamics::State out;
-  out.t = s.t + h;
-  out.R = s.R + h / 6 * (k1.dR + 2 * k2.dR + 2 * k3.dR + k4.dR);
+  out.time = s.time + h;
+  out.R_space_body = s.R_space_body + h / 6 * (k1.dR + 2 * k2.dR + 2 * k3.dR + k4.dR);
   out.omega_body = s.omega_body + h / 6 * (k1.dw + 2 * k2.dw + 2 * k3.dw + k4.dw);
   return out;
 }
@@ -43,12 +45,12 @@ inline dynamics::State rk4_step(const dynamics::RigidBody& body, const dynamics:
 /// Integrates from s to time t_end with steps of at most h.
 inline dynamics::State advance(const dynamics::RigidBody& body, const dynamics::TorqueModel* torque,
                                dynamics::State s, double t_end, double h = 1e-3) {
-  const double span = t_end - s.t;
+  const double span = t_end - s.time;
   const long n = std::max(1L, std::lround(std::ceil(std::abs(span) / h - 1e-9)));
   const double step = span / static_cast<double>(n);
   for (long i = 0; i < n; ++i)
     s = rk4_step(body, torque, s, step);
-  s.t = t_end;
+  s.time = t_end;
   return s;
 }
 

@@ -145,13 +145,13 @@ TEST(Axisymmetric, RandomBodiesEigenvaluesConstantAlongTheTrajectory) {
     const AxisymmetricLambda a(in, w0);
     const RigidBody body = body_of(in);
     State s = state_at_rest_attitude(w0);
-    s.R = test::random_rotation();  // the body-frame closed form does not depend on R(0)
+    s.R_space_body = test::random_rotation();  // the body-frame closed form does not depend on R(0)
     for (int j = 0; j < 4; ++j) {
-      s = test::advance(body, nullptr, s, s.t + 0.5);
+      s = test::advance(body, nullptr, s, s.time + 0.5);
       const Mat3 lambda = lambda_from_state(body, s);
       const double scale = std::max(1.0, lambda.norm());
       EXPECT_LE(test::max_abs_diff(sorted_eigenvalues(lambda), a.eigenvalues_sorted()), 1e-10 * scale);
-      EXPECT_LE(test::max_abs_diff(a.lambda_at(s.t), lambda), 1e-10 * scale);
+      EXPECT_LE(test::max_abs_diff(a.lambda_at(s.time), lambda), 1e-10 * scale);
     }
   }
 }

@@ -58,7 +58,7 @@ TEST(LambdaReport, RandomAxisymmetricBodiesExactAndRk4) {
     const Mat3 Q = test::random_rotation();
     const RigidBody body = RigidBody::from_inertia(Q * Vec3(A, A, C).asDiagonal() * Q.transpose());
     State s0 = initial_state(test::random_vector(1.0));
-    s0.R = test::random_rotation();
+    s0.R_space_body = test::random_rotation();
     const LambdaReport exact = analyse_lambda(body, s0, opts("exact", 0.0, 5.0));
     const LambdaReport rk4 = analyse_lambda(body, s0, opts("rk4", 1e-2, 5.0));
     ASSERT_TRUE(exact.properties.closed_form.has_value());
@@ -112,7 +112,7 @@ TEST(LambdaReport, HeavyTopWithGravity) {
   LambdaAnalysisOptions o = opts("rattle", 1e-3, 1.0);
   o.torque = dynamics::TorqueModel::gravity(top, Vec3(0, 0, -9.81));
   State s0 = initial_state(Vec3(0.1, 0.0, 30.0));
-  s0.R = Eigen::AngleAxisd(0.5, Vec3::UnitX()).toRotationMatrix();
+  s0.R_space_body = Eigen::AngleAxisd(0.5, Vec3::UnitX()).toRotationMatrix();
   const LambdaReport r = analyse_lambda(top, s0, o);
   EXPECT_FALSE(r.properties.torque_free);
   EXPECT_FALSE(r.properties.closed_form.has_value());

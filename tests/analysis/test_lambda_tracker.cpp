@@ -17,8 +17,8 @@ LambdaProperties track(const RigidBody& body, const State& initial, double t_end
                        const LambdaTrackerOptions& options = {}) {
   LambdaTracker tracker(body, torque, initial, options);
   State s = initial;
-  while (s.t < t_end - 1e-12) {
-    s = test::advance(body, torque.get(), s, s.t + 0.1);
+  while (s.time < t_end - 1e-12) {
+    s = test::advance(body, torque.get(), s, s.time + 0.1);
     tracker.observe(s);
   }
   return tracker.properties();
@@ -66,7 +66,7 @@ TEST(LambdaTracker, LaminaHasNoDivisionByZero) {
   const RigidBody body = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
   State s0;
   s0.omega_body = Vec3(0.7, -0.3, 1.1);
-  s0.R = test::random_rotation();
+  s0.R_space_body = test::random_rotation();
   const LambdaProperties p = track(body, s0, 2.0);
   EXPECT_TRUE(p.lambda_final.allFinite());
   EXPECT_LE(p.max_eigenvalue_max, 32 * kEps * p.lambda_scale);

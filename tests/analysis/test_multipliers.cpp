@@ -24,8 +24,8 @@ RigidBody random_body() {
 
 State random_state(double speed = 2.0) {
   State s;
-  s.t = test::uniform(0.0, 5.0);
-  s.R = test::random_rotation();
+  s.time = test::uniform(0.0, 5.0);
+  s.R_space_body = test::random_rotation();
   s.omega_body = test::random_vector(speed);
   return s;
 }
@@ -37,8 +37,8 @@ Mat3 lambda_by_finite_differences(const RigidBody& body, const dynamics::TorqueM
   const double h = 1e-4;
   const State plus = test::rk4_step(body, torque, s, h);
   const State minus = test::rk4_step(body, torque, s, -h);
-  const Mat3 Rdd = (plus.R - 2.0 * s.R + minus.R) / (h * h);
-  return s.R.transpose() * Rdd * body.poinsot();
+  const Mat3 Rdd = (plus.R_space_body - 2.0 * s.R_space_body + minus.R_space_body) / (h * h);
+  return s.R_space_body.transpose() * Rdd * body.poinsot();
 }
 
 TEST(Multipliers, EqualsRtRddotKByFiniteDifferencesFreeBody) {
@@ -61,7 +61,7 @@ TEST(Multipliers, EqualsRtRddotKByFiniteDifferencesWithTorque) {
     EXPECT_LE(test::max_abs_diff(lambda, fd), 1e-6 * std::max(1.0, lambda.norm()));
     // The skew part is the torque, j(τ_body) (Λ − Λᵀ = j(Jω̇ + ω × Jω)); the state formula has it to
     // round-off.
-    const Vec3 tau = torque->torque_body(s.t, s.R, s.omega_body);
+    const Vec3 tau = torque->torque_body(s.time, s.R_space_body, s.omega_body);
     EXPECT_LE(symmetry_error(lambda, tau), 64 * kEps * std::max(1.0, lambda.norm()));
     EXPECT_GT(symmetry_error(lambda), 0.1);  // without the torque term the matrix is visibly not symmetric
   }
@@ -122,7 +122,7 @@ TEST(Multipliers, CovariantUnderAChangeOfBodyFrame) {
     State s = random_state();
     State s2 = s;
     s2.omega_body = Q * s.omega_body;
-    s2.R = s.R * Q.transpose();
+    s2.R_space_body = s.R_space_body * Q.transpose();
     const Mat3 lambda = lambda_from_state(body, s);
     EXPECT_LE(test::max_abs_diff(lambda_from_state(rotated, s2), Q * lambda * Q.transpose()),
               256 * kEps * std::max(1.0, lambda.norm()));

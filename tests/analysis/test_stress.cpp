@@ -53,8 +53,8 @@ TEST(Stress, SpinningThinDiscTimoshenko) {
     EXPECT_LE(test::max_abs_diff(minus_lambda, expected), 1e-13 * S);
   }
   // The steady-spin closed form, in any attitude: ∫σ dv = R diag(S, S, 0) Rᵀ.
-  s.R = test::random_rotation();
-  const Mat3 expected_space = s.R * Vec3(S, S, 0.0).asDiagonal() * s.R.transpose();
+  s.R_space_body = test::random_rotation();
+  const Mat3 expected_space = s.R_space_body * Vec3(S, S, 0.0).asDiagonal() * s.R_space_body.transpose();
   EXPECT_LE(test::max_abs_diff(stress_integral_space(body, s), expected_space), 1e-12 * S);
   EXPECT_LE(test::max_abs_diff(steady_spin_stress_integral_body(body.poinsot(), Vec3::UnitZ(), omega),
                                Mat3(Vec3(S, S, 0.0).asDiagonal())),
@@ -71,10 +71,10 @@ TEST(Stress, TumblingBoxAgainstQuadratureOfRhoAX) {
       RigidBody::from_principal_moments(mass / 12 * Vec3(b * b + c * c, a * a + c * c, a * a + b * b));
   for (int trial = 0; trial < 20; ++trial) {
     State s;
-    s.R = test::random_rotation();
+    s.R_space_body = test::random_rotation();
     s.omega_body = test::random_vector(3.0);
-    const Vec3 W = s.R * s.omega_body;
-    const Mat3 Js = s.R * body.inertia() * s.R.transpose();
+    const Vec3 W = s.R_space_body * s.omega_body;
+    const Mat3 Js = s.R_space_body * body.inertia() * s.R_space_body.transpose();
     const Vec3 Wdot = Js.lu().solve(-W.cross(Js * W));
     Mat3 quad = Mat3::Zero();
     const Vec3 half(a / 2, b / 2, c / 2);
@@ -83,7 +83,7 @@ TEST(Stress, TumblingBoxAgainstQuadratureOfRhoAX) {
         for (int k = 0; k < 3; ++k) {
           const Vec3 X(half[0] * kGaussX[i], half[1] * kGaussX[j], half[2] * kGaussX[k]);
           const double w = kGaussW[i] * kGaussW[j] * kGaussW[k] * half.prod();
-          const Vec3 x = s.R * X;
+          const Vec3 x = s.R_space_body * X;
           const Vec3 acc = Wdot.cross(x) + W.cross(W.cross(x));
           quad -= rho * w * acc * x.transpose();
         }
@@ -138,13 +138,13 @@ TEST(Stress, MeanStressDividesByTheVolume) {
   State s;
   s.omega_body = Vec3(1.0, 0.5, 0.3);
   const Mat3 lambda = lambda_from_state(body, s);
-  const ConstraintStress none = constraint_stress(lambda, s.R);
+  const ConstraintStress none = constraint_stress(lambda, s.R_space_body);
   EXPECT_FALSE(none.has_mean);
-  const ConstraintStress c = constraint_stress(lambda, s.R, 0.25);
+  const ConstraintStress c = constraint_stress(lambda, s.R_space_body, 0.25);
   ASSERT_TRUE(c.has_mean);
   EXPECT_LE(test::max_abs_diff(c.mean.tensor, c.integral.tensor / 0.25), 1e-15);
   EXPECT_NEAR(c.mean.von_mises, c.integral.von_mises / 0.25, 1e-14);
-  EXPECT_THROW(constraint_stress(lambda, s.R, -1.0), InvalidInput);
+  EXPECT_THROW(constraint_stress(lambda, s.R_space_body, -1.0), InvalidInput);
   EXPECT_THROW(steady_spin_stress_integral_body(body.poinsot(), Vec3::Zero(), 1.0), InvalidInput);
 }
 

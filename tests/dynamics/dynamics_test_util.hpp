@@ -27,14 +27,14 @@ inline const RigidBody kBody = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 
 /// A generic tumbling state of kBody: R = exp(j(0.3, −0.2, 0.5)), ω = (1, 0.6, −0.8) rad/s, t = 0.
 inline State tumbling() {
   State s;
-  s.R = so3::exp(Vec3(0.3, -0.2, 0.5));
+  s.R_space_body = so3::exp(Vec3(0.3, -0.2, 0.5));
   s.omega_body = Vec3(1.0, 0.6, -0.8);
   return s;
 }
 
 /// Advances `s` to t_end with `n` equal steps of the integrator.
 inline State run_fixed(dynamics::Integrator& integrator, State s, double t_end, long long n) {
-  const double h = (t_end - s.t) / static_cast<double>(n);
+  const double h = (t_end - s.time) / static_cast<double>(n);
   for (long long i = 0; i < n; ++i)
     integrator.step(s, h);
   return s;
@@ -43,11 +43,11 @@ inline State run_fixed(dynamics::Integrator& integrator, State s, double t_end, 
 /// Advances `s` to exactly t_end with an adaptive integrator.
 inline State run_adaptive(dynamics::Integrator& integrator, State s, double t_end, double h0) {
   double h = h0;
-  while (s.t < t_end) {
-    const double remaining = t_end - s.t;
+  while (s.time < t_end) {
+    const double remaining = t_end - s.time;
     const bool last = h >= remaining;
     const auto r = integrator.step(s, last ? remaining : h);
-    if (last && r.dt_taken == remaining) s.t = t_end;
+    if (last && r.dt_taken == remaining) s.time = t_end;
     h = r.dt_next;
   }
   return s;
@@ -67,18 +67,19 @@ inline State reference(const RigidBody& body, std::shared_ptr<const TorqueModel>
 /// max(|Δω| / |ω_ref|, angle between the attitudes): a dimensionless error of a state.
 inline double state_error(const State& a, const State& ref) {
   const double dw = (a.omega_body - ref.omega_body).norm() / std::max(ref.omega_body.norm(), 1e-300);
-  return std::max(dw, so3::angle_between(a.R, ref.R));
+  return std::max(dw, so3::angle_between(a.R_space_body, ref.R_space_body));
 }
 
 /// The closed form of the axisymmetric free body J = diag(A, A, C) (Vallée & Dumitriu 2002, eq. 4.2, with
 /// the conventions of ERRATA.md): R(t) = exp[t j(L_space/A)] R0 exp[−t ν j(e3)], ν = (C − A) ω3 / A, and
 /// ω(t) = ω0 rotated by ν t about e3.
 inline State axisymmetric_exact(double A, double C, const State& s0, double t) {
-  const Vec3 L_space = s0.R * Vec3(A * s0.omega_body.x(), A * s0.omega_body.y(), C * s0.omega_body.z());
+  const Vec3 L_space =
+      s0.R_space_body * Vec3(A * s0.omega_body.x(), A * s0.omega_body.y(), C * s0.omega_body.z());
   const double nu = (C - A) * s0.omega_body.z() / A;
   State s;
-  s.t = s0.t + t;
-  s.R = so3::exp(t * L_space / A) * s0.R * so3::exp(Vec3(0, 0, -nu * t));
+  s.time = s0.time + t;
+  s.R_space_body = so3::exp(t * L_space / A) * s0.R_space_body * so3::exp(Vec3(0, 0, -nu * t));
   s.omega_body = so3::exp(Vec3(0, 0, nu * t)) * s0.omega_body;
   return s;
 }
@@ -110,13 +111,13 @@ void expect_same_motion_in_a_rotated_body_frame() {
   const RigidBody rotated = RigidBody::from_inertia(Q * Vec3(1.0, 2.0, 3.0).asDiagonal() * Q.transpose());
   const State p0 = tumbling();
   State b0 = p0;
-  b0.R = p0.R * Q.transpose();
+  b0.R_space_body = p0.R_space_body * Q.transpose();
   b0.omega_body = Q * p0.omega_body;
   Method a(kBody, TorqueModel::none());
   Method b(rotated, TorqueModel::none());
   const State p = run_fixed(a, p0, 3.0, 300);
   const State q = run_fixed(b, b0, 3.0, 300);
-  EXPECT_LT(max_abs_diff(q.R, Mat3(p.R * Q.transpose())), 1e-12);
+  EXPECT_LT(max_abs_diff(q.R_space_body, Mat3(p.R_space_body * Q.transpose())), 1e-12);
   EXPECT_LT(max_abs_diff(q.omega_body, Vec3(Q * p.omega_body)), 1e-12);
 }
 

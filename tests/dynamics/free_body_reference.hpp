@@ -45,21 +45,21 @@ class FreeBodyReference {
       y[static_cast<std::size_t>(i)] = s0.omega_body[i];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        y[static_cast<std::size_t>(3 + 3 * i + j)] = s0.R(i, j);
+        y[static_cast<std::size_t>(3 + 3 * i + j)] = s0.R_space_body(i, j);
     boost::numeric::odeint::runge_kutta_fehlberg78<Y, long double> stepper;
-    const long double h = (static_cast<long double>(t) - s0.t) / steps;
-    long double time = s0.t;
+    const long double h = (static_cast<long double>(t) - s0.time) / steps;
+    long double time = s0.time;
     for (int n = 0; n < steps; ++n) {
       stepper.do_step(*this, y, time, h);
-      time = s0.t + (n + 1) * h;
+      time = s0.time + (n + 1) * h;
     }
     dynamics::State s;
-    s.t = t;
+    s.time = t;
     for (int i = 0; i < 3; ++i)
       s.omega_body[i] = static_cast<double>(y[static_cast<std::size_t>(i)]);
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
-        s.R(i, j) = static_cast<double>(y[static_cast<std::size_t>(3 + 3 * i + j)]);
+        s.R_space_body(i, j) = static_cast<double>(y[static_cast<std::size_t>(3 + 3 * i + j)]);
     return s;
   }
 

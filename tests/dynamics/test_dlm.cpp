@@ -54,12 +54,12 @@ TEST(Dlm, LongRunKeepsTheInvariants) {
     L_err = std::max(L_err, (dynamics::angular_momentum_space(racket, s) - L0).norm() / L0.norm());
   }
   std::printf("dlm 3e4 steps: energy %.3g (first tenth %.3g), L_space %.3g, |RtR-I| %.3g\n", e_all, e_first,
-              L_err, so3::orthogonality_error(s.R));
+              L_err, so3::orthogonality_error(s.R_space_body));
   // Bounded energy error: the whole run is no worse than its first tenth (a drift would be ten times worse).
   EXPECT_LT(e_all, 1.5 * e_first);
   EXPECT_LT(e_all, 1e-2);  // O((hω)²) with hω = 2π/200
   EXPECT_LT(L_err, 1e-12);
-  EXPECT_LT(so3::orthogonality_error(s.R), 1e-13);
+  EXPECT_LT(so3::orthogonality_error(s.R_space_body), 1e-13);
 }
 
 TEST(Dlm, NonPrincipalBodyFrameGivesTheSameMotion) {

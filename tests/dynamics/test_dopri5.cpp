@@ -43,14 +43,14 @@ TEST(Dopri5, DenseOutputIsAsAccurateAsTheSteps) {
   State s = s0;
   double worst = 0.0;
   for (int i = 0; i < 20; ++i) {
-    const double t_prev = s.t;
+    const double t_prev = s.time;
     const auto r = m.step(s, 0.5);
     for (double f : {0.1, 0.37, 0.5, 0.81}) {
       const double t = t_prev + f * r.dt_taken;
       worst = std::max(worst, state_error(m.dense_output(t), reference(kBody, TorqueModel::none(), s0, t)));
     }
     // The interpolant reproduces the step's ends.
-    EXPECT_LT(state_error(m.dense_output(s.t), s), 1e-14);
+    EXPECT_LT(state_error(m.dense_output(s.time), s), 1e-14);
   }
   EXPECT_LT(worst, 30.0 * 1e-9);  // order-4 interpolant at the accuracy of the order-5 steps
 }

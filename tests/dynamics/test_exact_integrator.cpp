@@ -16,8 +16,8 @@ using test::max_abs_diff;
 
 State start() {
   State s;
-  s.t = 1.0;
-  s.R = test::random_rotation();
+  s.time = 1.0;
+  s.R_space_body = test::random_rotation();
   s.omega_body = Vec3(0.4, 1.1, -0.7);
   return s;
 }
@@ -46,14 +46,14 @@ TEST(ExactIntegrator, StepsFollowTheClosedFormAndTheReference) {
     EXPECT_EQ(r.rejected, 0);
   }
   // The same set-up throughout (cached): only the accumulated time differs from one evaluation at t.
-  const State e = exact.state_at(s.t);
+  const State e = exact.state_at(s.time);
   EXPECT_LE(max_abs_diff(s.omega_body, e.omega_body), 1e-14);
-  EXPECT_LE(max_abs_diff(s.R, e.R), 1e-14);
-  const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, s.t, 20000);
+  EXPECT_LE(max_abs_diff(s.R_space_body, e.R_space_body), 1e-14);
+  const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, s.time, 20000);
   EXPECT_LE(max_abs_diff(s.omega_body, ref.omega_body), 1e-12);
-  EXPECT_LE(max_abs_diff(s.R, ref.R), 1e-12);
+  EXPECT_LE(max_abs_diff(s.R_space_body, ref.R_space_body), 1e-12);
   // Dense output anywhere: the closed form itself.
-  EXPECT_LE(max_abs_diff(integ->dense_output(-3.0).R, exact.state_at(-3.0).R), 1e-15);
+  EXPECT_LE(max_abs_diff(integ->dense_output(-3.0).R_space_body, exact.state_at(-3.0).R_space_body), 1e-15);
 }
 
 TEST(ExactIntegrator, ReinitialisesForAStateItDidNotProduce) {
@@ -64,13 +64,13 @@ TEST(ExactIntegrator, ReinitialisesForAStateItDidNotProduce) {
   s.omega_body[2] += 0.3;  // the caller edits the state: a new motion
   const State edited = s;
   integ->step(s, 0.5);
-  const State expect = ExactFreeBody(body, edited).state_at(edited.t + 0.5);
+  const State expect = ExactFreeBody(body, edited).state_at(edited.time + 0.5);
   EXPECT_LE(max_abs_diff(s.omega_body, expect.omega_body), 1e-15);
-  EXPECT_LE(max_abs_diff(s.R, expect.R), 1e-15);
+  EXPECT_LE(max_abs_diff(s.R_space_body, expect.R_space_body), 1e-15);
   // Negative steps run the motion backwards.
   integ->step(s, -0.5);
   EXPECT_LE(max_abs_diff(s.omega_body, edited.omega_body), 1e-14);
-  EXPECT_LE(max_abs_diff(s.R, edited.R), 1e-14);
+  EXPECT_LE(max_abs_diff(s.R_space_body, edited.R_space_body), 1e-14);
 }
 
 // A body held at a pivot with no torque rotates freely about the pivot, with J about the pivot.
@@ -82,9 +82,9 @@ TEST(ExactIntegrator, BodyAtAPivotWithoutTorque) {
   State s = start();
   const State s0 = s;
   integ->step(s, 30.0);
-  const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, s.t, 6000);
+  const State ref = test::FreeBodyReference(body.inertia()).integrate(s0, s.time, 6000);
   EXPECT_LE(max_abs_diff(s.omega_body, ref.omega_body), 1e-12);
-  EXPECT_LE(max_abs_diff(s.R, ref.R), 1e-12);
+  EXPECT_LE(max_abs_diff(s.R_space_body, ref.R_space_body), 1e-12);
 }
 
 TEST(ExactIntegrator, RejectsBadInput) {
@@ -93,7 +93,7 @@ TEST(ExactIntegrator, RejectsBadInput) {
   EXPECT_THROW(integ->dense_output(0.0), InvalidInput);
   State s = start();
   EXPECT_THROW(integ->step(s, std::nan("")), InvalidInput);
-  s.R(0, 0) = 3.0;
+  s.R_space_body(0, 0) = 3.0;
   EXPECT_THROW(integ->step(s, 0.1), InvalidInput);
   Mat3 lambda;
   EXPECT_FALSE(integ->last_multiplier(lambda));

@@ -29,7 +29,7 @@ TEST(FlipDetector, RateIsTheDerivativeOfTheComponent) {
   const auto tau = TorqueModel::constant_space(Vec3(0.2, -0.4, 0.1));
   const FlipDetector d(body, tau);
   State s0;
-  s0.R = so3::exp(Vec3(0.1, 0.2, 0.3));
+  s0.R_space_body = so3::exp(Vec3(0.1, 0.2, 0.3));
   s0.omega_body = Vec3(1.0, 0.6, -0.8);
   const double h = 1e-4;
   const State a = reference(body, tau, s0, 1.0 - h);

@@ -28,8 +28,8 @@ TEST(IntegratorFactory, CreatesEveryMethod) {
     s0.omega_body = Vec3(1.0, 0.6, -0.8);
     State s = s0;
     m->step(s, 0.01);
-    EXPECT_GT(s.t, 0.0);
-    EXPECT_LT(state_error(s, reference(kBody, TorqueModel::none(), s0, s.t)), 1e-5) << e.name;
+    EXPECT_GT(s.time, 0.0);
+    EXPECT_LT(state_error(s, reference(kBody, TorqueModel::none(), s0, s.time)), 1e-5) << e.name;
   }
   // A null torque means none.
   EXPECT_NO_THROW(make_integrator("dlm", kBody, nullptr));

@@ -71,7 +71,7 @@ TEST(Rk4, KeepsTheRotationOrthogonalAndRecordsItsEnergyDrift) {
   RecordProperty("rk4_energy_drift_total", std::to_string(drift_last));
   std::printf("rk4 energy error: max %.3g over the first %d steps, %.3g over %d steps\n", drift_first, n / 10,
               drift_last, n);
-  EXPECT_LT(so3::orthogonality_error(s.R), 1e-14);  // renormalised quaternion
+  EXPECT_LT(so3::orthogonality_error(s.R_space_body), 1e-14);  // renormalised quaternion
   // A drift, not an oscillation: the error keeps growing (ten times the steps, several times the error).
   EXPECT_GT(drift_last, 3.0 * drift_first);
 }
@@ -88,11 +88,11 @@ TEST(Rk4, ResumesFromAStateItDidNotProduce) {
   State s = tumbling();
   rk4.step(s, 0.01);
   State other = tumbling();
-  other.t = s.t;
+  other.time = s.time;
   rk4.step(other, 0.01);
   Rk4Integrator fresh(kBody, TorqueModel::none());
   State expect = tumbling();
-  expect.t = other.t - 0.01;
+  expect.time = other.time - 0.01;
   fresh.step(expect, 0.01);
   EXPECT_LT(max_abs_diff(other.omega_body, expect.omega_body), 1e-15);
 }

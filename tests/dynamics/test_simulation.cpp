@@ -62,7 +62,7 @@ TEST(Simulation, FixedStepSamplesLandOnTheSampleTimes) {
   std::vector<double> times;
   std::vector<State> samples;
   const auto r = simulate(kBody, TorqueModel::none(), tumbling(), *rk4, o, [&](const State& s) {
-    times.push_back(s.t);
+    times.push_back(s.time);
     samples.push_back(s);
     return true;
   });
@@ -76,7 +76,7 @@ TEST(Simulation, FixedStepSamplesLandOnTheSampleTimes) {
   const State s = run_fixed(by_hand, tumbling(), 0.05, 20);
   EXPECT_LT(max_abs_diff(samples[5].omega_body, s.omega_body), 1e-14);
   EXPECT_FALSE(r.interrupted);
-  EXPECT_EQ(r.final_state.t, 0.105);
+  EXPECT_EQ(r.final_state.time, 0.105);
 }
 
 TEST(Simulation, AdaptiveSamplesComeFromTheDenseOutput) {
@@ -87,16 +87,16 @@ TEST(Simulation, AdaptiveSamplesComeFromTheDenseOutput) {
   double worst = 0.0;
   int count = 0;
   const auto r = simulate(kBody, TorqueModel::none(), tumbling(), *m, o, [&](const State& s) {
-    EXPECT_NEAR(s.t, 0.1 * count, 1e-12);
+    EXPECT_NEAR(s.time, 0.1 * count, 1e-12);
     ++count;
     if (count % 7 == 0)
-      worst = std::max(worst, state_error(s, reference(kBody, TorqueModel::none(), tumbling(), s.t)));
+      worst = std::max(worst, state_error(s, reference(kBody, TorqueModel::none(), tumbling(), s.time)));
     return true;
   });
   EXPECT_EQ(count, 51);
   EXPECT_LT(r.steps, 50);  // large steps: the samples are interpolated, not stepped to
   EXPECT_LT(worst, 30 * 1e-11);
-  EXPECT_EQ(r.final_state.t, 5.0);
+  EXPECT_EQ(r.final_state.time, 5.0);
 }
 
 TEST(Simulation, ObserverCanStopTheRun) {
@@ -109,7 +109,7 @@ TEST(Simulation, ObserverCanStopTheRun) {
       simulate(kBody, TorqueModel::none(), tumbling(), *m, o, [&](const State&) { return ++count < 3; });
   EXPECT_TRUE(r.interrupted);
   EXPECT_EQ(count, 3);
-  EXPECT_NEAR(r.final_state.t, 0.2, 1e-15);
+  EXPECT_NEAR(r.final_state.time, 0.2, 1e-15);
 }
 
 TEST(Simulation, TracksTheInvariantErrors) {
@@ -139,7 +139,7 @@ TEST(Simulation, HeavyTopTotalEnergyIsTracked) {
   const Vec3 g(0, 0, -9.81);
   const auto gravity = TorqueModel::gravity(top, g);
   State s;
-  s.R = so3::exp(Vec3(M_PI / 3, 0, 0));
+  s.R_space_body = so3::exp(Vec3(M_PI / 3, 0, 0));
   s.omega_body = Vec3(0, 0, 50.0);
   SimulationOptions o;
   o.t_end = 2.0;
@@ -228,7 +228,7 @@ TEST(Simulation, RejectsBadOptions) {
   o.sample_dt = 0.0;
   EXPECT_THROW(simulate(kBody, TorqueModel::none(), tumbling(), *m, o), InvalidInput);
   State bad = tumbling();
-  bad.R(0, 0) += 0.1;
+  bad.R_space_body(0, 0) += 0.1;
   o.sample_dt = 0.1;
   EXPECT_THROW(simulate(kBody, TorqueModel::none(), bad, *m, o), InvalidInput);
 }

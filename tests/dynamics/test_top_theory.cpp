@@ -203,7 +203,7 @@ TEST(TopTheory, FromRigidBodyAndState) {
   const auto Rz = [](double a) { return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix(); };
   const auto Rx = [](double a) { return Eigen::AngleAxisd(a, Vec3::UnitX()).toRotationMatrix(); };
   State s;
-  s.R = Rz(phi) * Rx(theta) * Rz(psi);
+  s.R_space_body = Rz(phi) * Rx(theta) * Rz(psi);
   s.omega_body =
       Vec3(phid * std::sin(theta) * std::sin(psi) + thetad * std::cos(psi),
            phid * std::sin(theta) * std::cos(psi) - thetad * std::sin(psi), phid * std::cos(theta) + psid);

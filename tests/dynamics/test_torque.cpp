@@ -21,19 +21,19 @@ TEST(Torque, GravityIsMinusTheGradientOfItsPotential) {
   const Vec3 g(0.5, -0.2, -9.81);
   const auto gravity = TorqueModel::gravity(top, g);
   dynamics::State s;
-  s.R = so3::exp(Vec3(0.7, -0.4, 0.2));
-  const Vec3 tau = gravity->torque_body(0.0, s.R, Vec3::Zero());
+  s.R_space_body = so3::exp(Vec3(0.7, -0.4, 0.2));
+  const Vec3 tau = gravity->torque_body(0.0, s.R_space_body, Vec3::Zero());
   const double eps = 1e-6;
   for (int i = 0; i < 3; ++i) {
     dynamics::State p = s, m = s;
-    p.R = s.R * so3::exp(eps * Vec3::Unit(i));
-    m.R = s.R * so3::exp(-eps * Vec3::Unit(i));
+    p.R_space_body = s.R_space_body * so3::exp(eps * Vec3::Unit(i));
+    m.R_space_body = s.R_space_body * so3::exp(-eps * Vec3::Unit(i));
     const double dV =
         (dynamics::potential_energy(top, p, g) - dynamics::potential_energy(top, m, g)) / (2 * eps);
     EXPECT_NEAR(tau[i], -dV, 1e-9) << i;  // central difference, error ~eps²
   }
   // The moment about the pivot of the weight m g at the centre of mass, in space: (R d) × (m g).
-  EXPECT_LT(max_abs_diff(Vec3(s.R * tau), Vec3((s.R * d).cross(1.3 * g))), 1e-15);
+  EXPECT_LT(max_abs_diff(Vec3(s.R_space_body * tau), Vec3((s.R_space_body * d).cross(1.3 * g))), 1e-15);
   EXPECT_TRUE(gravity->is_gravity());
   EXPECT_EQ(gravity->gravity_space(), g);
   EXPECT_FALSE(gravity->depends_on_omega());

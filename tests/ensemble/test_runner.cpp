@@ -61,7 +61,7 @@ TEST(Runner, ResultsAreBitIdenticalForAnyThreadsAndWithOrWithoutSimd) {
         EXPECT_TRUE(same_bits(r.stats[q], ref.stats[q]))
             << method << " " << kOutputNames[q] << " threads " << threads;
       for (std::size_t i = 0; i < r.rows.size(); ++i) {
-        ASSERT_EQ(r.rows[i].final_state.R, ref.rows[i].final_state.R);
+        ASSERT_EQ(r.rows[i].final_state.R_space_body, ref.rows[i].final_state.R_space_body);
         ASSERT_EQ(std::memcmp(r.rows[i].out.data(), ref.rows[i].out.data(), sizeof(r.rows[i].out)), 0);
       }
     }
@@ -118,10 +118,10 @@ TEST(Runner, ExactAndScalarPathsAgreeWithTheClosedFormAndTheTorquedPath) {
   const SampleRow e = run_sample(s, 17, opts(1, "exact", 3.0));
   const Sample x = s.draw(17);
   const dynamics::State direct = dynamics::ExactFreeBody(x.body(), x.initial).state_at(3.0);
-  EXPECT_EQ(e.final_state.R, direct.R);
+  EXPECT_EQ(e.final_state.R_space_body, direct.R_space_body);
   // dop853 through dynamics::simulate reaches the same state to its tolerance.
   const SampleRow d = run_sample(s, 17, opts(1, "dop853", 3.0, 0.01));
-  EXPECT_LT(test::max_abs_diff(d.final_state.R, direct.R), 1e-8);
+  EXPECT_LT(test::max_abs_diff(d.final_state.R_space_body, direct.R_space_body), 1e-8);
   // Constant body torque: batched rk4 and scalar dop853 agree to rk4's error.
   const Sampler t = racket_sampler(TorqueKind::body);
   const SampleRow a = run_sample(t, 5, opts(1, "rk4", 2.0));
@@ -169,7 +169,8 @@ TEST(Runner, BlockRangesMergedInOrderEqualOneRun) {
   ASSERT_EQ(blocks.size(), n);
   EXPECT_EQ(a.rows.size() + b.rows.size(), whole.rows.size());
   EXPECT_EQ(b.rows.front().index, split * kBlockSamples);
-  EXPECT_EQ(b.rows.front().final_state.R, whole.rows[split * kBlockSamples].final_state.R);
+  EXPECT_EQ(b.rows.front().final_state.R_space_body,
+            whole.rows[split * kBlockSamples].final_state.R_space_body);
   EnsembleResult merged;
   for (const BlockSummary& block : blocks)
     merge_block(merged, block);

@@ -35,7 +35,7 @@ TEST(Sampler, SamplesArePureFunctionsOfSeedAndIndex) {
   EXPECT_EQ(a.moments, b.moments);
   EXPECT_EQ(a.axes, b.axes);
   EXPECT_EQ(a.initial.omega_body, b.initial.omega_body);
-  EXPECT_EQ(a.initial.R, b.initial.R);
+  EXPECT_EQ(a.initial.R_space_body, b.initial.R_space_body);
   EXPECT_NE(a.moments, s.draw(778).moments);
   // Adding a dispersion of another quantity leaves the moments' draws alone (separate streams).
   Dispersions d2 = d;

@@ -40,7 +40,7 @@ TEST(Report, FlipsStandBesideTheirClosedForm) {
 TEST(Report, SaysWhenInterruptedOrFailed) {
   RunSummary s = racket();
   s.result.interrupted = true;
-  s.result.final_state.t = 3.5;
+  s.result.final_state.time = 3.5;
   EXPECT_TRUE(has(format_report(s), "INTERRUPTED at t = 3.5 s"));
   s.failure = "rk4: non-finite state at t = 3.5 s";
   EXPECT_TRUE(has(format_report(s), "FAILED: rk4: non-finite state"));

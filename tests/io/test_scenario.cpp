@@ -40,7 +40,7 @@ TEST(Scenario, MinimalFileGetsTheDocumentedDefaults) {
   const Scenario sc = parse_scenario(kMinimal);
   EXPECT_EQ(sc.body.principal_moments(), Vec3(1, 2, 3));
   EXPECT_EQ(sc.initial.omega_body, Vec3(0.1, 2.0, 0.1));
-  EXPECT_EQ(sc.initial.R, Mat3::Identity());
+  EXPECT_EQ(sc.initial.R_space_body, Mat3::Identity());
   EXPECT_EQ(sc.torque_type, "none");
   EXPECT_TRUE(sc.torque->is_zero());
   EXPECT_EQ(sc.method, "dop853");
@@ -86,7 +86,7 @@ dir = "out/top"
   EXPECT_EQ(sc.simulation.sample_dt, 0.01);
   EXPECT_EQ(sc.out_dir, "out/top");
   // Oracle: the axis-angle rotation of the so3 layer.
-  EXPECT_LE(test::max_abs_diff(sc.initial.R, so3::rotation_from_axis_angle(Vec3::UnitX(), 0.3)),
+  EXPECT_LE(test::max_abs_diff(sc.initial.R_space_body, so3::rotation_from_axis_angle(Vec3::UnitX(), 0.3)),
             4 * test::kEps);
 }
 
@@ -105,7 +105,7 @@ TEST(Scenario, TheFourOrientationFormsOfOneRotationAgree) {
        }) {
     const Scenario sc = parse_scenario(replace(base, "@", orientation));
     // Degrees are converted with π/180 and go through sin/cos: a few ulps.
-    EXPECT_LE(test::max_abs_diff(sc.initial.R, expected), 8 * test::kEps) << orientation;
+    EXPECT_LE(test::max_abs_diff(sc.initial.R_space_body, expected), 8 * test::kEps) << orientation;
   }
 }
 

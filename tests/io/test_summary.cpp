@@ -19,7 +19,7 @@ RunSummary sample_summary() {
   s.principal_moments = Vec3(1, 2, 3);
   s.inertia = Vec3(1, 2, 3).asDiagonal();
   s.symmetry = "asymmetric";
-  s.result.final_state.t = 20.0;
+  s.result.final_state.time = 20.0;
   s.result.final_state.omega_body = Vec3(0.1, -2.0, 0.1);
   s.result.steps = 1234;
   s.result.wall_time_s = 0.5;

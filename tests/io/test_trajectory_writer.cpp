@@ -45,8 +45,8 @@ TEST(TrajectoryCsvWriter, RowsReadBackExactlyWithTheirInvariants) {
   std::vector<dynamics::State> states;
   for (int i = 0; i < 50; ++i) {
     dynamics::State s;
-    s.t = 0.1 * i;
-    s.R = test::random_rotation();
+    s.time = 0.1 * i;
+    s.R_space_body = test::random_rotation();
     s.omega_body = test::random_vector(3.0);
     states.push_back(s);
   }
@@ -67,7 +67,7 @@ TEST(TrajectoryCsvWriter, RowsReadBackExactlyWithTheirInvariants) {
     const auto& s = states[i];
     const Quat q = s.quaternion();
     // Shortest round-trip text: every number reads back bit for bit.
-    EXPECT_EQ(f[0], s.t);
+    EXPECT_EQ(f[0], s.time);
     EXPECT_EQ(Vec3(f[5], f[6], f[7]), s.omega_body);
     EXPECT_EQ(f[1], q.w());
     EXPECT_EQ(f[8], dynamics::total_energy(body, s, g));
@@ -83,7 +83,7 @@ TEST(TrajectoryCsvWriter, FlushHandsOverEveryWholeRow) {
   dynamics::State s;
   s.omega_body = Vec3(1, 2, 3);
   for (int i = 0; i < 7; ++i) {
-    s.t = i;
+    s.time = i;
     w.write(s);
   }
   w.flush();

@@ -24,7 +24,7 @@ namespace poinsot::analysis {
 struct LambdaAnalysisOptions {
   std::string method{dynamics::kDefaultLambdaMethod};   ///< a name of the method registry (methods.hpp)
   dynamics::IntegratorOptions integrator;               ///< dt (s), tolerances
-  double t_end = 10.0;                                  ///< s, the final time (> initial.t)
+  double t_end = 10.0;                                  ///< s, the final time (> initial.time)
   double sample_dt = 0.01;                              ///< s, the interval between checked states
   std::shared_ptr<const dynamics::TorqueModel> torque;  ///< nullptr: torque-free
   double volume_m3 = 0.0;                               ///< m³; > 0 adds the mean stress (Pa)

@@ -106,7 +106,8 @@ class ExactFreeBody {
 
 /// Vallée & Dumitriu eq. (4.2) (with ERRATA C11): the free motion of an axisymmetric body J = A·1 + (C − A)
 /// e⊗e (A, C in kg·m², e a unit vector in the body frame): with μ = ⟨e, ω0⟩, E(t) = exp[t (C/A − 1) μ j(e)],
-///     ω(t) = E(t) ω0,   R(t) = R0 exp[t j(J ω0/A)] E(t)ᵀ   (t measured from initial.t; order R·E, not E·R).
+///     ω(t) = E(t) ω0,   R(t) = R0 exp[t j(J ω0/A)] E(t)ᵀ   (t measured from initial.time; order R·E, not
+///     E·R).
 /// No validation beyond finiteness; A, C > 0.
 State axisymmetric_free_motion(double A, double C, const Vec3& axis_body, const State& initial, double t);
 

@@ -1,10 +1,10 @@
 #pragma once
 /// @file exact_integrator.hpp
 /// The exact torque-free motion (ExactFreeBody) behind the Integrator interface: step(state, dt) returns the
-/// closed-form state at state.t + dt (s). The closed-form set-up is cached for the state the integrator last
-/// produced, so a run of many steps costs one set-up; a state it did not produce (a new run, a state edited
-/// by the caller) re-initialises it. Its error does not grow with the step: order() is 0, and it offers dense
-/// output at any time (the closed form itself).
+/// closed-form state at state.time + dt (s). The closed-form set-up is cached for the state the integrator
+/// last produced, so a run of many steps costs one set-up; a state it did not produce (a new run, a state
+/// edited by the caller) re-initialises it. Its error does not grow with the step: order() is 0, and it
+/// offers dense output at any time (the closed form itself).
 
 #include <memory>
 

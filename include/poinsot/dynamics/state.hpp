@@ -13,14 +13,14 @@
 namespace poinsot::dynamics {
 
 struct State {
-  double t = 0.0;                  ///< s
-  Mat3 R = Mat3::Identity();       ///< body → space rotation
-  Vec3 omega_body = Vec3::Zero();  ///< rad/s, body frame
+  double time = 0.0;                     ///< s
+  Mat3 R_space_body = Mat3::Identity();  ///< rotation body → space
+  Vec3 omega_body = Vec3::Zero();        ///< angular velocity, body frame, rad/s
 
   /// The canonical unit quaternion (w ≥ 0) of R.
   Quat quaternion() const;
   /// The space-frame angular velocity Ω = R ω (rad/s).
-  Vec3 omega_space() const { return R * omega_body; }
+  Vec3 omega_space() const { return R_space_body * omega_body; }
 };
 
 /// ½ ωᵀ J ω (J).
