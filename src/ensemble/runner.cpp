@@ -123,7 +123,7 @@ void run_block(const Context& c, std::uint64_t first, std::uint64_t count, Sampl
     if (is_heavy_top(s)) {
       top.emplace(s.pivot_to_com, -s.torque_value);
       observer = [&top](const dynamics::State& x) {
-        top->add(x.t, x.R);
+        top->add(x.time, x.R_space_body);
         return true;
       };
     }
