@@ -1,12 +1,17 @@
 // Throughput of the ensemble's batched integrators against the scalar integrators of dynamics/ in the same
 // process: body-steps per second (items_per_second) for rk4 and dlm on free asymmetric bodies, one thread.
 // Run: build/release/bench/bench_ensemble --benchmark_filter=Ensemble
+// Also the cost per value of the statistics without rows: the quantile sketch against the running moments
+// (--benchmark_filter=Statistics).
 #include <benchmark/benchmark.h>
 
+#include <random>
 #include <vector>
 
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/ensemble/batch.hpp"
+#include "poinsot/ensemble/quantile_sketch.hpp"
+#include "poinsot/ensemble/statistics.hpp"
 
 namespace {
 
@@ -64,5 +69,40 @@ BENCHMARK_CAPTURE(BM_EnsembleBatched, dlm_simd, "dlm", ensemble::Simd::automatic
 BENCHMARK_CAPTURE(BM_EnsembleBatched, dlm_portable, "dlm", ensemble::Simd::off)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EnsembleScalar, dlm, "dlm")->Unit(benchmark::kMillisecond);
+
+/// Lognormal values over about four decades, as an output like an energy error spreads.
+std::vector<double> output_values() {
+  std::mt19937_64 rng(1);
+  std::lognormal_distribution<double> ln(0.0, 2.0);
+  std::vector<double> v(4096);
+  for (double& x : v)
+    x = ln(rng);
+  return v;
+}
+
+void BM_StatisticsRunning(benchmark::State& st) {
+  const auto v = output_values();
+  for (auto _ : st) {
+    ensemble::RunningStats s;
+    for (double x : v)
+      s.add(x);
+    benchmark::DoNotOptimize(s);
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long long>(v.size()));
+}
+
+void BM_StatisticsSketch(benchmark::State& st) {
+  const auto v = output_values();
+  ensemble::QuantileSketch s;  // kept across iterations: the steady state of a long run (buckets exist)
+  for (auto _ : st) {
+    for (double x : v)
+      s.add(x);
+    benchmark::DoNotOptimize(s);
+  }
+  st.SetItemsProcessed(st.iterations() * static_cast<long long>(v.size()));
+}
+
+BENCHMARK(BM_StatisticsRunning);
+BENCHMARK(BM_StatisticsSketch);
 
 }  // namespace

@@ -14,7 +14,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 shift || true
-all=(scenario multibody_scenario body_file mesh_stl_ascii mesh_stl_binary mesh_obj mesh_ply mesh_off robot_model)
+all=(scenario multibody_scenario body_file mesh_stl_ascii mesh_stl_binary mesh_obj mesh_ply mesh_off robot_model cli)
 harnesses=("${@:-${all[@]}}")
 [ ${#harnesses[@]} -eq 0 ] && harnesses=("${all[@]}")
 

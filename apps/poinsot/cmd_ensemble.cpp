@@ -1,5 +1,5 @@
 // poinsot ensemble SCENARIO.toml [--samples N] [--threads T] [--out DIR] [--json] [--sample K] [--no-simd]
-// [--no-per-sample]: Monte Carlo over the dispersions of the scenario's [ensemble] section
+// [--no-per-sample] [--per-rank-files]: Monte Carlo over the dispersions of the scenario's [ensemble] section
 // (docs/ensemble.md). Writes DIR/samples.csv (per-sample output on) and DIR/summary.json atomically; --sample
 // K instead runs sample K alone through the single-body run (DIR/sample_K/trajectory.csv and summary.json).
 // Ctrl-C stops after the complete rows so far, which are written and marked "interrupted"; the exit status is
@@ -41,7 +41,7 @@ struct EnsembleCliOptions {
   std::uint64_t samples = 0;
   unsigned threads = 0;
   long long sample = -1;
-  bool json = false, plot = false, no_simd = false, no_per_sample = false;
+  bool json = false, plot = false, no_simd = false, no_per_sample = false, per_rank_files = false;
 };
 
 void run_ensemble_command(const EnsembleCliOptions& c) {
@@ -70,6 +70,12 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   }
 
   const bool root = mpi.rank() == 0;
+  // Per-rank files: each rank writes its own rows, in parallel, instead of gathering them on rank 0.
+  const bool per_rank = c.per_rank_files && mpi.size() > 1 && o.keep_rows;
+  if (per_rank && c.plot) {
+    throw InvalidInput(
+        "ensemble: --plot reads samples.csv, which --per-rank-files does not write; expected one of them");
+  }
   const bool dir_existed = std::filesystem::exists(dir);
   if (root) io::prepare_output_dir(dir);  // before anything is simulated
   g_interrupted = 0;
@@ -90,8 +96,10 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
                rate > 0 ? static_cast<double>(o.samples - done) / rate : 0.0);
   };
   ensemble::EnsembleResult r;
+  ensemble::EnsembleResult own;  // this rank's rows (per-rank files)
   try {
-    r = mpi.size() > 1 ? run_ensemble_mpi(mpi, sampler, o) : ensemble::run_ensemble(sampler, o);
+    r = mpi.size() > 1 ? run_ensemble_mpi(mpi, sampler, o, per_rank ? &own.rows : nullptr)
+                       : ensemble::run_ensemble(sampler, o);
   } catch (...) {
     sigaction(SIGINT, &old_int, nullptr);
     std::error_code ignored;  // bad input found while sampling: leave no empty folder behind
@@ -100,13 +108,20 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   }
   sigaction(SIGINT, &old_int, nullptr);
   if (tty) fmt::print(stderr, "\r\033[K");
-  if (!root) return;  // rank 0 writes and reports for all ranks
   std::string written;
-  if (o.keep_rows && r.rows.size() <= kCsvRows) {
+  if (per_rank) {  // every rank its own index range, in parallel
+    const std::string stem = fmt::format("{}/samples.rank_{}", dir, mpi.rank());
+    if (own.rows.size() <= kCsvRows) io::write_file_atomic(stem + ".csv", io::ensemble_csv(own));
+    if (hdf5_available()) write_ensemble_hdf5(stem + ".h5", own);
+    written += fmt::format("{}/samples.rank_*.{} ({} ranks), ", dir, hdf5_available() ? "csv|h5" : "csv",
+                           mpi.size());
+  }
+  if (!root) return;  // rank 0 writes the summary and reports for all ranks
+  if (o.keep_rows && !per_rank && r.rows.size() <= kCsvRows) {
     io::write_file_atomic(dir + "/samples.csv", io::ensemble_csv(r));
     written += dir + "/samples.csv, ";
   }
-  if (o.keep_rows && hdf5_available()) {
+  if (o.keep_rows && !per_rank && hdf5_available()) {
     write_ensemble_hdf5(dir + "/samples.h5", r);
     written += dir + "/samples.h5, ";
   }
@@ -155,6 +170,9 @@ void register_ensemble(CLI::App& app) {
   cmd->add_flag("--no-simd", opts->no_simd, "use the portable loops of the batched kernels (same results)");
   cmd->add_flag("--no-per-sample", opts->no_per_sample,
                 "statistics only (memory independent of the samples)");
+  cmd->add_flag("--per-rank-files", opts->per_rank_files,
+                "under mpirun: each rank writes its own rows to samples.rank_R.csv (and .h5) in parallel, "
+                "rows not gathered; percentiles from quantile sketches");
   cmd->callback([opts] { run_ensemble_command(*opts); });
 }
 

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
@@ -58,6 +59,12 @@ std::vector<T> gather(const std::vector<T>& mine, int size) {
   if (!bytes.empty()) std::memcpy(static_cast<void*>(out.data()), bytes.data(), bytes.size());
   return out;
 }
+
+/// A bucket of output `output`'s quantile sketch, for the byte-wise gather.
+struct FlatBucket {
+  std::int32_t output;
+  ensemble::QuantileBucket bucket;
+};
 
 /// A SampleRow as plain numbers, for the byte-wise gather (Eigen's types are not trivially copyable).
 struct FlatRow {
@@ -121,7 +128,8 @@ MpiSession::~MpiSession() {
 }
 
 ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::Sampler& sampler,
-                                          const ensemble::EnsembleOptions& o) {
+                                          const ensemble::EnsembleOptions& o,
+                                          std::vector<ensemble::SampleRow>* own_rows) {
   const std::uint64_t n = ensemble::block_count(o.samples);
   const auto share = [&](int r) {
     return n * static_cast<std::uint64_t>(r) / static_cast<std::uint64_t>(s.size());
@@ -130,10 +138,24 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
   ensemble::EnsembleResult mine =
       ensemble::run_ensemble_blocks(sampler, o, share(s.rank()), share(s.rank() + 1), &blocks);
   const std::vector<ensemble::BlockSummary> all_blocks = gather(blocks, s.size());
+  // The quantile sketches (per-sample output off, or rows kept per rank) are integer counts: merged in any
+  // order, the same bits.
+  if (own_rows != nullptr) {
+    for (const ensemble::SampleRow& row : mine.rows)
+      for (std::size_t q = 0; q < static_cast<std::size_t>(ensemble::kOutputCount); ++q)
+        mine.sketches[q].add(row.out[q]);
+  }
+  std::vector<FlatBucket> buckets;
+  for (int q = 0; q < ensemble::kOutputCount; ++q)
+    for (const ensemble::QuantileBucket& b : mine.sketches[static_cast<std::size_t>(q)].buckets())
+      buckets.push_back({q, b});
+  const std::vector<FlatBucket> all_buckets = gather(buckets, s.size());
   std::vector<FlatRow> flat;
-  flat.reserve(mine.rows.size());
-  for (const ensemble::SampleRow& row : mine.rows)
-    flat.push_back(flatten(row));
+  if (own_rows == nullptr) {
+    flat.reserve(mine.rows.size());
+    for (const ensemble::SampleRow& row : mine.rows)
+      flat.push_back(flatten(row));
+  }
   const std::vector<FlatRow> all_rows = gather(flat, s.size());
   const long long counts[3] = {static_cast<long long>(mine.completed),
                                static_cast<long long>(mine.body_steps), mine.interrupted ? 1LL : 0LL};
@@ -141,12 +163,15 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
   MPI_Reduce(counts, totals, 3, MPI_LONG_LONG, MPI_SUM, 0, MPI_COMM_WORLD);
   double wall = 0.0;
   MPI_Reduce(&mine.wall_time_s, &wall, 1, MPI_DOUBLE, MPI_MAX, 0, MPI_COMM_WORLD);
+  if (own_rows != nullptr) *own_rows = std::move(mine.rows);
   if (s.rank() != 0) return mine;
   ensemble::EnsembleResult r;
   r.path = fmt::format("{} on {} MPI ranks", mine.path, s.size());
   r.nominal = mine.nominal;
   for (const ensemble::BlockSummary& b : all_blocks)  // in block order: rank order is block order
     ensemble::merge_block(r, b);
+  for (const FlatBucket& f : all_buckets)
+    r.sketches[static_cast<std::size_t>(f.output)].add_bucket(f.bucket);
   r.rows.reserve(all_rows.size());
   for (const FlatRow& f : all_rows)
     r.rows.push_back(unflatten(f));
@@ -163,8 +188,9 @@ MpiSession::MpiSession() = default;
 MpiSession::~MpiSession() = default;
 
 ensemble::EnsembleResult run_ensemble_mpi(const MpiSession&, const ensemble::Sampler& sampler,
-                                          const ensemble::EnsembleOptions& o) {
-  return ensemble::run_ensemble(sampler, o);
+                                          const ensemble::EnsembleOptions& o,
+                                          std::vector<ensemble::SampleRow>*) {
+  return ensemble::run_ensemble(sampler, o);  // one process: the rows stay in the result
 }
 
 #endif

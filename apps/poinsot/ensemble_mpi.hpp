@@ -3,6 +3,8 @@
 // each rank runs a contiguous range of blocks of samples (ensemble::run_ensemble_blocks); rank 0 gathers the
 // block summaries and merges them in block order (ensemble::merge_block), so the statistics are those of one
 // process bit for bit, and gathers the rows (per-sample output on) in index order. Only rank 0 writes files.
+#include <vector>
+
 #include "poinsot/ensemble/runner.hpp"
 
 namespace poinsot::cli {
@@ -28,7 +30,11 @@ class MpiSession {
 
 /// Runs this rank's share and returns, on rank 0, the whole result (statistics merged in block order, rows
 /// in index order, body steps summed, wall time the longest rank's); on other ranks their share only.
+/// With `own_rows` (per-rank files): the rows are not gathered but moved to *own_rows on every rank, and the
+/// percentiles of the result come from quantile sketches of each rank's rows (quantile_sketch.hpp), merged
+/// on rank 0; the result's rows are then empty.
 ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& session, const ensemble::Sampler& sampler,
-                                          const ensemble::EnsembleOptions& options);
+                                          const ensemble::EnsembleOptions& options,
+                                          std::vector<ensemble::SampleRow>* own_rows = nullptr);
 
 }  // namespace poinsot::cli

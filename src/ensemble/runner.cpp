@@ -8,12 +8,14 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <optional>
 #include <thread>
 
 #include <fmt/format.h>
 
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/axis_tracker.hpp"
 #include "poinsot/dynamics/exact_free_body.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
@@ -53,8 +55,15 @@ std::pair<double, Vec3> invariants(const Sample& s, const Mat3& J, const dynamic
   return {E, x.R_space_body * Jw};
 }
 
+/// A heavy top: gravity on a body held at a pivot away from its centre of mass. Its axis runs from the
+/// pivot to the centre of mass (body frame); the vertical is −g (space frame).
+bool is_heavy_top(const Sample& s) {
+  return s.torque == TorqueKind::gravity && s.has_pivot && s.pivot_to_com.norm() > 0.0 &&
+         s.torque_value.norm() > 0.0;
+}
+
 void fill_outputs(const Sample& s, const dynamics::State& final_state, double first, double second,
-                  const Context& c, SampleRow& row) {
+                  const Context& c, SampleRow& row, const dynamics::AxisTracker* top = nullptr) {
   row.index = s.index;
   row.rejected = s.rejected;
   row.repaired = s.repaired;
@@ -74,6 +83,9 @@ void fill_outputs(const Sample& s, const dynamics::State& final_state, double fi
   row.out[energy_error] =
       (free || s.torque == TorqueKind::gravity) ? std::abs(E1 - E0) / std::max(std::abs(E0), 1e-300) : kNaN;
   row.out[L_space_error] = free && L0.norm() > 0.0 ? (L1 - L0).norm() / L0.norm() : kNaN;
+  row.out[precession_rate] = top ? top->precession_rate_mean().value_or(kNaN) : kNaN;
+  row.out[nutation_frequency] = top ? top->nutation_frequency().value_or(kNaN) : kNaN;
+  row.out[nutation_amplitude] = top ? top->theta_max() - top->theta_min() : kNaN;
 }
 
 /// Runs samples [first, first + count) into rows (count ≤ kBlockSamples) by the context's path.
@@ -105,10 +117,22 @@ void run_block(const Context& c, std::uint64_t first, std::uint64_t count, Sampl
     const auto torque = s.torque_model(body);
     auto integrator =
         dynamics::make_integrator(o.method, body, torque, {.dt = o.dt, .rtol = o.rtol, .atol = o.atol});
+    // A heavy top's axis is sampled on every step (the tracker needs several samples per nutation period).
+    std::optional<dynamics::AxisTracker> top;
+    dynamics::Observer observer;
+    if (is_heavy_top(s)) {
+      top.emplace(s.pivot_to_com, -s.torque_value);
+      observer = [&top](const dynamics::State& x) {
+        top->add(x.time, x.R_space_body);
+        return true;
+      };
+    }
     const dynamics::SimulationResult r = dynamics::simulate(
-        body, torque, s.initial, *integrator, {.t_end = o.t_end, .sample_dt = o.t_end, .locate_flips = true});
+        body, torque, s.initial, *integrator,
+        {.t_end = o.t_end, .sample_dt = top ? o.dt : o.t_end, .locate_flips = true}, observer);
     const auto& f = r.flip_times;
-    fill_outputs(s, r.final_state, f.empty() ? kNaN : f[0], f.size() < 2 ? kNaN : f[1], c, rows[i]);
+    fill_outputs(s, r.final_state, f.empty() ? kNaN : f[0], f.size() < 2 ? kNaN : f[1], c, rows[i],
+                 top ? &*top : nullptr);
   }
 }
 
@@ -262,6 +286,12 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
     for (std::uint64_t k = 0; k < nb; ++k) {  // merged in block order: independent of the threads
       merge_block(result, block[k]);
       if (blocks_out) blocks_out->push_back(block[k]);
+      if (!o.keep_rows) {
+        const std::uint64_t count = std::min(kBlockSamples, range - (b0 + k) * kBlockSamples);
+        for (std::uint64_t i = 0; i < count; ++i)
+          for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
+            result.sketches[q].add(scratch[k][i].out[q]);
+      }
     }
     result.completed = std::min(range, (b0 + nb) * kBlockSamples);
     if (o.on_progress) o.on_progress(result.completed);

@@ -198,12 +198,9 @@ BodyFileResult parse_body(const std::string& toml_text, const std::string& base_
   try {
     root = toml::parse(toml_text);
   } catch (const toml::parse_error& err) {
-    // toml++ quotes the offending text, which may span lines: the message is kept on one line (found by
-    // fuzzing).
-    std::string why(err.description());
-    for (char& c : why)
-      if (c == '\n' || c == '\r') c = ' ';
-    throw InvalidInput(fmt::format("body: TOML error at line {}: {}", err.source().begin.line, why));
+    // toml++ quotes the offending text, which may span lines: Error keeps the message on one line.
+    throw InvalidInput(fmt::format("body: TOML error at line {}: {}", err.source().begin.line,
+                                   std::string(err.description())));
   }
   for (const auto& [k, v] : root) {
     if (k.str() != "part" && k.str() != "void") {

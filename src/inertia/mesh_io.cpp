@@ -7,7 +7,6 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <system_error>
 #include <unordered_map>
@@ -18,6 +17,7 @@
 #include <fmt/format.h>
 #include <assimp/Importer.hpp>
 
+#include "ply_check.hpp"
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::inertia {
@@ -91,54 +91,6 @@ struct Builder {
   }
 };
 
-/// Checks the header of a PLY file before assimp reads it: assimp 5.2.5 loops without end on some malformed
-/// headers (found by fuzzing: a header cut short inside a property line). Accepted: "ply", then lines
-/// `format ascii|binary_little_endian|binary_big_endian V`, `comment ...`, `obj_info ...`, `element NAME N`,
-/// `property TYPE NAME` or `property list TYPE TYPE NAME`, up to `end_header`, within the first 64 KiB.
-void check_ply_header(const std::string& path) {
-  // Every element takes at least one byte: a count above the file's size is refused before assimp allocates
-  // for it (found by fuzzing: 3·10^8 faces declared in a 200-byte file).
-  std::error_code ec;
-  const auto file_bytes = static_cast<unsigned long long>(std::filesystem::file_size(path, ec));
-  std::ifstream in(path, std::ios::binary);
-  std::string header(65536, '\0');
-  in.read(header.data(), static_cast<std::streamsize>(header.size()));
-  header.resize(static_cast<std::size_t>(in.gcount()));
-  std::istringstream lines(header);
-  std::string line;
-  int number = 0;
-  const auto fail = [&](const std::string& why) {
-    throw InvalidInput(
-        fmt::format("mesh: \"{}\": PLY header line {}: {}; expected a PLY header ending in end_header", path,
-                    number, why));
-  };
-  while (std::getline(lines, line)) {
-    ++number;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    std::istringstream words(line);
-    std::vector<std::string> w;
-    for (std::string word; words >> word;)
-      w.push_back(word);
-    if (number == 1) {
-      if (w.size() != 1 || w[0] != "ply") fail("not \"ply\"");
-      continue;
-    }
-    if (w.empty()) fail("empty");
-    const std::string& k = w[0];
-    if (k == "end_header") return;
-    if (k == "comment" || k == "obj_info") continue;
-    const bool ok =
-        (k == "format" && w.size() == 3 &&
-         (w[1] == "ascii" || w[1] == "binary_little_endian" || w[1] == "binary_big_endian")) ||
-        (k == "element" && w.size() == 3 && !w[2].empty() && w[2].size() <= 18 &&
-         w[2].find_first_not_of("0123456789") == std::string::npos && std::stoull(w[2]) <= file_bytes) ||
-        (k == "property" && (w.size() == 3 || (w.size() == 5 && w[1] == "list")));
-    if (!ok) fail("malformed " + k.substr(0, 20));
-  }
-  ++number;
-  fail("no end_header");
-}
-
 /// The vertex and face counts of an OFF file (the first two numbers after the keyword and comments) must not
 /// exceed the file's size in bytes, each vertex and face taking at least one: assimp allocates for the counts
 /// first (found by fuzzing: 4·10^24 vertices declared in a 100-byte file).
@@ -192,7 +144,7 @@ TriangleMesh load_mesh(const std::string& path, const MeshLimits& limits) {
                     bytes, limits.max_file_bytes));
   }
   if (std::filesystem::path(path).extension() == ".ply" || std::filesystem::path(path).extension() == ".PLY")
-    check_ply_header(path);
+    detail::check_ply_file(path);
   if (std::filesystem::path(path).extension() == ".off" || std::filesystem::path(path).extension() == ".OFF")
     check_off_counts(path);
   Assimp::Importer importer;

@@ -61,8 +61,12 @@ std::string ensemble_summary_json(const EnsembleScenario& sc, const ensemble::En
   j["wall_time_s"] = r.wall_time_s;
   j["body_steps_per_s"] = number(r.wall_time_s > 0 ? static_cast<double>(r.body_steps) / r.wall_time_s : NAN);
   j["samples_per_s"] = number(r.wall_time_s > 0 ? static_cast<double>(r.completed) / r.wall_time_s : NAN);
-  j["percentile_method"] = r.rows.empty() ? "none (per-sample output off: mean, std, min and max only)"
-                                          : "exact order statistics, linear interpolation (Hyndman-Fan 7)";
+  j["percentile_method"] =
+      r.rows.empty() ? fmt::format(
+                           "relative-error sketch (per-sample output off): |P - exact| <= {} * max(|x_lo|, "
+                           "|x_hi|), x_lo and x_hi the order statistics interpolated (Hyndman-Fan 7)",
+                           ensemble::kQuantileRelativeAccuracy)
+                     : "exact order statistics, linear interpolation (Hyndman-Fan 7)";
   json outputs = json::object();
   for (int q = 0; q < ensemble::kOutputCount; ++q) {
     const ensemble::RunningStats& s = r.stats[static_cast<std::size_t>(q)];
@@ -85,6 +89,12 @@ std::string ensemble_summary_json(const EnsembleScenario& sc, const ensemble::En
         p[fmt::format("P{}", pc)] = number(ensemble::percentile(v, pc));
       o_j["percentiles"] = p;
       o_j["histogram"] = {{"lo", s.min}, {"hi", s.max}, {"counts", ensemble::histogram(v, s.min, s.max, 20)}};
+    } else if (const ensemble::QuantileSketch& sketch = r.sketches[static_cast<std::size_t>(q)];
+               sketch.count() > 0) {
+      json p = json::object();
+      for (double pc : ensemble::kPercentiles)
+        p[fmt::format("P{}", pc)] = number(sketch.percentile(pc));
+      o_j["percentiles"] = p;
     }
     outputs[ensemble::kOutputNames[q]] = o_j;
   }

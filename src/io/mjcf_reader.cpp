@@ -1,10 +1,12 @@
-// The MJCF (MuJoCo) reader of robot_model.hpp: every <body> under <worldbody>, its <inertial> and <geom>s.
+// The MJCF (MuJoCo) reader of robot_model.hpp: every <body> under <worldbody>, its <inertial> and <geom>s,
+// the geoms and mesh assets with their default classes (mjcf_defaults.hpp).
 #include <cmath>
 #include <filesystem>
 #include <map>
 
 #include <fmt/format.h>
 
+#include "mjcf_defaults.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/so3/quaternion.hpp"
 #include "robot_readers.hpp"
@@ -17,8 +19,9 @@ using tinyxml2::XMLElement;
 /// The orientation attributes MJCF allows besides quat; their meaning depends on <compiler angle eulerseq>.
 constexpr const char* kOtherOrientations[] = {"axisangle", "euler", "xyaxes", "zaxis"};
 
-Mat3 quat_attribute(const XmlSource& xml, const XMLElement& e) {
-  auto q = xml.numbers_attribute(e, "quat", 4);
+/// The rotation of quaternion `q` (w x y z, normalised here) written by `e`; identity when absent.
+Mat3 rotation_of_quat(const XmlSource& xml, const XMLElement& e,
+                      const std::optional<std::vector<double>>& q) {
   if (!q) return Mat3::Identity();
   const double norm =
       std::sqrt((*q)[0] * (*q)[0] + (*q)[1] * (*q)[1] + (*q)[2] * (*q)[2] + (*q)[3] * (*q)[3]);
@@ -42,7 +45,7 @@ void read_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& 
     throw InvalidInput(
         fmt::format("{}: missing attribute mass; expected the body's mass (kg)", xml.where(inertial)));
   link.mass = (*mass)[0];
-  link.R_link_inertial = quat_attribute(xml, inertial);
+  link.R_link_inertial = rotation_of_quat(xml, inertial, xml.numbers_attribute(inertial, "quat", 4));
   auto diag = xml.numbers_attribute(inertial, "diaginertia", 3);
   auto full = xml.numbers_attribute(inertial, "fullinertia", 6);
   if (diag.has_value() == full.has_value()) {
@@ -79,7 +82,7 @@ struct MeshAssets {
   std::string dir;                                            // folder of the mesh files
 };
 
-MeshAssets read_assets(const XmlSource& xml, const std::string& base_dir) {
+MeshAssets read_assets(const XmlSource& xml, const MjcfDefaults& defaults, const std::string& base_dir) {
   MeshAssets a;
   a.dir = base_dir;
   for (const XMLElement* c = xml.root()->FirstChildElement("compiler"); c != nullptr;
@@ -99,28 +102,33 @@ MeshAssets read_assets(const XmlSource& xml, const std::string& base_dir) {
       if (file == nullptr) continue;
       const char* name = m->Attribute("name");
       const std::string key = name != nullptr ? name : std::filesystem::path(file).stem().string();
+      const MjcfAttributes attributes(xml, *m,
+                                      defaults.values(MjcfDefaults::class_of(*m, false), "mesh", *m));
       Vec3 scale = Vec3::Ones();
-      if (auto s = xml.numbers_attribute(*m, "scale", 3)) scale = Vec3((*s)[0], (*s)[1], (*s)[2]);
+      if (auto s = attributes.numbers("scale", 3)) scale = Vec3((*s)[0], (*s)[1], (*s)[2]);
       a.files[key] = {file, scale};
     }
   }
   return a;
 }
 
-void read_geom(const XmlSource& xml, const XMLElement& geom, const MeshAssets& assets, RobotLink& link) {
+void read_geom(const XmlSource& xml, const XMLElement& geom, const MjcfDefaults& defaults,
+               const MeshAssets& assets, RobotLink& link) {
   LinkGeometry g;
   g.element = "geom";
-  const char* type_attr = geom.Attribute("type");
+  const MjcfAttributes attributes(xml, geom,
+                                  defaults.values(MjcfDefaults::class_of(geom, true), "geom", geom));
+  const char* type_attr = attributes.get("type").text;
   const std::string type = type_attr != nullptr ? type_attr : "sphere";
   for (const char* other : kOtherOrientations) {
-    if (geom.Attribute(other) != nullptr) {
-      link.notes.push_back(
-          fmt::format("{}: orientation given by {}; skipped (quat is understood)", xml.where(geom), other));
+    if (const MjcfValue v = attributes.get(other); v.text != nullptr) {
+      link.notes.push_back(fmt::format("{}: orientation given by {}; skipped (quat is understood)",
+                                       xml.where(*v.owner), other));
       return;
     }
   }
   if (type == "mesh") {
-    const char* mesh = geom.Attribute("mesh");
+    const char* mesh = attributes.get("mesh").text;
     const auto it = mesh != nullptr ? assets.files.find(mesh) : assets.files.end();
     if (it == assets.files.end()) {
       link.notes.push_back(fmt::format("{}: mesh asset not found; skipped", xml.where(geom)));
@@ -139,14 +147,13 @@ void read_geom(const XmlSource& xml, const XMLElement& geom, const MeshAssets& a
         fmt::format("{}: mesh placed in its file's own frame (MuJoCo re-centres meshes)", xml.where(geom)));
   } else if (type == "sphere" || type == "capsule" || type == "cylinder" || type == "box" ||
              type == "ellipsoid") {
-    const char* size_attr = geom.Attribute("size");
+    const char* size_attr = attributes.get("size").text;
     auto size = parse_numbers(size_attr != nullptr ? size_attr : "");
     const std::size_t needed = type == "sphere" ? 1 : (type == "capsule" || type == "cylinder") ? 2 : 3;
-    auto fromto = xml.numbers_attribute(geom, "fromto", 6);
+    auto fromto = attributes.numbers("fromto", 6);
     const std::size_t given = size ? size->size() : 0;
     if (given < (fromto ? 1 : needed)) {
-      link.notes.push_back(fmt::format("{}: {} without size (default classes are not applied); skipped",
-                                       xml.where(geom), type));
+      link.notes.push_back(fmt::format("{}: {} without size; skipped", xml.where(geom), type));
       return;
     }
     const auto& s = *size;
@@ -181,16 +188,18 @@ void read_geom(const XmlSource& xml, const XMLElement& geom, const MeshAssets& a
   } else {
     return;  // plane, hfield, sdf: no volume of a link
   }
-  if (auto pos = xml.numbers_attribute(geom, "pos", 3))
-    g.position_link = Vec3((*pos)[0], (*pos)[1], (*pos)[2]);
-  g.R_link_geometry = quat_attribute(xml, geom);
+  if (auto pos = attributes.numbers("pos", 3)) g.position_link = Vec3((*pos)[0], (*pos)[1], (*pos)[2]);
+  const MjcfValue quat = attributes.get("quat");
+  g.R_link_geometry =
+      rotation_of_quat(xml, quat.owner != nullptr ? *quat.owner : geom, attributes.numbers("quat", 4));
   link.geometry.push_back(std::move(g));
 }
 
 }  // namespace
 
 void read_mjcf(const XmlSource& xml, const std::string& base_dir, RobotModel& model) {
-  const MeshAssets assets = read_assets(xml, base_dir);
+  const MjcfDefaults defaults(xml);
+  const MeshAssets assets = read_assets(xml, defaults, base_dir);
   std::vector<const XMLElement*> stack;
   for (const XMLElement* w = xml.root()->FirstChildElement("worldbody"); w != nullptr;
        w = w->NextSiblingElement("worldbody"))
@@ -213,7 +222,7 @@ void read_mjcf(const XmlSource& xml, const std::string& base_dir, RobotModel& mo
     link.line = e->GetLineNum();
     if (const XMLElement* inertial = e->FirstChildElement("inertial")) read_inertial(xml, *inertial, link);
     for (const XMLElement* g = e->FirstChildElement("geom"); g != nullptr; g = g->NextSiblingElement("geom"))
-      read_geom(xml, *g, assets, link);
+      read_geom(xml, *g, defaults, assets, link);
     model.links.push_back(std::move(link));
   }
 }

@@ -13,11 +13,11 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/axis_tracker.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/dynamics/top_theory.hpp"
 #include "poinsot/inertia/principal_axes.hpp"
-#include "poinsot/io/axis_tracker.hpp"
 #include "poinsot/io/summary.hpp"
 #include "poinsot/io/trajectory_writer.hpp"
 #include "run_lambda.hpp"
@@ -148,7 +148,7 @@ RunSummary run_scenario(const Scenario& sc, const RunOptions& options) {
     csv.emplace(sum.trajectory_file, sc.body, sc.gravity_space);
   }
   analysis::LambdaTracker lambda(sc.body, sc.torque, sc.initial);
-  std::optional<AxisTracker> tracker;
+  std::optional<dynamics::AxisTracker> tracker;
   if (sum.top) tracker.emplace(sum.top->axis_body, sum.top->direction_space);
 
   bool stopped = false;

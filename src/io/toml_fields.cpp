@@ -20,10 +20,9 @@ toml::table parse_toml(std::string_view text, std::string_view source) {
     return toml::parse(text, source);
   } catch (const toml::parse_error& e) {
     const auto& where = e.source().begin;
-    std::string why(e.description());  // may quote text over several lines: kept on one line
-    for (char& c : why)
-      if (c == '\n' || c == '\r') c = ' ';
-    throw InvalidInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column, why));
+    // toml++ may quote text over several lines: Error keeps the message on one line.
+    throw InvalidInput(fmt::format("{}:{}:{}: TOML syntax error: {}", source, where.line, where.column,
+                                   std::string(e.description())));
   }
 }
 

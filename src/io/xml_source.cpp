@@ -79,15 +79,14 @@ void collect(const tinyxml2::XMLElement* e, std::vector<const tinyxml2::XMLEleme
   }
 }
 
-/// `s` on one line and at most 80 characters, for messages.
+}  // namespace
+
 std::string one_line(std::string s) {
   for (char& c : s)
     if (c == '\n' || c == '\r') c = ' ';
   if (s.size() > 80) s = s.substr(0, 77) + "...";
   return s;
 }
-
-}  // namespace
 
 std::optional<std::vector<double>> parse_numbers(std::string_view text) {
   std::vector<double> values;

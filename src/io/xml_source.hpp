@@ -65,6 +65,9 @@ class XmlSource {
   std::unordered_map<const tinyxml2::XMLElement*, std::size_t> start_;  // offset of the element's '<'
 };
 
+/// `s` on one line (line breaks as spaces) and at most 80 characters, for messages.
+std::string one_line(std::string s);
+
 /// Parses white-space separated numbers (C locale, strtod syntax without hex); nothing when a token is not a
 /// finite number.
 std::optional<std::vector<double>> parse_numbers(std::string_view text);

@@ -46,3 +46,51 @@ def test_two_ranks_equal_one_process(cli, tmp_path):
     b = json.loads((tmp_path / "two/summary.json").read_text())
     assert a["outputs"] == b["outputs"]
     assert a["completed"] == b["completed"] == 2500
+
+
+@pytest.mark.skipif(not MPIEXEC, reason="poinsot was built without MPI")
+def test_two_ranks_without_rows_give_the_percentiles_of_one_process(cli, tmp_path):
+    # Per-sample output off: the percentiles come from the quantile sketches, whose integer counts are
+    # gathered from the ranks: the same numbers as one process, bit for bit.
+    path = tmp_path / "ens.toml"
+    path.write_text(SCENARIO)
+    one = cli("ensemble", path, "--threads", "1", "--no-per-sample", "--out", tmp_path / "one")
+    assert one.returncode == 0, one.stderr
+    two = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "2", os.environ["POINSOT_CLI"],
+                          "ensemble", str(path), "--threads", "1", "--no-per-sample", "--out",
+                          str(tmp_path / "two")], capture_output=True, text=True, timeout=120)
+    assert two.returncode == 0, two.stderr
+    a = json.loads((tmp_path / "one/summary.json").read_text())
+    b = json.loads((tmp_path / "two/summary.json").read_text())
+    assert "sketch" in a["percentile_method"]
+    assert set(a["outputs"]["attitude_error"]["percentiles"]) == {"P1", "P5", "P50", "P95", "P99", "P99.9"}
+    assert a["outputs"] == b["outputs"]
+    assert not (tmp_path / "two/samples.csv").exists()
+
+
+@pytest.mark.skipif(not MPIEXEC, reason="poinsot was built without MPI")
+def test_per_rank_files_hold_the_rows_of_one_process_in_rank_order(cli, tmp_path):
+    path = tmp_path / "ens.toml"
+    path.write_text(SCENARIO)
+    one = cli("ensemble", path, "--threads", "1", "--out", tmp_path / "one")
+    assert one.returncode == 0, one.stderr
+    two = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "2", os.environ["POINSOT_CLI"],
+                          "ensemble", str(path), "--threads", "1", "--per-rank-files", "--out",
+                          str(tmp_path / "two")], capture_output=True, text=True, timeout=120)
+    assert two.returncode == 0, two.stderr
+    assert not (tmp_path / "two/samples.csv").exists()
+    rank0 = (tmp_path / "two/samples.rank_0.csv").read_text().splitlines(keepends=True)
+    rank1 = (tmp_path / "two/samples.rank_1.csv").read_text().splitlines(keepends=True)
+    assert rank0[0] == rank1[0]  # the same header
+    assert len(rank0) > 1 and len(rank1) > 1  # both ranks wrote rows
+    assert "".join(rank0 + rank1[1:]) == (tmp_path / "one/samples.csv").read_text()
+    a = json.loads((tmp_path / "one/summary.json").read_text())
+    b = json.loads((tmp_path / "two/summary.json").read_text())
+    assert "sketch" in b["percentile_method"]
+    for name, out in a["outputs"].items():  # the mergeable statistics are those of one process
+        for key in ("count", "nan_count", "mean", "std", "min", "max"):
+            assert out[key] == b["outputs"][name][key], (name, key)
+        if "percentiles" in out:  # exact from the rows against the sketch's bound (alpha = 1e-3)
+            for p, exact in out["percentiles"].items():
+                assert abs(b["outputs"][name]["percentiles"][p] - exact) <= 1e-3 * max(
+                    abs(out["min"]), abs(out["max"])) * (1 + 1e-9), (name, p)

@@ -121,5 +121,12 @@ TEST(BodyFile, TomlErrorQuotingSeveralLinesIsOneLine) {
   EXPECT_EQ(m.find('\n'), std::string::npos) << m;
 }
 
+TEST(BodyFile, ShapeNameOverSeveralLinesIsQuotedOnOneLine) {
+  // A TOML multi-line string as the shape name, quoted back in the refusal (a fuzzing finding).
+  const std::string m = message_of("[[part]]\nshape = \"\"\"\nrod\nbox\"\"\"\nmass = 1\n");
+  EXPECT_NE(m.find("shape: got \"rod box\", expected one of point"), std::string::npos) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+}
+
 }  // namespace
 }  // namespace poinsot::inertia

@@ -10,10 +10,18 @@
 
 namespace poinsot {
 
-/// Base class of every exception poinsot throws on purpose.
+/// Base class of every exception poinsot throws on purpose. The message is kept on one line: a line break in
+/// it (from quoted input, such as a TOML string written over several lines) becomes a space.
 class Error : public std::runtime_error {
  public:
-  explicit Error(const std::string& message) : std::runtime_error(message) {}
+  explicit Error(const std::string& message) : std::runtime_error(on_one_line(message)) {}
+
+ private:
+  static std::string on_one_line(std::string message) {
+    for (char& c : message)
+      if (c == '\n' || c == '\r') c = ' ';
+    return message;
+  }
 };
 
 /// Bad input: a value out of its domain, a malformed file, an inconsistent model. Nothing was computed.

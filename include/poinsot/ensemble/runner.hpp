@@ -10,11 +10,18 @@
 ///   attitude_error        rad, the angle between the sample's final attitude and the nominal sample's
 ///   energy_error          |E − E₀|/|E₀| at t_end (free body or gravity; NaN under other torques)
 ///   L_space_error         |L − L₀|/|L₀| at t_end (free body; NaN otherwise)
+///   precession_rate       rad/s, heavy tops: the mean precession rate of the axis (pivot → centre of mass)
+///                         about the vertical, measured by dynamics::AxisTracker on every step (NaN
+///                         otherwise)
+///   nutation_frequency    rad/s, heavy tops: 2π/T_nut from the minima of θ (NaN: fewer than two minima)
+///   nutation_amplitude    rad, heavy tops: θ_max − θ_min of the axis's angle from the vertical
 ///
 /// Work is split into blocks of kBlockSamples consecutive samples; threads take whole blocks, and the
 /// statistics of the blocks are merged in block order after each round of blocks, so the results are
-/// bit-identical for any number of threads and with or without SIMD. Memory: the stored rows (when kept)
-/// plus O(threads · kBlockSamples), independent of the number of samples otherwise.
+/// bit-identical for any number of threads and with or without SIMD. Without stored rows the outputs are
+/// also counted in quantile sketches (integer counts: the same for any threads or ranks), for percentiles.
+/// Memory: the stored rows (when kept) plus O(threads · kBlockSamples) and the sketches' buckets,
+/// independent of the number of samples otherwise.
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -22,6 +29,7 @@
 #include <vector>
 
 #include "poinsot/ensemble/batch.hpp"
+#include "poinsot/ensemble/quantile_sketch.hpp"
 #include "poinsot/ensemble/sampler.hpp"
 #include "poinsot/ensemble/statistics.hpp"
 
@@ -36,14 +44,18 @@ enum Output {
   attitude_error,
   energy_error,
   L_space_error,
+  precession_rate,
+  nutation_frequency,
+  nutation_amplitude,
   kOutputCount
 };
 /// The outputs' names, as in the CSV header and summary.json.
-inline constexpr const char* kOutputNames[kOutputCount] = {"first_flip_time",      "flip_interval",
-                                                           "flip_interval_theory", "attitude_error",
-                                                           "energy_error",         "L_space_error"};
+inline constexpr const char* kOutputNames[kOutputCount] = {
+    "first_flip_time", "flip_interval",   "flip_interval_theory", "attitude_error",    "energy_error",
+    "L_space_error",   "precession_rate", "nutation_frequency",   "nutation_amplitude"};
 /// Their units.
-inline constexpr const char* kOutputUnits[kOutputCount] = {"s", "s", "s", "rad", "", ""};
+inline constexpr const char* kOutputUnits[kOutputCount] = {"s", "s",     "s",     "rad", "",
+                                                           "",  "rad/s", "rad/s", "rad"};
 
 /// One sample's inputs and outputs.
 struct SampleRow {
@@ -77,6 +89,8 @@ struct EnsembleOptions {
 struct EnsembleResult {
   std::vector<SampleRow> rows;  ///< in index order (keep_rows)
   std::array<RunningStats, kOutputCount> stats;
+  /// Percentiles without the rows (keep_rows off; empty sketches otherwise): quantile_sketch.hpp.
+  std::array<QuantileSketch, kOutputCount> sketches;
   std::uint64_t completed = 0;  ///< samples done (all, unless interrupted)
   bool interrupted = false;
   std::int64_t rejected = 0;  ///< redraws of the reject policy, all samples

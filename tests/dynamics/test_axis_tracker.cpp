@@ -1,4 +1,4 @@
-#include "poinsot/io/axis_tracker.hpp"
+#include "poinsot/dynamics/axis_tracker.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/so3/axis_angle.hpp"
 
-namespace poinsot::io {
+namespace poinsot::dynamics {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -62,4 +62,4 @@ TEST(AxisTracker, TooFewSamplesGiveNothing) {
 }
 
 }  // namespace
-}  // namespace poinsot::io
+}  // namespace poinsot::dynamics

@@ -18,7 +18,7 @@
 
 #include "poinsot/core/types.hpp"
 
-namespace poinsot::io {
+namespace poinsot::dynamics {
 
 class AxisTracker {
  public:
@@ -53,4 +53,4 @@ class AxisTracker {
   double t_min_first_ = 0.0, t_min_last_ = 0.0;
 };
 
-}  // namespace poinsot::io
+}  // namespace poinsot::dynamics

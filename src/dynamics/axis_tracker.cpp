@@ -1,5 +1,5 @@
 // Precession and nutation of a body axis from samples (see axis_tracker.hpp).
-#include "poinsot/io/axis_tracker.hpp"
+#include "poinsot/dynamics/axis_tracker.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 
-namespace poinsot::io {
+namespace poinsot::dynamics {
 
 AxisTracker::AxisTracker(const Vec3& axis_body, const Vec3& direction_space, double min_nutation_amplitude)
     : min_amplitude_(min_nutation_amplitude) {
@@ -69,4 +69,4 @@ std::optional<double> AxisTracker::nutation_frequency() const {
   return 2.0 * std::numbers::pi * (minima_ - 1) / (t_min_last_ - t_min_first_);
 }
 
-}  // namespace poinsot::io
+}  // namespace poinsot::dynamics
