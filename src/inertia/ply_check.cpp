@@ -138,6 +138,12 @@ Header read_header(const std::string& path, unsigned long long file_bytes) {
     ++number;
     h.body_offset += line.size() + (lines.eof() ? 0 : 1);
     if (!line.empty() && line.back() == '\r') line.pop_back();
+    // A header is plain text: a control character other than a tab (a vertical tab after end_header, found
+    // by fuzzing) makes assimp's ASCII reader loop forever.
+    const auto control = std::find_if(
+        line.begin(), line.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 && c != '\t'; });
+    if (control != line.end())
+      fail(fmt::format("control character 0x{:02x}", static_cast<unsigned char>(*control)));
     std::istringstream words(line);
     std::vector<std::string> w;
     for (std::string word; words >> word;)
@@ -148,7 +154,10 @@ Header read_header(const std::string& path, unsigned long long file_bytes) {
     }
     if (w.empty()) fail("empty");
     const std::string& k = w[0];
-    if (k == "end_header") return h;
+    if (k == "end_header") {
+      if (w.size() != 1) fail("text after end_header");
+      return h;
+    }
     if (k == "comment" || k == "obj_info") continue;
     if (k == "format" && w.size() == 3 &&
         (w[1] == "ascii" || w[1] == "binary_little_endian" || w[1] == "binary_big_endian")) {

@@ -143,5 +143,20 @@ TEST_F(PlyCheck, TruncatedBodiesAndUnknownTypesAreRefused) {
   }
 }
 
+TEST_F(PlyCheck, ControlCharactersAndTextAfterEndHeaderAreRefused) {
+  // Found by fuzzing: "end_header" followed by a vertical tab and more text on its line made assimp's ASCII
+  // reader loop forever. The valid ASCII triangle below reads; each corruption of it is refused in one line.
+  const std::string head =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n";
+  const std::string body = "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_EQ(load_mesh(write("triangle.ply", head + "end_header\n" + body)).triangles.size(), 1u);
+  test::expect_has(refusal("vtab.ply", head + "end_header\v0 0 0end_header\n" + body),
+                   {"PLY header line 9", "control character 0x0b"});
+  test::expect_has(refusal("after.ply", head + "end_header 0 0 0\n" + body),
+                   {"PLY header line 9", "text after end_header"});
+  test::expect_has(refusal("formfeed.ply", "ply\nformat ascii 1.0\f\n" + body), {"control character 0x0c"});
+}
+
 }  // namespace
 }  // namespace poinsot::inertia
