@@ -390,6 +390,18 @@ def _plot_multibody_run(plt, folder):
     return written
 
 
+def _sibling_module(name):
+    """The module `name` of this package. plot.py also runs as a script (the command line's --plot), possibly
+    from a build without the compiled module (the sanitizer build), where importing the package would fail on
+    _core: then the module is imported from this file's folder, which a script has first on sys.path."""
+    import importlib
+
+    try:
+        return importlib.import_module(f"poinsot.{name}")
+    except ImportError:
+        return importlib.import_module(name)
+
+
 def plot_run(folder):
     """Draws the figures of a run folder; returns the list of PNG paths written."""
     import matplotlib
@@ -403,13 +415,9 @@ def plot_run(folder):
     if kind == "multibody":
         return _plot_multibody_run(plt, folder)
     if kind == "ensemble":
-        from poinsot.plot_ensemble import plot_ensemble_run  # absolute: plot.py also runs as a script
-
-        return plot_ensemble_run(folder)
+        return _sibling_module("plot_ensemble").plot_ensemble_run(folder)
     if kind == "optimal":
-        from poinsot.plot_optimal import plot_optimal_run  # absolute: plot.py also runs as a script
-
-        return plot_optimal_run(folder)
+        return _sibling_module("plot_optimal").plot_optimal_run(folder)
     cols, summary = load_run(folder)
     if len(cols["t"]) < 2:
         raise ValueError(f"plot: {folder / 'trajectory.csv'} has {len(cols['t'])} rows; expected at least 2")
