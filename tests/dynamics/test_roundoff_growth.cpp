@@ -15,6 +15,7 @@
 #include "poinsot/dynamics/state.hpp"
 #include "poinsot/so3/exp_log.hpp"
 #include "poinsot_test.hpp"
+#include "splitmix_draws.hpp"
 
 namespace poinsot::test {
 namespace {
@@ -34,21 +35,7 @@ constexpr bool kFull = false;
 constexpr double kDt = 1e-3;  // s
 
 // The ensemble: J = diag(1, 2, 3) kg·m², ω0 = (0.01, 2, 0.01) rad/s (near the intermediate axis: a flip
-// every ~9 s) + δ, |δᵢ| ≤ 1e-3 rad/s, R0 = exp(j(ε)), |εᵢ| ≤ 1e-3 rad, from a fixed-seed SplitMix64.
-struct Draws {
-  std::uint64_t s = 20;
-  double uniform() {  // [−1, 1)
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
-  }
-  Vec3 vec(double scale) {
-    const double a = uniform(), b = uniform(), c = uniform();
-    return scale * Vec3(a, b, c);
-  }
-};
+// every ~9 s) + δ, |δᵢ| ≤ 1e-3 rad/s, R0 = exp(j(ε)), |εᵢ| ≤ 1e-3 rad, drawn by SplitMixDraws.
 
 // RMS over the ensemble of the relative errors of energy, L_space and |L| after each checkpoint.
 struct Growth {
@@ -60,7 +47,7 @@ Growth measure(const std::string& method, const std::vector<long>& checkpoints) 
   const RigidBody body = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
   Growth g{checkpoints, std::vector<double>(checkpoints.size()), std::vector<double>(checkpoints.size()),
            std::vector<double>(checkpoints.size())};
-  Draws draws;
+  SplitMixDraws draws;
   IntegratorOptions options;
   options.dt = kDt;
   for (int m = 0; m < kMembers; ++m) {

@@ -13,6 +13,7 @@
 #include "poinsot/so3/exp_log.hpp"
 #include "poinsot/so3/projection.hpp"
 #include "poinsot_test.hpp"
+#include "splitmix_draws.hpp"
 
 namespace poinsot::multibody::test {
 namespace {
@@ -29,28 +30,13 @@ constexpr bool kFull = false;
 constexpr double kDt = 1e-3;  // s
 
 // J = diag(1, 2, 3) kg·m², ω0 = (0.01, 2, 0.01) rad/s + δ, |δᵢ| ≤ 1e-3 rad/s, R0 = exp(j(ε)), |εᵢ| ≤ 1e-3
-// rad, from a fixed-seed SplitMix64 (as bench/brouwer_growth.cpp).
-struct Draws {
-  std::uint64_t s = 20;
-  double uniform() {  // [−1, 1)
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
-  }
-  Vec3 vec(double scale) {
-    const double a = uniform(), b = uniform(), c = uniform();
-    return scale * Vec3(a, b, c);
-  }
-};
-
+// rad, drawn by SplitMixDraws (the generator and seed of bench/brouwer_growth.cpp).
 // RMS over the ensemble of ‖RᵀR − I‖_F after each checkpoint.
 std::vector<double> orthogonality_rms(const MultibodyMethodInfo& info, const std::vector<long>& checkpoints) {
   System system;
   system.add_body_from_inertia("body", 1.0, Vec3(1.0, 2.0, 3.0).asDiagonal());
   std::vector<double> rms(checkpoints.size(), 0.0);
-  Draws draws;
+  poinsot::test::SplitMixDraws draws;
   for (int m = 0; m < kMembers; ++m) {
     State s;
     s.bodies.resize(1);
