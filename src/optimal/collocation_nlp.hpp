@@ -20,10 +20,11 @@
 
 #include "collocation_dynamics.hpp"
 #include "poinsot/optimal/problem.hpp"
+#include "sparse_nlp.hpp"
 
 namespace poinsot::optimal::detail {
 
-class CollocationNlp {
+class CollocationNlp final : public SparseNlp {
  public:
   static constexpr int kPointVars = 11;
   static constexpr int kStateVars = 7;
@@ -33,8 +34,8 @@ class CollocationNlp {
 
   int intervals() const { return static_cast<int>(tau_.size()) - 1; }
   int points() const { return 2 * intervals() + 1; }
-  int num_variables() const { return kPointVars * points() + 1; }
-  int num_constraints() const;
+  int num_variables() const override { return kPointVars * points() + 1; }
+  int num_constraints() const override;
   int time_index() const { return kPointVars * points(); }
   const std::vector<double>& tau() const { return tau_; }
   const ReorientationProblem& problem() const { return problem_; }
@@ -42,18 +43,23 @@ class CollocationNlp {
 
   void variable_bounds(std::vector<double>& lower, std::vector<double>& upper) const;
   void constraint_bounds(std::vector<double>& lower, std::vector<double>& upper) const;
+  void bounds(std::vector<double>& x_lower, std::vector<double>& x_upper, std::vector<double>& g_lower,
+              std::vector<double>& g_upper) const override {
+    variable_bounds(x_lower, x_upper);
+    constraint_bounds(g_lower, g_upper);
+  }
 
-  double objective(const double* z) const;
-  void objective_gradient(const double* z, double* grad) const;
-  void constraints(const double* z, double* g) const;
+  double objective(const double* z) const override;
+  void objective_gradient(const double* z, double* grad) const override;
+  void constraints(const double* z, double* g) const override;
   /// Triplets of ∂g/∂z: the structure (rows, cols) is fixed; values in the same order.
-  int jacobian_nonzeros() const;
-  void jacobian_structure(int* rows, int* cols) const;
-  void jacobian_values(const double* z, double* values) const;
+  int jacobian_nonzeros() const override;
+  void jacobian_structure(int* rows, int* cols) const override;
+  void jacobian_values(const double* z, double* values) const override;
   /// Lower triangle (row ≥ col) of ∇²(σ f + yᵀ g).
-  int hessian_nonzeros() const;
-  void hessian_structure(int* rows, int* cols) const;
-  void hessian_values(const double* z, double sigma, const double* y, double* values) const;
+  int hessian_nonzeros() const override;
+  void hessian_structure(int* rows, int* cols) const override;
+  void hessian_values(const double* z, double sigma, const double* y, double* values) const override;
 
   /// Rows of the first Simpson defect row of interval k / of the constraints after the defects.
   static int defect_row(int k) { return 14 * k; }

@@ -1,8 +1,5 @@
 #include "poinsot/optimal/direct_collocation.hpp"
 
-#include <IpIpoptApplication.hpp>
-#include <IpSolveStatistics.hpp>
-#include <IpTNLP.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -14,6 +11,7 @@
 #include "poinsot/core/format.hpp"
 #include "poinsot/so3/exp_log.hpp"
 #include "poinsot/so3/quaternion.hpp"
+#include "sparse_nlp.hpp"
 
 namespace poinsot::optimal {
 
@@ -24,81 +22,6 @@ using detail::Vec11;
 using detail::Vec4;
 using detail::Vec7;
 constexpr int kP = CollocationNlp::kPointVars;
-
-/// Ipopt's view of a CollocationNlp: forwards every evaluation, keeps the final iterate and multipliers.
-class IpoptAdapter : public Ipopt::TNLP {
- public:
-  IpoptAdapter(const CollocationNlp& nlp, std::vector<double> start) : nlp_(nlp), z_(std::move(start)) {}
-
-  bool get_nlp_info(Ipopt::Index& n, Ipopt::Index& m, Ipopt::Index& nnz_jac, Ipopt::Index& nnz_h,
-                    IndexStyleEnum& style) override {
-    n = nlp_.num_variables();
-    m = nlp_.num_constraints();
-    nnz_jac = nlp_.jacobian_nonzeros();
-    nnz_h = nlp_.hessian_nonzeros();
-    style = C_STYLE;
-    return true;
-  }
-  bool get_bounds_info(Ipopt::Index, Ipopt::Number* xl, Ipopt::Number* xu, Ipopt::Index, Ipopt::Number* gl,
-                       Ipopt::Number* gu) override {
-    std::vector<double> lo, up;
-    nlp_.variable_bounds(lo, up);
-    std::copy(lo.begin(), lo.end(), xl);
-    std::copy(up.begin(), up.end(), xu);
-    nlp_.constraint_bounds(lo, up);
-    std::copy(lo.begin(), lo.end(), gl);
-    std::copy(up.begin(), up.end(), gu);
-    return true;
-  }
-  bool get_starting_point(Ipopt::Index, bool init_x, Ipopt::Number* x, bool, Ipopt::Number*, Ipopt::Number*,
-                          Ipopt::Index, bool, Ipopt::Number*) override {
-    if (init_x) std::copy(z_.begin(), z_.end(), x);
-    return true;
-  }
-  bool eval_f(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number& f) override {
-    f = nlp_.objective(x);
-    return std::isfinite(f);
-  }
-  bool eval_grad_f(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number* g) override {
-    nlp_.objective_gradient(x, g);
-    return true;
-  }
-  bool eval_g(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Index m, Ipopt::Number* g) override {
-    nlp_.constraints(x, g);
-    return std::all_of(g, g + m, [](double v) { return std::isfinite(v); });
-  }
-  bool eval_jac_g(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Index, Ipopt::Index, Ipopt::Index* rows,
-                  Ipopt::Index* cols, Ipopt::Number* values) override {
-    if (values == nullptr)
-      nlp_.jacobian_structure(rows, cols);
-    else
-      nlp_.jacobian_values(x, values);
-    return true;
-  }
-  bool eval_h(Ipopt::Index, const Ipopt::Number* x, bool, Ipopt::Number sigma, Ipopt::Index,
-              const Ipopt::Number* lambda, bool, Ipopt::Index, Ipopt::Index* rows, Ipopt::Index* cols,
-              Ipopt::Number* values) override {
-    if (values == nullptr)
-      nlp_.hessian_structure(rows, cols);
-    else
-      nlp_.hessian_values(x, sigma, lambda, values);
-    return true;
-  }
-  void finalize_solution(Ipopt::SolverReturn, Ipopt::Index n, const Ipopt::Number* x, const Ipopt::Number*,
-                         const Ipopt::Number*, Ipopt::Index m, const Ipopt::Number*,
-                         const Ipopt::Number* lambda, Ipopt::Number, const Ipopt::IpoptData*,
-                         Ipopt::IpoptCalculatedQuantities*) override {
-    z_.assign(x, x + n);
-    y_.assign(lambda, lambda + m);
-  }
-
-  const std::vector<double>& z() const { return z_; }
-  const std::vector<double>& y() const { return y_; }
-
- private:
-  const CollocationNlp& nlp_;
-  std::vector<double> z_, y_;
-};
 
 /// The interpolants of one interval at s ∈ [0, 1]: state (cubic Hermite), its time derivative, and the
 /// controls (quadratic through s = 0, ½, 1).
@@ -305,33 +228,27 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
   std::vector<double> z = initial_guess(*nlp, T0);
   std::vector<double> y;
 
-  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = new Ipopt::IpoptApplication(false);
-  app->Options()->SetIntegerValue("print_level", options.print_level);
-  app->Options()->SetStringValue("sb", "yes");
-  if (const char* f = std::getenv("POINSOT_IPOPT_LOG")) app->Options()->SetStringValue("output_file", f);
-  app->Options()->SetNumericValue("tol", options.nlp_tolerance);
-  app->Options()->SetNumericValue("acceptable_tol", options.nlp_tolerance);
-  app->Options()->SetIntegerValue("max_iter", options.max_nlp_iterations);
-  app->Options()->SetStringValue("hessian_approximation", "exact");
-  app->Options()->SetStringValue("mu_strategy", "adaptive");
-  if (app->Initialize() != Ipopt::Solve_Succeeded) throw ComputationFailed("ipopt: initialisation failed");
+  detail::IpoptSettings ipopt;
+  ipopt.tolerance = options.nlp_tolerance;
+  ipopt.acceptable_tolerance = options.nlp_tolerance;
+  ipopt.max_iterations = options.max_nlp_iterations;
+  ipopt.print_level = options.print_level;
 
   DirectSolution best;
   std::string failure;
   int nlp_iterations = 0;
   for (int it = 0; it < options.max_mesh_iterations; ++it) {
-    Ipopt::SmartPtr<IpoptAdapter> adapter = new IpoptAdapter(*nlp, z);
-    const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
-    if (!adapter->z().empty()) {
-      z = adapter->z();
-      y = adapter->y();
+    detail::NlpSolution solution = detail::solve_with_ipopt(*nlp, z, ipopt);
+    if (!solution.y.empty()) {  // Ipopt finalised: its last iterate and multipliers
+      z = std::move(solution.x);
+      y = std::move(solution.y);
     }
-    if (auto stats = app->Statistics(); Ipopt::IsValid(stats)) nlp_iterations += stats->IterationCount();
+    nlp_iterations += solution.iterations;
     best = extract(*nlp, z, y);
     best.mesh_iterations = it + 1;
     best.nlp_iterations = nlp_iterations;
-    if (status != Ipopt::Solve_Succeeded && status != Ipopt::Solved_To_Acceptable_Level) {
-      failure = "Ipopt did not converge (status " + std::to_string(static_cast<int>(status)) + ") on mesh " +
+    if (!solution.solved && !solution.acceptable) {
+      failure = "Ipopt did not converge (status " + std::to_string(solution.return_code) + ") on mesh " +
                 std::to_string(it + 1) + " with " + std::to_string(nlp->intervals()) + " intervals";
       break;
     }

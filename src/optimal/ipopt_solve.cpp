@@ -126,6 +126,8 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
   app->Options()->SetStringValue("sb", "yes");
   if (const char* f = std::getenv("POINSOT_IPOPT_LOG")) app->Options()->SetStringValue("output_file", f);
   app->Options()->SetNumericValue("tol", settings.tolerance);
+  if (settings.acceptable_tolerance > 0.0)
+    app->Options()->SetNumericValue("acceptable_tol", settings.acceptable_tolerance);
   app->Options()->SetIntegerValue("max_iter", settings.max_iterations);
   app->Options()->SetStringValue("hessian_approximation", "exact");
   app->Options()->SetStringValue("mu_strategy", "adaptive");
@@ -134,6 +136,8 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
   NlpSolution out;
   out.solved = status == Ipopt::Solve_Succeeded;
+  out.acceptable = status == Ipopt::Solved_To_Acceptable_Level;
+  out.return_code = static_cast<int>(status);
   out.status = status_words(status);
   if (auto stats = app->Statistics(); Ipopt::IsValid(stats)) out.iterations = stats->IterationCount();
   out.x = adapter->x();

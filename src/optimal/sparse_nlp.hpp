@@ -29,17 +29,22 @@ class SparseNlp {
 
 struct IpoptSettings {
   double tolerance = 1e-10;  ///< Ipopt's tol (scaled KKT error)
+  /// Ipopt's acceptable_tol: a run stopped at this level counts as `acceptable`; 0 keeps Ipopt's default.
+  double acceptable_tolerance = 0.0;
   int max_iterations = 1000;
   int print_level = 0;  ///< Ipopt's print_level (0 = silent)
 };
 
 struct NlpSolution {
-  bool solved = false;  ///< Ipopt returned Solve_Succeeded
-  std::string status;   ///< "solved", or Ipopt's return status in words
-  int iterations = 0;   ///< Ipopt iterations
+  bool solved = false;      ///< Ipopt returned Solve_Succeeded
+  bool acceptable = false;  ///< Ipopt returned Solved_To_Acceptable_Level
+  int return_code = 0;      ///< Ipopt's ApplicationReturnStatus as a number
+  std::string status;       ///< "solved", or Ipopt's return status in words
+  int iterations = 0;       ///< Ipopt iterations
   double objective = 0.0;
-  std::vector<double> x;  ///< the last iterate
-  std::vector<double> y;  ///< constraint multipliers (Lagrangian σ f + yᵀg)
+  std::vector<double> x;  ///< the last iterate (the start when Ipopt stopped before finalising)
+  std::vector<double>
+      y;  ///< constraint multipliers (Lagrangian σ f + yᵀg); empty when Ipopt did not finalise
 };
 
 /// Solves `nlp` from `start` with Ipopt (exact Hessian, adaptive barrier). Throws ComputationFailed if Ipopt
