@@ -54,18 +54,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (has_line_break(m) && !argument_breaks_lines) poinsot::fuzz::finding(what, std::string(m));
   };
 
-  // The sub-commands of main.cpp, in its order.
+  // The sub-commands of the tool, registered as main.cpp registers them.
   CLI::App app{"poinsot", "poinsot"};
   app.require_subcommand(1);
-  poinsot::cli::register_version(app);
-  poinsot::cli::register_completion(app);
-  poinsot::cli::register_rotation(app);
-  poinsot::cli::register_inertia(app);
-  poinsot::cli::register_run(app);
-  poinsot::cli::register_lambda(app);
-  poinsot::cli::register_view(app);
-  poinsot::cli::register_optimize(app);
-  poinsot::cli::register_ensemble(app);
+  poinsot::cli::register_commands(app);
   app.parse_complete_callback([] { throw Parsed{}; });
 
   try {

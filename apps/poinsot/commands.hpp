@@ -1,12 +1,15 @@
 #pragma once
 // The sub-commands of the poinsot tool. Each cmd_<name>.cpp defines one register_<name> that adds its
-// sub-command to the app and sets its callback; main.cpp calls them all. A callback reports bad input by
-// throwing poinsot::Error; main prints the message on one line and exits with status 2.
+// sub-command to the app and sets its callback; register_commands (commands.cpp) calls them all. A callback
+// reports bad input by throwing poinsot::Error; main prints the message on one line and exits with status 2.
 #include <string>
 
 #include <CLI/CLI.hpp>
 
 namespace poinsot::cli {
+
+/// Registers every sub-command on the root `app`, in the order `poinsot --help` lists them (commands.cpp).
+void register_commands(CLI::App& app);
 
 void register_version(CLI::App& app);
 void register_rotation(CLI::App& app);

@@ -13,25 +13,7 @@ int main(int argc, char** argv) {
   CLI::App app{"poinsot: rotation of rigid bodies (inertia, Euler's equations, Lagrange multipliers)",
                "poinsot"};
   app.require_subcommand(1);
-  poinsot::cli::register_version(app);
-  poinsot::cli::register_completion(app);
-  poinsot::cli::register_rotation(app);
-
-  // inertia: mass properties, principal axes, validity
-  poinsot::cli::register_inertia(app);
-
-  // run: a scenario file, single-body or multibody
-  poinsot::cli::register_run(app);
-
-  // lambda: the multipliers Λ and the constraint stress
-  poinsot::cli::register_lambda(app);
-
-  // view: the 3-D page of a run
-  poinsot::cli::register_view(app);
-  // optimize (optimal reorientation)
-  poinsot::cli::register_optimize(app);
-  // ensemble
-  poinsot::cli::register_ensemble(app);
+  poinsot::cli::register_commands(app);
 
   try {
     app.parse(argc, argv);

@@ -108,7 +108,8 @@ void set_spans(RobotLink& link, const std::vector<std::optional<TextSpan>>& span
 }
 
 RobotLink read_link_element(const XmlSource& xml, const tinyxml2::XMLElement& e, const std::string& base_dir,
-                            InertialReader read_inertial, ShapeReader read_shape) {
+                            InertialReader read_inertial, GeometryPoseReader read_pose,
+                            const ShapeSyntax& syntax) {
   RobotLink link;
   const char* name = e.Attribute("name");
   if (name == nullptr)
@@ -120,7 +121,7 @@ RobotLink read_link_element(const XmlSource& xml, const tinyxml2::XMLElement& e,
   for (const char* element : {"collision", "visual"}) {
     for (const tinyxml2::XMLElement* g = e.FirstChildElement(element); g != nullptr;
          g = g->NextSiblingElement(element))
-      read_shape(xml, *g, base_dir, link);
+      read_link_shape(xml, *g, base_dir, read_pose, syntax, link);
     if (!link.geometry.empty()) break;
   }
   return link;

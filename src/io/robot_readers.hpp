@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the io layer: the three robot-model readers behind read_robot_model (robot_model.hpp) and the
 // helpers they share. Each reader walks the tinyxml2 tree of an XmlSource and fills RobotModel::links.
+#include <optional>
 #include <string>
 
 #include "poinsot/io/robot_model.hpp"
@@ -28,14 +29,39 @@ void set_spans(RobotLink& link, const std::vector<std::optional<TextSpan>>& span
 
 /// Reads a format's <inertial> element into a link.
 using InertialReader = void (*)(const XmlSource&, const tinyxml2::XMLElement&, RobotLink&);
-/// Reads a format's <collision> or <visual> element (the holder of a <geometry>) into a link's geometry;
-/// mesh paths resolve against the model's folder (the string).
-using ShapeReader = void (*)(const XmlSource&, const tinyxml2::XMLElement&, const std::string&, RobotLink&);
+/// How a format writes a <geometry>'s shape: URDF in attributes (`<box size="x y z"/>`), SDF in child
+/// elements (`<box><size>x y z</size></box>`). Each function throws InvalidInput naming the element's line
+/// and the missing or malformed field.
+struct ShapeSyntax {
+  /// One length (m) of `shape` named `name` (a radius, a length).
+  double (*length)(const XmlSource&, const tinyxml2::XMLElement& shape, const char* name);
+  /// Three lengths (m) of `shape` named `name` (a box's size, an ellipsoid's radii).
+  Vec3 (*lengths)(const XmlSource&, const tinyxml2::XMLElement& shape, const char* name);
+  /// A <mesh>'s file reference as written.
+  std::string (*mesh_uri)(const XmlSource&, const tinyxml2::XMLElement& mesh);
+  /// A <mesh>'s scale factors per axis, when given.
+  std::optional<Vec3> (*mesh_scale)(const XmlSource&, const tinyxml2::XMLElement& mesh);
+  /// Whether the format has an <ellipsoid> (SDF does, URDF does not).
+  bool has_ellipsoid = false;
+};
+
+/// Reads the pose of a <collision> or <visual> element into g (R_link_geometry, position_link); returns
+/// false, with a note in the link, when the shape is to be skipped.
+using GeometryPoseReader = bool (*)(const XmlSource&, const tinyxml2::XMLElement& holder, LinkGeometry& g,
+                                    RobotLink& link);
+
+/// The shape of a <collision> or <visual> element (the holder of a <geometry>) of URDF or SDF, appended to
+/// link.geometry: box, sphere, cylinder, capsule, ellipsoid (where the format has it) and mesh (the path
+/// resolved against `base_dir`). A missing shape, an unresolved mesh or an unknown geometry is skipped with a
+/// note in link.notes; a malformed field throws InvalidInput.
+void read_link_shape(const XmlSource& xml, const tinyxml2::XMLElement& holder, const std::string& base_dir,
+                     GeometryPoseReader read_pose, const ShapeSyntax& syntax, RobotLink& link);
 
 /// A <link> of URDF or SDF, which share its layout: the name (an InvalidInput naming the element's line when
 /// it has none), the line, the inertial and the shapes: every <collision>, or every <visual> when the link
 /// has no collision shape (collision shapes describe the volume; visual ones only stand in for them).
 RobotLink read_link_element(const XmlSource& xml, const tinyxml2::XMLElement& e, const std::string& base_dir,
-                            InertialReader read_inertial, ShapeReader read_shape);
+                            InertialReader read_inertial, GeometryPoseReader read_pose,
+                            const ShapeSyntax& syntax);
 
 }  // namespace poinsot::io::detail

@@ -90,49 +90,26 @@ Vec3 child_vector(const XmlSource& xml, const XMLElement& shape, const char* nam
   return Vec3(v[0], v[1], v[2]);
 }
 
-void read_shape(const XmlSource& xml, const XMLElement& holder, const std::string& base_dir,
-                RobotLink& link) {
-  LinkGeometry g;
-  g.element = holder.Name();
-  if (!read_pose(xml, holder, link.name, g.R_link_geometry, g.position_link, link)) return;
-  const XMLElement* geometry = holder.FirstChildElement("geometry");
-  const XMLElement* shape = geometry != nullptr ? geometry->FirstChildElement() : nullptr;
-  if (shape == nullptr) {
-    link.notes.push_back(fmt::format("{}: no <geometry> shape; skipped", xml.where(holder)));
-    return;
-  }
-  const std::string kind = shape->Name();
-  if (kind == "box") {
-    g.shape.kind = "box";
-    g.shape.size = child_vector(xml, *shape, "size");
-  } else if (kind == "sphere") {
-    g.shape.kind = "sphere";
-    g.shape.radius = child_number(xml, *shape, "radius");
-  } else if (kind == "cylinder" || kind == "capsule") {
-    g.shape.kind = kind;
-    g.shape.radius = child_number(xml, *shape, "radius");
-    g.shape.length = child_number(xml, *shape, "length");
-  } else if (kind == "ellipsoid") {
-    g.shape.kind = "ellipsoid";
-    g.shape.size = child_vector(xml, *shape, "radii");
-  } else if (kind == "mesh") {
-    g.shape.kind = "mesh";
-    const XMLElement* uri = shape->FirstChildElement("uri");
-    const char* file = uri != nullptr ? uri->GetText() : nullptr;
-    if (file == nullptr)
-      throw InvalidInput(fmt::format("{}: no <uri>; expected the mesh file", xml.where(*shape)));
-    g.mesh_path = resolve_mesh_path(file, base_dir);
-    if (g.mesh_path.empty()) {
-      link.notes.push_back(fmt::format("{}: mesh \"{}\" not found; skipped", xml.where(*shape), file));
-      return;
-    }
-    if (shape->FirstChildElement("scale") != nullptr) g.mesh_scale = child_vector(xml, *shape, "scale");
-  } else {
-    link.notes.push_back(fmt::format("{}: geometry <{}> not understood; skipped", xml.where(*shape), kind));
-    return;
-  }
-  link.geometry.push_back(std::move(g));
+std::string mesh_uri(const XmlSource& xml, const XMLElement& mesh) {
+  const XMLElement* uri = mesh.FirstChildElement("uri");
+  const char* file = uri != nullptr ? uri->GetText() : nullptr;
+  if (file == nullptr)
+    throw InvalidInput(fmt::format("{}: no <uri>; expected the mesh file", xml.where(mesh)));
+  return file;
 }
+
+std::optional<Vec3> mesh_scale(const XmlSource& xml, const XMLElement& mesh) {
+  if (mesh.FirstChildElement("scale") == nullptr) return std::nullopt;
+  return child_vector(xml, mesh, "scale");
+}
+
+/// The pose of a <collision> or <visual> element: its <pose>, relative to the link.
+bool read_geometry_pose(const XmlSource& xml, const XMLElement& holder, LinkGeometry& g, RobotLink& link) {
+  return read_pose(xml, holder, link.name, g.R_link_geometry, g.position_link, link);
+}
+
+/// SDF writes a shape's fields as child elements: <box><size/></box>, <mesh><uri/><scale/></mesh>.
+constexpr ShapeSyntax kSdfShapes{child_number, child_vector, mesh_uri, mesh_scale, true};
 
 }  // namespace
 
@@ -156,7 +133,8 @@ void read_sdf(const XmlSource& xml, const std::string& base_dir, RobotModel& mod
       stack.push_back(*it);
   }
   for (const XMLElement* e : links)
-    model.links.push_back(read_link_element(xml, *e, base_dir, read_inertial, read_shape));
+    model.links.push_back(
+        read_link_element(xml, *e, base_dir, read_inertial, read_geometry_pose, kSdfShapes));
 }
 
 }  // namespace poinsot::io::detail

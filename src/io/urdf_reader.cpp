@@ -55,60 +55,47 @@ void read_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& 
   finish_inertial(link);
 }
 
-/// The shape of a <collision> or <visual> element, or nothing (with a note) for a geometry it does not know.
-void read_shape(const XmlSource& xml, const XMLElement& holder, const std::string& base_dir,
-                RobotLink& link) {
-  LinkGeometry g;
-  g.element = holder.Name();
+/// The pose of a <collision> or <visual> element: its <origin> (always read).
+bool read_geometry_origin(const XmlSource& xml, const XMLElement& holder, LinkGeometry& g, RobotLink&) {
   read_origin(xml, holder, g.R_link_geometry, g.position_link);
-  const XMLElement* geometry = holder.FirstChildElement("geometry");
-  const XMLElement* shape = geometry != nullptr ? geometry->FirstChildElement() : nullptr;
-  if (shape == nullptr) {
-    link.notes.push_back(fmt::format("{}: no <geometry> shape; skipped", xml.where(holder)));
-    return;
-  }
-  const std::string kind = shape->Name();
-  if (kind == "box") {
-    g.shape.kind = "box";
-    auto size = xml.numbers_attribute(*shape, "size", 3);
-    if (!size)
-      throw InvalidInput(
-          fmt::format("{}: missing attribute size; expected 3 numbers (m)", xml.where(*shape)));
-    g.shape.size = Vec3((*size)[0], (*size)[1], (*size)[2]);
-  } else if (kind == "sphere") {
-    g.shape.kind = "sphere";
-    g.shape.radius = required_number(xml, *shape, "radius");
-  } else if (kind == "cylinder" || kind == "capsule") {
-    g.shape.kind = kind;
-    g.shape.radius = required_number(xml, *shape, "radius");
-    g.shape.length = required_number(xml, *shape, "length");
-  } else if (kind == "mesh") {
-    g.shape.kind = "mesh";
-    const char* file = shape->Attribute("filename");
-    if (file == nullptr) {
-      throw InvalidInput(
-          fmt::format("{}: missing attribute filename; expected the mesh file", xml.where(*shape)));
-    }
-    g.mesh_path = resolve_mesh_path(file, base_dir);
-    if (g.mesh_path.empty()) {
-      link.notes.push_back(fmt::format("{}: mesh \"{}\" not found; skipped", xml.where(*shape), file));
-      return;
-    }
-    if (auto scale = xml.numbers_attribute(*shape, "scale", 3))
-      g.mesh_scale = Vec3((*scale)[0], (*scale)[1], (*scale)[2]);
-  } else {
-    link.notes.push_back(fmt::format("{}: geometry <{}> not understood; skipped", xml.where(*shape), kind));
-    return;
-  }
-  link.geometry.push_back(std::move(g));
+  return true;
 }
+
+Vec3 required_lengths(const XmlSource& xml, const XMLElement& shape, const char* attribute) {
+  auto v = xml.numbers_attribute(shape, attribute, 3);
+  if (!v) {
+    throw InvalidInput(
+        fmt::format("{}: missing attribute {}; expected 3 numbers (m)", xml.where(shape), attribute));
+  }
+  return Vec3((*v)[0], (*v)[1], (*v)[2]);
+}
+
+std::string mesh_filename(const XmlSource& xml, const XMLElement& mesh) {
+  const char* file = mesh.Attribute("filename");
+  if (file == nullptr) {
+    throw InvalidInput(
+        fmt::format("{}: missing attribute filename; expected the mesh file", xml.where(mesh)));
+  }
+  return file;
+}
+
+std::optional<Vec3> mesh_scale(const XmlSource& xml, const XMLElement& mesh) {
+  if (auto scale = xml.numbers_attribute(mesh, "scale", 3))
+    return Vec3((*scale)[0], (*scale)[1], (*scale)[2]);
+  return std::nullopt;
+}
+
+/// URDF writes a shape's fields as attributes: <box size/>, <cylinder radius length/>, <mesh filename
+/// scale/>.
+constexpr ShapeSyntax kUrdfShapes{required_number, required_lengths, mesh_filename, mesh_scale, false};
 
 }  // namespace
 
 void read_urdf(const XmlSource& xml, const std::string& base_dir, RobotModel& model) {
   for (const XMLElement* e = xml.root()->FirstChildElement("link"); e != nullptr;
        e = e->NextSiblingElement("link")) {
-    model.links.push_back(read_link_element(xml, *e, base_dir, read_inertial, read_shape));
+    model.links.push_back(
+        read_link_element(xml, *e, base_dir, read_inertial, read_geometry_origin, kUrdfShapes));
   }
 }
 
