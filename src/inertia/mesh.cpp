@@ -75,18 +75,16 @@ Mat3 second_moment(const Moments& m) {
 
 constexpr std::size_t kBlock = 256;
 
-/// Shell integrals (area, ∫x dA, ∫x⊗x dA) about `origin`.
-VolumeIntegrals area_integrals(const TriangleMesh& mesh, const Vec3& origin) {
+/// Σ over the triangles of `term(a, b, c, block)`, a, b, c the vertices relative to `origin`, summed in
+/// blocks of kBlock triangles (Moments).
+template <class Term>
+Moments sum_over_triangles(const TriangleMesh& mesh, const Vec3& origin, Term term) {
   Moments total;
   Moments block;
   std::size_t in_block = 0;
+  const Vec3* vert = mesh.vertices.data();
   for (const auto& t : mesh.triangles) {
-    const Vec3 a = mesh.vertices[static_cast<std::size_t>(t[0])] - origin;
-    const Vec3 b = mesh.vertices[static_cast<std::size_t>(t[1])] - origin;
-    const Vec3 c = mesh.vertices[static_cast<std::size_t>(t[2])] - origin;
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    block.v += area;
-    accumulate(block, a, b, c, area / 12.0, area / 3.0);
+    term(vert[t[0]] - origin, vert[t[1]] - origin, vert[t[2]] - origin, block);
     if (++in_block == kBlock) {
       total.add(block);
       block = Moments{};
@@ -94,6 +92,17 @@ VolumeIntegrals area_integrals(const TriangleMesh& mesh, const Vec3& origin) {
     }
   }
   total.add(block);
+  return total;
+}
+
+/// Shell integrals (area, ∫x dA, ∫x⊗x dA) about `origin`.
+VolumeIntegrals area_integrals(const TriangleMesh& mesh, const Vec3& origin) {
+  const Moments total =
+      sum_over_triangles(mesh, origin, [](const Vec3& a, const Vec3& b, const Vec3& c, Moments& block) {
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        block.v += area;
+        accumulate(block, a, b, c, area / 12.0, area / 3.0);
+      });
   VolumeIntegrals out;
   out.volume = total.v;
   out.first = Vec3(total.fx, total.fy, total.fz);
@@ -253,24 +262,12 @@ MeshDiagnostics diagnose(const TriangleMesh& mesh) {
 }
 
 VolumeIntegrals volume_integrals(const TriangleMesh& mesh, const Vec3& origin) {
-  Moments total;
-  Moments block;
-  std::size_t in_block = 0;
-  const Vec3* vert = mesh.vertices.data();
-  for (const auto& t : mesh.triangles) {
-    const Vec3 a = vert[t[0]] - origin;
-    const Vec3 b = vert[t[1]] - origin;
-    const Vec3 c = vert[t[2]] - origin;
-    const double v6 = a.dot(b.cross(c));  // 6 × signed volume of (origin, a, b, c)
-    block.v += v6;
-    accumulate(block, a, b, c, v6, v6);
-    if (++in_block == kBlock) {
-      total.add(block);
-      block = Moments{};
-      in_block = 0;
-    }
-  }
-  total.add(block);
+  const Moments total =
+      sum_over_triangles(mesh, origin, [](const Vec3& a, const Vec3& b, const Vec3& c, Moments& block) {
+        const double v6 = a.dot(b.cross(c));  // 6 × signed volume of (origin, a, b, c)
+        block.v += v6;
+        accumulate(block, a, b, c, v6, v6);
+      });
   // Apply the constant factors once: v = v6/6, ∫x = Σ v s/4 = Σ v6 s/24, ∫x⊗x = Σ v/20 (…) = Σ v6/120 (…).
   VolumeIntegrals out;
   out.volume = total.v / 6.0;
