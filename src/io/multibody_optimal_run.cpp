@@ -92,7 +92,7 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
   out << "actuators:";
   for (const optimal::Actuator& a : p.actuators) {
     out << fmt::format(
-        " {} ({}, |u| ≤ {} N·m)", actuator_name(p, a),
+        "{} {} ({}, |u| ≤ {} N·m)", &a == &p.actuators.front() ? "" : ",", actuator_name(p, a),
         a.kind == optimal::ActuatorKind::hinge_torque ? "hinge motor" : "body torque, body frame",
         num(a.torque_max));
   }

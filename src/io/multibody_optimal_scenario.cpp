@@ -210,6 +210,19 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
   return sc;
 }
 
+MultibodyOptimalScenario multibody_optimal_scenario_of(const optimal::MultibodyProblem& problem,
+                                                       const optimal::MultibodyOptions& options) {
+  optimal::validate(problem);
+  MultibodyOptimalScenario sc;
+  sc.name = "multibody";
+  sc.source = "<problem>";
+  sc.model.system = problem.system;
+  sc.model.initial = problem.initial_state;
+  sc.problem = problem;
+  sc.options = options;
+  return sc;
+}
+
 MultibodyOptimalScenario load_multibody_optimal_scenario(const std::string& path) {
   const std::filesystem::path p(path);
   MultibodyOptimalScenario sc =

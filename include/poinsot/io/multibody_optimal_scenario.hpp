@@ -64,6 +64,12 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
 /// Reads and parses the file at `path` (name = its stem).
 MultibodyOptimalScenario load_multibody_optimal_scenario(const std::string& path);
 
+/// A scenario around a problem built in code (Python's poinsot.optimal.MultibodyProblem): named "multibody",
+/// source "<problem>", the default replay and target tolerance, no output folder. Throws InvalidInput when
+/// the problem is invalid (optimal::validate).
+MultibodyOptimalScenario multibody_optimal_scenario_of(const optimal::MultibodyProblem& problem,
+                                                       const optimal::MultibodyOptions& options = {});
+
 /// The name of a coordinates value as the files spell it ("rotation_matrix", "minimal").
 std::string_view coordinates_name(optimal::MultibodyCoordinates coordinates);
 
