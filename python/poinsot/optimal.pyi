@@ -10,8 +10,8 @@ from poinsot._core import *  # noqa: F403 (the classes used in signatures)
 
 class MultibodyProblem:
     """Multibody scenario files with an `[optimal_control]` section, for `poinsot optimize` (docs/optimal_control.md, "Multibody scenario files"): the system and its initial state exactly as `poinsot run` reads them (multibody_scenario.hpp: [simulation] gravity, [[bodies]], [[joints]], [[forces]], [[torques]]; the integration keys dt, duration, output_every, method and order are read but not used), and the problem:"""
-    def __init__(self, *, system: _core.multibody.System, initial_state: _core.multibody.State, final_state: _core.multibody.State, final_time: float, actuators: list, intervals: int = ..., coordinates: str = ...) -> None:
-        """A minimum-energy problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from the consistent initial_state to the consistent final_state (poinsot.multibody.State) in final_time (s), with actuators a list of {"joint": HINGE, "torque_max": N·m} (a hinge motor) or {"body": BODY, "torque_max": N·m} (three body-frame torques), on `intervals` Hermite–Simpson intervals in "rotation_matrix" or "minimal" coordinates."""
+    def __init__(self, *, system: _core.multibody.System, initial_state: _core.multibody.State, final_state: _core.multibody.State, final_time: float, actuators: list, intervals: int = ..., coordinates: str = ..., rate_bounds: list = ...) -> None:
+        """A minimum-energy problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from the consistent initial_state to the consistent final_state (poinsot.multibody.State) in final_time (s), with actuators a list of {"joint": HINGE, "torque_max": N·m} (a hinge motor) or {"body": BODY, "torque_max": N·m} (three body-frame torques), on `intervals` Hermite–Simpson intervals in "rotation_matrix" or "minimal" coordinates; rate_bounds a list of {"joint": HINGE, "rate_max": rad/s} (|q̇| ≤ rate_max at every collocation point but the first)."""
     def __repr__(self) -> str:
         ...
     @property

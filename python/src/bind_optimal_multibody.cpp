@@ -29,6 +29,15 @@ optimal::MultibodyCoordinates to_coordinates(const std::string& name) {
   return opt::MultibodyCoordinates::rotation_matrix;
 }
 
+/// The index of the hinge named `name`, the message prefixed with `what`.
+int hinge(const mb::System& system, const py::handle& name, const std::string& what) {
+  try {
+    return opt::hinge_index(system, name.cast<std::string>());
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(what + ": joint: " + e.what());
+  }
+}
+
 /// Actuators from a list of dicts {"joint": NAME, "torque_max": N·m} or {"body": NAME, "torque_max": N·m}.
 std::vector<opt::Actuator> to_actuators(const mb::System& system, const py::list& list) {
   std::vector<opt::Actuator> out;
@@ -45,12 +54,7 @@ std::vector<opt::Actuator> to_actuators(const mb::System& system, const py::list
     opt::Actuator a;
     a.torque_max = d["torque_max"].cast<double>();
     if (d.contains("joint")) {
-      const std::string name = d["joint"].cast<std::string>();
-      a.index = -1;
-      for (std::size_t j = 0; j < system.joints().size(); ++j)
-        if (system.joints()[j].name == name) a.index = static_cast<int>(j);
-      if (a.index < 0)
-        throw InvalidInput(what + ": joint: got \"" + name + "\"; expected the name of a hinge");
+      a.index = hinge(system, d["joint"], what);
     } else {
       a.kind = opt::ActuatorKind::body_torque;
       a.index = system.body_index(d["body"].cast<std::string>());
@@ -60,10 +64,25 @@ std::vector<opt::Actuator> to_actuators(const mb::System& system, const py::list
   return out;
 }
 
+/// Rate bounds from a list of dicts {"joint": HINGE, "rate_max": rad/s}.
+std::vector<opt::RateBound> to_rate_bounds(const mb::System& system, const py::list& list) {
+  std::vector<opt::RateBound> out;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string what = "optimal control: rate_bounds[" + std::to_string(i) + "]";
+    const bool ok = py::isinstance<py::dict>(list[i]) && list[i].cast<py::dict>().size() == 2 &&
+                    list[i].cast<py::dict>().contains("joint") &&
+                    list[i].cast<py::dict>().contains("rate_max");
+    if (!ok) throw InvalidInput(what + ": expected a dict {\"joint\": a hinge's name, \"rate_max\": rad/s}");
+    const py::dict d = list[i].cast<py::dict>();
+    out.push_back({hinge(system, d["joint"], what), d["rate_max"].cast<double>()});
+  }
+  return out;
+}
+
 io::MultibodyOptimalScenario make_scenario(const mb::System& system, const mb::State& initial_state,
                                            const mb::State& final_state, double final_time,
                                            const py::list& actuators, int intervals,
-                                           const std::string& coordinates) {
+                                           const std::string& coordinates, const py::list& rate_bounds) {
   opt::MultibodyProblem p;
   p.system = system;
   p.initial_state = initial_state;
@@ -71,6 +90,7 @@ io::MultibodyOptimalScenario make_scenario(const mb::System& system, const mb::S
   p.final_time = final_time;
   p.intervals = intervals;
   p.actuators = to_actuators(system, actuators);
+  p.rate_bounds = to_rate_bounds(system, rate_bounds);
   opt::MultibodyOptions o;
   o.coordinates = to_coordinates(coordinates);
   return io::multibody_optimal_scenario_of(p, o);
@@ -135,12 +155,15 @@ void bind_optimal_multibody(py::module_& parent) {
                                            POINSOT_DOC(file_io_multibody_optimal_scenario))
       .def(py::init(&make_scenario), py::kw_only(), py::arg("system"), py::arg("initial_state"),
            py::arg("final_state"), py::arg("final_time"), py::arg("actuators"), py::arg("intervals") = 20,
-           py::arg("coordinates") = "rotation_matrix",
+           py::arg("coordinates") = "rotation_matrix", py::arg("rate_bounds") = py::list(),
            "A minimum-energy problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from the "
            "consistent initial_state to the consistent final_state (poinsot.multibody.State) in final_time "
            "(s), with actuators a list of {\"joint\": HINGE, \"torque_max\": N·m} (a hinge motor) or "
            "{\"body\": BODY, \"torque_max\": N·m} (three body-frame torques), on `intervals` Hermite–Simpson "
-           "intervals in \"rotation_matrix\" or \"minimal\" coordinates. Raises ValueError for an invalid "
+           "intervals in \"rotation_matrix\" or \"minimal\" coordinates; rate_bounds a list of {\"joint\": "
+           "HINGE, "
+           "\"rate_max\": rad/s} (|q̇| ≤ rate_max at every collocation point but the first). Raises "
+           "ValueError for an invalid "
            "problem (one line naming the field).")
       .def_readonly("name", &io::MultibodyOptimalScenario::name,
                     POINSOT_DOC(io_MultibodyOptimalScenario_name))

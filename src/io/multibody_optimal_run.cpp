@@ -2,6 +2,7 @@
 #include "poinsot/io/multibody_optimal_run.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <iterator>
 #include <sstream>
@@ -46,6 +47,14 @@ std::vector<std::string> control_columns(const optimal::MultibodyProblem& p) {
 /// The velocity bound of the target check (multibody_optimal_scenario.hpp): tolerance · max(1 m, L) / T.
 double velocity_bound(const MultibodyOptimalScenario& sc) {
   return sc.target_tolerance * std::max(1.0, sc.problem.system.length_scale()) / sc.problem.final_time;
+}
+
+/// The largest |q̇| of hinge `joint` over the collocation points (rad/s).
+double peak_rate(const MultibodyOptimalRun& r, int joint) {
+  double peak = 0.0;
+  for (const multibody::State& s : r.optimum.states)
+    peak = std::max(peak, std::abs(optimal::hinge_rate(r.scenario.problem.system, s, joint)));
+  return peak;
 }
 
 }  // namespace
@@ -96,6 +105,10 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
         a.kind == optimal::ActuatorKind::hinge_torque ? "hinge motor" : "body torque, body frame",
         num(a.torque_max));
   }
+  for (const optimal::RateBound& b : p.rate_bounds) {
+    out << fmt::format("\nrate bound: |q̇ {}| ≤ {} rad/s",
+                       p.system.joints()[static_cast<std::size_t>(b.joint)].name, num(b.rate_max));
+  }
   out << "\nstatus: " << r.status << "\n\n";
   out << fmt::format("solution: {}; {} Ipopt iterations, cost {} N²·m²·s, largest constraint row {}\n",
                      o.status, o.nlp_iterations, num(o.cost, 12), num(o.max_constraint_error, 3));
@@ -105,6 +118,11 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
     for (const Eigen::VectorXd& u : o.controls)
       peak = std::max(peak, std::abs(u(static_cast<Eigen::Index>(c))));
     out << fmt::format("  peak |{}| {} N·m\n", columns[c], num(peak));
+  }
+  for (const optimal::RateBound& b : p.rate_bounds) {
+    out << fmt::format("  peak |q̇ {}| {} rad/s (bound {})\n",
+                       p.system.joints()[static_cast<std::size_t>(b.joint)].name, num(peak_rate(r, b.joint)),
+                       num(b.rate_max));
   }
   for (std::size_t j = 0; j < p.system.joints().size(); ++j) {
     double force = 0.0, couple = 0.0;
@@ -144,12 +162,19 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
          {"name", actuator_name(p, a)},
          {"torque_max", a.torque_max}});
   }
+  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  for (const optimal::RateBound& b : p.rate_bounds) {
+    rates.push_back({{"joint", p.system.joints()[static_cast<std::size_t>(b.joint)].name},
+                     {"rate_max", b.rate_max},
+                     {"peak_rate", peak_rate(r, b.joint)}});
+  }
   j["problem"] = {{"final_time", p.final_time},
                   {"coordinates", std::string(coordinates_name(sc.options.coordinates))},
                   {"intervals", p.intervals},
                   {"bodies", p.system.body_count()},
                   {"joints", p.system.joint_count()},
-                  {"actuators", actuators}};
+                  {"actuators", actuators},
+                  {"rate_bounds", rates}};
   j["solution"] = {{"converged", o.converged},
                    {"status", o.status},
                    {"cost", o.cost},

@@ -48,12 +48,7 @@ std::vector<optimal::Actuator> read_actuators(const Source& src, const Section& 
     const std::string name = *a.string(which);
     if (which == "joint") {
       act.kind = optimal::ActuatorKind::hinge_torque;
-      act.index = -1;
-      for (std::size_t j = 0; j < system.joints().size(); ++j)
-        if (system.joints()[j].name == name) act.index = static_cast<int>(j);
-      if (act.index < 0 ||
-          system.joints()[static_cast<std::size_t>(act.index)].type != multibody::JointType::hinge)
-        a.fail("joint", fmt::format("got \"{}\", expected the name of a hinge joint", name));
+      act.index = detail::located(a, "joint", [&] { return optimal::hinge_index(system, name); });
     } else {
       act.kind = optimal::ActuatorKind::body_torque;
       act.index = detail::located(a, "body", [&] { return system.body_index(name); });
@@ -89,6 +84,27 @@ void place_by_joints(const multibody::System& system, multibody::State& state, s
       progress = true;
     }
   }
+}
+
+std::vector<optimal::RateBound> read_rate_bounds(const Source& src, const Section& oc,
+                                                 const multibody::System& system) {
+  std::vector<optimal::RateBound> out;
+  const toml::array* list = detail::table_array(oc, "rate_bounds");
+  if (list == nullptr) return out;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const Section b(src, (*list)[i].as_table(), fmt::format("optimal_control.rate_bounds[{}]", i),
+                    {"joint", "rate_max"}, &(*list)[i]);
+    b.require("joint", "the name of a hinge joint");
+    b.require("rate_max", "the bound |q̇| ≤ rate_max (rad/s), a number > 0");
+    const std::string name = *b.string("joint");
+    optimal::RateBound bound;
+    bound.joint = detail::located(b, "joint", [&] { return optimal::hinge_index(system, name); });
+    bound.rate_max = *b.number("rate_max");
+    if (!(bound.rate_max > 0.0))
+      b.fail("rate_max", fmt::format("got {} rad/s, expected a number > 0", format_number(bound.rate_max)));
+    out.push_back(bound);
+  }
+  return out;
 }
 
 multibody::State read_target(const Source& src, const Section& oc, const multibody::System& system) {
@@ -153,10 +169,11 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
   const Section top(src, &root, "top level",
                     {"title", "simulation", "bodies", "joints", "springs", "forces", "torques",
                      "optimal_control", "output"});
-  const Section oc(src, root["optimal_control"].as_table(), "optimal_control",
-                   {"objective", "final_time", "coordinates", "intervals", "nlp_tolerance",
-                    "max_nlp_iterations", "replay_steps", "target_tolerance", "actuators", "final"},
-                   root.get("optimal_control"));
+  const Section oc(
+      src, root["optimal_control"].as_table(), "optimal_control",
+      {"objective", "final_time", "coordinates", "intervals", "nlp_tolerance", "max_nlp_iterations",
+       "replay_steps", "target_tolerance", "actuators", "rate_bounds", "final"},
+      root.get("optimal_control"));
   if (!oc.present()) top.fail("optimal_control", "missing; expected an [optimal_control] section");
 
   auto& p = sc.problem;
@@ -200,6 +217,7 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
   }
   p.actuators = read_actuators(src, oc, p.system);
   p.final_state = read_target(src, oc, p.system);
+  p.rate_bounds = read_rate_bounds(src, oc, p.system);
   try {
     optimal::validate(p);
   } catch (const InvalidInput& e) {

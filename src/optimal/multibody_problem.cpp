@@ -125,6 +125,18 @@ void validate(const MultibodyProblem& p) {
   }
 }
 
+int hinge_index(const multibody::System& system, const std::string& name) {
+  std::string hinges;
+  for (std::size_t j = 0; j < system.joints().size(); ++j) {
+    const multibody::Joint& joint = system.joints()[j];
+    if (joint.type != multibody::JointType::hinge) continue;
+    if (joint.name == name) return static_cast<int>(j);
+    hinges += (hinges.empty() ? "\"" : ", \"") + joint.name + "\"";
+  }
+  throw InvalidInput(fmt::format("got \"{}\", expected the name of a hinge joint ({})", name,
+                                 hinges.empty() ? "the system has none" : hinges));
+}
+
 double hinge_rate(const multibody::System& system, const multibody::State& state, int joint) {
   const multibody::Joint& j = system.joints()[static_cast<std::size_t>(joint)];
   const auto& a = multibody::side_state(state.bodies, j.body_a);

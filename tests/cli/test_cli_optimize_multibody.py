@@ -113,10 +113,29 @@ def test_minimal_coordinates_are_exact_and_json_is_the_summary(cli, tmp_path):
     assert summary["solution"]["cost"] == pytest.approx(12 * I_HINGE**2 * THETA**2 / T**3, rel=1e-9)
 
 
+def test_rate_bound_meets_the_closed_form(cli, tmp_path):
+    # |θ̇| ≤ r = 0.75 rad/s cuts the unconstrained peak 3Θ/(2T) = 0.9: accelerate with u linear to u(t₁) = 0,
+    # coast at r, decelerate; t₁ = 3(rT − Θ)/(2r) = 0.6 s and the cost 16 I² r³ / (9 (rT − Θ))
+    # (tests/optimal/test_multibody_rate_bounds.cpp derives it). The junctions fall on nodes of 10 intervals, so
+    # minimal coordinates are exact up to Ipopt's bound relaxation (1e-8 on r: 2.7e-8 on the cost).
+    r, out = 0.75, tmp_path / "out"
+    extra = f'rate_bounds = [{{ joint = "motor", rate_max = {r} }}]'
+    res = cli("optimize", write(tmp_path, "minimal", 10, extra), "--out", out)
+    assert res.returncode == 0, res.stderr + res.stdout
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["solution"]["cost"] == pytest.approx(16 * I_HINGE**2 * r**3 / (9 * (r * T - THETA)), rel=1e-7)
+    bound = summary["problem"]["rate_bounds"][0]
+    assert bound["joint"] == "motor" and bound["rate_max"] == r
+    assert r * (1 - 1e-8) < bound["peak_rate"] < r + 2e-8  # active, and respected to Ipopt's relaxation
+    assert "rate bound: |q̇ motor| ≤ 0.75 rad/s" in res.stdout
+    assert summary["replay"]["target_reached"] is True
+
+
 @pytest.mark.parametrize("extra, fragment", [
     ("target_tolerance = 0", "[optimal_control] target_tolerance: got 0, expected a number > 0"),
     ("objective = \"minimum_time\"", "objective: got \"minimum_time\", expected \"minimum_energy\""),
     ("intervals_typo = 3", "unknown key \"intervals_typo\""),
+    ('rate_bounds = [{ joint = "motor", rate_max = -2 }]', "rate_max: got -2 rad/s, expected a number > 0"),
 ])
 def test_bad_input_is_one_line_exit_2_nothing_written(cli, tmp_path, extra, fragment):
     out = tmp_path / "out"

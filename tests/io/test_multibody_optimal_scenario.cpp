@@ -101,9 +101,13 @@ TEST(MultibodyOptimalScenario, BadInputIsOneLocatedLine) {
              "objective: got \"minimum_time\", expected \"minimum_energy\"");
   expect_bad(sphere("coordinates = \"joint\"\n" + act + target), "coordinates: got \"joint\"");
   expect_bad(sphere("speed = 1\n" + act + target), "unknown key \"speed\"");
+  expect_bad(
+      sphere("rate_bounds = [{ joint = \"ball\", rate_max = 1 }]\n" + act + target),
+      "[optimal_control.rate_bounds[0]] joint: got \"ball\", expected the name of a hinge joint (the system "
+      "has none)");
 }
 
-TEST(MultibodyOptimalScenario, TargetThatViolatesAJointIsRefused) {
+TEST(MultibodyOptimalScenario, ArmFileVariants) {
   // The arm's file with the forearm's target moved off the elbow (the last table of the file is its target):
   // optimal::validate's check, located at [optimal_control].
   std::ifstream in(kArm);
@@ -113,6 +117,19 @@ TEST(MultibodyOptimalScenario, TargetThatViolatesAJointIsRefused) {
   const std::string no_time =
       std::regex_replace(text.str(), std::regex("final_time = 1.5"), "final_time = -1");
   expect_bad(no_time, "[optimal_control] final_time: got -1 s, expected a number > 0");
+  const std::string with_rates =
+      std::regex_replace(text.str(), std::regex("intervals = 64"),
+                         "intervals = 64\nrate_bounds = [{ joint = \"elbow\", rate_max = R }]");
+  expect_bad(std::regex_replace(with_rates, std::regex("rate_max = R"), "rate_max = 0"),
+             "[optimal_control.rate_bounds[0]] rate_max: got 0 rad/s, expected a number > 0");
+  expect_bad(std::regex_replace(std::regex_replace(with_rates, std::regex("rate_max = R"), "rate_max = 1"),
+                                std::regex("joint = \"elbow\""), "joint = \"wrist\""),
+             "joint: got \"wrist\", expected the name of a hinge joint (\"shoulder\", \"elbow\")");
+  const MultibodyOptimalScenario sc = parse_multibody_optimal_scenario(
+      std::regex_replace(with_rates, std::regex("rate_max = R"), "rate_max = 2.5"), "s.toml", "");
+  ASSERT_EQ(sc.problem.rate_bounds.size(), 1u);
+  EXPECT_EQ(sc.problem.rate_bounds[0].joint, 1);
+  EXPECT_EQ(sc.problem.rate_bounds[0].rate_max, 2.5);
 }
 
 }  // namespace

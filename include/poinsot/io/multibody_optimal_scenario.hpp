@@ -17,6 +17,7 @@
 ///     10000 target_tolerance = 1e-3            # how close the re-simulation must come to the target (see
 ///     below) actuators = [ { joint = "shoulder", torque_max = 50 },   # a motor in a hinge (N·m)
 ///                   { body = "upper", torque_max = 5 } ]       # three body-frame torques on a body (N·m)
+///     rate_bounds = [ { joint = "shoulder", rate_max = 2.0 } ]   # optional: |q̇| ≤ rate_max (rad/s)
 ///     [[optimal_control.final]]          # one per body: the target state at t = final_time
 ///     body = "upper"
 ///     rotation = { axis = [0, 0, 1], angle = 1.0 }   # or quaternion = [w, x, y, z], or a 3×3 matrix

@@ -49,6 +49,10 @@ struct MultibodyProblem {
   std::vector<RateBound> rate_bounds;  ///< path constraints on hinge rates (none by default)
 };
 
+/// The index of the hinge joint called `name`. Throws InvalidInput `got "NAME", expected the name of a hinge
+/// joint (...)` listing the hinges.
+int hinge_index(const multibody::System& system, const std::string& name);
+
 /// The rate q̇ (rad/s) of hinge `joint` at `state` (RateBound's definition).
 double hinge_rate(const multibody::System& system, const multibody::State& state, int joint);
 
