@@ -162,11 +162,11 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
          {"name", actuator_name(p, a)},
          {"torque_max", a.torque_max}});
   }
-  nlohmann::ordered_json rates = nlohmann::ordered_json::array();
+  nlohmann::ordered_json rates = nlohmann::ordered_json::array(), peaks = nlohmann::ordered_json::array();
   for (const optimal::RateBound& b : p.rate_bounds) {
-    rates.push_back({{"joint", p.system.joints()[static_cast<std::size_t>(b.joint)].name},
-                     {"rate_max", b.rate_max},
-                     {"peak_rate", peak_rate(r, b.joint)}});
+    const std::string& name = p.system.joints()[static_cast<std::size_t>(b.joint)].name;
+    rates.push_back({{"joint", name}, {"rate_max", b.rate_max}});
+    peaks.push_back({{"joint", name}, {"peak_rate", peak_rate(r, b.joint)}});
   }
   j["problem"] = {{"final_time", p.final_time},
                   {"coordinates", std::string(coordinates_name(sc.options.coordinates))},
@@ -180,7 +180,8 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
                    {"cost", o.cost},
                    {"nlp_iterations", o.nlp_iterations},
                    {"max_constraint_error", o.max_constraint_error},
-                   {"points", o.time.size()}};
+                   {"points", o.time.size()},
+                   {"peak_rates", peaks}};
   const auto& rp = r.replay;
   j["replay"] = {{"steps", rp.steps},
                  {"attitude_error", rp.attitude_error},

@@ -126,7 +126,9 @@ def test_rate_bound_meets_the_closed_form(cli, tmp_path):
     assert summary["solution"]["cost"] == pytest.approx(16 * I_HINGE**2 * r**3 / (9 * (r * T - THETA)), rel=1e-7)
     bound = summary["problem"]["rate_bounds"][0]
     assert bound["joint"] == "motor" and bound["rate_max"] == r
-    assert r * (1 - 1e-8) < bound["peak_rate"] < r + 2e-8  # active, and respected to Ipopt's relaxation
+    peak = summary["solution"]["peak_rates"][0]
+    assert peak["joint"] == "motor"
+    assert r * (1 - 1e-8) < peak["peak_rate"] < r + 2e-8  # active, and respected to Ipopt's relaxation
     assert "rate bound: |q̇ motor| ≤ 0.75 rad/s" in res.stdout
     assert summary["replay"]["target_reached"] is True
 
