@@ -166,15 +166,16 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
   sc.title = sc.model.title;
   const toml::table root = detail::parse_toml(text, source);
   const Source src{std::string(source)};
-  const Section top(src, &root, "top level",
-                    {"title", "simulation", "bodies", "joints", "springs", "forces", "torques",
-                     "optimal_control", "output"});
+  // The other top-level keys were checked by the system's reader (read_model).
   const Section oc(
       src, root["optimal_control"].as_table(), "optimal_control",
       {"objective", "final_time", "coordinates", "intervals", "nlp_tolerance", "max_nlp_iterations",
        "replay_steps", "target_tolerance", "actuators", "rate_bounds", "final"},
       root.get("optimal_control"));
-  if (!oc.present()) top.fail("optimal_control", "missing; expected an [optimal_control] section");
+  if (!oc.present()) {
+    throw InvalidInput(detail::location(src, nullptr) +
+                       "[top level] optimal_control: missing; expected an [optimal_control] section");
+  }
 
   auto& p = sc.problem;
   p.system = sc.model.system;

@@ -1,7 +1,8 @@
-"""`poinsot optimize` on multibody scenarios: a closed-form problem in both coordinates, the files and --json, re-simulation of the reported control, bad input (exit 2, nothing written),
-non-convergence (exit 1, files marked "not converged") and bit-identical reruns. The arm example is solved by
-python/tests/test_optimize_multibody.py (its minimal-coordinate solve takes seconds, far more under the
-sanitizers, which run these files too)."""
+"""`poinsot optimize` on multibody scenarios: closed-form problems in both coordinates (with and without a
+rate bound), the files and --json, re-simulation of the reported control, bad input (exit 2, nothing
+written), non-convergence (exit 1, files marked "not converged") and bit-identical reruns. The arm example is
+solved by python/tests/test_optimize_multibody.py (its minimal-coordinate solve takes seconds, far more under
+the sanitizers, which run these files too)."""
 import json
 import math
 from pathlib import Path

@@ -101,6 +101,9 @@ TEST(MultibodyOptimalScenario, BadInputIsOneLocatedLine) {
              "objective: got \"minimum_time\", expected \"minimum_energy\"");
   expect_bad(sphere("coordinates = \"joint\"\n" + act + target), "coordinates: got \"joint\"");
   expect_bad(sphere("speed = 1\n" + act + target), "unknown key \"speed\"");
+  expect_bad("[[bodies]]\nname = \"ball\"\nmass = 2.0\nprincipal_moments = [1, 1, 1]\n",
+             "[top level] optimal_control: missing; expected an [optimal_control] section");
+  expect_bad("tilte = \"x\"\n" + sphere(act + target), "[top level] unknown key \"tilte\"");
   expect_bad(
       sphere("rate_bounds = [{ joint = \"ball\", rate_max = 1 }]\n" + act + target),
       "[optimal_control.rate_bounds[0]] joint: got \"ball\", expected the name of a hinge joint (the system "
