@@ -149,6 +149,13 @@ def test_bad_input_is_one_line_exit_2_nothing_written(cli, tmp_path, extra, frag
     assert not out.exists()
 
 
+def test_plot_is_refused_before_solving(cli, tmp_path):
+    r = cli("optimize", write(tmp_path), "--out", tmp_path / "out", "--plot")
+    assert r.returncode == 2
+    assert r.stderr == "poinsot: --plot: figures are drawn for single-body problems only; expected no --plot\n"
+    assert not (tmp_path / "out").exists()
+
+
 def test_unactuated_and_joint_breaking_targets_are_refused(cli, tmp_path):
     text = HINGE.format(coordinates="minimal", intervals=4, extra="")
     for bad, fragment in [(text.replace('actuators = [{ joint = "motor", torque_max = 50 }]', "actuators = []"),
