@@ -13,8 +13,8 @@
 ///   reactions.csv    per point and joint: the reaction on body a (N, N·m, space frame)
 ///   multipliers.csv  per point and body: the centre of mass and Λ (J, body frame)
 ///   summary.json     the same as `--json`: "kind": "multibody_optimal", status, the problem (with its
-///                    actuators and rate bounds), the solution (with the peak rate of every bounded hinge over
-///                    the collocation points), the re-simulation
+///                    actuators and rate bounds), the solution (with the peak rate of every bounded hinge
+///                    over the collocation points), the re-simulation
 /// Every CSV starts with a `# status: ...` line. The result is "optimal" only when Ipopt converged and the
 /// re-simulated control reaches the target within the scenario's tolerance; otherwise the status says
 /// "not converged: ..." everywhere and the last iterate is kept.
