@@ -60,6 +60,7 @@ from . import plot
 from ._simulate import RunResult, SimulationResult, run, scenario_toml, simulate
 from ._view import view
 from ._optimize import DirectSolution, OptimalSolution, optimize
+from ._optimize_multibody import MultibodyOptimalSolution
 
 __all__ = [
     "__version__",
@@ -108,6 +109,7 @@ __all__ = [
     "optimal",
     "optimize",
     "OptimalSolution",
+    "MultibodyOptimalSolution",
     "DirectSolution",
 ]
 

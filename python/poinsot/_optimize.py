@@ -19,6 +19,7 @@ from typing import Any, Callable, Mapping
 import numpy as np
 
 from . import _core
+from ._optimize_multibody import MultibodyOptimalSolution, multibody_input, solve_multibody
 from ._simulate import scenario_toml
 
 
@@ -176,20 +177,25 @@ def _solve_single_body(scenario: Any, out_dir: str) -> OptimalSolution:
 
 # (recognise, solve) pairs, tried in order (see the module's docstring).
 _SOLVERS: list[tuple[Callable[[Any], Any], Callable[[Any, str], Any]]] = [
+    (multibody_input, solve_multibody),
     (_single_body_input, _solve_single_body),
 ]
 
 
 def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tolerance: float | None = None,
              initial_intervals: int | None = None, max_mesh_iterations: int | None = None,
-             plot: bool = False, warn: bool = True) -> OptimalSolution:
+             plot: bool = False, warn: bool = True) -> OptimalSolution | MultibodyOptimalSolution:
     """Solves an optimal reorientation as ``poinsot optimize`` does and returns the solution as NumPy arrays.
 
     ``problem``: the path of a scenario file with an ``[optimal_control]`` section (docs/optimal_control.md), a
     dict with the same layout (``{"body": {...}, "optimal_control": {..., "initial": {...}, "final":
     {...}}}``), a ``poinsot.optimal.OptimalScenario``, or a ``poinsot.optimal.ReorientationProblem``.
     ``mesh_tolerance``, ``initial_intervals``, ``max_mesh_iterations`` replace the direct method's options
-    (None: the scenario's, else the defaults). With ``out_dir`` the files of ``poinsot optimize`` (report.txt,
+    (None: the scenario's, else the defaults). ``problem`` may also be a multibody scenario file (a
+    ``[[bodies]]`` array and an ``[optimal_control]`` section, docs/optimal_control.md) or a
+    ``poinsot.optimal.MultibodyProblem`` built around a ``poinsot.multibody.System``: the result is then a
+    ``MultibodyOptimalSolution`` (``initial_intervals`` sets its equal intervals; the mesh options and
+    ``plot`` are refused). With ``out_dir`` the files of ``poinsot optimize`` (report.txt,
     trajectory.csv, control.csv, costates.csv, summary.json) are written there, and with ``plot=True`` also
     the figures of ``poinsot optimize --plot`` (``poinsot.plot_optimal``; listed in ``figures``).
 
@@ -204,9 +210,11 @@ def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tol
             break
     else:
         raise TypeError("problem: expected a scenario path, a dict with the scenario's layout, a "
-                        "poinsot.optimal.OptimalScenario or a poinsot.optimal.ReorientationProblem, got "
-                        f"{type(problem).__name__}")
+                        "poinsot.optimal.OptimalScenario, a poinsot.optimal.ReorientationProblem or a "
+                        f"poinsot.optimal.MultibodyProblem, got {type(problem).__name__}")
     folder = os.fspath(out_dir) if out_dir is not None else ""
+    if plot and not getattr(prepared, "plots", True):
+        raise ValueError("plot: figures are drawn for single-body problems only; expected plot=False")
     if plot and not folder:
         raise ValueError("plot: the figures are drawn from the solution's files; expected an out_dir")
     options = dict(mesh_tolerance=mesh_tolerance, initial_intervals=initial_intervals,

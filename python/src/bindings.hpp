@@ -22,6 +22,8 @@ void bind_multibody_system(pybind11::module_& m);
 void bind_view(pybind11::module_& m);
 void bind_ensemble(pybind11::module_& m);
 void bind_optimal(pybind11::module_& m);
+/// poinsot.optimal's multibody problems; after bind_optimal (adds to its submodule).
+void bind_optimal_multibody(pybind11::module_& m);
 
 /// A TorqueModel calling the Python callable f(t, R, omega_body) -> (3,) (takes the GIL for each call).
 std::shared_ptr<dynamics::TorqueModel> python_torque(pybind11::function f, bool depends_on_omega,

@@ -26,4 +26,5 @@ PYBIND11_MODULE(_core, m) {
   poinsot::python::bind_view(m);
   poinsot::python::bind_ensemble(m);
   poinsot::python::bind_optimal(m);
+  poinsot::python::bind_optimal_multibody(m);
 }

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "multibody_csv.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/io/line_file.hpp"
 #include "poinsot/io/summary.hpp"
@@ -13,13 +14,8 @@
 #include "poinsot/multibody/observables.hpp"
 
 namespace poinsot::io {
-namespace {
 
-using multibody::State;
-using multibody::System;
-
-void write_trajectory_header(LineFile& f, const System& sys) {
-  std::string& out = f.buffer();
+void detail::append_trajectory_header(std::string& out, const multibody::System& sys) {
   out += "t";
   for (const multibody::Body& b : sys.bodies()) {
     for (const char* c : {"x", "y", "z", "qw", "qx", "qy", "qz", "vx", "vy", "vz", "wx", "wy", "wz"})
@@ -28,9 +24,8 @@ void write_trajectory_header(LineFile& f, const System& sys) {
   out += '\n';
 }
 
-/// One trajectory row, 17 significant digits (an exact round trip).
-void write_trajectory_row(LineFile& f, const State& st) {
-  auto out = std::back_inserter(f.buffer());
+void detail::append_trajectory_row(std::string& text, const multibody::State& st) {
+  auto out = std::back_inserter(text);
   fmt::format_to(out, "{:.17g}", st.time);
   for (const multibody::BodyState& b : st.bodies) {
     const Quat q(b.R_space_body);
@@ -39,7 +34,57 @@ void write_trajectory_row(LineFile& f, const State& st) {
     fmt::format_to(out, ",{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}", b.v_space.x(), b.v_space.y(),
                    b.v_space.z(), b.omega_body.x(), b.omega_body.y(), b.omega_body.z());
   }
-  f.buffer() += '\n';
+  text += '\n';
+}
+
+/// reactions.csv: per joint, the reaction on body a at the joint point (space frame).
+std::string detail::reactions_csv(const multibody::System& sys, const multibody::Multipliers& ex, double t,
+                                  bool header) {
+  std::string out = header ? "t,joint,body_a,body_b,Fx,Fy,Fz,F_norm,Cx,Cy,Cz,C_norm\n" : "";
+  for (std::size_t j = 0; j < sys.joints().size(); ++j) {
+    const multibody::Joint& joint = sys.joints()[j];
+    const auto name_of = [&](int b) {
+      return b == multibody::kWorld ? std::string("world") : sys.bodies()[static_cast<std::size_t>(b)].name;
+    };
+    const Vec3& F = ex.joint_force_space[j];
+    const Vec3& C = ex.joint_torque_space[j];
+    fmt::format_to(std::back_inserter(out),
+                   "{:.17g},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", t,
+                   joint.name, name_of(joint.body_a), name_of(joint.body_b), F.x(), F.y(), F.z(), F.norm(),
+                   C.x(), C.y(), C.z(), C.norm());
+  }
+  return out;
+}
+
+/// multipliers.csv: per body, its centre of mass and Λ (body frame, row by row).
+std::string detail::multipliers_csv(const multibody::System& sys, const multibody::State& st,
+                                    const multibody::Multipliers& ex, bool header) {
+  std::string out = header ? "t,body,x,y,z,Lambda_xx,Lambda_xy,Lambda_xz,Lambda_yx,Lambda_yy,Lambda_yz,"
+                             "Lambda_zx,Lambda_zy,Lambda_zz\n"
+                           : "";
+  for (std::size_t i = 0; i < sys.bodies().size(); ++i) {
+    const Vec3& x = st.bodies[i].x_space;
+    const Mat3& L = ex.Lambda_body[i];
+    fmt::format_to(std::back_inserter(out),
+                   "{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
+                   "{:.17g},{:.17g},{:.17g}\n",
+                   st.time, sys.bodies()[i].name, x.x(), x.y(), x.z(), L(0, 0), L(0, 1), L(0, 2), L(1, 0),
+                   L(1, 1), L(1, 2), L(2, 0), L(2, 1), L(2, 2));
+  }
+  return out;
+}
+
+namespace {
+
+using multibody::State;
+using multibody::System;
+
+void write_trajectory_header(LineFile& f, const System& sys) {
+  detail::append_trajectory_header(f.buffer(), sys);
+}
+
+void write_trajectory_row(LineFile& f, const State& st) {
+  detail::append_trajectory_row(f.buffer(), st);
   f.line_done();
 }
 
@@ -62,41 +107,6 @@ void write_diagnostics_row(LineFile& f, const System& sys, const State& st, doub
                  st.time, E, E - energy_initial, T, V, multibody::linear_momentum(sys, st).norm(), L.x(),
                  L.y(), L.z(), v.joint_gap, v.joint_angle, v.orthogonality);
   f.line_done();
-}
-
-/// reactions.csv: per joint, the reaction on body a at the joint point (space frame).
-std::string reactions_csv(const System& sys, const multibody::ExactMultipliers& ex, double t) {
-  std::string out = "t,joint,body_a,body_b,Fx,Fy,Fz,F_norm,Cx,Cy,Cz,C_norm\n";
-  for (std::size_t j = 0; j < sys.joints().size(); ++j) {
-    const multibody::Joint& joint = sys.joints()[j];
-    const auto name_of = [&](int b) {
-      return b == multibody::kWorld ? std::string("world") : sys.bodies()[static_cast<std::size_t>(b)].name;
-    };
-    const Vec3& F = ex.joint_force_space[j];
-    const Vec3& C = ex.joint_torque_space[j];
-    fmt::format_to(std::back_inserter(out),
-                   "{:.17g},{},{},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g}\n", t,
-                   joint.name, name_of(joint.body_a), name_of(joint.body_b), F.x(), F.y(), F.z(), F.norm(),
-                   C.x(), C.y(), C.z(), C.norm());
-  }
-  return out;
-}
-
-/// multipliers.csv: per body, its centre of mass and Λ (body frame, row by row).
-std::string multipliers_csv(const System& sys, const State& st, const multibody::ExactMultipliers& ex) {
-  std::string out =
-      "t,body,x,y,z,Lambda_xx,Lambda_xy,Lambda_xz,Lambda_yx,Lambda_yy,Lambda_yz,Lambda_zx,"
-      "Lambda_zy,Lambda_zz\n";
-  for (std::size_t i = 0; i < sys.bodies().size(); ++i) {
-    const Vec3& x = st.bodies[i].x_space;
-    const Mat3& L = ex.Lambda_body[i];
-    fmt::format_to(std::back_inserter(out),
-                   "{:.17g},{},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},{:.17g},"
-                   "{:.17g},{:.17g},{:.17g}\n",
-                   st.time, sys.bodies()[i].name, x.x(), x.y(), x.z(), L(0, 0), L(0, 1), L(0, 2), L(1, 0),
-                   L(1, 1), L(1, 2), L(2, 0), L(2, 1), L(2, 2));
-  }
-  return out;
 }
 
 std::string in_dir(const std::string& dir, const char* name) {
@@ -147,8 +157,10 @@ MultibodyRunSummary run_multibody_scenario(const multibody::Scenario& sc,
   if (sum.run.failure.empty()) sum.final_multipliers = multibody::exact_multipliers(sys, final_state);
   if (!sum.final_multipliers) sum.reactions_file.clear(), sum.multipliers_file.clear();
   if (sum.final_multipliers && !dir.empty()) {
-    write_file_atomic(sum.reactions_file, reactions_csv(sys, *sum.final_multipliers, final_state.time));
-    write_file_atomic(sum.multipliers_file, multipliers_csv(sys, final_state, *sum.final_multipliers));
+    write_file_atomic(sum.reactions_file,
+                      detail::reactions_csv(sys, *sum.final_multipliers, final_state.time));
+    write_file_atomic(sum.multipliers_file,
+                      detail::multipliers_csv(sys, final_state, *sum.final_multipliers));
   }
   if (!dir.empty()) {
     write_file_atomic(sum.report_file, format_multibody_report(sc, sum));

@@ -27,7 +27,18 @@ using detail::Section;
 using detail::Source;
 using multibody::kWorld;
 
-Mat3 read_rotation(const Source& src, const Section& b) {
+}  // namespace
+
+const toml::array* detail::table_array(const Section& section, std::string_view key) {
+  const toml::node* n = section.node(key);
+  if (n == nullptr) return nullptr;
+  const toml::array* a = n->as_array();
+  if (a == nullptr || (!a->empty() && !a->is_array_of_tables()))
+    section.fail(key, fmt::format("got {}, expected an array of tables [[{}]]", detail::describe(*n), key));
+  return a;
+}
+
+Mat3 detail::read_rotation(const Source& src, const Section& b) {
   if (b.has("quaternion") && b.has("rotation"))
     b.fail("quaternion", "given with rotation; expected one of them (the body's orientation)");
   if (const auto q = b.numbers("quaternion", 4)) {
@@ -56,6 +67,10 @@ Mat3 read_rotation(const Source& src, const Section& b) {
   return so3::project_to_so3(M);
 }
 
+namespace {
+
+using detail::read_rotation;
+
 /// The joint types that take an axis (axis_a, or with `second` axis_b), for messages: "hinge, universal or
 /// prismatic joints".
 std::string axis_joint_names(bool second = false) {
@@ -74,13 +89,8 @@ std::string axis_joint_names(bool second = false) {
 }
 
 /// The array of tables `key` of the top level, or null.
-const toml::array* entries(const Section& top, const toml::table& root, std::string_view key) {
-  const toml::node* n = root.get(key);
-  if (n == nullptr) return nullptr;
-  const toml::array* a = n->as_array();
-  if (a == nullptr || (!a->empty() && !a->is_array_of_tables()))
-    top.fail(key, fmt::format("got {}, expected an array of tables [[{}]]", detail::describe(*n), key));
-  return a;
+const toml::array* entries(const Section& top, const toml::table& /*root*/, std::string_view key) {
+  return detail::table_array(top, key);
 }
 
 /// What the reader keeps of each body besides the model: the centre of mass in the body's frame.

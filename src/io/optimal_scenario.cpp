@@ -83,15 +83,8 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   else if (oc.has("final_time"))
     oc.fail("final_time", "given for a free-final-time objective; only minimum_energy takes final_time");
   if (const auto m = oc.number("mesh_tolerance")) sc.collocation.mesh_tolerance = *m;
-  const auto count = [&](std::string_view key, int lo, int hi) {
-    const double v = *oc.number(key);
-    if (!(v >= lo && v <= hi && v == std::floor(v)))
-      oc.fail(key, fmt::format("got {}, expected an integer from {} to {}", format_number(v), lo, hi));
-    return static_cast<int>(v);
-  };
-  if (oc.has("initial_intervals")) sc.collocation.initial_intervals = count("initial_intervals", 2, 4000);
-  if (oc.has("max_mesh_iterations"))
-    sc.collocation.max_mesh_iterations = count("max_mesh_iterations", 1, 100);
+  if (const auto n = oc.integer("initial_intervals", 2, 4000)) sc.collocation.initial_intervals = *n;
+  if (const auto n = oc.integer("max_mesh_iterations", 1, 100)) sc.collocation.max_mesh_iterations = *n;
   if (const auto m = oc.number("mesh_tolerance"); m && !(*m > 0.0))
     oc.fail("mesh_tolerance", fmt::format("got {}, expected a positive tolerance", format_number(*m)));
   const Endpoint a = read_endpoint(src, oc, "initial"), f = read_endpoint(src, oc, "final");

@@ -19,4 +19,12 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
 multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::string_view source,
                                                   std::string_view base_dir);
 
+/// The array of tables `key` of a section (`[[key]]`, or an array of inline tables), or null when absent.
+/// Throws located InvalidInput when it is something else.
+const toml::array* table_array(const Section& section, std::string_view key);
+
+/// A body's orientation in a multibody file: `rotation` ({ axis, angle } rad, or a 3×3 rotation matrix) or
+/// `quaternion` = [w, x, y, z] (normalised); the identity when neither is given. Throws located InvalidInput.
+Mat3 read_rotation(const Source& src, const Section& body);
+
 }  // namespace poinsot::io::detail

@@ -121,6 +121,14 @@ std::optional<double> Section::number(std::string_view key) const {
   return x;
 }
 
+std::optional<int> Section::integer(std::string_view key, int lo, int hi) const {
+  const auto v = number(key);
+  if (!v) return std::nullopt;
+  if (!(*v >= lo && *v <= hi && *v == std::floor(*v)))
+    fail(key, fmt::format("got {}, expected an integer from {} to {}", format_number(*v), lo, hi));
+  return static_cast<int>(*v);
+}
+
 std::optional<std::vector<double>> Section::numbers(std::string_view key, std::size_t count) const {
   const toml::node* n = node(key);
   if (n == nullptr) return std::nullopt;

@@ -54,6 +54,9 @@ class Section {
 
   /// A finite number (TOML integer or float); nullopt when absent.
   std::optional<double> number(std::string_view key) const;
+  /// A whole number from `lo` to `hi` (a TOML integer, or a float with no fractional part); nullopt when
+  /// absent. Throws `got V, expected an integer from LO to HI` otherwise.
+  std::optional<int> integer(std::string_view key, int lo, int hi) const;
   /// An array of exactly three finite numbers.
   std::optional<Vec3> vec3(std::string_view key) const;
   /// An array of n finite numbers.

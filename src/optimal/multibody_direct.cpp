@@ -11,7 +11,9 @@
 #include "hermite_simpson_dae.hpp"
 #include "multibody_controls.hpp"
 #include "multibody_minimal_model.hpp"
+#include "multibody_rate_rows.hpp"
 #include "multibody_rotation_model.hpp"
+#include "path_inequality_nlp.hpp"
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::optimal {
@@ -19,6 +21,9 @@ namespace {
 
 using detail::CollocationModel;
 using detail::HermiteSimpsonDae;
+using detail::PathInequalityNlp;
+using detail::PointFunctions;
+using detail::SparseNlp;
 
 /// The rows N ᵀ of an orthonormal basis N of the null space of C (the tangent space of the constraints).
 Eigen::MatrixXd tangent_rows(const Eigen::MatrixXd& C) {
@@ -32,18 +37,27 @@ Eigen::MatrixXd tangent_rows(const Eigen::MatrixXd& C) {
 }
 
 /// Solves the transcription of `model` and fills the parts of the optimum common to both formulations.
-/// `decode(w, t)` gives the multibody state of the point variables w.
+/// `decode(w, t)` gives the multibody state of the point variables w; `rates` the hinge rates of the
+/// problem's rate bounds at a point (multibody_rate_rows.hpp), bounded at every point but the first.
 template <class Decode>
 MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationModel& model,
                              const Eigen::VectorXd& y0, const Eigen::VectorXd& yf,
-                             const Eigen::MatrixXd& final_rows, const MultibodyOptions& options,
-                             Decode decode, std::chrono::steady_clock::time_point start) {
-  const HermiteSimpsonDae nlp(model, problem.intervals, problem.final_time, y0, final_rows, final_rows * yf);
+                             const Eigen::MatrixXd& final_rows, const PointFunctions& rates,
+                             const MultibodyOptions& options, Decode decode,
+                             std::chrono::steady_clock::time_point start) {
+  const HermiteSimpsonDae base(model, problem.intervals, problem.final_time, y0, final_rows, final_rows * yf);
+  std::vector<double> rate_max;
+  for (const RateBound& b : problem.rate_bounds)
+    rate_max.push_back(b.rate_max);
+  std::vector<double> rate_min(rate_max.size());
+  std::transform(rate_max.begin(), rate_max.end(), rate_min.begin(), [](double r) { return -r; });
+  const PathInequalityNlp bounded(base, rates, rate_min, rate_max);
+  const SparseNlp& nlp = rates.rows() > 0 ? static_cast<const SparseNlp&>(bounded) : base;
   const int nw = model.point_size();
   const int ny = model.state_size();
   std::vector<double> guess(static_cast<std::size_t>(nlp.num_variables()), 0.0);
-  for (int p = 0; p < nlp.points(); ++p) {
-    const double s = static_cast<double>(p) / (nlp.points() - 1);
+  for (int p = 0; p < base.points(); ++p) {
+    const double s = static_cast<double>(p) / (base.points() - 1);
     Eigen::Map<Eigen::VectorXd>(guess.data() + nw * p, ny) = (1.0 - s) * y0 + s * yf;
   }
   detail::IpoptSettings settings;
@@ -61,11 +75,11 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   std::vector<double> lo, up, glo, gup;
   nlp.bounds(lo, up, glo, gup);
   for (std::size_t r = 0; r < g.size(); ++r)
-    out.max_constraint_error = std::max(out.max_constraint_error, std::abs(g[r] - glo[r]));
-  for (int p = 0; p < nlp.points(); ++p) {
+    out.max_constraint_error = std::max({out.max_constraint_error, glo[r] - g[r], g[r] - gup[r]});
+  for (int p = 0; p < base.points(); ++p) {
     const double* w = sol.x.data() + nw * p;
-    out.time.push_back(nlp.point_time(p));
-    out.states.push_back(decode(w, nlp.point_time(p)));
+    out.time.push_back(base.point_time(p));
+    out.states.push_back(decode(w, base.point_time(p)));
     Eigen::VectorXd u(static_cast<Eigen::Index>(model.control_indices().size()));
     for (std::size_t k = 0; k < model.control_indices().size(); ++k)
       u(static_cast<Eigen::Index>(k)) = w[model.control_indices()[k]];
@@ -86,7 +100,7 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     const Eigen::VectorXd yf = model.state_vector(problem.final_state);
     const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
     MultibodyOptimum out = solve_model(
-        problem, model, y0, yf, rows, options,
+        problem, model, y0, yf, rows, detail::minimal_rate_rows(problem), options,
         [&](const double* w, double t) { return model.state_of(w, t); }, start);
     // No multiplier is a variable here: the reactions and Λ of the continuous equations at each point's
     // state and controls (one KKT solve each, multibody/multipliers.hpp).
@@ -102,7 +116,7 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
   const Eigen::MatrixXd rows = tangent_rows(model.invariant_jacobian(problem.final_state));
   std::vector<multibody::Multipliers> multipliers;
   MultibodyOptimum out = solve_model(
-      problem, model, y0, yf, rows, options,
+      problem, model, y0, yf, rows, detail::rotation_rate_rows(problem, model), options,
       [&](const double* w, double t) {
         multipliers.push_back(model.multipliers_of(w));
         return model.state_of(w, t);

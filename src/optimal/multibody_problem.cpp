@@ -2,6 +2,7 @@
 #include "poinsot/optimal/multibody_problem.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -102,6 +103,46 @@ void validate(const MultibodyProblem& p) {
   }
   check_state(p, p.initial_state, "initial state");
   check_state(p, p.final_state, "final state");
+  for (std::size_t i = 0; i < p.rate_bounds.size(); ++i) {
+    const RateBound& b = p.rate_bounds[i];
+    const std::string what = fmt::format("optimal control: rate_bounds[{}]", i);
+    if (b.joint < 0 || b.joint >= p.system.joint_count() ||
+        p.system.joints()[static_cast<std::size_t>(b.joint)].type != multibody::JointType::hinge) {
+      throw InvalidInput(fmt::format("{}: joint: got index {}; expected a hinge joint", what, b.joint));
+    }
+    if (!(b.rate_max > 0.0))
+      throw InvalidInput(fmt::format("{}: rate_max: got {} rad/s; expected a number > 0", what, b.rate_max));
+    for (const auto& [state, name] :
+         {std::pair{&p.initial_state, "initial"}, std::pair{&p.final_state, "final"}}) {
+      const double rate = hinge_rate(p.system, *state, b.joint);
+      if (std::abs(rate) > b.rate_max) {
+        throw InvalidInput(
+            fmt::format("{}: rate_max: the {} state's rate {} rad/s exceeds the bound {} rad/s; "
+                        "expected boundary states within the bound",
+                        what, name, rate, b.rate_max));
+      }
+    }
+  }
+}
+
+int hinge_index(const multibody::System& system, const std::string& name) {
+  std::string hinges;
+  for (std::size_t j = 0; j < system.joints().size(); ++j) {
+    const multibody::Joint& joint = system.joints()[j];
+    if (joint.type != multibody::JointType::hinge) continue;
+    if (joint.name == name) return static_cast<int>(j);
+    hinges += (hinges.empty() ? "\"" : ", \"") + joint.name + "\"";
+  }
+  throw InvalidInput(fmt::format("got \"{}\", expected the name of a hinge joint ({})", name,
+                                 hinges.empty() ? "the system has none" : hinges));
+}
+
+double hinge_rate(const multibody::System& system, const multibody::State& state, int joint) {
+  const multibody::Joint& j = system.joints()[static_cast<std::size_t>(joint)];
+  const auto& a = multibody::side_state(state.bodies, j.body_a);
+  const auto& b = multibody::side_state(state.bodies, j.body_b);
+  const Vec3 axis_a = j.p_a[0].cross(j.p_a[1]);
+  return axis_a.dot(a.omega_body - a.R_space_body.transpose() * b.R_space_body * b.omega_body);
 }
 
 }  // namespace poinsot::optimal

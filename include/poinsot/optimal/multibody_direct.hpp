@@ -14,7 +14,9 @@
 ///   derivatives exact by forward automatic differentiation of second order.
 ///
 /// Both minimise ∫ Σ u_i² dt at fixed T, from the full initial state to the final state, on N equal
-/// intervals. The naive initial guess is used: every state coordinate linearly interpolated between the two
+/// intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point but
+/// the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
+/// ones). The naive initial guess is used: every state coordinate linearly interpolated between the two
 /// boundary states, every other variable zero. A result is `converged` only when Ipopt reports success;
 /// otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
 #include <string>

@@ -31,14 +31,30 @@ struct Actuator {
   int controls() const { return kind == ActuatorKind::hinge_torque ? 1 : 3; }
 };
 
+/// A path constraint on a hinge's rate: |q̇| ≤ rate_max (rad/s) at every collocation point, with q̇ = n·(ω_a −
+/// E ω_b) the rate of body a relative to body b about the hinge axis n (body a's frame; E = R_aᵀR_b), the
+/// world's ω being 0.
+struct RateBound {
+  int joint = 0;          ///< the hinge's joint index
+  double rate_max = 1.0;  ///< rad/s, > 0
+};
+
 struct MultibodyProblem {
   multibody::System system;        ///< ball, hinge, weld and universal joints; gravity, constant loads
   multibody::State initial_state;  ///< consistent (multibody::check_consistent), velocities on the joints
   multibody::State final_state;    ///< consistent target at t = T
   double final_time = 1.0;         ///< T, s
   std::vector<Actuator> actuators;
-  int intervals = 20;  ///< Hermite–Simpson intervals (equal)
+  int intervals = 20;                  ///< Hermite–Simpson intervals (equal)
+  std::vector<RateBound> rate_bounds;  ///< path constraints on hinge rates (none by default)
 };
+
+/// The index of the hinge joint called `name`. Throws InvalidInput `got "NAME", expected the name of a hinge
+/// joint (...)` listing the hinges.
+int hinge_index(const multibody::System& system, const std::string& name);
+
+/// The rate q̇ (rad/s) of hinge `joint` at `state` (RateBound's definition).
+double hinge_rate(const multibody::System& system, const multibody::State& state, int joint);
 
 /// Total number of scalar controls.
 int control_count(const MultibodyProblem& problem);
@@ -47,7 +63,8 @@ int control_count(const MultibodyProblem& problem);
 /// system has no springs and no prismatic joints (their loads or rows are not written for the
 /// transcriptions); every actuator names an existing hinge or body and has a bound > 0; there is at least one
 /// actuator; both states are consistent (multibody::check_consistent) and have joint velocities below 1e-9
-/// (relative); every hinge axis points the same way on both sides.
+/// (relative); every hinge axis points the same way on both sides; every rate bound names a hinge, is > 0 and
+/// holds at both states.
 void validate(const MultibodyProblem& problem);
 
 }  // namespace poinsot::optimal

@@ -1,0 +1,77 @@
+#pragma once
+/// @file multibody_optimal_scenario.hpp
+/// Multibody scenario files with an `[optimal_control]` section, for `poinsot optimize`
+/// (docs/optimal_control.md, "Multibody scenario files"): the system and its initial state exactly as
+/// `poinsot run` reads them (multibody_scenario.hpp: [simulation] gravity, [[bodies]], [[joints]],
+/// [[forces]], [[torques]]; the integration keys dt, duration, output_every, method and order are read but
+/// not used), and the problem:
+///
+///     [optimal_control]
+///     objective = "minimum_energy"       # ∫ Σ u_i² dt at fixed final_time
+///     final_time = 1.5                   # s
+///     coordinates = "rotation_matrix"    # or "minimal" (a tree of hinges rooted at the world)
+///     intervals = 20                     # Hermite–Simpson intervals, 2 … 2000
+///     nlp_tolerance = 1e-10              # optional: Ipopt's tol
+///     max_nlp_iterations = 500           # optional, 1 … 100000
+///     replay_steps = 64                  # projected-RK4 steps per interval re-simulating the control, 1 …
+///     10000 target_tolerance = 1e-3            # how close the re-simulation must come to the target (see
+///     below) actuators = [ { joint = "shoulder", torque_max = 50 },   # a motor in a hinge (N·m)
+///                   { body = "upper", torque_max = 5 } ]       # three body-frame torques on a body (N·m)
+///     rate_bounds = [ { joint = "shoulder", rate_max = 2.0 } ]   # optional: |q̇| ≤ rate_max (rad/s)
+///     [[optimal_control.final]]          # one per body: the target state at t = final_time
+///     body = "upper"
+///     rotation = { axis = [0, 0, 1], angle = 1.0 }   # or quaternion = [w, x, y, z], or a 3×3 matrix
+///     center_of_mass = [x, y, z]         # m, optional: else placed by its joints (see below)
+///     velocity = [vx, vy, vz]            # m/s (centre of mass), optional, default 0
+///     omega_body = [wx, wy, wz]          # rad/s, optional, default 0
+///     [output]
+///     dir = "..."                        # optional, default SCENARIO-optimize
+///
+/// A target body without `center_of_mass` is placed by a joint to the world or to a placed body so that the
+/// joint's two points coincide (x_a = x_b + R_b p_b − R_a p_a); the target's velocities are projected onto
+/// the joints as the initial ones are (least change of kinetic energy), so a rest-to-rest target needs
+/// rotations only. The re-simulation meets the target when its attitude error is at most `target_tolerance`
+/// rad, its position error at most target_tolerance·L and its velocity error at most target_tolerance·max(1
+/// m, L)/T (L the system's length scale; the velocity error is the larger of |Δv| in m/s and |Δω| in rad/s).
+///
+/// Throws InvalidInput, one line located at the key, for every malformed or invalid value; the problem's own
+/// checks (optimal::validate: a target that violates a joint, no actuator, a bound ≤ 0, ...) are located at
+/// [optimal_control].
+#include <string>
+#include <string_view>
+
+#include "poinsot/multibody/scenario.hpp"
+#include "poinsot/optimal/multibody_direct.hpp"
+#include "poinsot/optimal/multibody_problem.hpp"
+
+namespace poinsot::io {
+
+struct MultibodyOptimalScenario {
+  std::string name;                   ///< the file's stem
+  std::string source;                 ///< the file's path (or "<string>")
+  std::string title;                  ///< the file's `title`, or empty
+  multibody::Scenario model;          ///< the system and initial state as `poinsot run` reads them
+  optimal::MultibodyProblem problem;  ///< validated
+  optimal::MultibodyOptions options;  ///< coordinates and Ipopt's settings
+  int replay_steps = 64;              ///< projected-RK4 steps per interval in the re-simulation
+  double target_tolerance = 1e-3;     ///< see the file comment
+  std::string out_dir;                ///< [output] dir; empty: the default
+};
+
+/// Parses scenario text; `source` names it in messages, `base_dir` resolves relative mesh paths. Throws
+/// InvalidInput located at the offending key.
+MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text, std::string_view source,
+                                                          std::string_view base_dir);
+/// Reads and parses the file at `path` (name = its stem).
+MultibodyOptimalScenario load_multibody_optimal_scenario(const std::string& path);
+
+/// A scenario around a problem built in code (Python's poinsot.optimal.MultibodyProblem): named "multibody",
+/// source "<problem>", the default replay and target tolerance, no output folder. Throws InvalidInput when
+/// the problem is invalid (optimal::validate).
+MultibodyOptimalScenario multibody_optimal_scenario_of(const optimal::MultibodyProblem& problem,
+                                                       const optimal::MultibodyOptions& options = {});
+
+/// The name of a coordinates value as the files spell it ("rotation_matrix", "minimal").
+std::string_view coordinates_name(optimal::MultibodyCoordinates coordinates);
+
+}  // namespace poinsot::io

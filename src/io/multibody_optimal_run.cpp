@@ -1,0 +1,224 @@
+// `poinsot optimize` on a multibody scenario (see multibody_optimal_run.hpp).
+#include "poinsot/io/multibody_optimal_run.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iterator>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "multibody_csv.hpp"
+#include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
+#include "poinsot/io/summary.hpp"
+
+namespace poinsot::io {
+namespace {
+
+std::string num(double v, int digits = 6) {
+  return format_number(v, digits);
+}
+
+/// The actuator's name in the files: the hinge's or the body's.
+std::string actuator_name(const optimal::MultibodyProblem& p, const optimal::Actuator& a) {
+  return a.kind == optimal::ActuatorKind::hinge_torque
+             ? p.system.joints()[static_cast<std::size_t>(a.index)].name
+             : p.system.bodies()[static_cast<std::size_t>(a.index)].name;
+}
+
+/// "shoulder.u" or "upper.ux", "upper.uy", "upper.uz": the columns of control.csv, actuator order.
+std::vector<std::string> control_columns(const optimal::MultibodyProblem& p) {
+  std::vector<std::string> out;
+  for (const optimal::Actuator& a : p.actuators) {
+    const std::string name = actuator_name(p, a);
+    if (a.kind == optimal::ActuatorKind::hinge_torque) {
+      out.push_back(name + ".u");
+    } else {
+      for (const char* c : {".ux", ".uy", ".uz"})
+        out.push_back(name + c);
+    }
+  }
+  return out;
+}
+
+/// The velocity bound of the target check (multibody_optimal_scenario.hpp): tolerance · max(1 m, L) / T.
+double velocity_bound(const MultibodyOptimalScenario& sc) {
+  return sc.target_tolerance * std::max(1.0, sc.problem.system.length_scale()) / sc.problem.final_time;
+}
+
+/// The largest |q̇| of hinge `joint` over the collocation points (rad/s).
+double peak_rate(const MultibodyOptimalRun& r, int joint) {
+  double peak = 0.0;
+  for (const multibody::State& s : r.optimum.states)
+    peak = std::max(peak, std::abs(optimal::hinge_rate(r.scenario.problem.system, s, joint)));
+  return peak;
+}
+
+}  // namespace
+
+MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& sc) {
+  MultibodyOptimalRun r;
+  r.scenario = sc;
+  r.optimum = optimal::solve_multibody(sc.problem, sc.options);
+  std::string failure = r.optimum.converged ? "" : r.optimum.status.substr(r.optimum.status.find(':') + 2);
+  try {
+    r.replay = optimal::replay_controls(sc.problem, r.optimum, sc.replay_steps);
+    const double L = sc.problem.system.length_scale();
+    r.target_reached = r.replay.attitude_error <= sc.target_tolerance &&
+                       r.replay.position_error <= sc.target_tolerance * L &&
+                       r.replay.velocity_error <= velocity_bound(sc);
+    if (!r.target_reached && failure.empty()) {
+      failure = fmt::format(
+          "the re-simulated control misses the target (attitude {} rad, position {} m, velocity {}; "
+          "tolerance {}): expected more intervals",
+          num(r.replay.attitude_error, 3), num(r.replay.position_error, 3), num(r.replay.velocity_error, 3),
+          num(sc.target_tolerance, 3));
+    }
+  } catch (const ComputationFailed& e) {
+    if (failure.empty()) failure = fmt::format("the re-simulation failed: {}", e.what());
+  }
+  r.optimal = failure.empty();
+  r.status = r.optimal ? "optimal" : "not converged: " + failure;
+  return r;
+}
+
+std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
+  const auto& sc = r.scenario;
+  const auto& p = sc.problem;
+  const auto& o = r.optimum;
+  std::ostringstream out;
+  out << "poinsot optimize: " << sc.source << "\n";
+  if (!sc.title.empty()) out << "  " << sc.title << "\n";
+  out << fmt::format("system: {} bodies, {} joints, gravity {} m/s²\n", p.system.body_count(),
+                     p.system.joint_count(), format_vector(p.system.gravity()));
+  out << fmt::format(
+      "objective: minimum_energy (∫ Σ u² dt) at T = {} s; {} coordinates, Hermite–Simpson on {} "
+      "intervals, Ipopt\n",
+      num(p.final_time, 12), coordinates_name(sc.options.coordinates), p.intervals);
+  out << "actuators:";
+  for (const optimal::Actuator& a : p.actuators) {
+    out << fmt::format(
+        "{} {} ({}, |u| ≤ {} N·m)", &a == &p.actuators.front() ? "" : ",", actuator_name(p, a),
+        a.kind == optimal::ActuatorKind::hinge_torque ? "hinge motor" : "body torque, body frame",
+        num(a.torque_max));
+  }
+  for (const optimal::RateBound& b : p.rate_bounds) {
+    out << fmt::format("\nrate bound: |q̇ {}| ≤ {} rad/s",
+                       p.system.joints()[static_cast<std::size_t>(b.joint)].name, num(b.rate_max));
+  }
+  out << "\nstatus: " << r.status << "\n\n";
+  out << fmt::format("solution: {}; {} Ipopt iterations, cost {} N²·m²·s, largest constraint row {}\n",
+                     o.status, o.nlp_iterations, num(o.cost, 12), num(o.max_constraint_error, 3));
+  const std::vector<std::string> columns = control_columns(p);
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    double peak = 0.0;
+    for (const Eigen::VectorXd& u : o.controls)
+      peak = std::max(peak, std::abs(u(static_cast<Eigen::Index>(c))));
+    out << fmt::format("  peak |{}| {} N·m\n", columns[c], num(peak));
+  }
+  for (const optimal::RateBound& b : p.rate_bounds) {
+    out << fmt::format("  peak |q̇ {}| {} rad/s (bound {})\n",
+                       p.system.joints()[static_cast<std::size_t>(b.joint)].name, num(peak_rate(r, b.joint)),
+                       num(b.rate_max));
+  }
+  for (std::size_t j = 0; j < p.system.joints().size(); ++j) {
+    double force = 0.0, couple = 0.0;
+    for (const multibody::Multipliers& m : o.multipliers) {
+      force = std::max(force, m.joint_force_space[j].norm());
+      couple = std::max(couple, m.joint_torque_space[j].norm());
+    }
+    out << fmt::format("  joint {}: peak reaction {} N, {} N·m\n", p.system.joints()[j].name, num(force),
+                       num(couple));
+  }
+  const auto& rp = r.replay;
+  out << fmt::format(
+      "\nre-simulation (projected RK4, {} steps): attitude error {} rad, position error {} m, velocity error "
+      "{}; joint gap {} m, ‖RᵀR − I‖ {}\n",
+      rp.steps, num(rp.attitude_error, 3), num(rp.position_error, 3), num(rp.velocity_error, 3),
+      num(rp.max_joint_gap, 3), num(rp.max_orthogonality, 3));
+  out << fmt::format("  target {} (tolerance {} rad, {} m, {} for the velocities)\n",
+                     r.target_reached ? "reached" : "NOT reached", num(sc.target_tolerance, 3),
+                     num(sc.target_tolerance * p.system.length_scale(), 3), num(velocity_bound(sc), 3));
+  return out.str();
+}
+
+std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
+  const auto& sc = r.scenario;
+  const auto& p = sc.problem;
+  const auto& o = r.optimum;
+  nlohmann::ordered_json j;
+  j["kind"] = "multibody_optimal";
+  j["scenario"] = sc.source;
+  j["status"] = r.status;
+  j["optimal"] = r.optimal;
+  j["objective"] = "minimum_energy";
+  nlohmann::ordered_json actuators = nlohmann::ordered_json::array();
+  for (const optimal::Actuator& a : p.actuators) {
+    actuators.push_back(
+        {{"kind", a.kind == optimal::ActuatorKind::hinge_torque ? "hinge_torque" : "body_torque"},
+         {"name", actuator_name(p, a)},
+         {"torque_max", a.torque_max}});
+  }
+  nlohmann::ordered_json rates = nlohmann::ordered_json::array(), peaks = nlohmann::ordered_json::array();
+  for (const optimal::RateBound& b : p.rate_bounds) {
+    const std::string& name = p.system.joints()[static_cast<std::size_t>(b.joint)].name;
+    rates.push_back({{"joint", name}, {"rate_max", b.rate_max}});
+    peaks.push_back({{"joint", name}, {"peak_rate", peak_rate(r, b.joint)}});
+  }
+  j["problem"] = {{"final_time", p.final_time},
+                  {"coordinates", std::string(coordinates_name(sc.options.coordinates))},
+                  {"intervals", p.intervals},
+                  {"bodies", p.system.body_count()},
+                  {"joints", p.system.joint_count()},
+                  {"actuators", actuators},
+                  {"rate_bounds", rates}};
+  j["solution"] = {{"converged", o.converged},
+                   {"status", o.status},
+                   {"cost", o.cost},
+                   {"nlp_iterations", o.nlp_iterations},
+                   {"max_constraint_error", o.max_constraint_error},
+                   {"points", o.time.size()},
+                   {"peak_rates", peaks}};
+  const auto& rp = r.replay;
+  j["replay"] = {{"steps", rp.steps},
+                 {"attitude_error", rp.attitude_error},
+                 {"position_error", rp.position_error},
+                 {"velocity_error", rp.velocity_error},
+                 {"max_joint_gap", rp.max_joint_gap},
+                 {"max_orthogonality", rp.max_orthogonality},
+                 {"target_tolerance", sc.target_tolerance},
+                 {"target_reached", r.target_reached}};
+  return j.dump(2) + "\n";
+}
+
+void write_multibody_optimal_files(const MultibodyOptimalRun& r, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  const auto& p = r.scenario.problem;
+  const auto& o = r.optimum;
+  const std::string head = fmt::format("# status: {}\n", r.status);
+  std::string traj = head, control = head + "t", reactions = head, multipliers = head;
+  detail::append_trajectory_header(traj, p.system);
+  for (const std::string& c : control_columns(p))
+    control.append(",").append(c);
+  control += "\n";
+  for (std::size_t k = 0; k < o.time.size(); ++k) {
+    detail::append_trajectory_row(traj, o.states[k]);
+    fmt::format_to(std::back_inserter(control), "{:.17g}", o.time[k]);
+    for (double u : o.controls[k])
+      fmt::format_to(std::back_inserter(control), ",{:.17g}", u);
+    control += "\n";
+    reactions += detail::reactions_csv(p.system, o.multipliers[k], o.time[k], k == 0);
+    multipliers += detail::multipliers_csv(p.system, o.states[k], o.multipliers[k], k == 0);
+  }
+  write_file_atomic(dir + "/trajectory.csv", traj);
+  write_file_atomic(dir + "/control.csv", control);
+  write_file_atomic(dir + "/reactions.csv", reactions);
+  write_file_atomic(dir + "/multipliers.csv", multipliers);
+  write_file_atomic(dir + "/summary.json", multibody_optimal_summary_json(r));
+  write_file_atomic(dir + "/report.txt", multibody_optimal_report(r));
+}
+
+}  // namespace poinsot::io

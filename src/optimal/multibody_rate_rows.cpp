@@ -1,0 +1,46 @@
+// The hinge rates of the rate bounds as point functions (multibody_rate_rows.hpp).
+#include "multibody_rate_rows.hpp"
+
+namespace poinsot::optimal::detail {
+
+QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem) {
+  QuadraticFunctions out;
+  const int n = problem.system.body_count();
+  for (const RateBound& b : problem.rate_bounds) {
+    const int row = out.add_row();
+    out.add_linear(row, n + problem.system.joints()[static_cast<std::size_t>(b.joint)].body_a, 1.0);
+  }
+  out.finish();
+  return out;
+}
+
+namespace {
+
+/// Adds s · n·ω of `body` to `row`: n·vee(½(M − Mᵀ)) = ½ Σ_c n_c (M(c2, c1) − M(c1, c2)), (c, c1, c2) cyclic,
+/// with M(i, j) = Σ_k R(k, i) V(k, j).
+void add_axis_rate(QuadraticFunctions& out, int row, const MultibodyRotationModel& m, int body, const Vec3& n,
+                   double s) {
+  for (int c = 0; c < 3; ++c) {
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    for (int k = 0; k < 3; ++k) {
+      out.add_bilinear(row, m.R(body, k, c2), m.V(body, k, c1), 0.5 * s * n[c]);
+      out.add_bilinear(row, m.R(body, k, c1), m.V(body, k, c2), -0.5 * s * n[c]);
+    }
+  }
+}
+
+}  // namespace
+
+QuadraticFunctions rotation_rate_rows(const MultibodyProblem& problem, const MultibodyRotationModel& model) {
+  QuadraticFunctions out;
+  for (const RateBound& b : problem.rate_bounds) {
+    const multibody::Joint& j = problem.system.joints()[static_cast<std::size_t>(b.joint)];
+    const int row = out.add_row();
+    add_axis_rate(out, row, model, j.body_a, j.p_a[0].cross(j.p_a[1]), 1.0);
+    if (j.body_b != multibody::kWorld) add_axis_rate(out, row, model, j.body_b, j.u_b[0], -1.0);
+  }
+  out.finish();
+  return out;
+}
+
+}  // namespace poinsot::optimal::detail

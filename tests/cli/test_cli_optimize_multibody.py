@@ -1,0 +1,197 @@
+"""`poinsot optimize` on multibody scenarios: closed-form problems in both coordinates (with and without a
+rate bound), the files and --json, re-simulation of the reported control, bad input (exit 2, nothing
+written), non-convergence (exit 1, files marked "not converged") and bit-identical reruns. The arm example is
+solved by python/tests/test_optimize_multibody.py (its minimal-coordinate solve takes seconds, far more under
+the sanitizers, which run these files too)."""
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+# One rod (1 kg, 1 m, radius 5 cm, along body x) on a motor hinge at its end, no gravity, turned from rest at 0
+# to rest at THETA about z in T. Minimum ∫u²dt for I θ̈ = u (I = J_zz + m (ℓ/2)² about the hinge):
+# u = 6IΘ/T² (1 − 2t/T), cost 12 I² Θ² / T³.
+THETA, T = 1.2, 2.0
+I_HINGE = 1.0 * (3 * 0.05**2 + 1.0) / 12 + 0.25
+HINGE = """
+[[bodies]]
+name = "rod"
+mass = 1.0
+shape = {{ type = "rod", length = 1.0, radius = 0.05 }}
+position = [0.5, 0, 0]
+[[joints]]
+name = "motor"
+type = "hinge"
+body_a = "rod"
+point_a = [-0.5, 0, 0]
+axis_a = [0, 0, 1]
+[optimal_control]
+final_time = 2.0
+coordinates = "{coordinates}"
+intervals = {intervals}
+{extra}
+actuators = [{{ joint = "motor", torque_max = 50 }}]
+[[optimal_control.final]]
+body = "rod"
+rotation = {{ axis = [0, 0, 1], angle = 1.2 }}
+"""
+
+
+def write(tmp_path, coordinates="rotation_matrix", intervals=8, extra=""):
+    p = tmp_path / "hinge.toml"
+    p.write_text(HINGE.format(coordinates=coordinates, intervals=intervals, extra=extra))
+    return p
+
+
+def csv(path):
+    lines = Path(path).read_text().splitlines()
+    return lines[0], lines[1].split(","), [[float(x) for x in line.split(",")] for line in lines[2:]]
+
+
+def test_hinge_rotation_matrix_coordinates_meet_the_closed_form(cli, tmp_path):
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path), "--out", out)
+    assert r.returncode == 0, r.stderr + r.stdout
+    assert "status: optimal" in r.stdout
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["kind"] == "multibody_optimal" and summary["optimal"] is True
+    # In R-coordinates (cos θ, sin θ) is not a polynomial: Hermite–Simpson's error at N = 8 is measured at
+    # 2.0e-5 relative (docs/optimal_control.md); 1e-4 leaves room for Ipopt's tolerance and other platforms.
+    exact = 12 * I_HINGE**2 * THETA**2 / T**3
+    assert summary["solution"]["cost"] == pytest.approx(exact, rel=1e-4)
+    # The control at the collocation points is the closed form u = 6IΘ/T² (1 − 2t/T) to the same order.
+    status, names, rows = csv(out / "control.csv")
+    assert status == "# status: optimal"
+    assert names == ["t", "motor.u"]
+    assert len(rows) == 2 * 8 + 1
+    peak = 6 * I_HINGE * THETA / T**2
+    for t, u in rows:
+        assert abs(u - peak * (1 - 2 * t / T)) < 2e-2 * peak
+    # The reported control, re-simulated by the projected RK4 (64 steps per interval), reaches the target to
+    # the transcription's error (h⁴ ~ 1e-4 rad at N = 8) plus the replay's O(dt²); the joint stays closed.
+    replay = summary["replay"]
+    assert replay["target_reached"] is True
+    assert replay["attitude_error"] < 1e-3
+    assert replay["max_joint_gap"] < 1e-12
+    # trajectory.csv ends on the target: θ = 1.2 rad about z, quaternion (cos 0.6, 0, 0, sin 0.6), at rest.
+    _, cols, traj = csv(out / "trajectory.csv")
+    last = dict(zip(cols, traj[-1]))
+    assert last["t"] == T
+    assert last["rod.qw"] == pytest.approx(math.cos(THETA / 2), abs=1e-8)
+    assert last["rod.qz"] == pytest.approx(math.sin(THETA / 2), abs=1e-8)
+    assert abs(last["rod.wz"]) < 1e-8
+    # reactions.csv: the hinge's force on the rod is m a_com along θ = Θ(3s² − 2s³) (no gravity), the index-2
+    # algebraic variables carrying 1.5 % of the peak at N = 8 (tests/optimal); 2.5 % asked.
+    lines = (out / "reactions.csv").read_text().splitlines()
+    assert lines[1] == "t,joint,body_a,body_b,Fx,Fy,Fz,F_norm,Cx,Cy,Cz,C_norm"
+    worst = peak_force = 0.0
+    for line in lines[2:]:
+        f = line.split(",")
+        assert f[1:4] == ["motor", "rod", "world"]
+        t = float(f[0])
+        s = t / T
+        th, thd, thdd = THETA * (3 * s**2 - 2 * s**3), THETA * (6 * s - 6 * s**2) / T, THETA * (6 - 12 * s) / T**2
+        arm = (0.5 * math.cos(th), 0.5 * math.sin(th))
+        force = (-thdd * arm[1] - thd**2 * arm[0], thdd * arm[0] - thd**2 * arm[1])
+        peak_force = max(peak_force, math.hypot(*force))
+        worst = max(worst, math.hypot(float(f[4]) - force[0], float(f[5]) - force[1]))
+    assert len(lines) == 2 + len(rows)
+    assert worst < 2.5e-2 * peak_force
+    assert len(Path(out / "multipliers.csv").read_text().splitlines()) == 2 + len(rows)
+    assert (out / "report.txt").read_text() == r.stdout
+
+
+def test_minimal_coordinates_are_exact_and_json_is_the_summary(cli, tmp_path):
+    # θ(t) is a cubic and u(t) linear: Hermite–Simpson in joint angles is exact, so the cost is the closed form
+    # to Ipopt's tolerance (1e-10 on the scaled KKT error).
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path, "minimal", 4), "--out", out, "--json")
+    assert r.returncode == 0, r.stderr + r.stdout
+    summary = json.loads(r.stdout)
+    assert r.stdout == (out / "summary.json").read_text()
+    assert summary["problem"]["coordinates"] == "minimal"
+    assert summary["solution"]["cost"] == pytest.approx(12 * I_HINGE**2 * THETA**2 / T**3, rel=1e-9)
+
+
+def test_rate_bound_meets_the_closed_form(cli, tmp_path):
+    # |θ̇| ≤ r = 0.75 rad/s cuts the unconstrained peak 3Θ/(2T) = 0.9: accelerate with u linear to u(t₁) = 0,
+    # coast at r, decelerate; t₁ = 3(rT − Θ)/(2r) = 0.6 s and the cost 16 I² r³ / (9 (rT − Θ))
+    # (tests/optimal/test_multibody_rate_bounds.cpp derives it). The junctions fall on nodes of 10 intervals, so
+    # minimal coordinates are exact up to Ipopt's bound relaxation (1e-8 on r: 2.7e-8 on the cost).
+    r, out = 0.75, tmp_path / "out"
+    extra = f'rate_bounds = [{{ joint = "motor", rate_max = {r} }}]'
+    res = cli("optimize", write(tmp_path, "minimal", 10, extra), "--out", out)
+    assert res.returncode == 0, res.stderr + res.stdout
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["solution"]["cost"] == pytest.approx(16 * I_HINGE**2 * r**3 / (9 * (r * T - THETA)), rel=1e-7)
+    bound = summary["problem"]["rate_bounds"][0]
+    assert bound["joint"] == "motor" and bound["rate_max"] == r
+    peak = summary["solution"]["peak_rates"][0]
+    assert peak["joint"] == "motor"
+    assert r * (1 - 1e-8) < peak["peak_rate"] < r + 2e-8  # active, and respected to Ipopt's relaxation
+    assert "rate bound: |q̇ motor| ≤ 0.75 rad/s" in res.stdout
+    assert summary["replay"]["target_reached"] is True
+
+
+@pytest.mark.parametrize("extra, fragment", [
+    ("target_tolerance = 0", "[optimal_control] target_tolerance: got 0, expected a number > 0"),
+    ("objective = \"minimum_time\"", "objective: got \"minimum_time\", expected \"minimum_energy\""),
+    ("intervals_typo = 3", "unknown key \"intervals_typo\""),
+    ('rate_bounds = [{ joint = "motor", rate_max = -2 }]', "rate_max: got -2 rad/s, expected a number > 0"),
+])
+def test_bad_input_is_one_line_exit_2_nothing_written(cli, tmp_path, extra, fragment):
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path, extra=extra), "--out", out)
+    assert r.returncode == 2
+    assert fragment in r.stderr
+    assert r.stderr.startswith("poinsot: ") and r.stderr.count("\n") == 1
+    assert not out.exists()
+
+
+def test_plot_is_refused_before_solving(cli, tmp_path):
+    r = cli("optimize", write(tmp_path), "--out", tmp_path / "out", "--plot")
+    assert r.returncode == 2
+    assert r.stderr == "poinsot: --plot: figures are drawn for single-body problems only; expected no --plot\n"
+    assert not (tmp_path / "out").exists()
+
+
+def test_unactuated_and_joint_breaking_targets_are_refused(cli, tmp_path):
+    text = HINGE.format(coordinates="minimal", intervals=4, extra="")
+    for bad, fragment in [(text.replace('actuators = [{ joint = "motor", torque_max = 50 }]', "actuators = []"),
+                           "actuators: none given"),
+                          (text + "center_of_mass = [3, 0, 0]\n", "optimal control: final state:"),
+                          (text.replace("torque_max = 50", "torque_max = -1"), "torque_max: got -1 N·m")]:
+        p = tmp_path / "bad.toml"
+        p.write_text(bad)
+        r = cli("optimize", p, "--out", tmp_path / "out")
+        assert r.returncode == 2, r.stdout
+        assert fragment in r.stderr and r.stderr.count("\n") == 1
+        assert not (tmp_path / "out").exists()
+
+
+def test_non_convergence_exit_1_files_say_so(cli, tmp_path):
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path, "minimal", 4, "max_nlp_iterations = 2"), "--out", out)
+    assert r.returncode == 1
+    assert "status: not converged: maximum iterations exceeded" in r.stdout
+    for name in ("trajectory.csv", "control.csv", "reactions.csv", "multipliers.csv"):
+        assert (out / name).read_text().startswith("# status: not converged")
+    assert json.loads((out / "summary.json").read_text())["optimal"] is False
+
+
+def test_a_mesh_too_coarse_for_the_target_is_not_an_optimum(cli, tmp_path):
+    # Converged, but the re-simulated control misses the target by more than a tolerance far below the
+    # coarse mesh's error (2 intervals in R-coordinates).
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path, "rotation_matrix", 2, "target_tolerance = 1e-9"), "--out", out)
+    assert r.returncode == 1
+    assert "not converged: the re-simulated control misses the target" in r.stdout
+
+
+def test_reruns_are_bit_identical(cli, tmp_path):
+    p = write(tmp_path)
+    for d in ("a", "b"):
+        assert cli("optimize", p, "--out", tmp_path / d).returncode == 0
+    for name in ("trajectory.csv", "control.csv", "reactions.csv", "multipliers.csv", "summary.json"):
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes()
