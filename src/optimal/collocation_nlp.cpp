@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
+
+#include "poinsot/core/error.hpp"
 
 namespace poinsot::optimal::detail {
 
@@ -12,6 +15,43 @@ constexpr double kInf = 2e19;  // Ipopt's default "infinite" bound (nlp_upper_bo
 
 CollocationNlp::CollocationNlp(const ReorientationProblem& problem, std::vector<double> tau)
     : problem_(problem), tau_(std::move(tau)) {
+  phases_.intervals = {static_cast<int>(tau_.size()) - 1};
+  set_up();
+}
+
+CollocationNlp::CollocationNlp(const ReorientationProblem& problem, std::vector<double> tau,
+                               CollocationPhases phases)
+    : problem_(problem), tau_(std::move(tau)), phases_(std::move(phases)) {
+  const std::size_t P = phases_.intervals.size();
+  std::size_t nodes = 0;
+  for (const int n : phases_.intervals)
+    nodes += static_cast<std::size_t>(n) + 1;
+  if (P == 0 || nodes != tau_.size() || phases_.torque_lower.size() != P || phases_.torque_upper.size() != P)
+    throw InvalidInput("collocation phases: " + std::to_string(P) + " phases with " +
+                       std::to_string(tau_.size()) +
+                       " mesh values; expected Σ(N_a + 1) values and bounds per phase");
+  if (P > 1 && !problem_.free_final_time())
+    throw InvalidInput("collocation phases: " + std::to_string(P) +
+                       " phases; expected one phase for a fixed final time");
+  set_up();
+}
+
+void CollocationNlp::set_up() {
+  phase_first_interval_ = {0};
+  for (const int n : phases_.intervals) {
+    if (n < 1)
+      throw InvalidInput("collocation phases: a phase with " + std::to_string(n) +
+                         " intervals; expected at least 1");
+    for (int k = 0; k < n; ++k)
+      interval_phase_.push_back(static_cast<int>(phase_first_interval_.size()) - 1);
+    phase_first_interval_.push_back(phase_first_interval_.back() + n);
+  }
+  int row = 0;
+  for (int a = 0; a < phases(); ++a)
+    for (int p = phase_first_point(a); p <= phase_last_point(a); ++p) {
+      point_phase_.push_back(a);
+      norm_row_.push_back(p == phase_first_point(a) ? -1 : row++);
+    }
   dyn_.J = problem_.inertia_body;
   dyn_.J_inv = problem_.inertia_body.inverse();
   // Left multiplication by a = q_f* = (w, −v): rows 1..3 of [[a0, −avᵀ], [av, a0 I + j(av)]].
@@ -22,18 +62,62 @@ CollocationNlp::CollocationNlp(const ReorientationProblem& problem, std::vector<
   final_attitude_rows_.block<3, 3>(0, 1) = a0 * Mat3::Identity() + hat(av);
 }
 
+std::vector<double> CollocationNlp::point_times(const double* z) const {
+  std::vector<double> t;
+  double start = 0.0;
+  for (int a = 0; a < phases(); ++a) {
+    const double D = z[duration_index(a)];
+    for (int k = phase_first_interval_[a]; k < phase_first_interval_[a + 1]; ++k) {
+      const double t0 = tau_[k + a], t1 = tau_[k + a + 1];
+      t.push_back(start + t0 * D);
+      t.push_back(start + 0.5 * (t0 + t1) * D);
+    }
+    start += D;
+    t.push_back(start);
+  }
+  return t;
+}
+
+double CollocationNlp::final_time(const double* z) const {
+  double T = 0.0;
+  for (int a = 0; a < phases(); ++a)
+    T += z[duration_index(a)];
+  return T;
+}
+
 int CollocationNlp::num_constraints() const {
-  const int base = 14 * intervals() + 2 * intervals() + final_rows();
+  const int base = 14 * intervals() + (points() - phases()) + 7 * (phases() - 1) + final_rows();
   return problem_.bound == TorqueBound::norm ? base + points() : base;
 }
 
 double CollocationNlp::quadrature_weight(int p) const {
-  if (p % 2 == 1) return 4.0 / 6.0 * step_fraction((p - 1) / 2);
-  const int k = p / 2;
+  const int a = point_phase_[p], l = p - phase_first_point(a), k0 = phase_first_interval_[a];
+  if (l % 2 == 1) return 4.0 / 6.0 * step_fraction(k0 + (l - 1) / 2);
+  const int k = k0 + l / 2;  // the interval whose left node p is (when k < the phase's end)
   double w = 0.0;
-  if (k > 0) w += step_fraction(k - 1) / 6.0;
-  if (k < intervals()) w += step_fraction(k) / 6.0;
+  if (k > k0) w += step_fraction(k - 1) / 6.0;
+  if (k < phase_first_interval_[a + 1]) w += step_fraction(k) / 6.0;
   return w;
+}
+
+Vec7 CollocationNlp::defect_weight(int p, const double* y) const {
+  const int a = point_phase_[p], l = p - phase_first_point(a), k0 = phase_first_interval_[a];
+  if (l % 2 == 1) {
+    const int k = k0 + (l - 1) / 2;
+    return -4.0 / 6.0 * step_fraction(k) * Eigen::Map<const Vec7>(y + 14 * k);
+  }
+  const int k = k0 + l / 2;
+  Vec7 c = Vec7::Zero();
+  if (k > k0) {
+    const double h = step_fraction(k - 1);
+    c += -h / 6.0 * Eigen::Map<const Vec7>(y + 14 * (k - 1)) +
+         h / 8.0 * Eigen::Map<const Vec7>(y + 14 * (k - 1) + 7);
+  }
+  if (k < phase_first_interval_[a + 1]) {
+    const double h = step_fraction(k);
+    c += -h / 6.0 * Eigen::Map<const Vec7>(y + 14 * k) - h / 8.0 * Eigen::Map<const Vec7>(y + 14 * k + 7);
+  }
+  return c;
 }
 
 double CollocationNlp::energy_weight() const {
@@ -58,15 +142,17 @@ void CollocationNlp::variable_bounds(std::vector<double>& lo, std::vector<double
   const auto& p = problem_;
   for (int pt = 0; pt < points(); ++pt) {
     const int b = kPointVars * pt;
+    const int a = point_phase_[pt];
     for (int i = 0; i < 3; ++i) {
       if (p.has_rate_bound()) {
         lo[b + 4 + i] = -p.rate_max;
         up[b + 4 + i] = p.rate_max;
       }
       const double umax = p.bound == TorqueBound::per_axis ? p.torque_max[i] : p.torque_max[0];
-      lo[b + 7 + i] = -umax;
-      up[b + 7 + i] = umax;
+      lo[b + 7 + i] = phases_.torque_lower.empty() ? -umax : phases_.torque_lower[a][i];
+      up[b + 7 + i] = phases_.torque_upper.empty() ? umax : phases_.torque_upper[a][i];
     }
+    if (pt == phase_first_point(a)) lo[b + 10] = up[b + 10] = 0.0;  // ν at a phase's first point (see above)
   }
   const int last = kPointVars * (points() - 1);
   for (int i = 0; i < 4; ++i)
@@ -76,7 +162,12 @@ void CollocationNlp::variable_bounds(std::vector<double>& lo, std::vector<double
     lo[4 + i] = up[4 + i] = p.omega_initial[i];
     lo[last + 4 + i] = up[last + 4 + i] = p.omega_final[i];
   }
-  if (p.free_final_time()) {
+  if (phases() > 1) {
+    for (int a = 0; a < phases(); ++a) {
+      lo[duration_index(a)] = 0.0;
+      up[duration_index(a)] = kInf;
+    }
+  } else if (p.free_final_time()) {
     lo[time_index()] = 0.5 * minimum_duration_bound(p);
     up[time_index()] = kInf;
   } else {
@@ -97,42 +188,44 @@ void CollocationNlp::constraint_bounds(std::vector<double>& lo, std::vector<doub
 }
 
 double CollocationNlp::objective(const double* z) const {
-  const double T = z[time_index()];
   double e = 0.0;
   if (energy_weight() != 0.0)
     for (int p = 0; p < points(); ++p)
-      e += quadrature_weight(p) * point(z, p).segment<3>(7).squaredNorm();
-  return time_weight() * T + energy_weight() * T * e;
+      e +=
+          z[duration_index(point_phase_[p])] * quadrature_weight(p) * point(z, p).segment<3>(7).squaredNorm();
+  return time_weight() * final_time(z) + energy_weight() * e;
 }
 
 void CollocationNlp::objective_gradient(const double* z, double* grad) const {
   std::fill(grad, grad + num_variables(), 0.0);
-  const double T = z[time_index()];
   const double a = energy_weight();
-  double e = 0.0;
+  for (int ph = 0; ph < phases(); ++ph)
+    grad[duration_index(ph)] = time_weight();
   if (a != 0.0)
     for (int p = 0; p < points(); ++p) {
       const Vec3 u = point(z, p).segment<3>(7);
-      const double w = quadrature_weight(p);
-      e += w * u.squaredNorm();
+      const double w = quadrature_weight(p), D = z[duration_index(point_phase_[p])];
+      grad[duration_index(point_phase_[p])] += a * w * u.squaredNorm();
       for (int i = 0; i < 3; ++i)
-        grad[kPointVars * p + 7 + i] = 2.0 * a * w * T * u[i];
+        grad[kPointVars * p + 7 + i] = 2.0 * a * w * D * u[i];
     }
-  grad[time_index()] = time_weight() + a * e;
 }
 
 void CollocationNlp::constraints(const double* z, double* g) const {
-  const double T = z[time_index()];
   for (int k = 0; k < intervals(); ++k) {
-    const Vec11 z0 = point(z, 2 * k), z1 = point(z, 2 * k + 1), z2 = point(z, 2 * k + 2);
+    const int b = interval_first_point(k);
+    const Vec11 z0 = point(z, b), z1 = point(z, b + 1), z2 = point(z, b + 2);
     const Vec7 f0 = dyn_.rhs(z0), f1 = dyn_.rhs(z1), f2 = dyn_.rhs(z2);
-    const double h = step_fraction(k) * T;
+    const double h = interval_step(z, k);
     Eigen::Map<Vec7>(g + 14 * k) = z2.head<7>() - z0.head<7>() - h / 6.0 * (f0 + 4.0 * f1 + f2);
     Eigen::Map<Vec7>(g + 14 * k + 7) =
         z1.head<7>() - 0.5 * (z0.head<7>() + z2.head<7>()) - h / 8.0 * (f0 - f2);
   }
-  for (int p = 1; p < points(); ++p)
-    g[norm_rows_begin() + p - 1] = point(z, p).head<4>().squaredNorm() - 1.0;
+  for (int p = 0; p < points(); ++p)
+    if (norm_row_[p] >= 0) g[norm_rows_begin() + norm_row_[p]] = point(z, p).head<4>().squaredNorm() - 1.0;
+  for (int a = 0; a + 1 < phases(); ++a)
+    Eigen::Map<Vec7>(g + link_rows_begin() + 7 * a) =
+        point(z, phase_last_point(a)).head<7>() - point(z, phase_first_point(a + 1)).head<7>();
   if (final_rows() == 3)
     Eigen::Map<Vec3>(g + final_rows_begin()) = final_attitude_rows_ * point(z, points() - 1).head<4>();
   if (problem_.bound == TorqueBound::norm)
@@ -143,7 +236,8 @@ void CollocationNlp::constraints(const double* z, double* g) const {
 int CollocationNlp::jacobian_nonzeros() const {
   const int per_interval = 14 * (3 * kPointVars + 1);
   const int torque = problem_.bound == TorqueBound::norm ? 3 * points() : 0;
-  return intervals() * per_interval + 4 * (points() - 1) + 4 * final_rows() + torque;
+  return intervals() * per_interval + 4 * (points() - phases()) + 14 * (phases() - 1) + 4 * final_rows() +
+         torque;
 }
 
 void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
@@ -153,15 +247,21 @@ void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
       for (int j = 0; j < 3; ++j)
         for (int c = 0; c < kPointVars; ++c) {
           rows[n] = 14 * k + r;
-          cols[n++] = kPointVars * (2 * k + j) + c;
+          cols[n++] = kPointVars * (interval_first_point(k) + j) + c;
         }
       rows[n] = 14 * k + r;
-      cols[n++] = time_index();
+      cols[n++] = duration_index(interval_phase_[k]);
     }
-  for (int p = 1; p < points(); ++p)
-    for (int c = 0; c < 4; ++c) {
-      rows[n] = norm_rows_begin() + p - 1;
+  for (int p = 0; p < points(); ++p)
+    for (int c = 0; c < 4 && norm_row_[p] >= 0; ++c) {
+      rows[n] = norm_rows_begin() + norm_row_[p];
       cols[n++] = kPointVars * p + c;
+    }
+  for (int a = 0; a + 1 < phases(); ++a)
+    for (int r = 0; r < 7; ++r) {
+      rows[n] = rows[n + 1] = link_rows_begin() + 7 * a + r;
+      cols[n++] = kPointVars * phase_last_point(a) + r;
+      cols[n++] = kPointVars * phase_first_point(a + 1) + r;
     }
   for (int r = 0; r < final_rows(); ++r)
     for (int c = 0; c < 4; ++c) {
@@ -177,15 +277,15 @@ void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
 }
 
 void CollocationNlp::jacobian_values(const double* z, double* v) const {
-  const double T = z[time_index()];
   Mat7x11 I7 = Mat7x11::Zero();
   I7.leftCols<7>().setIdentity();
   int n = 0;
   for (int k = 0; k < intervals(); ++k) {
-    const Vec11 z0 = point(z, 2 * k), z1 = point(z, 2 * k + 1), z2 = point(z, 2 * k + 2);
+    const int b = interval_first_point(k);
+    const Vec11 z0 = point(z, b), z1 = point(z, b + 1), z2 = point(z, b + 2);
     const Vec7 f0 = dyn_.rhs(z0), f1 = dyn_.rhs(z1), f2 = dyn_.rhs(z2);
     const Mat7x11 A0 = dyn_.jacobian(z0), A1 = dyn_.jacobian(z1), A2 = dyn_.jacobian(z2);
-    const double dt = step_fraction(k), h = dt * T;
+    const double dt = step_fraction(k), h = interval_step(z, k);
     const Mat7x11 d[3] = {-I7 - h / 6.0 * A0, -4.0 * h / 6.0 * A1, I7 - h / 6.0 * A2};
     const Mat7x11 m[3] = {-0.5 * I7 - h / 8.0 * A0, I7, -0.5 * I7 + h / 8.0 * A2};
     const Vec7 dT = -dt / 6.0 * (f0 + 4.0 * f1 + f2), mT = -dt / 8.0 * (f0 - f2);
@@ -202,9 +302,14 @@ void CollocationNlp::jacobian_values(const double* z, double* v) const {
       v[n++] = mT[r];
     }
   }
-  for (int p = 1; p < points(); ++p)
-    for (int c = 0; c < 4; ++c)
+  for (int p = 0; p < points(); ++p)
+    for (int c = 0; c < 4 && norm_row_[p] >= 0; ++c)
       v[n++] = 2.0 * z[kPointVars * p + c];
+  for (int a = 0; a + 1 < phases(); ++a)
+    for (int r = 0; r < 7; ++r) {
+      v[n++] = 1.0;
+      v[n++] = -1.0;
+    }
   for (int r = 0; r < final_rows(); ++r)
     for (int c = 0; c < 4; ++c)
       v[n++] = final_attitude_rows_(r, c);
@@ -215,7 +320,7 @@ void CollocationNlp::jacobian_values(const double* z, double* v) const {
 }
 
 int CollocationNlp::hessian_nonzeros() const {
-  return points() * (kPointVars * (kPointVars + 1) / 2 + kPointVars) + 1;
+  return points() * (kPointVars * (kPointVars + 1) / 2 + kPointVars) + phases();
 }
 
 void CollocationNlp::hessian_structure(int* rows, int* cols) const {
@@ -228,53 +333,41 @@ void CollocationNlp::hessian_structure(int* rows, int* cols) const {
         cols[n++] = b + c;
       }
     for (int c = 0; c < kPointVars; ++c) {
-      rows[n] = time_index();
+      rows[n] = duration_index(point_phase_[p]);
       cols[n++] = b + c;
     }
   }
-  rows[n] = time_index();
-  cols[n] = time_index();
+  for (int a = 0; a < phases(); ++a) {
+    rows[n] = duration_index(a);
+    cols[n++] = duration_index(a);
+  }
 }
 
 void CollocationNlp::hessian_values(const double* z, double sigma, const double* y, double* v) const {
-  const double T = z[time_index()];
   const double a = energy_weight();
   int n = 0;
   for (int p = 0; p < points(); ++p) {
-    // c_p: the weight of f_p in yᵀg (every defect term is linear in f_p with a coefficient ∝ T).
-    Vec7 c = Vec7::Zero();
-    if (p % 2 == 1) {
-      const int k = (p - 1) / 2;
-      c = -4.0 / 6.0 * step_fraction(k) * T * Eigen::Map<const Vec7>(y + 14 * k);
-    } else {
-      const int k = p / 2;
-      if (k > 0) {
-        const double h = step_fraction(k - 1) * T;
-        c += -h / 6.0 * Eigen::Map<const Vec7>(y + 14 * (k - 1)) +
-             h / 8.0 * Eigen::Map<const Vec7>(y + 14 * (k - 1) + 7);
-      }
-      if (k < intervals()) {
-        const double h = step_fraction(k) * T;
-        c += -h / 6.0 * Eigen::Map<const Vec7>(y + 14 * k) - h / 8.0 * Eigen::Map<const Vec7>(y + 14 * k + 7);
-      }
-    }
+    const double D = z[duration_index(point_phase_[p])];
+    const Vec7 c_unit = defect_weight(p, y);  // yᵀg contains D (c_unit · f_p)
     const Vec11 zp = point(z, p);
-    Mat11 H = dyn_.weighted_hessian(c);
-    if (p >= 1) H.block<4, 4>(0, 0).diagonal().array() += 2.0 * y[norm_rows_begin() + p - 1];
+    Mat11 H = dyn_.weighted_hessian(D * c_unit);
+    if (norm_row_[p] >= 0)
+      H.block<4, 4>(0, 0).diagonal().array() += 2.0 * y[norm_rows_begin() + norm_row_[p]];
     if (problem_.bound == TorqueBound::norm)
       H.block<3, 3>(7, 7).diagonal().array() += 2.0 * y[torque_norm_rows_begin() + p];
     const double w = quadrature_weight(p);
-    H.block<3, 3>(7, 7).diagonal().array() += sigma * 2.0 * a * w * T;
+    H.block<3, 3>(7, 7).diagonal().array() += sigma * 2.0 * a * w * D;
     for (int r = 0; r < kPointVars; ++r)
       for (int col = 0; col <= r; ++col)
         v[n++] = H(r, col);
-    // ∂²/∂T∂z_p: (c_p / T)ᵀ ∂f_p/∂z_p, plus the objective's 2 α w_p u_p.
-    Vec11 cross = dyn_.jacobian(zp).transpose() * (c / T);
+    // ∂²/∂Δ∂z_p: c_unitᵀ ∂f_p/∂z_p, plus the objective's 2 α w_p u_p.
+    Vec11 cross = dyn_.jacobian(zp).transpose() * c_unit;
     cross.segment<3>(7) += sigma * 2.0 * a * w * zp.segment<3>(7);
     for (int col = 0; col < kPointVars; ++col)
       v[n++] = cross[col];
   }
-  v[n] = 0.0;
+  for (int ph = 0; ph < phases(); ++ph)
+    v[n++] = 0.0;
 }
 
 }  // namespace poinsot::optimal::detail

@@ -7,6 +7,7 @@
 #include <numbers>
 
 #include "collocation_nlp.hpp"
+#include "collocation_solution.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/so3/exp_log.hpp"
@@ -18,57 +19,12 @@ namespace poinsot::optimal {
 namespace {
 
 using detail::CollocationNlp;
+using detail::IntervalSample;
+using detail::sample_interval;
 using detail::Vec11;
 using detail::Vec4;
 using detail::Vec7;
 constexpr int kP = CollocationNlp::kPointVars;
-
-/// The interpolants of one interval at s ∈ [0, 1]: state (cubic Hermite), its time derivative, and the
-/// controls (quadratic through s = 0, ½, 1).
-struct IntervalSample {
-  Vec7 x, xdot;
-  Vec4 v;
-};
-
-IntervalSample sample_interval(const CollocationNlp& nlp, const std::vector<double>& z, int k, double s) {
-  const auto pt = [&](int p) { return Eigen::Map<const Vec11>(z.data() + kP * p); };
-  const Vec11 z0 = pt(2 * k), z1 = pt(2 * k + 1), z2 = pt(2 * k + 2);
-  const double h = (nlp.tau()[k + 1] - nlp.tau()[k]) * z[nlp.time_index()];
-  const Vec7 f0 = nlp.dynamics().rhs(z0), f2 = nlp.dynamics().rhs(z2);
-  const double s2 = s * s, s3 = s2 * s;
-  IntervalSample r;
-  r.x = (2 * s3 - 3 * s2 + 1) * z0.head<7>() + (s3 - 2 * s2 + s) * h * f0 +
-        (-2 * s3 + 3 * s2) * z2.head<7>() + (s3 - s2) * h * f2;
-  r.xdot = ((6 * s2 - 6 * s) * z0.head<7>() + (-6 * s2 + 6 * s) * z2.head<7>()) / h +
-           (3 * s2 - 4 * s + 1) * f0 + (3 * s2 - 2 * s) * f2;
-  r.v = 2 * (s - 0.5) * (s - 1) * z0.tail<4>() - 4 * s * (s - 1) * z1.tail<4>() +
-        2 * s * (s - 0.5) * z2.tail<4>();
-  return r;
-}
-
-/// ε_k for every interval (see direct_collocation.hpp).
-std::vector<double> mesh_errors(const CollocationNlp& nlp, const std::vector<double>& z) {
-  static const double gx[5] = {0.0469100770306680, 0.2307653449471585, 0.5, 0.7692346550528415,
-                               0.9530899229693320};
-  static const double gw[5] = {0.1184634425280945, 0.2393143352496832, 0.2844444444444444, 0.2393143352496832,
-                               0.1184634425280945};
-  Vec7 scale = Vec7::Ones();
-  for (int p = 0; p < nlp.points(); ++p)
-    scale = scale.cwiseMax(Eigen::Map<const Vec7>(z.data() + kP * p).cwiseAbs() + Vec7::Ones());
-  std::vector<double> err(nlp.intervals());
-  for (int k = 0; k < nlp.intervals(); ++k) {
-    const double h = (nlp.tau()[k + 1] - nlp.tau()[k]) * z[nlp.time_index()];
-    Vec7 sum = Vec7::Zero();
-    for (int i = 0; i < 5; ++i) {
-      const IntervalSample s = sample_interval(nlp, z, k, gx[i]);
-      Vec11 zz;
-      zz << s.x, s.v;
-      sum += gw[i] * h * (s.xdot - nlp.dynamics().rhs(zz)).cwiseAbs();
-    }
-    err[k] = sum.cwiseQuotient(scale).maxCoeff();
-  }
-  return err;
-}
 
 /// The eigenaxis guess: q(t) = q_0 ⊗ exp(s Θ n / 2), ω = Θ n / T (body frame) plus a transverse bump,
 /// u = 0, ν = 0.
@@ -164,37 +120,6 @@ std::vector<double> refine(const std::vector<double>& tau, const std::vector<dou
   return out;
 }
 
-DirectSolution extract(const CollocationNlp& nlp, const std::vector<double>& z,
-                       const std::vector<double>& y) {
-  DirectSolution s;
-  const double T = z[nlp.time_index()];
-  s.final_time = T;
-  s.cost = nlp.objective(z.data());
-  for (int pt = 0; pt < nlp.points(); ++pt) {
-    const int k = pt / 2;
-    const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
-    const double* zp = z.data() + kP * pt;
-    s.time.push_back(tau * T);
-    s.attitude.push_back(Quat(zp[0], zp[1], zp[2], zp[3]).normalized());
-    s.omega_body.emplace_back(zp[4], zp[5], zp[6]);
-    s.torque_body.emplace_back(zp[7], zp[8], zp[9]);
-    if (pt % 2 == 0) s.node_time.push_back(tau * T);
-  }
-  if (!y.empty())
-    for (int k = 0; k < nlp.intervals(); ++k) {
-      const Vec7 lambda = -Eigen::Map<const Vec7>(y.data() + CollocationNlp::defect_row(k));
-      const IntervalSample mid = sample_interval(nlp, z, k, 0.5);
-      const Vec4 q = mid.x.head<4>();
-      s.costate_time.push_back(0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]) * T);
-      s.costate_attitude_body.push_back(0.5 * detail::quaternion_omega_matrix(q).transpose() *
-                                        lambda.head<4>());
-      s.costate_omega.push_back(lambda.tail<3>());
-    }
-  s.mesh_error = mesh_errors(nlp, z);
-  s.max_mesh_error = *std::max_element(s.mesh_error.begin(), s.mesh_error.end());
-  return s;
-}
-
 }  // namespace
 
 void validate(const CollocationOptions& options) {
@@ -244,7 +169,7 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
       y = std::move(solution.y);
     }
     nlp_iterations += solution.iterations;
-    best = extract(*nlp, z, y);
+    best = detail::extract_solution(*nlp, z, y);
     best.mesh_iterations = it + 1;
     best.nlp_iterations = nlp_iterations;
     if (!solution.solved && !solution.acceptable) {

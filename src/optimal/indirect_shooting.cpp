@@ -13,89 +13,17 @@
 #include "pmp_system.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "switching_structure.hpp"
 
 namespace poinsot::optimal {
 
 namespace {
 
 using detail::PmpState;
+using detail::read_reversals;
+using detail::read_switching_structure;
+using detail::SwitchGuess;
 namespace odeint = boost::numeric::odeint;
-
-// Sign changes of u_i in the direct solution: the switching structure of a bang-bang control.
-struct SwitchGuess {
-  Vec3 initial_sign = Vec3::Ones();
-  std::vector<double> times;
-  std::vector<int> axes;
-  std::string singular;           // non-empty when u_i stays inside its bound over a stretch (singular arc)
-  std::vector<double> reversals;  // norm bound: times where σ passes through 0 and u = −ū σ/‖σ‖ reverses
-};
-
-// Norm bound, minimum time: consecutive saturated samples of the direct solution whose torques are more
-// than 90° apart mark a zero of σ (the torque reverses through it, as for a sphere's eigenaxis slew at T/2);
-// the time is the zero of the component along the earlier torque, linearly interpolated.
-std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSolution& d) {
-  std::vector<double> out;
-  const double ubar = p.torque_max[0];
-  std::size_t last = d.time.size();
-  for (std::size_t j = 0; j < d.time.size(); ++j) {
-    if (d.torque_body[j].norm() < 0.5 * ubar) continue;
-    if (last < d.time.size() && d.torque_body[j].dot(d.torque_body[last]) < 0.0) {
-      const Vec3 e = d.torque_body[last].normalized();
-      double t0 = d.time[last];
-      for (std::size_t k = last; k < j; ++k) {
-        const double a = d.torque_body[k].dot(e), b = d.torque_body[k + 1].dot(e);
-        if ((a > 0) != (b > 0)) {
-          t0 = d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
-          break;
-        }
-      }
-      out.push_back(t0);
-    }
-    last = j;
-  }
-  return out;
-}
-
-SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d) {
-  SwitchGuess g;
-  const double T = d.final_time;
-  for (int i = 0; i < 3; ++i) {
-    const double umax = p.torque_max[i];
-    int last = -1;
-    double inside_since = -1.0;
-    for (std::size_t j = 0; j < d.time.size(); ++j) {
-      const double u = d.torque_body[j][i];
-      const bool saturated = std::abs(u) > 0.5 * umax;
-      if (std::abs(u) < 0.95 * umax) {
-        if (inside_since < 0.0) inside_since = d.time[j];
-        if (d.time[j] - inside_since > 0.05 * T && g.singular.empty())
-          g.singular = "u" + std::to_string(i + 1) +
-                       " is inside its bound from t = " + format_number(inside_since, 6) + " s to " +
-                       format_number(d.time[j], 6) + " s (a singular arc?)";
-      } else {
-        inside_since = -1.0;
-      }
-      if (!saturated) continue;
-      if (last < 0) {
-        g.initial_sign[i] = u > 0 ? 1.0 : -1.0;
-      } else if ((u > 0) != (d.torque_body[last][i] > 0)) {
-        // zero of the piecewise-linear interpolant between the last two saturated samples
-        double t0 = d.time[last];
-        for (std::size_t k = last; k < j; ++k) {
-          const double a = d.torque_body[k][i], b = d.torque_body[k + 1][i];
-          if ((a > 0) != (b > 0)) {
-            t0 = d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
-            break;
-          }
-        }
-        g.times.push_back(t0);
-        g.axes.push_back(i);
-      }
-      last = static_cast<int>(j);
-    }
-  }
-  return g;
-}
 
 class Shooter {
  public:

@@ -33,6 +33,8 @@ struct IpoptSettings {
   double acceptable_tolerance = 0.0;
   int max_iterations = 1000;
   int print_level = 0;  ///< Ipopt's print_level (0 = silent)
+  /// bound_relax_factor = 0: the bounds are met exactly instead of Ipopt's default relaxation by 1e-8.
+  bool exact_bounds = false;
 };
 
 struct NlpSolution {

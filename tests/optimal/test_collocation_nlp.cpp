@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "optimal_test_problems.hpp"
+#include "poinsot/core/error.hpp"
 
 namespace poinsot::optimal::detail {
 namespace {
@@ -17,7 +18,8 @@ std::vector<double> random_point(const CollocationNlp& nlp, unsigned seed) {
   std::vector<double> z(nlp.num_variables());
   for (auto& v : z)
     v = d(rng);
-  z[nlp.time_index()] = 3.0 + d(rng);
+  for (int a = 0; a < nlp.phases(); ++a)
+    z[nlp.duration_index(a)] = 3.0 + d(rng);
   return z;
 }
 
@@ -49,12 +51,8 @@ ReorientationProblem general_problem(TorqueBound bound, Objective objective, boo
   return p;
 }
 
-class CollocationDerivatives : public ::testing::TestWithParam<std::tuple<TorqueBound, Objective, bool>> {};
-
 // Central differences have error O(δ²·|f'''|) + O(ε/δ): with δ = 1e-6 and O(1) data, about 1e-9.
-TEST_P(CollocationDerivatives, JacobianAndHessianMatchCentralDifferences) {
-  const auto [bound, objective, free_attitude] = GetParam();
-  const CollocationNlp nlp(general_problem(bound, objective, free_attitude), {0.0, 0.3, 0.55, 1.0});
+void expect_derivatives_match_central_differences(const CollocationNlp& nlp) {
   const std::vector<double> z = random_point(nlp, 7);
   const int n = nlp.num_variables(), m = nlp.num_constraints();
   const double delta = 1e-6;
@@ -106,6 +104,42 @@ TEST_P(CollocationDerivatives, JacobianAndHessianMatchCentralDifferences) {
     for (int i = 0; i < n; ++i)
       ASSERT_NEAR(H(i, j), col[i], 1e-7) << i << "," << j;
   }
+}
+
+class CollocationDerivatives : public ::testing::TestWithParam<std::tuple<TorqueBound, Objective, bool>> {};
+
+TEST_P(CollocationDerivatives, JacobianAndHessianMatchCentralDifferences) {
+  const auto [bound, objective, free_attitude] = GetParam();
+  expect_derivatives_match_central_differences(
+      CollocationNlp(general_problem(bound, objective, free_attitude), {0.0, 0.3, 0.55, 1.0}));
+}
+
+// Three phases (durations as variables, duplicated nodes, continuity rows, per-phase torque bounds).
+TEST(CollocationPhases, JacobianAndHessianMatchCentralDifferences) {
+  for (const auto& [bound, objective] :
+       {std::pair{TorqueBound::per_axis, Objective::minimum_time_regularised},
+        std::pair{TorqueBound::norm, Objective::minimum_time}}) {
+    CollocationPhases phases;
+    phases.intervals = {2, 1, 2};
+    phases.torque_lower = {Vec3(-1, -2, -3), Vec3(1, -2, -3), Vec3(-1, 2, -3)};
+    phases.torque_upper = {Vec3(1, 2, 3), Vec3(1, 2, 3), Vec3(-1, 2, 3)};
+    const CollocationNlp nlp(general_problem(bound, objective, false),
+                             {0.0, 0.4, 1.0, 0.0, 1.0, 0.0, 0.5, 1.0}, phases);
+    EXPECT_EQ(nlp.phases(), 3);
+    EXPECT_EQ(nlp.points(), 2 * 5 + 3);
+    expect_derivatives_match_central_differences(nlp);
+  }
+}
+
+TEST(CollocationPhases, RefusesInconsistentPhases) {
+  CollocationPhases phases;
+  phases.intervals = {2, 1};
+  phases.torque_lower = phases.torque_upper = {Vec3::Zero(), Vec3::Zero()};
+  const auto p = general_problem(TorqueBound::per_axis, Objective::minimum_time, false);
+  EXPECT_THROW(CollocationNlp(p, {0.0, 0.5, 1.0, 0.0}, phases), InvalidInput);
+  EXPECT_THROW(CollocationNlp(general_problem(TorqueBound::per_axis, Objective::minimum_energy, false),
+                              {0.0, 0.5, 1.0, 0.0, 1.0}, phases),
+               InvalidInput);
 }
 
 INSTANTIATE_TEST_SUITE_P(AllObjectives, CollocationDerivatives,

@@ -1,0 +1,35 @@
+#pragma once
+/// @file switching_structure.hpp (internal)
+/// The switching structure of a minimum-time control read from a direct (collocated) solution: for per-axis
+/// bounds the initial sign of each u_i and the times and axes of its sign changes (bang-bang), for a norm
+/// bound the reversals of u = −ū σ/‖σ‖ where σ passes through 0. Used to seed the shooting method and the
+/// phase-per-arc collocation.
+#include <string>
+#include <vector>
+
+#include "poinsot/core/types.hpp"
+#include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/problem.hpp"
+
+namespace poinsot::optimal::detail {
+
+// Sign changes of u_i in the direct solution: the switching structure of a bang-bang control.
+struct SwitchGuess {
+  Vec3 initial_sign = Vec3::Ones();
+  std::vector<double> times;  // s, in the order read (axis by axis), not sorted
+  std::vector<int> axes;
+  std::string singular;           // non-empty when u_i stays inside its bound over a stretch (singular arc)
+  std::vector<double> reversals;  // norm bound: times where σ passes through 0 and u = −ū σ/‖σ‖ reverses
+};
+
+/// Norm bound, minimum time: consecutive saturated samples of the direct solution whose torques are more
+/// than 90° apart mark a zero of σ (the torque reverses through it, as for a sphere's eigenaxis slew at T/2);
+/// the time is the zero of the component along the earlier torque, linearly interpolated.
+std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSolution& d);
+
+/// Per-axis bounds: the sign changes of each u_i between saturated samples (|u_i| > u_max,i / 2), each at the
+/// zero of the piecewise-linear interpolant; `singular` names an axis whose torque stays inside 95 % of its
+/// bound for more than 5 % of T.
+SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d);
+
+}  // namespace poinsot::optimal::detail
