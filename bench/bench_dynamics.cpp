@@ -19,6 +19,7 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/dynamics/state.hpp"
 #include "poinsot/so3/distance.hpp"
 #include "poinsot/so3/projection.hpp"
@@ -99,6 +100,45 @@ void BM_OdeintRk4Step(benchmark::State& st) {
   }
 }
 BENCHMARK(BM_OdeintRk4Step);
+
+// rk4 advanced n steps at a time (Integrator::advance, the simulation driver's path for a torque-free body:
+// one conversion to a State per n steps), ns per step; beside BM_Step/0 (one step() per step: the state
+// checked against the last one produced and converted to R on every step) and BM_OdeintRk4Step. Compare them
+// in one process: --benchmark_filter='BM_Step/0$|Rk4Advance|OdeintRk4Step' --benchmark_repetitions=9
+// --benchmark_enable_random_interleaving=true.
+void BM_Rk4Advance(benchmark::State& st) {
+  const long long n = st.range(0);
+  auto m = make_integrator("rk4", racket(), TorqueModel::none(), options(1e-3, 1e-10));
+  State s = racket_state();
+  for (auto _ : st) {
+    m->advance(s, 1e-3, n);
+    benchmark::DoNotOptimize(s);
+  }
+  st.SetItemsProcessed(st.iterations() * n);
+  st.counters["ns_per_step"] = benchmark::Counter(static_cast<double>(st.iterations() * n),
+                                                  benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Rk4Advance)->Arg(10)->Arg(100);
+
+// The simulation driver (dynamics::simulate, what `poinsot run`, Python's simulate and the ensemble's scalar
+// path call) on the racket with rk4, h = 1 ms, a sample every 10 ms to an observer that keeps nothing, flips
+// located: 10⁴ steps per iteration; the counter is ns per step.
+void BM_SimulateRk4(benchmark::State& st) {
+  auto m = make_integrator("rk4", racket(), TorqueModel::none(), options(1e-3, 1e-10));
+  SimulationOptions o;
+  o.t_end = 10.0;
+  o.sample_dt = 0.01;
+  long long steps = 0;
+  for (auto _ : st) {
+    const auto r =
+        simulate(racket(), TorqueModel::none(), racket_state(), *m, o, [](const State&) { return true; });
+    steps += r.steps;
+    benchmark::DoNotOptimize(r.final_state);
+  }
+  st.counters["ns_per_step"] = benchmark::Counter(static_cast<double>(steps),
+                                                  benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_SimulateRk4)->Unit(benchmark::kMillisecond);
 
 // ------------------------------------------------------------------------------------- accuracy per cost
 State exact_at_100() {

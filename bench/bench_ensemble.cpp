@@ -1,6 +1,8 @@
 // Throughput of the ensemble's batched integrators against the scalar integrators of dynamics/ in the same
-// process: body-steps per second (items_per_second) for rk4 and dlm on free asymmetric bodies, one thread.
-// Run: build/release/bench/bench_ensemble --benchmark_filter=Ensemble
+// process: body-steps per second (items_per_second) for rk4 and dlm on free asymmetric bodies, one thread;
+// the scalar integrators one step() at a time and through Integrator::advance. Run:
+// build/release/bench/bench_ensemble --benchmark_filter=Ensemble --benchmark_repetitions=5
+// --benchmark_enable_random_interleaving=true
 // Also the cost per value of the statistics without rows: the quantile sketch against the running moments
 // (--benchmark_filter=Statistics).
 #include <benchmark/benchmark.h>
@@ -59,16 +61,34 @@ void BM_EnsembleScalar(benchmark::State& st, const char* method) {
   st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
 }
 
+// The scalar path as the simulation driver takes it for a torque-free body: Integrator::advance over all the
+// steps (one conversion to a State per call).
+void BM_EnsembleScalarAdvance(benchmark::State& st, const char* method) {
+  const auto s = samples();
+  for (auto _ : st) {
+    for (const auto& x : s) {
+      const dynamics::RigidBody body = x.body();
+      auto integrator = dynamics::make_integrator(method, body, nullptr, {.dt = kDt});
+      dynamics::State y = x.initial;
+      integrator->advance(y, kDt, kSteps);
+      benchmark::DoNotOptimize(y);
+    }
+  }
+  st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
+}
+
 BENCHMARK_CAPTURE(BM_EnsembleBatched, rk4_simd, "rk4", ensemble::Simd::automatic)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EnsembleBatched, rk4_portable, "rk4", ensemble::Simd::off)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EnsembleScalar, rk4, "rk4")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleScalarAdvance, rk4, "rk4")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EnsembleBatched, dlm_simd, "dlm", ensemble::Simd::automatic)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EnsembleBatched, dlm_portable, "dlm", ensemble::Simd::off)
     ->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_EnsembleScalar, dlm, "dlm")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleScalarAdvance, dlm, "dlm")->Unit(benchmark::kMillisecond);
 
 /// Lognormal values over about four decades, as an output like an energy error spreads.
 std::vector<double> output_values() {

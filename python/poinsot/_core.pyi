@@ -69,6 +69,8 @@ class HeavyTop:
 
 class Integrator:
     """The one interface every integrator implements (Boost.Odeint's `step(state, dt)` concept, as a small virtual class): a new method is one new file."""
+    def advance(self, state: State, dt: float, n: int) -> dict:
+        """Advances `state` by n ≥ 1 consecutive steps of dt (at most dt for adaptive methods): bit for bit what n calls of step(state, dt) leave, the time included, but a method may keep its own representation between the steps and convert to a State once, at the end (rk4)."""
     def dense_output(self, t: float) -> State:
         """The state at time t inside the last step taken (has_dense_output() only)."""
     @property

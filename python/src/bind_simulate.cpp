@@ -325,6 +325,20 @@ void bind_exact(py::module_& m) {
           (std::string(POINSOT_DOC(dynamics_Integrator_step)) +
            "\n\nAdvances `state` in place; returns a dict: dt_taken (s), dt_next (s), rejected.")
               .c_str())
+      .def(
+          "advance",
+          [](Integrator& i, State& s, double dt, long long n) {
+            const auto r = i.advance(s, dt, n);
+            py::dict d;
+            d["dt_taken"] = r.dt_taken;
+            d["dt_next"] = r.dt_next;
+            d["rejected"] = r.rejected;
+            return d;
+          },
+          py::arg("state"), py::arg("dt"), py::arg("n"),
+          (std::string(POINSOT_DOC(dynamics_Integrator_advance)) +
+           "\n\nAdvances `state` in place; returns a dict: dt_taken (s), dt_next (s), rejected (summed).")
+              .c_str())
       .def("dense_output", &Integrator::dense_output, py::arg("t"),
            POINSOT_DOC(dynamics_Integrator_dense_output))
       .def(

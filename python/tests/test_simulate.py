@@ -228,6 +228,22 @@ def test_integrator_step_by_step_matches_simulate():
     assert np.abs(s.R_space_body - r.final_state.R_space_body).max() < 1e-14
 
 
+def test_integrator_advance_is_repeated_steps():
+    # advance(s, dt, n) leaves bit for bit what n calls of step(s, dt) leave (rk4: one conversion per call).
+    body = RigidBody.from_principal_moments(BODY)
+    a = poinsot.make_integrator("rk4", body, dt=1e-2)
+    b = poinsot.make_integrator("rk4", body, dt=1e-2)
+    sa, sb = State(omega_body=W0), State(omega_body=W0)
+    for _ in range(37):
+        a.step(sa, 1e-2)
+    r = b.advance(sb, 1e-2, 37)
+    assert r["dt_taken"] == 1e-2 and r["rejected"] == 0
+    assert sa.time == sb.time
+    assert np.array_equal(sa.R_space_body, sb.R_space_body) and np.array_equal(sa.omega_body, sb.omega_body)
+    with pytest.raises(ValueError, match="n = 0 steps; expected at least 1"):
+        b.advance(sb, 1e-2, 0)
+
+
 def test_plot_draws_the_figures_of_a_run_folder(tennis_racket, tmp_path):
     pytest.importorskip("matplotlib")
     res = poinsot.run(tennis_racket, tmp_path / "run", method="dop853", t_end=3.0, plot=True)

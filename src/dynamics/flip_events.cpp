@@ -14,13 +14,19 @@ FlipDetector::FlipDetector(const RigidBody& body, std::shared_ptr<const TorqueMo
   applicable_ = (I[1] - I[0] > tol) && (I[2] - I[1] > tol);
 }
 
-double FlipDetector::component(const State& s) const {
-  return e2_.dot(J_ * s.omega_body);
+double FlipDetector::component(const Vec3& omega_body) const {
+  return e2_.dot(J_ * omega_body);
 }
 
 double FlipDetector::rate(const State& s) const {
+  if (!torque_ || torque_->is_zero()) return free_rate(s.omega_body);
   Vec3 rhs = -s.omega_body.cross(J_ * s.omega_body);
-  if (torque_ && !torque_->is_zero()) rhs += torque_->torque_body(s.time, s.R_space_body, s.omega_body);
+  rhs += torque_->torque_body(s.time, s.R_space_body, s.omega_body);
+  return e2_.dot(rhs);
+}
+
+double FlipDetector::free_rate(const Vec3& omega_body) const {
+  const Vec3 rhs = -omega_body.cross(J_ * omega_body);
   return e2_.dot(rhs);
 }
 

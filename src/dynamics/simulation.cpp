@@ -38,6 +38,12 @@ class InvariantTracker {
     }
     e.orthogonality_max = std::max(e.orthogonality_max, so3::orthogonality_error(s.R_space_body));
   }
+  /// The energy error alone, from ω: the body is torque-free (no potential energy), so this is record()'s
+  /// energy bit for bit, kinetic_energy(body, s) = ½ ωᵀJω.
+  void record_free_energy(const Vec3& omega_body, InvariantErrors& e) const {
+    const double E = 0.5 * omega_body.dot(body_.inertia() * omega_body);
+    e.energy_rel_max = std::max(e.energy_rel_max, std::abs(E - E0_) / std::max(std::abs(E0_), 1e-300));
+  }
 
  private:
   const RigidBody& body_;
@@ -49,12 +55,17 @@ class InvariantTracker {
   double L0_norm_ = 0.0;
 };
 
-void require_finite_state(const Integrator& integrator, const State& s, long long step) {
-  if (std::isfinite(s.time) && s.R_space_body.allFinite() && s.omega_body.allFinite()) return;
+[[noreturn]] void throw_non_finite(const Integrator& integrator, double t, const Vec3& omega_body,
+                                   long long step) {
   throw ComputationFailed(fmt::format(
       "simulate: {} produced a non-finite state at step {} (t = {} s): omega_body = {} rad/s; expected "
       "finite values (a smaller step or a tighter tolerance?)",
-      integrator.name(), step, s.time, format_vector(s.omega_body)));
+      integrator.name(), step, t, format_vector(omega_body)));
+}
+
+void require_finite_state(const Integrator& integrator, const State& s, long long step) {
+  if (std::isfinite(s.time) && s.R_space_body.allFinite() && s.omega_body.allFinite()) return;
+  throw_non_finite(integrator, s.time, s.omega_body, step);
 }
 
 struct DenseContext {
@@ -66,6 +77,72 @@ double dense_component(double t, const void* ctx) {
   const auto& c = *static_cast<const DenseContext*>(ctx);
   return c.flips->component(c.integrator->dense_output(t));
 }
+
+/// The per-step checks of a torque-free body inside Integrator::advance, from ω alone: a finite ω, the energy
+/// error, and the flips, located as the step-by-step loop locates them (the dense output of the step, or the
+/// cubic Hermite interpolant of s from its values and rates at both ends). The last step of an advance ends
+/// at the interval's end time e exactly (the driver's time, not the sum of the steps). The attitude's checks
+/// (finite R, L_space, |L|, RᵀR = I) run on the State at the end of the advance.
+class FreeStepChecks final : public StepWatcher {
+ public:
+  FreeStepChecks(const Integrator& integrator, const InvariantTracker& invariants, const FlipDetector& flips,
+                 bool locate, SimulationResult& result)
+      : integrator_(integrator), invariants_(invariants), flips_(flips), locate_(locate), result_(result) {}
+
+  /// Before an advance of n steps from `s` ending at time e (s).
+  void begin(const State& s, long long n, double e) {
+    n_ = n;
+    e_ = e;
+    t0_ = s.time;
+    w0_ = s.omega_body;
+    c0_ = flips_.component(s.omega_body);
+    failed_ = false;
+    done_ = 0;
+  }
+  bool failed() const { return failed_; }
+  /// The steps of the current advance seen so far, and the time (s) the last of them reached.
+  long long steps_done() const { return done_; }
+  double time() const { return t0_; }
+
+  void after_step(long long k, double time, const Vec3& omega_body) override {
+    const double t = k == n_ - 1 ? e_ : time;
+    if (!(std::isfinite(t) && omega_body.allFinite())) {
+      failed_ = true;
+      throw_non_finite(integrator_, t, omega_body, result_.steps + k + 1);
+    }
+    invariants_.record_free_energy(omega_body, result_.errors);
+    if (locate_) {
+      const double c1 = flips_.component(omega_body);
+      if (FlipDetector::sign_change(c0_, c1)) {
+        if (integrator_.has_dense_output()) {
+          const DenseContext dense{&integrator_, &flips_};
+          result_.flip_times.push_back(locate_sign_change(&dense_component, &dense, t0_, t, c0_, c1));
+        } else {
+          result_.flip_times.push_back(FlipDetector::hermite_root(t0_, t, c0_, c1, flips_.free_rate(w0_),
+                                                                  flips_.free_rate(omega_body)));
+        }
+      }
+      c0_ = c1;
+    }
+    t0_ = t;
+    w0_ = omega_body;
+    done_ = k + 1;
+  }
+
+ private:
+  const Integrator& integrator_;
+  const InvariantTracker& invariants_;
+  const FlipDetector& flips_;
+  bool locate_;
+  SimulationResult& result_;
+  long long n_ = 0;
+  double e_ = 0.0;
+  double t0_ = 0.0;
+  Vec3 w0_ = Vec3::Zero();
+  double c0_ = 0.0;
+  bool failed_ = false;
+  long long done_ = 0;
+};
 
 }  // namespace
 
@@ -173,6 +250,11 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
   // Fixed-step methods: each sample interval is cut into n equal steps of at most the nominal step, so that
   // samples land exactly on the sample times (no interpolation of the samples).
   const double h_nominal = integrator.nominal_step();
+  // A torque-free body is advanced one sample interval at a time (Integrator::advance: no conversion to a
+  // State between the steps), its per-step checks made from ω by FreeStepChecks. With a torque every step
+  // ends in a State, since the torque and its flip rate depend on the attitude.
+  const bool free = torque->is_zero();
+  FreeStepChecks checks(integrator, invariants, flips, locate, result);
   // A sample interval holding breakpoints is cut at them first.
   for (; next <= n_intervals; ++next) {
     const double b = sample_time(next);
@@ -182,6 +264,23 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
       const long long n =
           h_nominal > 0.0 ? std::max(1LL, static_cast<long long>(std::ceil((e - a) / h_nominal - 1e-9))) : 1;
       const double hh = (e - a) / static_cast<double>(n);
+      if (free) {
+        checks.begin(s, n, e);
+        try {
+          const StepResult r = integrator.advance(s, hh, n, &checks);
+          result.rejected_steps += r.rejected;
+        } catch (const ComputationFailed& err) {
+          if (checks.failed()) throw;
+          throw ComputationFailed(fmt::format("simulate: {} failed at step {} (t = {} s): {}",
+                                              integrator.name(), result.steps + checks.steps_done() + 1,
+                                              checks.time(), err.what()));
+        }
+        result.steps += n;
+        s.time = e;
+        require_finite_state(integrator, s, result.steps);
+        invariants.record(s, result.errors);
+        continue;
+      }
       for (long long k = 0; k < n; ++k) {
         const State prev = s;
         take_step(s, hh);

@@ -5,6 +5,7 @@
 
 #include "batch_kernels.hpp"
 #include "batch_lanes.hpp"
+#include "poinsot/dynamics/rk4.hpp"
 #include "poinsot/so3/quaternion.hpp"
 
 namespace poinsot::ensemble::detail {
@@ -46,7 +47,7 @@ inline __attribute__((always_inline)) void rhs_free(const Rk4Lanes& L, const dou
 }
 
 template <bool Free>
-inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h) {
+inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h, bool renormalise) {
   const auto f = [&L](const double(*y)[B], double(*d)[B]) {
     if constexpr (Free) {
       rhs_free(L, y, d);
@@ -69,9 +70,11 @@ inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h) {
   f(L.tmp, L.k[3]);
   for (int i = 0; i < 7; ++i)
     for (int l = 0; l < B; ++l)
-      L.y[i][l] += h / 6 * (L.k[0][i][l] + 2 * (L.k[1][i][l] + L.k[2][i][l]) + L.k[3][i][l]);
-  // q ← q (3 − |q|²)/2 as in dynamics/rk4.cpp; |q|² summed in the order of Eigen's SSE2 reduction of a
-  // 4-vector there, (q₀² + q₂²) + (q₁² + q₃²).
+      L.y[i][l] =
+          (L.y[i][l] + h / 6 * (L.k[0][i][l] + 2 * (L.k[1][i][l] + L.k[2][i][l]))) + h / 6 * L.k[3][i][l];
+  // q ← q (3 − |q|²)/2 as in dynamics/rk4.cpp, after every kRk4RenormaliseEvery-th step; |q|² summed in the
+  // order of Eigen's SSE2 reduction of a 4-vector there, (q₀² + q₂²) + (q₁² + q₃²).
+  if (!renormalise) return;
   for (int l = 0; l < B; ++l) {
     const double n2 =
         (L.y[0][l] * L.y[0][l] + L.y[2][l] * L.y[2][l]) + (L.y[1][l] * L.y[1][l] + L.y[3][l] * L.y[3][l]);
@@ -97,7 +100,7 @@ inline __attribute__((always_inline)) void steps(Rk4Lanes& L, FlipLanes& F, long
   flip_component(F, L.y[4], L.y[5], L.y[6], F.s);
   flip_rate(L, F, F.r);
   for (long long i = 0; i < n; ++i) {
-    step<Free>(L, h);
+    step<Free>(L, h, (i + 1) % dynamics::kRk4RenormaliseEvery == 0);
     flip_component(F, L.y[4], L.y[5], L.y[6], s1);
     flip_rate(L, F, r1);
     advance_flips(F, s1, r1, static_cast<double>(i) * h, static_cast<double>(i + 1) * h, lanes);
@@ -154,7 +157,9 @@ void run_rk4_batch(std::span<const Sample> samples, double t_end, long long n, b
     const bool aligned = s.axes == Mat3::Identity();
     LaneResult& r = results[static_cast<std::size_t>(l)];
     r.final_state.time = t_end;
-    const Mat3 Rp = Quat(L->y[0][l], L->y[1][l], L->y[2][l], L->y[3][l]).toRotationMatrix();
+    Quat q(L->y[0][l], L->y[1][l], L->y[2][l], L->y[3][l]);
+    q.normalize();  // as dynamics/rk4.cpp forms R
+    const Mat3 Rp = q.toRotationMatrix();
     const Vec3 w(L->y[4][l], L->y[5][l], L->y[6][l]);
     r.final_state.R_space_body = aligned ? Rp : Mat3(Rp * s.axes.transpose());
     r.final_state.omega_body = aligned ? w : Vec3(s.axes * w);

@@ -118,6 +118,7 @@ TEST_P(IntegratorContract, StepsWithoutAllocating) {
   const long long before = allocation_count();
   for (int i = 0; i < 100; ++i)
     m->step(s, 0.01);
+  m->advance(s, 0.01, 50);
   if (m->has_dense_output()) m->dense_output(s.time - 0.005);
   Mat3 lambda;
   m->last_multiplier(lambda);
@@ -159,6 +160,56 @@ TEST_P(IntegratorContract, RepeatedRunsAreBitIdentical) {
   EXPECT_EQ(a.time, b.time);
   EXPECT_TRUE(a.R_space_body == b.R_space_body);
   EXPECT_TRUE(a.omega_body == b.omega_body);
+}
+
+// advance(s, h, n) leaves bit for bit what n calls of step(s, h) leave, and shows its watcher the time and ω
+// of every step; split into two advances (10 + 15 steps) and on the three code paths of a method such as
+// rk4: the torque-free body in its principal frame, with a torque, and with a full inertia tensor.
+TEST_P(IntegratorContract, AdvanceIsRepeatedSteps) {
+  struct Recorder final : dynamics::StepWatcher {
+    std::vector<std::pair<double, Vec3>> seen;
+    long long expected_k = 0;
+    void after_step(long long k, double time, const Vec3& omega_body) override {
+      EXPECT_EQ(k, expected_k++);
+      seen.emplace_back(time, omega_body);
+    }
+  };
+  const Mat3 Q = so3::exp(Vec3(0.4, -0.7, 0.2));
+  const RigidBody rotated = RigidBody::from_inertia(Q * Vec3(1.0, 2.0, 3.0).asDiagonal() * Q.transpose());
+  const std::pair<const RigidBody*, std::shared_ptr<const TorqueModel>> cases[] = {
+      {&kBody, TorqueModel::none()}, {&kBody, torque()}, {&rotated, TorqueModel::none()}};
+  for (const auto& [body, tau] : cases) {
+    auto a = make(*body, 0.01, tau);
+    auto b = make(*body, 0.01, tau);
+    State sa = tumbling();
+    State sb = tumbling();
+    std::vector<std::pair<double, Vec3>> stepped;
+    for (int k = 0; k < 25; ++k) {
+      a->step(sa, 0.01);
+      stepped.emplace_back(sa.time, sa.omega_body);
+    }
+    Recorder rec;
+    b->advance(sb, 0.01, 10, &rec);
+    rec.expected_k = 0;
+    b->advance(sb, 0.01, 15, &rec);
+    EXPECT_EQ(sa.time, sb.time);
+    EXPECT_TRUE(sa.R_space_body == sb.R_space_body);
+    EXPECT_TRUE(sa.omega_body == sb.omega_body);
+    ASSERT_EQ(rec.seen.size(), stepped.size());
+    for (std::size_t k = 0; k < stepped.size(); ++k) {
+      EXPECT_EQ(rec.seen[k].first, stepped[k].first) << "step " << k;
+      EXPECT_TRUE(rec.seen[k].second == stepped[k].second) << "step " << k;
+    }
+    // A State not produced by the integrator (here: moved by hand) is taken as it is.
+    sa.omega_body *= 0.5;
+    sb.omega_body *= 0.5;
+    a->step(sa, 0.01);
+    b->advance(sb, 0.01, 1);
+    EXPECT_TRUE(sa.R_space_body == sb.R_space_body);
+    EXPECT_TRUE(sa.omega_body == sb.omega_body);
+  }
+  State s = tumbling();
+  POINSOT_EXPECT_THROWS_MESSAGE(make(kBody, 0.01)->advance(s, 0.01, 0), InvalidInput, "n = 0 steps");
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, IntegratorContract, ::testing::ValuesIn(entries()),

@@ -219,6 +219,49 @@ TEST(Simulation, NonFiniteStateStopsWithTimeStepAndCause) {
                                 "dopri5 failed at step", "too small");
 }
 
+// A method's own advance (rk4: n steps on its quaternion, one conversion) and the default advance (n calls of
+// step) give the driver the same steps: the same final state, flip times and energy error, bit for bit.
+TEST(Simulation, OwnAdvanceAndStepByStepAdvanceGiveTheSameRun) {
+  // rk4 behind the default Integrator::advance: one step() per step.
+  class StepByStep final : public dynamics::Integrator {
+   public:
+    explicit StepByStep(std::unique_ptr<dynamics::Integrator> m) : m_(std::move(m)) {}
+    std::string_view name() const override { return m_->name(); }
+    int order() const override { return m_->order(); }
+    double nominal_step() const override { return m_->nominal_step(); }
+    dynamics::StepResult step(State& s, double dt) override { return m_->step(s, dt); }
+
+   private:
+    std::unique_ptr<dynamics::Integrator> m_;
+  };
+  SimulationOptions o;
+  o.t_end = 20.0;
+  o.sample_dt = 0.25;
+  auto own = make_integrator("rk4", kRacket, TorqueModel::none(), tight(1e-10, 2e-3));
+  StepByStep by_step(make_integrator("rk4", kRacket, TorqueModel::none(), tight(1e-10, 2e-3)));
+  const auto a = simulate(kRacket, TorqueModel::none(), racket_state(), *own, o);
+  const auto b = simulate(kRacket, TorqueModel::none(), racket_state(), by_step, o);
+  ASSERT_GE(a.flip_times.size(), 2u);
+  EXPECT_EQ(a.flip_times, b.flip_times);
+  EXPECT_EQ(a.steps, b.steps);
+  EXPECT_EQ(a.errors.energy_rel_max, b.errors.energy_rel_max);
+  EXPECT_EQ(a.final_state.time, b.final_state.time);
+  EXPECT_TRUE(a.final_state.R_space_body == b.final_state.R_space_body);
+  EXPECT_TRUE(a.final_state.omega_body == b.final_state.omega_body);
+}
+
+TEST(Simulation, NonFiniteStateOfATorqueFreeBodyStopsWithTimeAndStep) {
+  // rk4 far beyond its stability limit (h|ω| = 1.7e3): ω overflows within a few steps of the first interval.
+  auto rk4 = make_integrator("rk4", kBody, TorqueModel::none(), tight(1e-10, 1.0));
+  State s = tumbling();
+  s.omega_body = Vec3(1e3, 1e3, -1e3);
+  SimulationOptions o;
+  o.t_end = 100.0;
+  o.sample_dt = 50.0;
+  POINSOT_EXPECT_THROWS_MESSAGE(simulate(kBody, TorqueModel::none(), s, *rk4, o), ComputationFailed,
+                                "rk4 produced a non-finite state at step ", "t = ");
+}
+
 TEST(Simulation, RejectsBadOptions) {
   auto m = make_integrator("rk4", kBody, TorqueModel::none());
   SimulationOptions o;

@@ -24,9 +24,13 @@ class FlipDetector {
   /// False when two principal moments agree to a relative 1e-12 (no intermediate axis, no flips).
   bool applicable() const { return applicable_; }
   /// s = e2ᵀ J ω (kg·m²/s), e2 the intermediate principal axis in the body frame.
-  double component(const State& s) const;
+  double component(const State& s) const { return component(s.omega_body); }
+  /// s of the body angular velocity ω (rad/s).
+  double component(const Vec3& omega_body) const;
   /// ṡ = e2ᵀ (τ_body − ω × J ω) (N·m).
   double rate(const State& s) const;
+  /// ṡ = −e2ᵀ (ω × J ω) (N·m) of the torque-free body, ω in rad/s: rate() without the torque.
+  double free_rate(const Vec3& omega_body) const;
   /// True when s changes sign from s0 to s1 (s0 ≠ 0 and s1 zero or of the other sign).
   static bool sign_change(double s0, double s1) { return (s0 > 0.0 && s1 <= 0.0) || (s0 < 0.0 && s1 >= 0.0); }
   /// The root in [t0, t1] of the cubic Hermite interpolant with values s0, s1 and rates r0, r1 at t0, t1

@@ -35,6 +35,18 @@ struct StepResult {
   int rejected = 0;       ///< rejected attempts inside this call (adaptive methods)
 };
 
+/// Sees each step that Integrator::advance takes, through the body angular velocity alone, so that a method
+/// need not form the attitude between the steps (the simulation driver tracks the energy and the flips of a
+/// torque-free body with it).
+class StepWatcher {
+ public:
+  virtual ~StepWatcher() = default;
+  /// After step k (0 ≤ k < n) of an advance: the time (s) that step reached and the body angular velocity
+  /// (rad/s). The integrator's dense output, if it has one, covers that step. May throw; the advance then
+  /// stops with the state it was handed unchanged or partly advanced.
+  virtual void after_step(long long k, double time, const Vec3& omega_body) = 0;
+};
+
 class Integrator {
  public:
   virtual ~Integrator() = default;
@@ -52,6 +64,12 @@ class Integrator {
   /// Advances `state` by one step of at most `dt` seconds (exactly dt for fixed-step methods).
   /// Throws ComputationFailed (with t and the cause) when the step cannot be taken.
   virtual StepResult step(State& state, double dt) = 0;
+  /// Advances `state` by n ≥ 1 consecutive steps of dt (at most dt for adaptive methods): bit for bit what n
+  /// calls of step(state, dt) leave, the time included, but a method may keep its own representation between
+  /// the steps and convert to a State once, at the end (rk4). `watcher`, if not null, sees every step.
+  /// Returns the last step's result with `rejected` summed over the n steps. Allocates nothing. Throws
+  /// InvalidInput for n < 1 and what step() throws.
+  virtual StepResult advance(State& state, double dt, long long n, StepWatcher* watcher = nullptr);
   /// The state at time t inside the last step taken (has_dense_output() only). Allocates nothing.
   virtual State dense_output(double t) const;
 
@@ -59,6 +77,10 @@ class Integrator {
   /// it (rattle); false otherwise. rattle returns its discrete multiplier centred on the midpoint of the last
   /// step, t − dt_taken/2, where it approximates (j(ω)² + j(ω̇))K to second order.
   virtual bool last_multiplier(Mat3& lambda_body) const;
+
+ protected:
+  /// Throws InvalidInput "METHOD: advance: n = N steps; expected at least 1" for n < 1.
+  static void require_step_count(std::string_view method, long long n);
 };
 
 /// Creates the integrator of the registry (methods.hpp) named `name` for a body and a torque (null: none).

@@ -18,7 +18,10 @@ struct SimulationOptions {
   bool locate_flips = true;  ///< find the sign changes of the intermediate-axis component of L_body
 };
 
-/// Worst relative errors over the samples and steps, against the initial values.
+/// Worst relative errors over the samples and steps, against the initial values. A torque-free body under a
+/// fixed-step method is advanced one sample interval (or breakpoint interval) at a time
+/// (Integrator::advance): its energy error is then taken after every step, the others (from the attitude) at
+/// the end of each interval.
 struct InvariantErrors {
   double energy_rel_max = 0.0;     ///< max |E − E0| / |E0| (total energy with gravity)
   double L_space_rel_max = 0.0;    ///< max |L − L0| / |L0| (free body only; 0 with a torque)
