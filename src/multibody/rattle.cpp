@@ -348,8 +348,7 @@ struct Rattle::Impl {
     accumulate_generalized(sub.nu);
     for (std::size_t i = 0; i < nb; ++i) {
       momentum_step[i].head<3>() = 0.5 * hs * loads[i].force_space + gen[i].head<3>();
-      momentum_step[i].tail<3>() =
-          0.5 * hs * loads[i].torque_body + gen[i].tail<3>() - 2.0 * (sigma[i] * w[i].cross(Jw[i]));
+      momentum_step[i].tail<3>() = 0.5 * hs * loads[i].torque_body + gen[i].tail<3>() - 2.0 * gyro_solved[i];
     }
     if (first) {  // what position_stage() needs, computed only when asked for
       lambda_first = (2.0 / hs) * sub.nu;
@@ -366,7 +365,7 @@ struct Rattle::Impl {
     for (std::size_t i = 0; i < nb; ++i) {
       const Body& b = bodies[i];
       rhs_body[i].head<3>() = b.mass * u[i] + 0.5 * hs * loads[i].force_space;
-      rhs_body[i].tail<3>() = Jw[i] - sigma[i] * w[i].cross(Jw[i]) + 0.5 * hs * loads[i].torque_body;
+      rhs_body[i].tail<3>() = Jw[i] - gyro_solved[i] + 0.5 * hs * loads[i].torque_body;
     }
     rhs_joint.setZero();
     solver.solve(rhs_body, rhs_joint);
@@ -449,7 +448,7 @@ struct Rattle::Impl {
   std::vector<JointJacobian> G_a, G_b;
   std::vector<BodyLoads> loads, loads_start;
   std::vector<Vec3> u, w, Jw;
-  std::vector<Vec3> gyro_solved;  // σ w × Jw in the residual last solved for
+  std::vector<Vec3> gyro_solved;  // σ w × Jw in the residual last evaluated (at the final w once converged)
   std::vector<double> scale_w;    // magnitude of the terms of each body's rotation rows, N·m·s
   std::vector<Mat3> Q_minus_I, Q_minus_I_first;  // the relative rotations Q of the substeps, less I
   std::vector<double> sigma;
