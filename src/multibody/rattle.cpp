@@ -20,9 +20,12 @@ using so3::hat;
 
 namespace {
 
-// The relative momentum residual of a Newton iterate at its floating-point fixed point: a few roundings of
-// the terms (each ½ ulp relative to their magnitude) that cannot cancel.
-constexpr double kMomentumRoundoff = 4.0 * std::numeric_limits<double>::epsilon();
+// The relative momentum residual below which a Newton iterate is at its floating-point fixed point: ε of the
+// terms' magnitude (each rounds by ½ ulp). The residual left has a steady sign (see the Newton loop) and
+// meets the carried momenta through its product with σ w × Jw: at 4ε the free body's energy still drifted by
+// ~5e-20 a step (RMS exponent 0.64 over 10⁴–10⁷ steps, 0.57 at ε), at no measurable cost in iterations. Where
+// the residual cannot reach ε (long chains), the iteration stops when it no longer falls.
+constexpr double kMomentumRoundoff = std::numeric_limits<double>::epsilon();
 
 // Largest absolute entry: the residual norms of the Newton test (no square root on the hot path).
 template <class V>

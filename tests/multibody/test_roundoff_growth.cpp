@@ -107,7 +107,7 @@ TEST(MultibodyRoundoffGrowth, InvariantsRandomWalkAndRk4OrthogonalityStaysBounde
     const char* labels[] = {"energy", "L_space", "|L|", "|RtR - I|"};
     // RMS bounds in ε√N. The momenta and the energy: the new velocities (RK4) or momenta (RATTLE) are the old
     // ones plus a small increment, rounded once per entry (½ ulp, unbiased), and R + R(Q − I) rounds each
-    // entry of R by ½ ulp: measured 0.2 to 0.3 ε√N at 10⁵ steps (0.1 to 0.3 in the unoptimised builds at
+    // entry of R by ½ ulp: measured 0.15 to 0.4 ε√N at 10⁵ steps (0.1 to 0.3 in the unoptimised builds at
     // 10⁴). The biased rounding this guards against (J ω through the rounded J⁻¹ every step, in RATTLE's
     // velocity stage and RK4's velocity projection; Jw − σ w × Jw carrying RATTLE's Newton residual) gave 4.5
     // to 16 ε√N (RATTLE) and 8 to 11 ε√N (RK4) at 10⁵ steps. RATTLE's ‖RᵀR − I‖_F sums 9 entries' walks:
