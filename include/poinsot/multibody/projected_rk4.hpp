@@ -19,7 +19,8 @@
 ///   rotations updated by exact rotations R ← R cay(δθ/2), until every gap is below `tolerance` times the
 ///   system's length scale (m; perpendicularity rows: absolute);
 /// - the velocities by the M-orthogonal projection onto G(qₙ₊₁) (v, ω) = 0, which removes the normal part
-///   of the velocity and so never adds kinetic energy.
+///   of the velocity and so never adds kinetic energy; applied as a correction (zero without joints), so that
+///   the velocities never pass through M and the rounded M⁻¹ (a bias that made a free body's energy drift).
 ///
 /// The factorisation at qₙ₊₁ also serves the first stage of the next step (first same as last), whose solve
 /// gives the exact multipliers of the continuous equations at the current state (multipliers()).

@@ -24,6 +24,13 @@
 /// the sum of its terms' magnitudes (or has reached its round-off floor once the joints have converged).
 /// Damper forces in the velocity stage use the extrapolated velocities 2V½ − Vₙ, which keeps second order.
 ///
+/// Round-off: the momenta (m v, J ω) are carried from step to step as increments,
+/// M Vₙ₊₁ = M Vₙ + h/2 (Fₙ + Fₙ₊₁) + Gₙᵀν + Gₙ₊₁ᵀμ − 2σ w × J w, so that only their sum rounds and never
+/// through the rounded J⁻¹ and back; the velocities of the state are the velocity stage's solution. They are
+/// carried while step() is given the state the last step returned (bit-identical velocities), and computed
+/// from the state otherwise. Over an ensemble the invariants of a free system then random-walk (Brouwer's
+/// law; docs/integrators.md).
+///
 /// Order 4 (RattleOptions::order = 4) composes three such steps of sizes γ₁h, γ₂h, γ₁h with
 /// γ₁ = 1/(2 − 2^{1/3}), γ₂ = 1 − 2γ₁ (the "triple jump" of Yoshida 1990 and Suzuki 1990; Hairer, Lubich &
 /// Wanner II.4): still symplectic, symmetric and momentum-conserving, fourth order, at three times the cost.
