@@ -6,10 +6,10 @@
 #include <cmath>
 
 #include <fmt/format.h>
-#include <Eigen/SVD>
 
 #include "hermite_simpson_dae.hpp"
 #include "multibody_controls.hpp"
+#include "multibody_final_conditions.hpp"
 #include "multibody_minimal_model.hpp"
 #include "multibody_rotation_model.hpp"
 #include "poinsot/core/error.hpp"
@@ -19,17 +19,6 @@ namespace {
 
 using detail::CollocationModel;
 using detail::HermiteSimpsonDae;
-
-/// The rows N ᵀ of an orthonormal basis N of the null space of C (the tangent space of the constraints).
-Eigen::MatrixXd tangent_rows(const Eigen::MatrixXd& C) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullV);
-  const auto& s = svd.singularValues();
-  const double tol = 1e-10 * std::max(1.0, s.size() > 0 ? s(0) : 0.0);
-  int rank = 0;
-  while (rank < s.size() && s(rank) > tol)
-    ++rank;
-  return svd.matrixV().rightCols(C.cols() - rank).transpose();
-}
 
 /// Solves the transcription of `model` and fills the parts of the optimum common to both formulations.
 /// `decode(w, t)` gives the multibody state of the point variables w.
@@ -84,7 +73,10 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     const detail::MultibodyMinimalModel model(problem);
     const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
     const Eigen::VectorXd yf = model.state_vector(problem.final_state);
-    const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
+    const Eigen::MatrixXd rows = detail::model_final_rows(
+        problem, I, I, [&](const Eigen::VectorXd& y) { return model.state_of(y.data(), 0.0); },
+        [&](const multibody::State& s) { return model.state_vector(s); });
     MultibodyOptimum out = solve_model(
         problem, model, y0, yf, rows, options,
         [&](const double* w, double t) { return model.state_of(w, t); }, start);
@@ -99,7 +91,17 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
   const detail::MultibodyRotationModel model(problem);
   const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
   const Eigen::VectorXd yf = model.state_vector(problem.final_state);
-  const Eigen::MatrixXd rows = tangent_rows(model.invariant_jacobian(problem.final_state));
+  // The tangent space of the constraints at the target: an orthonormal basis N of the null space of the
+  // position and velocity rows' Jacobian, β = N δy and δy = Nᵀβ.
+  const Eigen::MatrixXd N = detail::null_space(model.invariant_jacobian(problem.final_state)).transpose();
+  const Eigen::MatrixXd rows = detail::model_final_rows(
+      problem, N, N.transpose(),
+      [&](const Eigen::VectorXd& y) {
+        Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
+        w.head(y.size()) = y;
+        return model.state_of(w.data(), 0.0);
+      },
+      [&](const multibody::State& s) { return model.state_vector(s); });
   std::vector<multibody::Multipliers> multipliers;
   MultibodyOptimum out = solve_model(
       problem, model, y0, yf, rows, options,

@@ -13,7 +13,13 @@
 /// Boundary conditions: the full initial state, and the final state of every coordinate the joints leave
 /// free (positions, attitudes, joint configurations and all velocities): `final_state` is a consistent
 /// state of the system; the final condition is that the state at T equals it, written on the tangent space
-/// of the constraints (multibody_direct.hpp).
+/// of the constraints (multibody_direct.hpp), except for
+/// - the angle of each hinge in `free_final_hinges` (its rate across the hinge is still imposed): a reaction
+///   wheel's angle at T, say;
+/// - the directions fixed by conserved quantities: a free-floating system (no joint to the world, no gravity
+///   or constant loads, hinge motors only) keeps its linear momentum P, its angular momentum H about the
+///   origin and M x_com − t P, so the final state must have the initial state's, and imposing them again
+///   would give dependent rows.
 #include <string>
 #include <vector>
 
@@ -38,6 +44,8 @@ struct MultibodyProblem {
   double final_time = 1.0;         ///< T, s
   std::vector<Actuator> actuators;
   int intervals = 20;  ///< Hermite–Simpson intervals (equal)
+  /// Hinges (joint indices) whose angle at T is left free; each one's body_a must be in no other joint.
+  std::vector<int> free_final_hinges;
 };
 
 /// Total number of scalar controls.
@@ -47,7 +55,9 @@ int control_count(const MultibodyProblem& problem);
 /// system has no springs and no prismatic joints (their loads or rows are not written for the
 /// transcriptions); every actuator names an existing hinge or body and has a bound > 0; there is at least one
 /// actuator; both states are consistent (multibody::check_consistent) and have joint velocities below 1e-9
-/// (relative); every hinge axis points the same way on both sides.
+/// (relative); every hinge axis points the same way on both sides; every free final hinge is a hinge whose
+/// body_a is in no other joint; a free-floating system's final state has the initial state's P, H and
+/// M x_com − t P (to 1e-9 relative).
 void validate(const MultibodyProblem& problem);
 
 }  // namespace poinsot::optimal
