@@ -53,6 +53,26 @@ TEST(MultibodyCases, ReactionWheelUnboundedIsTheSingleAxisClosedForm) {
   EXPECT_LT(std::abs(r.states.back().bodies[1].omega_body.z()), 1e-4);
 }
 
+TEST(MultibodyCases, FreeElbowAngleInMinimalCoordinates) {
+  // The arm with the elbow's final angle left free (its rate still zero at T): a relaxation of the fixed
+  // problem, so its optimum costs no more; the shoulder reaches its target and both rates vanish (NLP rows,
+  // to Ipopt's tolerance), and the elbow ends elsewhere than the fixed problem's target.
+  MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 8);
+  MultibodyOptions o;
+  o.coordinates = MultibodyCoordinates::minimal;
+  const MultibodyOptimum fixed = solve_multibody(p, o);
+  p.free_final_hinges = {1};
+  const MultibodyOptimum free = solve_multibody(p, o);
+  ASSERT_TRUE(fixed.converged) << fixed.status;
+  ASSERT_TRUE(free.converged) << free.status;
+  EXPECT_LT(free.cost, fixed.cost);
+  const multibody::State& end = free.states.back();
+  EXPECT_LT(so3::angle_between(end.bodies[0].R_space_body, p.final_state.bodies[0].R_space_body), 1e-8);
+  EXPECT_LT(end.bodies[0].omega_body.norm(), 1e-8);
+  EXPECT_LT(end.bodies[1].omega_body.norm(), 1e-8);
+  EXPECT_GT(so3::angle_between(end.bodies[1].R_space_body, p.final_state.bodies[1].R_space_body), 1e-3);
+}
+
 TEST(MultibodyCases, ReactionWheelBadInput) {
   const MultibodyProblem p = testing::reaction_wheel(1.0, 10.0, 1.0, 4);
   MultibodyProblem q = p;
