@@ -11,7 +11,7 @@
 //   take many minutes);
 // - BM_ReactionWheel: the spacecraft with a reaction wheel of tests/optimal/multibody_test_problems.hpp, the
 //   bus turned by 1 rad in 10 s with |u| ≤ 0.1 N·m (the unbounded optimum's peak is 0.12 N·m: the bound is
-//   active), in rotation-matrix coordinates on N = 8 and 16, against the single-body optimum of the same
+//   active), in rotation-matrix coordinates on N = 8, 16 and 32, against the single-body optimum of the same
 //   effective inertia (direct_collocation.hpp, mesh refined to 1e-9), each re-simulated.
 // Run: build/release/bench/bench_optimal_multibody --benchmark_counters_tabular=true
 //   [--benchmark_filter='Random|Fine.*N:32|Wheel']
@@ -174,6 +174,6 @@ void BM_ReactionWheel(benchmark::State& state) {
       o.cost / single.cost - 1.0, replay.attitude_error, replay.velocity_error, replay.max_joint_gap,
       replay.max_momentum_change);
 }
-BENCHMARK(BM_ReactionWheel)->Arg(8)->Arg(16)->ArgName("N")->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_ReactionWheel)->Arg(8)->Arg(16)->Arg(32)->ArgName("N")->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

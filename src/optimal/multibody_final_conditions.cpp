@@ -16,7 +16,7 @@ bool conserves_momenta(const MultibodyProblem& problem) {
   for (const multibody::Joint& j : s.joints())
     if (j.body_b == multibody::kWorld) return false;
   return std::all_of(problem.actuators.begin(), problem.actuators.end(),
-                     [](const Actuator& a) { return a.kind == ActuatorKind::hinge_torque; });
+                     [](const Actuator& a) { return a.kind != ActuatorKind::body_torque; });
 }
 
 Eigen::VectorXd conserved_quantities(const multibody::System& system, const multibody::State& state,

@@ -21,7 +21,7 @@
 namespace poinsot::optimal::detail {
 
 /// Whether the system conserves its linear and angular momenta: no joint to the world, no gravity, no
-/// constant force or torque, and only hinge motors (internal couples) as actuators.
+/// constant force or torque, and only hinge and ball motors (internal couples) as actuators.
 bool conserves_momenta(const MultibodyProblem& problem);
 
 /// The conserved quantities of a free-floating system at time t (s): the linear momentum P (kg·m/s), the

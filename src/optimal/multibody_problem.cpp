@@ -92,10 +92,13 @@ void validate(const MultibodyProblem& p) {
       throw InvalidInput(
           fmt::format("{}: torque_max: got {} N·m; expected a number > 0", what, a.torque_max));
     }
-    if (a.kind == ActuatorKind::hinge_torque) {
+    if (a.kind == ActuatorKind::hinge_torque || a.kind == ActuatorKind::ball_torque) {
+      const bool hinge = a.kind == ActuatorKind::hinge_torque;
+      const auto type = hinge ? multibody::JointType::hinge : multibody::JointType::ball;
       if (a.index < 0 || a.index >= p.system.joint_count() ||
-          p.system.joints()[static_cast<std::size_t>(a.index)].type != multibody::JointType::hinge) {
-        throw InvalidInput(fmt::format("{}: joint: got index {}; expected a hinge joint", what, a.index));
+          p.system.joints()[static_cast<std::size_t>(a.index)].type != type) {
+        throw InvalidInput(fmt::format("{}: joint: got index {}; expected a {} joint", what, a.index,
+                                       hinge ? "hinge" : "ball"));
       }
     } else if (a.index < 0 || a.index >= p.system.body_count()) {
       throw InvalidInput(

@@ -23,6 +23,10 @@ multibody::System system_with_controls(const MultibodyProblem& problem, const Ei
       const Vec3 axis_b = j.u_b[0];
       system.add_torque({j.body_a, u(k) * axis_a, true});
       if (j.body_b != multibody::kWorld) system.add_torque({j.body_b, -u(k) * axis_b, true});
+    } else if (a.kind == ActuatorKind::ball_torque) {
+      const multibody::Joint& j = system.joints()[static_cast<std::size_t>(a.index)];
+      system.add_torque({j.body_a, u.segment<3>(k), false});
+      if (j.body_b != multibody::kWorld) system.add_torque({j.body_b, -u.segment<3>(k), false});
     } else {
       system.add_torque({a.index, u.segment<3>(k), true});
     }

@@ -8,7 +8,9 @@
 /// Controls (`Actuator`), each with a bound |u_i| ≤ u_max (N·m) per component:
 /// - `hinge_torque`: a motor in a hinge joint: the torque u about the hinge axis on body a, and −u on body b
 ///   (1 control; in body a's frame the torque is u·axis_a, in b's −u·axis_b);
-/// - `body_torque`: a torque on one body about its centre of mass, body frame (3 controls, e.g. thrusters).
+/// - `body_torque`: a torque on one body about its centre of mass, body frame (3 controls, e.g. thrusters);
+/// - `ball_torque`: three motors in a ball joint: the torque τ (space frame) on body a and −τ on body b
+///   (3 controls; internal, like a hinge motor).
 ///
 /// Boundary conditions: the full initial state, and the final state of every coordinate the joints leave
 /// free (positions, attitudes, joint configurations and all velocities): `final_state` is a consistent
@@ -17,8 +19,8 @@
 /// - the angle of each hinge in `free_final_hinges` (its rate across the hinge is still imposed): a reaction
 ///   wheel's angle at T, say;
 /// - the directions fixed by conserved quantities: a free-floating system (no joint to the world, no gravity
-///   or constant loads, hinge motors only) keeps its linear momentum P, its angular momentum H about the
-///   origin and M x_com − t P, so the final state must have the initial state's, and imposing them again
+///   or constant loads, hinge and ball motors only) keeps its linear momentum P, its angular momentum H about
+///   the origin and M x_com − t P, so the final state must have the initial state's, and imposing them again
 ///   would give dependent rows.
 #include <string>
 #include <vector>
@@ -28,11 +30,11 @@
 
 namespace poinsot::optimal {
 
-enum class ActuatorKind { hinge_torque, body_torque };
+enum class ActuatorKind { hinge_torque, body_torque, ball_torque };
 
 struct Actuator {
   ActuatorKind kind = ActuatorKind::hinge_torque;
-  int index = 0;            ///< the hinge's joint index, or the body's index
+  int index = 0;            ///< the hinge's or ball's joint index, or the body's index
   double torque_max = 1.0;  ///< N·m, per component, > 0 (may be +inf: unbounded)
   int controls() const { return kind == ActuatorKind::hinge_torque ? 1 : 3; }
 };
