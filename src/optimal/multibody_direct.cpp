@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -64,6 +65,29 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   return out;
 }
 
+/// A body that turns by more than π/2 between two neighbouring collocation points is not resolved by the mesh
+/// (Hermite–Simpson's cubic cannot follow it), and in R-coordinates it is the sign of a spurious solution:
+/// the stabilising term R S (S symmetric) can carry R across a half-turn Q in one interval, since R(Q − I) is
+/// of that form. Such a result is reported as not converged, never as an optimum.
+void check_resolved_rotations(const MultibodyProblem& problem, MultibodyOptimum& out) {
+  if (!out.converged) return;
+  for (std::size_t p = 1; p < out.states.size(); ++p) {
+    for (std::size_t i = 0; i < out.states[p].bodies.size(); ++i) {
+      const Mat3 step =
+          out.states[p - 1].bodies[i].R_space_body.transpose() * out.states[p].bodies[i].R_space_body;
+      const double angle = std::acos(std::clamp(0.5 * (step.trace() - 1.0), -1.0, 1.0));
+      if (angle > 0.5 * std::numbers::pi) {
+        out.converged = false;
+        out.status = fmt::format(
+            "not converged: body '{}' turns by {:.3g} rad between the collocation points at t = {:.4g} s and "
+            "{:.4g} s; expected at most π/2 (a mesh that resolves the motion)",
+            problem.system.bodies()[i].name, angle, out.time[p - 1], out.time[p]);
+        return;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options) {
@@ -86,6 +110,7 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
       out.multipliers.push_back(multibody::exact_multipliers(
           detail::system_with_controls(problem, out.controls[p]), out.states[p]));
     }
+    check_resolved_rotations(problem, out);
     return out;
   }
   const detail::MultibodyRotationModel model(problem);
@@ -111,6 +136,7 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
       },
       start);
   out.multipliers = std::move(multipliers);
+  check_resolved_rotations(problem, out);
   return out;
 }
 

@@ -97,6 +97,16 @@ TEST(MultibodyCases, FallingCatTurnsWithInternalTorquesOnly) {
   EXPECT_LT(replay.max_momentum_change, 1e-12);
 }
 
+TEST(MultibodyCases, FallingCatHalfTurnIsNotPresentedAsAnOptimum) {
+  // Turned over by π, the R-coordinate NLP has a spurious solution of cost ~0 that reaches the target: one
+  // interval's stabilising term R S carries both halves across the half-turn (R (Q − I) with Q − I
+  // symmetric). It must come back as not converged, naming the unresolved turn.
+  const MultibodyProblem p = testing::falling_cat(0.5, std::numbers::pi, 1.0, 6);
+  const MultibodyOptimum r = solve(p, MultibodyCoordinates::rotation_matrix);
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.status.find("between the collocation points"), std::string::npos) << r.status;
+}
+
 TEST(MultibodyCases, ReactionWheelBadInput) {
   const MultibodyProblem p = testing::reaction_wheel(1.0, 10.0, 1.0, 4);
   MultibodyProblem q = p;

@@ -15,8 +15,10 @@
 ///
 /// Both minimise ∫ Σ u_i² dt at fixed T, from the full initial state to the final state, on N equal
 /// intervals. The naive initial guess is used: every state coordinate linearly interpolated between the two
-/// boundary states, every other variable zero. A result is `converged` only when Ipopt reports success;
-/// otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
+/// boundary states, every other variable zero. A result is `converged` only when Ipopt reports success and no
+/// body turns by more than π/2 between neighbouring collocation points (an unresolved mesh, or in
+/// R-coordinates a spurious half-turn jump of the stabilised form: docs/optimal_control.md, "The falling
+/// cat"); otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
 #include <string>
 #include <vector>
 
