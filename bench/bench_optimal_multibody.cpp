@@ -6,10 +6,17 @@
 //   random configurations (fixed seed), N = 6 intervals, T = 1.5 s, each from the naive guess (linear
 //   interpolation of every state coordinate, all else zero), at most 200 Ipopt iterations: the fraction
 //   solved, the mean and median Ipopt iterations of the solved ones, the mean wall time per problem;
-// - BM_ArmFineMesh: the arm of the tests, (Δ1, Δ2) = (1, 0.5) rad, on N = 32, 64 and 128: the costs, printed
-//   in full (the rotation-matrix runs at N ≥ 64 take minutes).
+// - BM_ArmFineMesh: the arm of the tests, (Δ1, Δ2) = (1, 0.5) rad, on N = 8 to 128 (minimal coordinates to
+//   256): the costs, printed in full, for the measured convergence order (the rotation-matrix runs at N ≥ 64
+//   take many minutes);
+// - BM_ReactionWheel: the spacecraft with a reaction wheel of tests/optimal/multibody_test_problems.hpp, the
+//   bus turned by 1 rad in 10 s with |u| ≤ 0.1 N·m (the unbounded optimum's peak is 0.12 N·m: the bound is
+//   active), in rotation-matrix coordinates on N = 8, 16 and 32, against the single-body optimum of the same
+//   effective inertia (direct_collocation.hpp, mesh refined to 1e-9), each re-simulated.
+// - BM_FallingCat: the falling cat of the tests turned by a quarter turn about its spine in 1 s, on N = 6 and
+//   12, re-simulated with 256 steps per interval.
 // Run: build/release/bench/bench_optimal_multibody --benchmark_counters_tabular=true
-//   [--benchmark_filter='Random|Fine.*N:32']
+//   [--benchmark_filter='Random|Fine.*N:32|Wheel|Cat']
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -20,18 +27,14 @@
 
 #include <Eigen/Geometry>
 
+#include "../tests/optimal/multibody_test_problems.hpp"
+#include "poinsot/optimal/direct_collocation.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
 
 namespace {
 
 using namespace poinsot;
 using namespace poinsot::optimal;
-
-Mat3 rod_inertia(double m, double length, double radius) {
-  const double axial = 0.5 * m * radius * radius;
-  const double transverse = m * (3.0 * radius * radius + length * length) / 12.0;
-  return Vec3(axial, transverse, transverse).asDiagonal();
-}
 
 multibody::State arm_state(double th1, double th2) {
   multibody::State s;
@@ -50,8 +53,8 @@ multibody::State arm_state(double th1, double th2) {
 MultibodyProblem arm(double a1, double a2, double b1, double b2, double T, int intervals) {
   MultibodyProblem p;
   auto& sys = p.system;
-  const int l1 = sys.add_body_from_inertia("upper", 1.0, rod_inertia(1.0, 1.0, 0.05));
-  const int l2 = sys.add_body_from_inertia("fore", 1.0, rod_inertia(1.0, 1.0, 0.05));
+  const int l1 = sys.add_body_from_inertia("upper", 1.0, testing::rod_inertia(1.0, 1.0, 0.05));
+  const int l2 = sys.add_body_from_inertia("fore", 1.0, testing::rod_inertia(1.0, 1.0, 0.05));
   const int shoulder = sys.add_hinge("shoulder", l1, Vec3(-0.5, 0, 0), Vec3::UnitZ(), multibody::kWorld,
                                      Vec3::Zero(), Vec3::UnitZ());
   const int elbow =
@@ -135,9 +138,65 @@ void BM_ArmFineMesh(benchmark::State& state) {
               o.nlp_iterations, o.wall_seconds);
 }
 BENCHMARK(BM_ArmFineMesh)
-    ->ArgsProduct({{0, 1}, {32, 64, 128}})
+    ->ArgsProduct({{0, 1}, {8, 16, 32, 64, 128}})
+    ->Args({1, 256})
     ->ArgNames({"minimal", "N"})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
+
+void BM_ReactionWheel(benchmark::State& state) {
+  const int intervals = static_cast<int>(state.range(0));
+  const MultibodyProblem p = testing::reaction_wheel(1.0, 10.0, 0.1, intervals);
+  MultibodyOptimum o;
+  DirectSolution single;
+  for (auto _ : state) {
+    o = solve_multibody(p, MultibodyOptions{});
+    ReorientationProblem q;
+    q.inertia_body = testing::reaction_wheel_effective_inertia();
+    q.torque_max = Vec3::Constant(0.1);
+    q.attitude_final = Quat(Eigen::AngleAxisd(1.0, Vec3::UnitZ()));
+    q.objective = Objective::minimum_energy;
+    q.final_time = 10.0;
+    CollocationOptions options;
+    options.mesh_tolerance = 1e-9;
+    single = solve_direct(q, options);
+  }
+  if (!o.converged || !single.converged) {
+    state.SkipWithError(o.converged ? single.status.c_str() : o.status.c_str());
+    return;
+  }
+  const MultibodyReplay replay = replay_controls(p, o, 64);
+  state.counters["iterations"] = o.nlp_iterations;
+  state.counters["wall_s"] = o.wall_seconds;
+  state.counters["relative_to_single_body"] = o.cost / single.cost - 1.0;
+  std::printf(
+      "reaction wheel N = %d: cost %.12g (%d iterations, %.1f s), single body %.12g (%zu nodes), relative "
+      "%.3g; replay: attitude %.3g rad, rates %.3g rad/s, joint gap %.3g m, momentum change %.3g\n",
+      intervals, o.cost, o.nlp_iterations, o.wall_seconds, single.cost, single.node_time.size(),
+      o.cost / single.cost - 1.0, replay.attitude_error, replay.velocity_error, replay.max_joint_gap,
+      replay.max_momentum_change);
+}
+BENCHMARK(BM_ReactionWheel)->Arg(8)->Arg(16)->Arg(32)->ArgName("N")->Iterations(1)->Unit(benchmark::kSecond);
+
+void BM_FallingCat(benchmark::State& state) {
+  const int intervals = static_cast<int>(state.range(0));
+  const MultibodyProblem p = testing::falling_cat(0.5, 0.5 * std::numbers::pi, 1.0, intervals);
+  MultibodyOptimum o;
+  for (auto _ : state)
+    o = solve_multibody(p, MultibodyOptions{});
+  if (!o.converged) {
+    state.SkipWithError(o.status.c_str());
+    return;
+  }
+  const MultibodyReplay replay = replay_controls(p, o, 256);
+  state.counters["iterations"] = o.nlp_iterations;
+  state.counters["wall_s"] = o.wall_seconds;
+  std::printf(
+      "falling cat N = %d: cost %.10g (%d iterations, %.1f s); replay: attitude %.3g rad, rates %.3g rad/s, "
+      "joint gap %.3g m, momentum change %.3g\n",
+      intervals, o.cost, o.nlp_iterations, o.wall_seconds, replay.attitude_error, replay.velocity_error,
+      replay.max_joint_gap, replay.max_momentum_change);
+}
+BENCHMARK(BM_FallingCat)->Arg(6)->Arg(12)->ArgName("N")->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

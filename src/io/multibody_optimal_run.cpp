@@ -22,11 +22,35 @@ std::string num(double v, int digits = 6) {
   return format_number(v, digits);
 }
 
-/// The actuator's name in the files: the hinge's or the body's.
+/// The actuator's name in the files: the joint's (hinge motor, ball-joint torque) or the body's.
 std::string actuator_name(const optimal::MultibodyProblem& p, const optimal::Actuator& a) {
-  return a.kind == optimal::ActuatorKind::hinge_torque
-             ? p.system.joints()[static_cast<std::size_t>(a.index)].name
-             : p.system.bodies()[static_cast<std::size_t>(a.index)].name;
+  return a.kind == optimal::ActuatorKind::body_torque
+             ? p.system.bodies()[static_cast<std::size_t>(a.index)].name
+             : p.system.joints()[static_cast<std::size_t>(a.index)].name;
+}
+
+/// The actuator's kind as summary.json names it, and as the report describes it.
+std::string_view actuator_kind_key(optimal::ActuatorKind kind) {
+  switch (kind) {
+    case optimal::ActuatorKind::hinge_torque:
+      return "hinge_torque";
+    case optimal::ActuatorKind::body_torque:
+      return "body_torque";
+    case optimal::ActuatorKind::ball_torque:
+      return "ball_torque";
+  }
+  return "unknown";
+}
+std::string_view actuator_kind_text(optimal::ActuatorKind kind) {
+  switch (kind) {
+    case optimal::ActuatorKind::hinge_torque:
+      return "hinge motor";
+    case optimal::ActuatorKind::body_torque:
+      return "body torque, body frame";
+    case optimal::ActuatorKind::ball_torque:
+      return "ball-joint torque, space frame, +u on body a, −u on body b";
+  }
+  return "unknown";
 }
 
 /// "shoulder.u" or "upper.ux", "upper.uy", "upper.uz": the columns of control.csv, actuator order.
@@ -100,10 +124,8 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
       num(p.final_time, 12), coordinates_name(sc.options.coordinates), p.intervals);
   out << "actuators:";
   for (const optimal::Actuator& a : p.actuators) {
-    out << fmt::format(
-        "{} {} ({}, |u| ≤ {} N·m)", &a == &p.actuators.front() ? "" : ",", actuator_name(p, a),
-        a.kind == optimal::ActuatorKind::hinge_torque ? "hinge motor" : "body torque, body frame",
-        num(a.torque_max));
+    out << fmt::format("{} {} ({}, |u| ≤ {} N·m)", &a == &p.actuators.front() ? "" : ",", actuator_name(p, a),
+                       actuator_kind_text(a.kind), num(a.torque_max));
   }
   for (const optimal::RateBound& b : p.rate_bounds) {
     out << fmt::format("\nrate bound: |q̇ {}| ≤ {} rad/s",
@@ -158,9 +180,7 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
   nlohmann::ordered_json actuators = nlohmann::ordered_json::array();
   for (const optimal::Actuator& a : p.actuators) {
     actuators.push_back(
-        {{"kind", a.kind == optimal::ActuatorKind::hinge_torque ? "hinge_torque" : "body_torque"},
-         {"name", actuator_name(p, a)},
-         {"torque_max", a.torque_max}});
+        {{"kind", actuator_kind_key(a.kind)}, {"name", actuator_name(p, a)}, {"torque_max", a.torque_max}});
   }
   nlohmann::ordered_json rates = nlohmann::ordered_json::array(), peaks = nlohmann::ordered_json::array();
   for (const optimal::RateBound& b : p.rate_bounds) {

@@ -4,12 +4,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 
 #include <fmt/format.h>
-#include <Eigen/SVD>
 
 #include "hermite_simpson_dae.hpp"
 #include "multibody_controls.hpp"
+#include "multibody_final_conditions.hpp"
 #include "multibody_minimal_model.hpp"
 #include "multibody_rate_rows.hpp"
 #include "multibody_rotation_model.hpp"
@@ -24,17 +25,6 @@ using detail::HermiteSimpsonDae;
 using detail::PathInequalityNlp;
 using detail::PointFunctions;
 using detail::SparseNlp;
-
-/// The rows N ᵀ of an orthonormal basis N of the null space of C (the tangent space of the constraints).
-Eigen::MatrixXd tangent_rows(const Eigen::MatrixXd& C) {
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(C, Eigen::ComputeFullV);
-  const auto& s = svd.singularValues();
-  const double tol = 1e-10 * std::max(1.0, s.size() > 0 ? s(0) : 0.0);
-  int rank = 0;
-  while (rank < s.size() && s(rank) > tol)
-    ++rank;
-  return svd.matrixV().rightCols(C.cols() - rank).transpose();
-}
 
 /// Solves the transcription of `model` and fills the parts of the optimum common to both formulations.
 /// `decode(w, t)` gives the multibody state of the point variables w; `rates` the hinge rates of the
@@ -89,6 +79,29 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   return out;
 }
 
+/// A body that turns by more than π/2 between two neighbouring collocation points is not resolved by the mesh
+/// (Hermite–Simpson's cubic cannot follow it), and in R-coordinates it is the sign of a spurious solution:
+/// the stabilising term R S (S symmetric) can carry R across a half-turn Q in one interval, since R(Q − I) is
+/// of that form. Such a result is reported as not converged, never as an optimum.
+void check_resolved_rotations(const MultibodyProblem& problem, MultibodyOptimum& out) {
+  if (!out.converged) return;
+  for (std::size_t p = 1; p < out.states.size(); ++p) {
+    for (std::size_t i = 0; i < out.states[p].bodies.size(); ++i) {
+      const Mat3 step =
+          out.states[p - 1].bodies[i].R_space_body.transpose() * out.states[p].bodies[i].R_space_body;
+      const double angle = std::acos(std::clamp(0.5 * (step.trace() - 1.0), -1.0, 1.0));
+      if (angle > 0.5 * std::numbers::pi) {
+        out.converged = false;
+        out.status = fmt::format(
+            "not converged: body '{}' turns by {:.3g} rad between the collocation points at t = {:.4g} s and "
+            "{:.4g} s; expected at most π/2 (a mesh that resolves the motion)",
+            problem.system.bodies()[i].name, angle, out.time[p - 1], out.time[p]);
+        return;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options) {
@@ -98,7 +111,10 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     const detail::MultibodyMinimalModel model(problem);
     const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
     const Eigen::VectorXd yf = model.state_vector(problem.final_state);
-    const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
+    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
+    const Eigen::MatrixXd rows = detail::model_final_rows(
+        problem, I, I, [&](const Eigen::VectorXd& y) { return model.state_of(y.data(), 0.0); },
+        [&](const multibody::State& s) { return model.state_vector(s); });
     MultibodyOptimum out = solve_model(
         problem, model, y0, yf, rows, detail::minimal_rate_rows(problem), options,
         [&](const double* w, double t) { return model.state_of(w, t); }, start);
@@ -108,12 +124,23 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
       out.multipliers.push_back(multibody::exact_multipliers(
           detail::system_with_controls(problem, out.controls[p]), out.states[p]));
     }
+    check_resolved_rotations(problem, out);
     return out;
   }
   const detail::MultibodyRotationModel model(problem);
   const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
   const Eigen::VectorXd yf = model.state_vector(problem.final_state);
-  const Eigen::MatrixXd rows = tangent_rows(model.invariant_jacobian(problem.final_state));
+  // The tangent space of the constraints at the target: an orthonormal basis N of the null space of the
+  // position and velocity rows' Jacobian, β = N δy and δy = Nᵀβ.
+  const Eigen::MatrixXd N = detail::null_space(model.invariant_jacobian(problem.final_state)).transpose();
+  const Eigen::MatrixXd rows = detail::model_final_rows(
+      problem, N, N.transpose(),
+      [&](const Eigen::VectorXd& y) {
+        Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
+        w.head(y.size()) = y;
+        return model.state_of(w.data(), 0.0);
+      },
+      [&](const multibody::State& s) { return model.state_vector(s); });
   std::vector<multibody::Multipliers> multipliers;
   MultibodyOptimum out = solve_model(
       problem, model, y0, yf, rows, detail::rotation_rate_rows(problem, model), options,
@@ -123,6 +150,7 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
       },
       start);
   out.multipliers = std::move(multipliers);
+  check_resolved_rotations(problem, out);
   return out;
 }
 

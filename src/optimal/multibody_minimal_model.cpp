@@ -171,7 +171,8 @@ MultibodyMinimalModel::MultibodyMinimalModel(const MultibodyProblem& problem) {
   }
   motor_of_link_.assign(static_cast<std::size_t>(n_), -1);
   for (const Actuator& a : problem.actuators) {
-    if (a.kind != ActuatorKind::hinge_torque) refuse("a body torque is given");
+    if (a.kind != ActuatorKind::hinge_torque)
+      refuse(a.kind == ActuatorKind::body_torque ? "a body torque is given" : "a ball-joint torque is given");
     const int body = sys.joints()[static_cast<std::size_t>(a.index)].body_a;
     motor_of_link_[static_cast<std::size_t>(body)] = 3 * n_ + static_cast<int>(controls_.size());
     controls_.push_back(3 * n_ + static_cast<int>(controls_.size()));

@@ -1,11 +1,13 @@
 // Validation of a multibody optimal-control problem (multibody_problem.hpp).
 #include "poinsot/optimal/multibody_problem.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "multibody_final_conditions.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/multibody/observables.hpp"
@@ -91,10 +93,13 @@ void validate(const MultibodyProblem& p) {
       throw InvalidInput(
           fmt::format("{}: torque_max: got {} N·m; expected a number > 0", what, a.torque_max));
     }
-    if (a.kind == ActuatorKind::hinge_torque) {
+    if (a.kind == ActuatorKind::hinge_torque || a.kind == ActuatorKind::ball_torque) {
+      const bool hinge = a.kind == ActuatorKind::hinge_torque;
+      const auto type = hinge ? multibody::JointType::hinge : multibody::JointType::ball;
       if (a.index < 0 || a.index >= p.system.joint_count() ||
-          p.system.joints()[static_cast<std::size_t>(a.index)].type != multibody::JointType::hinge) {
-        throw InvalidInput(fmt::format("{}: joint: got index {}; expected a hinge joint", what, a.index));
+          p.system.joints()[static_cast<std::size_t>(a.index)].type != type) {
+        throw InvalidInput(fmt::format("{}: joint: got index {}; expected a {} joint", what, a.index,
+                                       hinge ? "hinge" : "ball"));
       }
     } else if (a.index < 0 || a.index >= p.system.body_count()) {
       throw InvalidInput(
@@ -121,6 +126,41 @@ void validate(const MultibodyProblem& p) {
                         "expected boundary states within the bound",
                         what, name, rate, b.rate_max));
       }
+    }
+  }
+  for (std::size_t k = 0; k < p.free_final_hinges.size(); ++k) {
+    const int ji = p.free_final_hinges[k];
+    const std::string what = fmt::format("optimal control: free_final_hinges[{}]", k);
+    if (ji < 0 || ji >= p.system.joint_count() ||
+        p.system.joints()[static_cast<std::size_t>(ji)].type != multibody::JointType::hinge) {
+      throw InvalidInput(fmt::format("{}: got joint index {}; expected a hinge joint", what, ji));
+    }
+    const int body = p.system.joints()[static_cast<std::size_t>(ji)].body_a;
+    for (int other = 0; other < p.system.joint_count(); ++other) {
+      const multibody::Joint& j = p.system.joints()[static_cast<std::size_t>(other)];
+      if (other != ji && (j.body_a == body || j.body_b == body)) {
+        throw InvalidInput(
+            fmt::format("{}: hinge '{}': its body_a is also in joint '{}'; expected a hinge whose body_a "
+                        "hangs from it alone",
+                        what, p.system.joints()[static_cast<std::size_t>(ji)].name, j.name));
+      }
+    }
+  }
+  if (detail::conserves_momenta(p)) {
+    // Free floating with internal torques only: P, H and M x_com − t P cannot change.
+    const Eigen::VectorXd q0 = detail::conserved_quantities(p.system, p.initial_state, 0.0);
+    const Eigen::VectorXd qf = detail::conserved_quantities(p.system, p.final_state, p.final_time);
+    double scale = 0.0;
+    for (const multibody::Body& b : p.system.bodies())
+      scale += b.mass * p.system.length_scale();
+    scale = std::max({scale, q0.cwiseAbs().maxCoeff(), qf.cwiseAbs().maxCoeff()});
+    const double gap = (qf - q0).cwiseAbs().maxCoeff();
+    if (gap > 1e-9 * scale) {
+      throw InvalidInput(fmt::format(
+          "optimal control: final state: its momenta (P, H, M x_com − t P) differ from the initial "
+          "state's by {:.3g}; expected equal (a free-floating system with hinge motors only "
+          "conserves them)",
+          gap));
     }
   }
 }

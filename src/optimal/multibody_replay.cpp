@@ -1,5 +1,7 @@
 // Re-simulation of an optimal control history by the multibody projected RK4 (multibody_direct.hpp).
 #include <algorithm>
+#include <cmath>
+#include <vector>
 
 #include "multibody_controls.hpp"
 #include "poinsot/core/error.hpp"
@@ -21,6 +23,10 @@ multibody::System system_with_controls(const MultibodyProblem& problem, const Ei
       const Vec3 axis_b = j.u_b[0];
       system.add_torque({j.body_a, u(k) * axis_a, true});
       if (j.body_b != multibody::kWorld) system.add_torque({j.body_b, -u(k) * axis_b, true});
+    } else if (a.kind == ActuatorKind::ball_torque) {
+      const multibody::Joint& j = system.joints()[static_cast<std::size_t>(a.index)];
+      system.add_torque({j.body_a, u.segment<3>(k), false});
+      if (j.body_b != multibody::kWorld) system.add_torque({j.body_b, -u.segment<3>(k), false});
     } else {
       system.add_torque({a.index, u.segment<3>(k), true});
     }
@@ -41,6 +47,8 @@ MultibodyReplay replay_controls(const MultibodyProblem& problem, const Multibody
   MultibodyReplay out;
   multibody::State state = problem.initial_state;
   state.time = 0.0;
+  const Vec3 P0 = multibody::linear_momentum(problem.system, state);
+  const Vec3 H0 = multibody::angular_momentum(problem.system, state);
   for (int n = 0; n < steps; ++n) {
     const double t = n * dt;
     multibody::ProjectedRk4 rk4(detail::system_with_controls(problem, control_at(optimum, t + 0.5 * dt)), dt);
@@ -49,10 +57,32 @@ MultibodyReplay replay_controls(const MultibodyProblem& problem, const Multibody
     const multibody::ConstraintViolation cv = multibody::constraint_violation(problem.system, state);
     out.max_joint_gap = std::max(out.max_joint_gap, cv.joint_gap);
     out.max_orthogonality = std::max(out.max_orthogonality, cv.orthogonality);
+    out.max_momentum_change =
+        std::max({out.max_momentum_change, (multibody::linear_momentum(problem.system, state) - P0).norm(),
+                  (multibody::angular_momentum(problem.system, state) - H0).norm()});
   }
+  // A free final hinge's body_a is compared up to its turn about the hinge axis: the axis's direction, its
+  // angular velocity in space and the joint point (its own x, R and ω depend on the free angle).
+  std::vector<int> free_axle(state.bodies.size(), -1);
+  for (const int j : problem.free_final_hinges)
+    free_axle[static_cast<std::size_t>(problem.system.joints()[static_cast<std::size_t>(j)].body_a)] = j;
   for (std::size_t i = 0; i < state.bodies.size(); ++i) {
     const multibody::BodyState& b = state.bodies[i];
     const multibody::BodyState& f = problem.final_state.bodies[i];
+    if (free_axle[i] >= 0) {
+      const multibody::Joint& j = problem.system.joints()[static_cast<std::size_t>(free_axle[i])];
+      const Vec3 axis = j.p_a[0].cross(j.p_a[1]);
+      const Vec3 ab = b.R_space_body * axis, af = f.R_space_body * axis;
+      out.attitude_error = std::max(out.attitude_error, std::atan2(ab.cross(af).norm(), ab.dot(af)));
+      out.position_error =
+          std::max(out.position_error,
+                   (b.x_space + b.R_space_body * j.point_a - f.x_space - f.R_space_body * j.point_a).norm());
+      const Vec3 wb = b.R_space_body * b.omega_body, wf = f.R_space_body * f.omega_body;
+      const Vec3 vb = b.v_space + wb.cross(b.R_space_body * j.point_a);
+      const Vec3 vf = f.v_space + wf.cross(f.R_space_body * j.point_a);
+      out.velocity_error = std::max({out.velocity_error, (wb - wf).norm(), (vb - vf).norm()});
+      continue;
+    }
     out.attitude_error = std::max(out.attitude_error, so3::angle_between(b.R_space_body, f.R_space_body));
     out.position_error = std::max(out.position_error, (b.x_space - f.x_space).norm());
     out.velocity_error =

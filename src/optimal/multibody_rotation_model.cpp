@@ -243,10 +243,22 @@ void MultibodyRotationModel::build_path(QuadraticFunctions& out, bool first_node
           for (int k = 0; k < 3; ++k)
             out.add_bilinear(Rrow(body, r, c), R(body, r, k), u, -0.5 * sign * W(k, c));
     };
+    // ½ j(τ) R for a space-frame torque τ (sign +1 on a, −1 on b): (j(τ) R)(r, c) = Σ ε(r, m, k) τ_m R(k, c).
+    const auto space_couple = [&](int body, double sign) {
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+          for (int k = 0; k < 3; ++k)
+            for (int mm = 0; mm < 3; ++mm)
+              out.add_bilinear(Rrow(body, r, c), R(body, k, c), u + mm, -0.5 * sign * epsilon(r, mm, k));
+    };
     if (act.kind == ActuatorKind::hinge_torque) {
       const multibody::Joint& j = sys.joints()[static_cast<std::size_t>(act.index)];
       couple(j.body_a, j.p_a[0].cross(j.p_a[1]), 1.0);
       if (j.body_b != multibody::kWorld) couple(j.body_b, j.u_b[0], -1.0);
+    } else if (act.kind == ActuatorKind::ball_torque) {
+      const multibody::Joint& j = sys.joints()[static_cast<std::size_t>(act.index)];
+      space_couple(j.body_a, 1.0);
+      if (j.body_b != multibody::kWorld) space_couple(j.body_b, -1.0);
     } else {
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c)

@@ -1,5 +1,6 @@
 #pragma once
-// Multibody optimal-control problems of the optimal/ tests: the planar two-link arm.
+// Multibody optimal-control problems of the optimal/ tests: the planar two-link arm, one rod on a hinge, the
+// spacecraft with a reaction wheel.
 #include <cmath>
 #include <numbers>
 
@@ -77,6 +78,63 @@ inline MultibodyProblem single_hinge(double theta, double T, int intervals) {
 }
 inline double single_hinge_inertia() {
   return rod_inertia(1.0, 1.0, 0.05)(2, 2) + 0.25;
+}
+
+/// The spacecraft with a reaction wheel: a bus (10 kg, J = diag(3, 4, 2) kg·m²) and a wheel (5 kg, J =
+/// diag(0.5, 0.5, 0.9) kg·m², a flywheel of radius 0.6 m) on a hinge about body z through both centres of
+/// mass, free floating, no gravity; the wheel motor |u| ≤ torque_max. Rest to rest: the bus turned by Θ about
+/// z in T, the wheel's angle at T free (free_final_hinges). Total angular momentum zero throughout: the bus
+/// alone carries the slew, I_bus,zz θ̈ = −u (the wheel's axial inertia turns the other way), so the effective
+/// single body has the inertia J_bus + diag(0.5, 0.5, 0): the locked inertia without the wheel's axial part.
+inline MultibodyProblem reaction_wheel(double theta, double T, double torque_max, int intervals) {
+  MultibodyProblem p;
+  auto& sys = p.system;
+  const int bus = sys.add_body_from_inertia("bus", 10.0, Vec3(3.0, 4.0, 2.0).asDiagonal());
+  const int wheel = sys.add_body_from_inertia("wheel", 5.0, Vec3(0.5, 0.5, 0.9).asDiagonal());
+  const int hinge =
+      sys.add_hinge("wheel axle", wheel, Vec3::Zero(), Vec3::UnitZ(), bus, Vec3::Zero(), Vec3::UnitZ());
+  p.initial_state.bodies.resize(2);
+  p.final_state.bodies.resize(2);
+  for (auto& b : p.final_state.bodies)
+    b.R_space_body = Eigen::AngleAxisd(theta, Vec3::UnitZ()).toRotationMatrix();
+  p.final_time = T;
+  p.intervals = intervals;
+  p.actuators = {{ActuatorKind::hinge_torque, hinge, torque_max}};
+  p.free_final_hinges = {hinge};
+  return p;
+}
+inline Mat3 reaction_wheel_effective_inertia() {
+  return Vec3(3.5, 4.5, 2.0).asDiagonal();
+}
+
+/// The falling cat (Kane & Scher 1969): two identical axisymmetric halves (cylinders of 1 kg, 1 m, radius
+/// 0.2 m along body x) joined at their +x ends by a ball joint with three motors (space-frame torques, |τ_i|
+/// ≤ 100 N·m), free floating, no gravity, at rest with zero angular momentum. Bent into a V in the x–z plane,
+/// each half tilted by α from the spine (space x), the joint below and the centre of mass at the origin; the
+/// target is the same V turned over by 180° about the spine, at rest, in T.
+inline multibody::State cat_state(double alpha, const Mat3& turn) {
+  multibody::State s;
+  s.bodies.resize(2);
+  const Mat3 Ra = Eigen::AngleAxisd(alpha, Vec3::UnitY()).toRotationMatrix();
+  const Mat3 Rb = Eigen::AngleAxisd(std::numbers::pi, Vec3::UnitZ()).toRotationMatrix() * Ra;
+  const Vec3 joint(0.0, 0.0, -0.5 * std::sin(alpha));
+  s.bodies[0].R_space_body = turn * Ra;
+  s.bodies[0].x_space = turn * (joint - Ra * Vec3(0.5, 0.0, 0.0));
+  s.bodies[1].R_space_body = turn * Rb;
+  s.bodies[1].x_space = turn * (joint - Rb * Vec3(0.5, 0.0, 0.0));
+  return s;
+}
+inline MultibodyProblem falling_cat(double alpha, double turn, double T, int intervals) {
+  MultibodyProblem p;
+  const int front = p.system.add_body_from_inertia("front", 1.0, rod_inertia(1.0, 1.0, 0.2));
+  const int back = p.system.add_body_from_inertia("back", 1.0, rod_inertia(1.0, 1.0, 0.2));
+  const int waist = p.system.add_ball("waist", front, Vec3(0.5, 0, 0), back, Vec3(0.5, 0, 0));
+  p.initial_state = cat_state(alpha, Mat3::Identity());
+  p.final_state = cat_state(alpha, Eigen::AngleAxisd(turn, Vec3::UnitX()).toRotationMatrix());
+  p.final_time = T;
+  p.intervals = intervals;
+  p.actuators = {{ActuatorKind::ball_torque, waist, 100.0}};
+  return p;
 }
 
 }  // namespace poinsot::optimal::testing

@@ -17,8 +17,10 @@
 /// intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point but
 /// the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
 /// ones). The naive initial guess is used: every state coordinate linearly interpolated between the two
-/// boundary states, every other variable zero. A result is `converged` only when Ipopt reports success;
-/// otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
+/// boundary states, every other variable zero. A result is `converged` only when Ipopt reports success and no
+/// body turns by more than π/2 between neighbouring collocation points (an unresolved mesh, or in
+/// R-coordinates a spurious half-turn jump of the stabilised form: docs/optimal_control.md, "The falling
+/// cat"); otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
 #include <string>
 #include <vector>
 
@@ -70,9 +72,14 @@ struct MultibodyReplay {
   double velocity_error = 0.0;     ///< max over bodies of |v − v_f| (m/s) and |ω − ω_f| (rad/s)
   double max_joint_gap = 0.0;      ///< over every step (m)
   double max_orthogonality = 0.0;  ///< max ‖RᵀR − I‖_F over every step
+  /// Max over every step of |P(t) − P(0)| (kg·m/s) and |H(t) − H(0)| (kg·m²/s, about the origin): the
+  /// change of the momenta, which a free-floating system with hinge motors only conserves.
+  double max_momentum_change = 0.0;
   int steps = 0;
 };
 
+/// A free final hinge's body_a (multibody_problem.hpp) is compared up to its turn about the hinge: the axis's
+/// direction, the joint point, the angular velocity in space and the velocity.
 /// Integrates the initial state over [0, T] with `steps_per_interval` projected-RK4 steps per collocation
 /// interval, the controls held at their value at each step's midpoint (a second-order approximation of the
 /// continuous control: the replay's error falls by 4 when the steps are halved).

@@ -8,12 +8,20 @@
 /// Controls (`Actuator`), each with a bound |u_i| ≤ u_max (N·m) per component:
 /// - `hinge_torque`: a motor in a hinge joint: the torque u about the hinge axis on body a, and −u on body b
 ///   (1 control; in body a's frame the torque is u·axis_a, in b's −u·axis_b);
-/// - `body_torque`: a torque on one body about its centre of mass, body frame (3 controls, e.g. thrusters).
+/// - `body_torque`: a torque on one body about its centre of mass, body frame (3 controls, e.g. thrusters);
+/// - `ball_torque`: three motors in a ball joint: the torque τ (space frame) on body a and −τ on body b
+///   (3 controls; internal, like a hinge motor).
 ///
 /// Boundary conditions: the full initial state, and the final state of every coordinate the joints leave
 /// free (positions, attitudes, joint configurations and all velocities): `final_state` is a consistent
 /// state of the system; the final condition is that the state at T equals it, written on the tangent space
-/// of the constraints (multibody_direct.hpp).
+/// of the constraints (multibody_direct.hpp), except for
+/// - the angle of each hinge in `free_final_hinges` (its rate across the hinge is still imposed): a reaction
+///   wheel's angle at T, say;
+/// - the directions fixed by conserved quantities: a free-floating system (no joint to the world, no gravity
+///   or constant loads, hinge and ball motors only) keeps its linear momentum P, its angular momentum H about
+///   the origin and M x_com − t P, so the final state must have the initial state's, and imposing them again
+///   would give dependent rows.
 #include <string>
 #include <vector>
 
@@ -22,11 +30,11 @@
 
 namespace poinsot::optimal {
 
-enum class ActuatorKind { hinge_torque, body_torque };
+enum class ActuatorKind { hinge_torque, body_torque, ball_torque };
 
 struct Actuator {
   ActuatorKind kind = ActuatorKind::hinge_torque;
-  int index = 0;            ///< the hinge's joint index, or the body's index
+  int index = 0;            ///< the hinge's or ball's joint index, or the body's index
   double torque_max = 1.0;  ///< N·m, per component, > 0 (may be +inf: unbounded)
   int controls() const { return kind == ActuatorKind::hinge_torque ? 1 : 3; }
 };
@@ -47,6 +55,8 @@ struct MultibodyProblem {
   std::vector<Actuator> actuators;
   int intervals = 20;                  ///< Hermite–Simpson intervals (equal)
   std::vector<RateBound> rate_bounds;  ///< path constraints on hinge rates (none by default)
+  /// Hinges (joint indices) whose angle at T is left free; each one's body_a must be in no other joint.
+  std::vector<int> free_final_hinges;
 };
 
 /// The index of the hinge joint called `name`. Throws InvalidInput `got "NAME", expected the name of a hinge
@@ -64,7 +74,8 @@ int control_count(const MultibodyProblem& problem);
 /// transcriptions); every actuator names an existing hinge or body and has a bound > 0; there is at least one
 /// actuator; both states are consistent (multibody::check_consistent) and have joint velocities below 1e-9
 /// (relative); every hinge axis points the same way on both sides; every rate bound names a hinge, is > 0 and
-/// holds at both states.
+/// holds at both states; every free final hinge is a hinge whose body_a is in no other joint; a free-floating
+/// system's final state has the initial state's P, H and M x_com − t P (to 1e-9 relative).
 void validate(const MultibodyProblem& problem);
 
 }  // namespace poinsot::optimal
