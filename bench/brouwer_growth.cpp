@@ -16,7 +16,8 @@
 // The invariants a method does not keep to round-off (DLM's energy: an O(h²) oscillation; the projected
 // RK4's energy and momenta: its O(h⁴) truncation error, which --dt tells from rounding) are printed, marked
 // "(method)", without claim. RATTLE, single-body or multibody, keeps the free body's energy exactly.
-// Deterministic: the ensemble is drawn from a fixed-seed SplitMix64.
+// Deterministic: the ensemble is drawn from a fixed-seed SplitMix64 (tests/support/splitmix_draws.hpp, the
+// generator of the round-off growth tests).
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -33,6 +34,7 @@
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/so3/exp_log.hpp"
 #include "poinsot/so3/projection.hpp"
+#include "splitmix_draws.hpp"
 
 namespace {
 
@@ -41,22 +43,6 @@ using poinsot::Vec3;
 
 const Vec3 kMoments(1.0, 2.0, 3.0);
 const Vec3 kOmega0(0.01, 2.0, 0.01);
-
-// SplitMix64 (Steele, Lea & Flood 2014): a fixed, portable sequence; uniform() is in [−1, 1).
-struct SplitMix {
-  std::uint64_t s;
-  double uniform() {
-    std::uint64_t z = (s += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    z ^= z >> 31;
-    return 2.0 * static_cast<double>(z >> 11) * 0x1.0p-53 - 1.0;
-  }
-  Vec3 vec(double scale) {
-    const double a = uniform(), b = uniform(), c = uniform();
-    return scale * Vec3(a, b, c);
-  }
-};
 
 // One sample of the invariants of a state.
 struct Invariants {
@@ -252,7 +238,7 @@ int main(int argc, char** argv) {
   for (const MethodCase& mc : cases) {
     const auto t_start = std::chrono::steady_clock::now();
     std::vector<std::vector<double>> sum_sq(4, std::vector<double>(checkpoints.size(), 0.0));
-    SplitMix rng{seed};
+    poinsot::test::SplitMixDraws rng{seed};
     auto run = make_run(mc.name, dt);
     for (int m = 0; m < members; ++m) {
       const Mat3 R0 = poinsot::so3::exp(rng.vec(1e-3));
