@@ -68,4 +68,30 @@ inline void set_flip_weights(FlipLanes& f, int lane, const double I[3]) {
   f.first[lane] = f.second[lane] = std::numeric_limits<double>::quiet_NaN();
 }
 
+/// The step loop of a kernel, `Kernel::template steps<Free>(L, F, n, h, lanes)` (always inlined), compiled
+/// with AVX2 enabled: the loops over the lanes vectorise 4 wide. Called only when the CPU has AVX2.
+template <class Kernel, class KernelLanes>
+__attribute__((target("avx2"))) void steps_avx2(KernelLanes& L, FlipLanes& F, long long n, double h,
+                                                int lanes, bool free) {
+  free ? Kernel::template steps<true>(L, F, n, h, lanes) : Kernel::template steps<false>(L, F, n, h, lanes);
+}
+
+/// The same loop for any x86-64 (SSE2) or other CPU.
+template <class Kernel, class KernelLanes>
+void steps_portable(KernelLanes& L, FlipLanes& F, long long n, double h, int lanes, bool free) {
+  free ? Kernel::template steps<true>(L, F, n, h, lanes) : Kernel::template steps<false>(L, F, n, h, lanes);
+}
+
+/// Advances the lanes by n steps of h (s) with the AVX2 or the portable compilation of the kernel's loop; the
+/// two give the same bits (no fused multiply–add: the kernels are compiled with -ffp-contract=off). `free`:
+/// every lane is torque-free.
+template <class Kernel, class KernelLanes>
+void run_steps(bool avx2, KernelLanes& L, FlipLanes& F, long long n, double h, int lanes, bool free) {
+  if (avx2) {
+    steps_avx2<Kernel>(L, F, n, h, lanes, free);
+  } else {
+    steps_portable<Kernel>(L, F, n, h, lanes, free);
+  }
+}
+
 }  // namespace poinsot::ensemble::detail

@@ -107,14 +107,14 @@ inline __attribute__((always_inline)) void steps(Rk4Lanes& L, FlipLanes& F, long
   }
 }
 
-__attribute__((target("avx2"))) void steps_avx2(Rk4Lanes& L, FlipLanes& F, long long n, double h, int lanes,
-                                                bool free) {
-  free ? steps<true>(L, F, n, h, lanes) : steps<false>(L, F, n, h, lanes);
-}
-
-void steps_portable(Rk4Lanes& L, FlipLanes& F, long long n, double h, int lanes, bool free) {
-  free ? steps<true>(L, F, n, h, lanes) : steps<false>(L, F, n, h, lanes);
-}
+/// The step loop, for run_steps (batch_lanes.hpp).
+struct Rk4Kernel {
+  template <bool Free>
+  static inline __attribute__((always_inline)) void steps(Rk4Lanes& L, FlipLanes& F, long long n, double h,
+                                                          int lanes) {
+    ::poinsot::ensemble::detail::steps<Free>(L, F, n, h, lanes);
+  }
+};
 
 }  // namespace
 
@@ -147,11 +147,7 @@ void run_rk4_batch(std::span<const Sample> samples, double t_end, long long n, b
     set_flip_weights(*F, l, moments);
   }
   const double h = t_end / static_cast<double>(n);
-  if (avx2) {
-    steps_avx2(*L, *F, n, h, lanes, free);
-  } else {
-    steps_portable(*L, *F, n, h, lanes, free);
-  }
+  run_steps<Rk4Kernel>(avx2, *L, *F, n, h, lanes, free);
   for (int l = 0; l < lanes; ++l) {
     const Sample& s = samples[static_cast<std::size_t>(l)];
     const bool aligned = s.axes == Mat3::Identity();
