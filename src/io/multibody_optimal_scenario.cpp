@@ -219,11 +219,7 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
   p.actuators = read_actuators(src, oc, p.system);
   p.final_state = read_target(src, oc, p.system);
   p.rate_bounds = read_rate_bounds(src, oc, p.system);
-  try {
-    optimal::validate(p);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(detail::location(src, root.get("optimal_control")) + e.what());
-  }
+  detail::located(src, root.get("optimal_control"), [&] { optimal::validate(p); });
   const Section out(src, root["output"].as_table(), "output", {"dir"});
   sc.out_dir = out.string("dir").value_or("");
   return sc;

@@ -93,11 +93,7 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   p.attitude_final = f.attitude;
   p.omega_final = f.omega;
   p.free_final_attitude = f.free_attitude;
-  try {
-    optimal::validate(p);
-  } catch (const InvalidInput& e) {
-    throw InvalidInput(detail::location(src, root.get("optimal_control")) + e.what());
-  }
+  detail::located(src, root.get("optimal_control"), [&] { optimal::validate(p); });
 
   const Section out(src, root["output"].as_table(), "output", {"dir"});
   sc.out_dir = out.string("dir").value_or("");

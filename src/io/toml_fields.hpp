@@ -97,4 +97,15 @@ auto located(const Section& section, std::string_view key, F&& f) {
   }
 }
 
+/// Runs f(); an InvalidInput from a lower layer (a whole problem's validation) is re-thrown with the place of
+/// `node` (a section) in front.
+template <class F>
+auto located(const Source& source, const toml::node* node, F&& f) {
+  try {
+    return f();
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(location(source, node) + e.what());
+  }
+}
+
 }  // namespace poinsot::io::detail
