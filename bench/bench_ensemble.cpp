@@ -46,35 +46,33 @@ void BM_EnsembleBatched(benchmark::State& st, const char* method, ensemble::Simd
   st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
 }
 
-void BM_EnsembleScalar(benchmark::State& st, const char* method) {
+// The scalar path, one sample after the other: `step` per step, or, as the simulation driver takes it for a
+// torque-free body, Integrator::advance over all the steps (one conversion to a State per call).
+void run_scalar(benchmark::State& st, const char* method, bool use_advance) {
   const auto s = samples();
   for (auto _ : st) {
     for (const auto& x : s) {
       const dynamics::RigidBody body = x.body();
       auto integrator = dynamics::make_integrator(method, body, nullptr, {.dt = kDt});
       dynamics::State y = x.initial;
-      for (long long i = 0; i < kSteps; ++i)
-        integrator->step(y, kDt);
+      if (use_advance) {
+        integrator->advance(y, kDt, kSteps);
+      } else {
+        for (long long i = 0; i < kSteps; ++i)
+          integrator->step(y, kDt);
+      }
       benchmark::DoNotOptimize(y);
     }
   }
   st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
 }
 
-// The scalar path as the simulation driver takes it for a torque-free body: Integrator::advance over all the
-// steps (one conversion to a State per call).
+void BM_EnsembleScalar(benchmark::State& st, const char* method) {
+  run_scalar(st, method, false);
+}
+
 void BM_EnsembleScalarAdvance(benchmark::State& st, const char* method) {
-  const auto s = samples();
-  for (auto _ : st) {
-    for (const auto& x : s) {
-      const dynamics::RigidBody body = x.body();
-      auto integrator = dynamics::make_integrator(method, body, nullptr, {.dt = kDt});
-      dynamics::State y = x.initial;
-      integrator->advance(y, kDt, kSteps);
-      benchmark::DoNotOptimize(y);
-    }
-  }
-  st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
+  run_scalar(st, method, true);
 }
 
 BENCHMARK_CAPTURE(BM_EnsembleBatched, rk4_simd, "rk4", ensemble::Simd::automatic)
