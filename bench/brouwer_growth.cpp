@@ -28,6 +28,7 @@
 #include <string_view>
 #include <vector>
 
+#include "growth_exponent.hpp"
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/dynamics/state.hpp"
 #include "poinsot/multibody/methods.hpp"
@@ -146,23 +147,6 @@ std::unique_ptr<Run> make_run(const std::string& name, double dt) {
   return std::make_unique<SingleBodyRun>(name, dt);
 }
 
-// Least-squares slope of log y against log x.
-double fitted_exponent(const std::vector<double>& x, const std::vector<double>& y) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int n = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    if (!(y[i] > 0.0)) continue;
-    const double lx = std::log(x[i]), ly = std::log(y[i]);
-    sx += lx;
-    sy += ly;
-    sxx += lx * lx;
-    sxy += lx * ly;
-    ++n;
-  }
-  if (n < 2) return std::nan("");
-  return (n * sxy - sx * sy) / (n * sxx - sx * sx);
-}
-
 [[noreturn]] void usage(const char* message) {
   std::fprintf(stderr,
                "brouwer_growth: %s\nusage: brouwer_growth [--max-steps N] [--members M] [--seed S] "
@@ -277,7 +261,7 @@ int main(int argc, char** argv) {
     }
     std::printf("%-12s", "exponent");
     for (std::size_t k = 0; k < 4; ++k) {
-      const double p = fitted_exponent(x, rms[k]);
+      const double p = poinsot::test::growth_exponent(x, rms[k]);
       std::printf(" %6.2f%-8s", p, mc.keeps[k] ? "" : "(method)");
     }
     std::printf("\n");

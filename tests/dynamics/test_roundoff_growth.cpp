@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "growth_exponent.hpp"
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/dynamics/methods.hpp"
 #include "poinsot/dynamics/state.hpp"
@@ -75,20 +76,6 @@ Growth measure(const std::string& method, const std::vector<long>& checkpoints) 
   return g;
 }
 
-// Least-squares slope of log rms against log N.
-double exponent(const std::vector<long>& n, const std::vector<double>& rms) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double k = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(static_cast<double>(n[i])), y = std::log(rms[i]);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-  }
-  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
-}
-
 // The registry's fixed-step methods that keep L_space to round-off (rk4 aside: its truncation error, not
 // the rounding, is what grows).
 std::vector<std::string> kept_methods() {
@@ -115,7 +102,7 @@ TEST_P(RoundoffGrowth, FollowsBrouwersLaw) {
   if (info.name == "rattle") kept.push_back(&g.energy);
   for (std::size_t k = 0; k < kept.size(); ++k) {
     const std::vector<double>& rms = *kept[k];
-    const double p = exponent(g.steps, rms);
+    const double p = growth_exponent(g.steps, rms);
     const double ratio = rms.back() / (kEps * std::sqrt(static_cast<double>(g.steps.back())));
     std::printf("%s %s: RMS %.3g at %ld steps = %.2f eps sqrt(N), fitted exponent %.2f\n", method.c_str(),
                 names[k], rms.back(), g.steps.back(), ratio, p);

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "growth_exponent.hpp"
 #include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/so3/exp_log.hpp"
@@ -75,17 +76,6 @@ Growth measure(const MultibodyMethodInfo& info, const std::vector<long>& checkpo
   return g;
 }
 
-// Least-squares slope of log rms against log N.
-double exponent(const std::vector<long>& n, const std::vector<double>& rms) {
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  const double k = static_cast<double>(n.size());
-  for (std::size_t i = 0; i < n.size(); ++i) {
-    const double x = std::log(static_cast<double>(n[i])), y = std::log(rms[i]);
-    sx += x, sy += y, sxx += x * x, sxy += x * y;
-  }
-  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
-}
-
 TEST(MultibodyRoundoffGrowth, InvariantsRandomWalkAndRk4OrthogonalityStaysBounded) {
   // Half decades from 10^3.5 to 10⁵ steps: before ~10⁴ steps the start's own rounding dominates, and a bias
   // of ~0.01 ε a step (the size of the drifts this test guards against) overtakes the random walk from
@@ -115,7 +105,7 @@ TEST(MultibodyRoundoffGrowth, InvariantsRandomWalkAndRk4OrthogonalityStaysBounde
     const double bound[] = {1.0, 1.0, 1.0, 2.0};
     for (std::size_t k = 0; k < 4; ++k) {
       const std::vector<double>& rms = *growing[k];
-      const double p = exponent(g.steps, rms);
+      const double p = poinsot::test::growth_exponent(g.steps, rms);
       const double ratio = rms.back() / (kEps * sqrt_n);
       std::printf("%s %s: RMS %.3g at %ld steps = %.2f eps sqrt(N) = %.2f eps, fitted exponent %.2f\n",
                   name.c_str(), labels[k], rms.back(), checkpoints.back(), ratio, rms.back() / kEps, p);
