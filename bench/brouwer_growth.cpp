@@ -2,6 +2,7 @@
 //
 // Run: build/release/bench/brouwer_growth [--max-steps N] [--members M] [--seed S] [--fit-from N0]
 //                                         [--dt H] [--methods dlm,rattle,mb-rattle,mb-rk4]
+//                                         [--threads T] [--checkpoint FILE]
 //
 // For each fixed-step method that keeps an invariant to round-off (the single-body registry's dlm and
 // rattle, rk4 aside: its truncation error dominates; the multibody RATTLE and projected RK4 on one free
@@ -17,15 +18,30 @@
 // RK4's energy and momenta: its O(h⁴) truncation error, which --dt tells from rounding) are printed, marked
 // "(method)", without claim. RATTLE, single-body or multibody, keeps the free body's energy exactly.
 // Deterministic: the ensemble is drawn from a fixed-seed SplitMix64 (tests/support/splitmix_draws.hpp, the
-// generator of the round-off growth tests).
+// generator of the round-off growth tests), all members' initial conditions before any is integrated, and the
+// sums over the ensemble are taken in member order, so the output does not depend on --threads (members run
+// in parallel, one thread each).
+//
+// Long campaigns (10⁹ steps is 2·10¹⁰ steps a method, CPU hours) survive interruption with --checkpoint FILE:
+// every finished member appends one line (method, seed, dt, checkpoints, its errors in hexadecimal floating
+// point, so exactly) with a single write; a run with the same FILE and settings reads those lines back and
+// integrates only the members still missing. A line cut short by a kill is not read (it lacks its end
+// marker). A member's own run is not resumable: an interruption loses at most the members in progress.
+#include <fcntl.h>
+#include <unistd.h>
+#include <array>
+#include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "growth_exponent.hpp"
@@ -150,7 +166,8 @@ std::unique_ptr<Run> make_run(const std::string& name, double dt) {
 [[noreturn]] void usage(const char* message) {
   std::fprintf(stderr,
                "brouwer_growth: %s\nusage: brouwer_growth [--max-steps N] [--members M] [--seed S] "
-               "[--fit-from N0] [--dt H] [--methods dlm,rattle,mb-rattle,mb-rk4]\n",
+               "[--fit-from N0] [--dt H] [--methods dlm,rattle,mb-rattle,mb-rk4] [--threads T] "
+               "[--checkpoint FILE]\n",
                message);
   std::exit(2);
 }
@@ -163,13 +180,112 @@ double number_arg(int& i, int argc, char** argv) {
   return v;
 }
 
+// The errors of one member at every checkpoint: errors[c][k], k over (energy, L_space, |L|, RᵀR).
+using MemberErrors = std::vector<std::array<double, 4>>;
+
+// What identifies a run in a checkpoint file: a line is reused only if all of it matches.
+std::string run_key(const std::string& method, std::uint64_t seed, double dt,
+                    const std::vector<long>& checkpoints) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s %llu %a %zu %ld", method.c_str(), static_cast<unsigned long long>(seed),
+                dt, checkpoints.size(), checkpoints.back());
+  return buf;
+}
+
+// One finished member as a checkpoint line: "<key> m <member> <4 values per checkpoint, %a> end\n".
+std::string checkpoint_line(const std::string& key, int member, const MemberErrors& e) {
+  std::string line = key + " m " + std::to_string(member);
+  char buf[40];
+  for (const auto& at : e)
+    for (double v : at) {
+      std::snprintf(buf, sizeof buf, " %a", v);
+      line += buf;
+    }
+  return line + " end\n";
+}
+
+// The members of run `key` already in the checkpoint file (an absent file holds none); lines of other runs,
+// and a line cut short, are skipped.
+std::vector<MemberErrors> read_checkpoint(const std::string& path, const std::string& key, int members,
+                                          std::size_t n_checkpoints) {
+  std::vector<MemberErrors> done(static_cast<std::size_t>(members));
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  if (f == nullptr) return done;
+  std::string line;
+  for (int ch; (ch = std::fgetc(f)) != EOF;) {
+    if (ch != '\n') {
+      line.push_back(static_cast<char>(ch));
+      continue;
+    }
+    const std::string prefix = key + " m ";
+    if (line.compare(0, prefix.size(), prefix) == 0 && line.size() > 4 &&
+        line.compare(line.size() - 4, 4, " end") == 0) {
+      const char* p = line.c_str() + prefix.size();
+      char* end = nullptr;
+      const long m = std::strtol(p, &end, 10);
+      MemberErrors e(n_checkpoints);
+      bool ok = end != p && m >= 0 && m < members;
+      p = end;
+      for (std::size_t c = 0; ok && c < n_checkpoints; ++c)
+        for (std::size_t k = 0; ok && k < 4; ++k) {
+          e[c][k] = std::strtod(p, &end);
+          ok = end != p;
+          p = end;
+        }
+      if (ok && std::strcmp(p, " end") == 0) done[static_cast<std::size_t>(m)] = std::move(e);
+    }
+    line.clear();
+  }
+  std::fclose(f);
+  return done;
+}
+
+void append_line(const std::string& path, const std::string& line);
+
+// Ends a last line that a kill cut short, so that the next line appended starts a line of its own.
+void end_cut_line(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "r");
+  if (f == nullptr) return;
+  const bool cut = std::fseek(f, -1, SEEK_END) == 0 && std::fgetc(f) != '\n';
+  std::fclose(f);
+  if (cut) append_line(path, "\n");
+}
+
+// Appends one line with a single write(2) on an O_APPEND descriptor, so concurrent members and a kill leave
+// whole lines (the reader drops a line without its end marker).
+void append_line(const std::string& path, const std::string& line) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd < 0 || ::write(fd, line.data(), line.size()) != static_cast<ssize_t>(line.size()) ||
+      ::fsync(fd) != 0) {
+    std::fprintf(stderr, "brouwer_growth: cannot append to checkpoint file '%s': %s\n", path.c_str(),
+                 std::strerror(errno));
+    std::exit(1);
+  }
+  ::close(fd);
+}
+
+// Integrates one member through every checkpoint.
+MemberErrors run_member(Run& run, const Mat3& R0, const Vec3& omega0, const std::vector<long>& checkpoints) {
+  run.reset(R0, omega0);
+  const Invariants start = run.sample();
+  MemberErrors out(checkpoints.size());
+  long done = 0;
+  for (std::size_t c = 0; c < checkpoints.size(); ++c) {
+    run.advance(checkpoints[c] - done);
+    done = checkpoints[c];
+    const Errors e = errors(run.sample(), start);
+    out[c] = {e.energy, e.L_space, e.L_norm, e.orthogonality};
+  }
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   double max_steps = 1e6, fit_from = 1e4, dt = 1e-3;
-  int members = 20;
+  int members = 20, threads = 1;
   std::uint64_t seed = 20;
-  std::string methods = "dlm,rattle,mb-rattle,mb-rk4";
+  std::string methods = "dlm,rattle,mb-rattle,mb-rk4", checkpoint_path;
   for (int i = 1; i < argc; ++i) {
     const std::string_view a = argv[i];
     if (a == "--max-steps") {
@@ -182,14 +298,20 @@ int main(int argc, char** argv) {
       dt = number_arg(i, argc, argv);
     } else if (a == "--fit-from") {
       fit_from = number_arg(i, argc, argv);
+    } else if (a == "--threads") {
+      threads = static_cast<int>(number_arg(i, argc, argv));
     } else if (a == "--methods" && i + 1 < argc) {
       methods = argv[++i];
+    } else if (a == "--checkpoint" && i + 1 < argc) {
+      checkpoint_path = argv[++i];
     } else {
       usage("unknown option");
     }
   }
   if (max_steps < 1e3 || max_steps > 1e10) usage("--max-steps must lie in [1e3, 1e10]");
   if (dt > 0.1) usage("--dt must be at most 0.1 s (the body turns at ~2 rad/s)");
+  if (members < 1 || members > 100000) usage("--members must lie in [1, 100000]");
+  if (threads < 1 || threads > 256) usage("--threads must lie in [1, 256]");
 
   // Checkpoints at half decades from 10³.
   std::vector<long> checkpoints;
@@ -214,6 +336,17 @@ int main(int argc, char** argv) {
     }
   }
 
+  // Every member's initial condition, drawn in member order before any is integrated.
+  std::vector<Mat3> R0(static_cast<std::size_t>(members));
+  std::vector<Vec3> omega0(static_cast<std::size_t>(members));
+  {
+    poinsot::test::SplitMixDraws rng{seed};
+    for (std::size_t m = 0; m < R0.size(); ++m) {
+      R0[m] = poinsot::so3::exp(rng.vec(1e-3));
+      omega0[m] = kOmega0 + rng.vec(1e-3);
+    }
+  }
+
   std::printf(
       "# Brouwer growth: J = diag(1, 2, 3) kg m^2, omega0 = (0.01, 2, 0.01) rad/s, dt = %g s, %d members, "
       "seed %llu\n",
@@ -221,27 +354,43 @@ int main(int argc, char** argv) {
   const char* labels[4] = {"energy", "L_space", "|L|", "RtR-I"};
   for (const MethodCase& mc : cases) {
     const auto t_start = std::chrono::steady_clock::now();
-    std::vector<std::vector<double>> sum_sq(4, std::vector<double>(checkpoints.size(), 0.0));
-    poinsot::test::SplitMixDraws rng{seed};
-    auto run = make_run(mc.name, dt);
-    for (int m = 0; m < members; ++m) {
-      const Mat3 R0 = poinsot::so3::exp(rng.vec(1e-3));
-      const Vec3 omega0 = kOmega0 + rng.vec(1e-3);
-      run->reset(R0, omega0);
-      const Invariants start = run->sample();
-      long done = 0;
-      for (std::size_t c = 0; c < checkpoints.size(); ++c) {
-        run->advance(checkpoints[c] - done);
-        done = checkpoints[c];
-        const Errors e = errors(run->sample(), start);
-        const double v[4] = {e.energy, e.L_space, e.L_norm, e.orthogonality};
-        for (int k = 0; k < 4; ++k)
-          sum_sq[static_cast<std::size_t>(k)][c] += v[k] * v[k];
+    const std::string key = run_key(mc.name, seed, dt, checkpoints);
+    if (!checkpoint_path.empty()) end_cut_line(checkpoint_path);
+    std::vector<MemberErrors> results =
+        checkpoint_path.empty() ? std::vector<MemberErrors>(static_cast<std::size_t>(members))
+                                : read_checkpoint(checkpoint_path, key, members, checkpoints.size());
+    std::vector<int> todo;
+    for (int m = 0; m < members; ++m)
+      if (results[static_cast<std::size_t>(m)].empty()) todo.push_back(m);
+    const std::size_t resumed = static_cast<std::size_t>(members) - todo.size();
+    if (resumed > 0)
+      std::fprintf(stderr, "%s: %zu members read from %s\n", mc.name.c_str(), resumed,
+                   checkpoint_path.c_str());
+
+    std::atomic<std::size_t> next{0};
+    auto worker = [&] {
+      auto run = make_run(mc.name, dt);
+      for (std::size_t i; (i = next.fetch_add(1)) < todo.size();) {
+        const std::size_t m = static_cast<std::size_t>(todo[i]);
+        results[m] = run_member(*run, R0[m], omega0[m], checkpoints);
+        if (!checkpoint_path.empty())
+          append_line(checkpoint_path, checkpoint_line(key, static_cast<int>(m), results[m]));
       }
-    }
+    };
+    std::vector<std::thread> pool;
+    for (int t = 1; t < std::min<int>(threads, static_cast<int>(todo.size())); ++t)
+      pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool)
+      t.join();
+
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
-    std::printf("\n## %s  (%.1f s, %.0f ns/step)\n%-12s", mc.name.c_str(), seconds,
-                1e9 * seconds / (static_cast<double>(members) * static_cast<double>(checkpoints.back())),
+    std::printf("\n## %s  (%.1f s wall, %zu of %d members integrated here, %.0f ns/step per thread)\n%-12s",
+                mc.name.c_str(), seconds, todo.size(), members,
+                todo.empty()
+                    ? 0.0
+                    : 1e9 * seconds * std::min<double>(threads, static_cast<double>(todo.size())) /
+                          (static_cast<double>(todo.size()) * static_cast<double>(checkpoints.back())),
                 "N");
     for (int k = 0; k < 4; ++k)
       std::printf(" %14s", labels[k]);
@@ -252,7 +401,10 @@ int main(int argc, char** argv) {
       std::printf("%-12ld", checkpoints[c]);
       const bool fitted = static_cast<double>(checkpoints[c]) >= fit_from * (1 - 1e-12);
       for (std::size_t k = 0; k < 4; ++k) {
-        const double r = std::sqrt(sum_sq[k][c] / members);
+        double sum_sq = 0.0;  // in member order, whatever order the members finished in
+        for (const MemberErrors& e : results)
+          sum_sq += e[c][k] * e[c][k];
+        const double r = std::sqrt(sum_sq / members);
         std::printf(" %14.3e", r);
         if (fitted) rms[k].push_back(r);
       }
