@@ -157,23 +157,22 @@ TEST(Runner, RefusesBadOptionsBeforeAllocating) {
 namespace poinsot::ensemble {
 namespace {
 
-// The distributed invariant (MPI ranks): blocks run in separate calls and merged in block order give the
+// The distributed invariant (MPI ranks): blocks run in separate calls and merged in the block tree give the
 // statistics of one run bit for bit, and the rows of the two shares are the rows of the whole.
-TEST(Runner, BlockRangesMergedInOrderEqualOneRun) {
-  const EnsembleOptions o = opts(2100, "dlm", 0.2, 0.01);  // three blocks
+TEST(Runner, BlockRangesMergedInTheTreeEqualOneRun) {
+  const EnsembleOptions o = opts(3100, "dlm", 0.2, 0.01);  // four blocks, the last partial
   const EnsembleResult whole = run_ensemble(racket_sampler(), o);
-  std::vector<BlockSummary> blocks;
-  const std::uint64_t n = block_count(o.samples), split = n / 2;
-  const EnsembleResult a = run_ensemble_blocks(racket_sampler(), o, 0, split, &blocks);
-  const EnsembleResult b = run_ensemble_blocks(racket_sampler(), o, split, n, &blocks);
-  ASSERT_EQ(blocks.size(), n);
+  std::vector<BlockNode> nodes;
+  const std::uint64_t n = block_count(o.samples), split = 1;  // [0, 1) and [1, 4): not a subtree boundary
+  const EnsembleResult a = run_ensemble_blocks(racket_sampler(), o, 0, split, &nodes);
+  const EnsembleResult b = run_ensemble_blocks(racket_sampler(), o, split, n, &nodes);
+  ASSERT_EQ(nodes.size(), 3u);  // block 0 | block 1, blocks [2, 4)
   EXPECT_EQ(a.rows.size() + b.rows.size(), whole.rows.size());
   EXPECT_EQ(b.rows.front().index, split * kBlockSamples);
   EXPECT_EQ(b.rows.front().final_state.R_space_body,
             whole.rows[split * kBlockSamples].final_state.R_space_body);
   EnsembleResult merged;
-  for (const BlockSummary& block : blocks)
-    merge_block(merged, block);
+  set_statistics(merged, nodes, o.samples);
   for (int q = 0; q < kOutputCount; ++q)
     EXPECT_TRUE(same_bits(merged.stats[q], whole.stats[q])) << kOutputNames[q];
   EXPECT_EQ(merged.rejected, whole.rejected);
