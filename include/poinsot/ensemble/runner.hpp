@@ -2,8 +2,8 @@
 /// @file runner.hpp
 /// Runs an ensemble: draws the samples (sampler.hpp), advances them to t_end by the batched kernels (rk4,
 /// dlm: batch.hpp), the closed form (exact: dynamics::ExactFreeBody, whose cost does not depend on t) or the
-/// scalar integrators through dynamics::simulate (any other method, or a top under gravity), and computes each
-/// sample's outputs on the fly:
+/// scalar integrators through dynamics::simulate (any other method, or a top under gravity), and computes
+/// each sample's outputs on the fly:
 ///   first_flip_time       s, the first sign change of the intermediate-axis momentum (NaN: none; exact: NaN)
 ///   flip_interval         s, between the first two flips (exact: the closed form)
 ///   flip_interval_theory  s, 2K(k)/ω_p of the sample (free_body_theory.hpp; NaN with a torque or no flips)
