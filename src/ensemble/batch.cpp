@@ -55,10 +55,10 @@ void run_batch(std::string_view method, std::span<const Sample> samples, double 
   if (samples.empty()) return;
   for (const Sample& s : samples) {
     if (!batchable(method, s)) {
-      throw InvalidInput(
-          fmt::format("ensemble: method \"{}\" has no batched kernel for sample {} (expected rk4 "
-                      "or dlm on a free body under no torque or a constant torque in the body frame or in space)",
-                      method, s.index));
+      throw InvalidInput(fmt::format(
+          "ensemble: method \"{}\" has no batched kernel for sample {} (expected rk4 "
+          "or dlm on a free body under no torque or a constant torque in the body frame or in space)",
+          method, s.index));
     }
   }
   detail::torque_mode(samples);  // refuses a batch mixing body-frame and space-frame torques
