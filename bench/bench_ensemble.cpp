@@ -3,6 +3,9 @@
 // the scalar integrators one step() at a time and through Integrator::advance. Run:
 // build/release/bench/bench_ensemble --benchmark_filter=Ensemble --benchmark_repetitions=5
 // --benchmark_enable_random_interleaving=true
+// Under a constant torque in the body frame or in space (the Betts spacecraft of examples/ensemble, dt = 1
+// s): the batched kernels against the scalar path the ensemble would otherwise take, dynamics::simulate with
+// the flips located (--benchmark_filter=EnsembleTorque).
 // Also the cost per value of the statistics without rows: the quantile sketch against the running moments
 // (--benchmark_filter=Statistics).
 #include <benchmark/benchmark.h>
@@ -11,6 +14,7 @@
 #include <vector>
 
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/ensemble/batch.hpp"
 #include "poinsot/ensemble/quantile_sketch.hpp"
 #include "poinsot/ensemble/statistics.hpp"
@@ -33,8 +37,27 @@ std::vector<ensemble::Sample> samples() {
   return out;
 }
 
+/// The Betts spacecraft, diag(5621, 4547, 2364) kg·m² ±5 %, under (1, −2, 0.5) mN·m ±10 % in the body frame
+/// (`torque` body) or in space.
+std::vector<ensemble::Sample> betts_samples(ensemble::TorqueKind torque) {
+  ensemble::Nominal n;
+  n.moments = Vec3(5621.0, 4547.0, 2364.0);
+  n.omega_body = Vec3(0.0, 0.0, 0.001);
+  n.torque = torque;
+  n.torque_value = Vec3(0.001, -0.002, 0.0005);
+  ensemble::Dispersions d;
+  d.moments = {ensemble::Law::truncated_normal, 0.05, true};
+  d.torque = {ensemble::Law::normal, 0.1, true};
+  const ensemble::Sampler s(n, d, 7);
+  std::vector<ensemble::Sample> out;
+  for (int i = 0; i < ensemble::kBatchLanes; ++i)
+    out.push_back(s.draw(static_cast<std::uint64_t>(i)));
+  return out;
+}
+
 constexpr long long kSteps = 2000;
 constexpr double kDt = 1e-3;
+constexpr double kBettsDt = 1.0;  // s, as the example
 
 void BM_EnsembleBatched(benchmark::State& st, const char* method, ensemble::Simd simd) {
   const auto s = samples();
@@ -74,6 +97,44 @@ void BM_EnsembleScalar(benchmark::State& st, const char* method) {
 void BM_EnsembleScalarAdvance(benchmark::State& st, const char* method) {
   run_scalar(st, method, true);
 }
+
+void BM_EnsembleTorqueBatched(benchmark::State& st, const char* method, ensemble::TorqueKind torque) {
+  const auto s = betts_samples(torque);
+  std::vector<ensemble::LaneResult> r(s.size());
+  for (auto _ : st) {
+    ensemble::run_batch(method, s, kSteps * kBettsDt, kBettsDt, ensemble::Simd::automatic, r);
+    benchmark::DoNotOptimize(r.data());
+  }
+  st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
+}
+
+// The scalar path of the runner for a sample it cannot batch: dynamics::simulate to t_end, flips located.
+void BM_EnsembleTorqueScalar(benchmark::State& st, const char* method, ensemble::TorqueKind kind) {
+  const auto s = betts_samples(kind);
+  for (auto _ : st) {
+    for (const auto& x : s) {
+      const dynamics::RigidBody body = x.body();
+      const auto torque = x.torque_model(body);
+      auto integrator = dynamics::make_integrator(method, body, torque, {.dt = kBettsDt});
+      const dynamics::SimulationResult r = dynamics::simulate(
+          body, torque, x.initial, *integrator,
+          {.t_end = kSteps * kBettsDt, .sample_dt = kSteps * kBettsDt, .locate_flips = true});
+      benchmark::DoNotOptimize(r.final_state);
+    }
+  }
+  st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
+}
+
+constexpr auto kBody = ensemble::TorqueKind::body;
+constexpr auto kSpace = ensemble::TorqueKind::space;
+BENCHMARK_CAPTURE(BM_EnsembleTorqueBatched, rk4_body, "rk4", kBody)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleTorqueScalar, rk4_body, "rk4", kBody)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleTorqueBatched, dlm_body, "dlm", kBody)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleTorqueScalar, dlm_body, "dlm", kBody)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleTorqueBatched, rk4_space, "rk4", kSpace)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleTorqueScalar, rk4_space, "rk4", kSpace)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleTorqueBatched, dlm_space, "dlm", kSpace)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_EnsembleTorqueScalar, dlm_space, "dlm", kSpace)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_CAPTURE(BM_EnsembleBatched, rk4_simd, "rk4", ensemble::Simd::automatic)
     ->Unit(benchmark::kMillisecond);

@@ -17,7 +17,7 @@
 
 namespace poinsot::cli {
 
-static_assert(std::is_trivially_copyable_v<ensemble::BlockSummary>);
+static_assert(std::is_trivially_copyable_v<ensemble::BlockNode>);
 
 bool mpi_launched() {
 #ifdef POINSOT_HAVE_MPI
@@ -134,10 +134,10 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
   const auto share = [&](int r) {
     return n * static_cast<std::uint64_t>(r) / static_cast<std::uint64_t>(s.size());
   };
-  std::vector<ensemble::BlockSummary> blocks;
+  std::vector<ensemble::BlockNode> nodes;  // O(log blocks) subtrees of block statistics
   ensemble::EnsembleResult mine =
-      ensemble::run_ensemble_blocks(sampler, o, share(s.rank()), share(s.rank() + 1), &blocks);
-  const std::vector<ensemble::BlockSummary> all_blocks = gather(blocks, s.size());
+      ensemble::run_ensemble_blocks(sampler, o, share(s.rank()), share(s.rank() + 1), &nodes);
+  const std::vector<ensemble::BlockNode> all_nodes = gather(nodes, s.size());
   // The quantile sketches (per-sample output off, or rows kept per rank) are integer counts: merged in any
   // order, the same bits.
   if (own_rows != nullptr) {
@@ -168,8 +168,7 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
   ensemble::EnsembleResult r;
   r.path = fmt::format("{} on {} MPI ranks", mine.path, s.size());
   r.nominal = mine.nominal;
-  for (const ensemble::BlockSummary& b : all_blocks)  // in block order: rank order is block order
-    ensemble::merge_block(r, b);
+  ensemble::set_statistics(r, all_nodes, o.samples);  // the tree of one process, bit for bit
   for (const FlatBucket& f : all_buckets)
     r.sketches[static_cast<std::size_t>(f.output)].add_bucket(f.bucket);
   r.rows.reserve(all_rows.size());

@@ -1,7 +1,8 @@
 #pragma once
 // The MPI driver of `poinsot ensemble` (optional: built when CMake finds MPI, POINSOT_MPI=AUTO). Under mpirun
 // each rank runs a contiguous range of blocks of samples (ensemble::run_ensemble_blocks); rank 0 gathers the
-// block summaries and merges them in block order (ensemble::merge_block), so the statistics are those of one
+// complete subtrees of their block statistics (O(log blocks) a rank) and merges them in the fixed tree over
+// the block indices (ensemble::set_statistics, block_merge.hpp), so the statistics are those of one
 // process bit for bit, and gathers the rows (per-sample output on) in index order. Only rank 0 writes files.
 #include <vector>
 
@@ -28,7 +29,7 @@ class MpiSession {
   bool active_ = false;
 };
 
-/// Runs this rank's share and returns, on rank 0, the whole result (statistics merged in block order, rows
+/// Runs this rank's share and returns, on rank 0, the whole result (statistics merged in the block tree, rows
 /// in index order, body steps summed, wall time the longest rank's); on other ranks their share only.
 /// With `own_rows` (per-rank files): the rows are not gathered but moved to *own_rows on every rank, and the
 /// percentiles of the result come from quantile sketches of each rank's rows (quantile_sketch.hpp), merged

@@ -1,7 +1,10 @@
 // The batched splitting of Dullweber, Leimkuhler & McLachlan (batch.hpp): in the principal frame of
 // RigidBody::principal_axes() (P, ascending moments), the free flow φ₁(h/2) φ₂(h/2) φ₃(h) φ₂(h/2) φ₁(h/2) of
 // planar rotations of Π and of the columns of Rp = R P, with Strang kicks Π ← Π + (h/2) τ for a constant
-// body-frame torque, and one Björck step every 16 steps: the operations of dynamics/dlm.cpp, lane by lane.
+// torque, and one Björck step every 16 steps: the operations of dynamics/dlm.cpp, lane by lane. A body-frame
+// torque is τ = Pᵀ τ_body once; a space-frame one is rotated at every kick as the scalar integrator does:
+// τ = Pᵀ (R_bodyᵀ τ_space), R_body = Rp Pᵀ (the attitude at the start of the step for the opening kick, after
+// the free flow for the closing one), with Eigen's orders of summation.
 #include <algorithm>
 #include <cmath>
 
@@ -18,8 +21,13 @@ struct DlmLanes {
   alignas(64) double R[3][3][B];  // R[row][col]: Rp = R P, principal frame → space
   alignas(64) double Pi[3][B];    // body momentum, principal frame (kg·m²/s)
   alignas(64) double inv_I[3][B];
-  alignas(64) double tau[3][B];  // principal-frame torque (N·m)
+  alignas(64) double tau[3][B];  // principal-frame torque (N·m); space mode: the latest kick's
   alignas(64) double w[3][B];    // ω = Π/I, for the flip test
+  // Space mode: the torque in space (N·m), the principal axes P (body frame) and whether P = I.
+  alignas(64) double tau_space[3][B];
+  alignas(64) double P[3][3][B];
+  alignas(64) double P_identity[B];    // 1 or 0
+  alignas(64) double R_open[3][3][B];  // R_body at the start of the step (space mode)
 };
 
 inline __attribute__((always_inline)) void rotate(DlmLanes& L, int i, double h) {
@@ -50,6 +58,35 @@ inline __attribute__((always_inline)) void rotate(DlmLanes& L, int i, double h) 
       const double rk = L.R[r][k][l];
       L.R[r][j][l] = rj + (cm1[l] * rj + s[l] * rk);
       L.R[r][k][l] = rk + (cm1[l] * rk - s[l] * rj);
+    }
+  }
+}
+
+// R_body = Rp Pᵀ, summed as Eigen's 3×3 lazy product in dynamics/dlm.cpp: rows 0 and 1 in increasing k, row 2
+// as x₀ + (x₁ + x₂) (its scalar tail); Rp itself where P = I.
+inline __attribute__((always_inline)) void body_attitude(const DlmLanes& L, double (*Rb)[3][B]) {
+  for (int a = 0; a < 3; ++a) {
+    for (int b = 0; b < 3; ++b) {
+      for (int l = 0; l < B; ++l) {
+        const double x0 = L.R[a][0][l] * L.P[b][0][l], x1 = L.R[a][1][l] * L.P[b][1][l],
+                     x2 = L.R[a][2][l] * L.P[b][2][l];
+        const double product = a < 2 ? (x0 + x1) + x2 : x0 + (x1 + x2);
+        Rb[a][b][l] = L.P_identity[l] != 0.0 ? L.R[a][b][l] : product;
+      }
+    }
+  }
+}
+
+// τ (principal frame) = Pᵀ (R_bodyᵀ τ_space), each product summed in increasing k as Eigen's Mat3ᵀ · Vec3.
+inline __attribute__((always_inline)) void space_torque(DlmLanes& L, const double (*Rb)[3][B]) {
+  for (int l = 0; l < B; ++l) {
+    double tb[3];
+    for (int i = 0; i < 3; ++i)
+      tb[i] = (Rb[0][i][l] * L.tau_space[0][l] + Rb[1][i][l] * L.tau_space[1][l]) +
+              Rb[2][i][l] * L.tau_space[2][l];
+    for (int i = 0; i < 3; ++i) {
+      const double tp = (L.P[0][i][l] * tb[0] + L.P[1][i][l] * tb[1]) + L.P[2][i][l] * tb[2];
+      L.tau[i][l] = L.P_identity[l] != 0.0 ? tb[i] : tp;
     }
   }
 }
@@ -96,22 +133,34 @@ inline __attribute__((always_inline)) void flip_rate(const DlmLanes& L, const Fl
   }
 }
 
-template <bool Free>
+template <TorqueMode Mode>
 inline __attribute__((always_inline)) void steps(DlmLanes& L, FlipLanes& F, long long n, double h,
                                                  int lanes) {
   alignas(64) double s1[B], r1[B];
+  alignas(64) double Rb[3][3][B];
   update_omega(L);
+  if constexpr (Mode == TorqueMode::space) space_torque(L, L.R_open);  // the initial attitude, as given
   flip_component(F, L.w[0], L.w[1], L.w[2], F.s);
   flip_rate(L, F, F.r);
   int since_projection = 0;
   for (long long step = 0; step < n; ++step) {
-    if constexpr (!Free) kick(L, h);
+    if constexpr (Mode == TorqueMode::space) {
+      if (step > 0) {  // the attitude the previous step handed over (after its Björck step)
+        body_attitude(L, Rb);
+        space_torque(L, Rb);
+      }
+    }
+    if constexpr (Mode != TorqueMode::free) kick(L, h);
     rotate(L, 0, 0.5 * h);
     rotate(L, 1, 0.5 * h);
     rotate(L, 2, h);
     rotate(L, 1, 0.5 * h);
     rotate(L, 0, 0.5 * h);
-    if constexpr (!Free) kick(L, h);
+    if constexpr (Mode == TorqueMode::space) {
+      body_attitude(L, Rb);
+      space_torque(L, Rb);
+    }
+    if constexpr (Mode != TorqueMode::free) kick(L, h);
     if (++since_projection >= kReorthogonalizeEvery) {
       reorthogonalize(L);
       since_projection = 0;
@@ -125,10 +174,10 @@ inline __attribute__((always_inline)) void steps(DlmLanes& L, FlipLanes& F, long
 
 /// The step loop, for run_steps (batch_lanes.hpp).
 struct DlmKernel {
-  template <bool Free>
+  template <TorqueMode Mode>
   static inline __attribute__((always_inline)) void steps(DlmLanes& L, FlipLanes& F, long long n, double h,
                                                           int lanes) {
-    ::poinsot::ensemble::detail::steps<Free>(L, F, n, h, lanes);
+    ::poinsot::ensemble::detail::steps<Mode>(L, F, n, h, lanes);
   }
 };
 
@@ -140,7 +189,7 @@ void run_dlm_batch(std::span<const Sample> samples, double t_end, long long n, b
   auto F = std::make_unique<FlipLanes>();
   const int lanes = static_cast<int>(samples.size());
   std::vector<Mat3> axes(static_cast<std::size_t>(lanes));
-  bool free = true;
+  const TorqueMode mode = torque_mode(samples);
   for (int l = 0; l < B; ++l) {
     const Sample& s = samples[static_cast<std::size_t>(l < lanes ? l : 0)];  // idle lanes repeat lane 0
     const dynamics::RigidBody body = s.body();
@@ -154,10 +203,15 @@ void run_dlm_batch(std::span<const Sample> samples, double t_end, long long n, b
     const Vec3 Pi = w.cwiseQuotient(inv_I);
     const Vec3 tau_body = s.torque == TorqueKind::body ? s.torque_value : Vec3::Zero();
     const Vec3 tau = identity ? tau_body : Vec3(P.transpose() * tau_body);
-    free = free && s.torque == TorqueKind::none;
+    const Vec3 tau_space = s.torque == TorqueKind::space ? s.torque_value : Vec3::Zero();
+    L->P_identity[l] = identity ? 1.0 : 0.0;
     for (int a = 0; a < 3; ++a) {
-      for (int b = 0; b < 3; ++b)
+      L->tau_space[a][l] = tau_space[a];
+      for (int b = 0; b < 3; ++b) {
         L->R[a][b][l] = Rp(a, b);
+        L->P[a][b][l] = P(a, b);
+        L->R_open[a][b][l] = s.initial.R_space_body(a, b);
+      }
       L->Pi[a][l] = Pi[a];
       L->inv_I[a][l] = inv_I[a];
       L->tau[a][l] = tau[a];
@@ -167,7 +221,7 @@ void run_dlm_batch(std::span<const Sample> samples, double t_end, long long n, b
     set_flip_weights(*F, l, moments);
   }
   const double h = t_end / static_cast<double>(n);
-  run_steps<DlmKernel>(avx2, *L, *F, n, h, lanes, free);
+  run_steps<DlmKernel>(avx2, *L, *F, n, h, lanes, mode);
   for (int l = 0; l < lanes; ++l) {
     const Mat3& P = axes[static_cast<std::size_t>(l)];
     const bool identity = P == Mat3::Identity();

@@ -1,9 +1,11 @@
 #pragma once
 // Internal to the ensemble layer: what the batched rk4 and dlm kernels share: the lane count, the flip
-// tracker over lanes, and the dispatch between the AVX2 and the portable compilation of a kernel.
+// tracker over lanes, the torque mode of a batch, and the dispatch between the AVX2 and the portable
+// compilation of a kernel.
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 
 #include "poinsot/dynamics/flip_events.hpp"
 #include "poinsot/ensemble/batch.hpp"
@@ -68,29 +70,51 @@ inline void set_flip_weights(FlipLanes& f, int lane, const double I[3]) {
   f.first[lane] = f.second[lane] = std::numeric_limits<double>::quiet_NaN();
 }
 
-/// The step loop of a kernel, `Kernel::template steps<Free>(L, F, n, h, lanes)` (always inlined), compiled
+/// The torque on the lanes of a batch: none, constant in the body frame, or constant in space (then the
+/// kernels rotate it into the principal frame at every evaluation).
+enum class TorqueMode { free, body, space };
+
+/// The torque mode of a batch: space when any lane has a space-frame torque, body when any has a body-frame
+/// one (torque-free lanes take the torqued path with a zero torque). Throws InvalidInput for a batch with
+/// both.
+TorqueMode torque_mode(std::span<const Sample> samples);
+
+/// The step loop of a kernel, `Kernel::template steps<Mode>(L, F, n, h, lanes)` (always inlined), compiled
 /// with AVX2 enabled: the loops over the lanes vectorise 4 wide. Called only when the CPU has AVX2.
 template <class Kernel, class KernelLanes>
 __attribute__((target("avx2"))) void steps_avx2(KernelLanes& L, FlipLanes& F, long long n, double h,
-                                                int lanes, bool free) {
-  free ? Kernel::template steps<true>(L, F, n, h, lanes) : Kernel::template steps<false>(L, F, n, h, lanes);
+                                                int lanes, TorqueMode mode) {
+  switch (mode) {
+    case TorqueMode::free:
+      return Kernel::template steps<TorqueMode::free>(L, F, n, h, lanes);
+    case TorqueMode::body:
+      return Kernel::template steps<TorqueMode::body>(L, F, n, h, lanes);
+    case TorqueMode::space:
+      return Kernel::template steps<TorqueMode::space>(L, F, n, h, lanes);
+  }
 }
 
 /// The same loop for any x86-64 (SSE2) or other CPU.
 template <class Kernel, class KernelLanes>
-void steps_portable(KernelLanes& L, FlipLanes& F, long long n, double h, int lanes, bool free) {
-  free ? Kernel::template steps<true>(L, F, n, h, lanes) : Kernel::template steps<false>(L, F, n, h, lanes);
+void steps_portable(KernelLanes& L, FlipLanes& F, long long n, double h, int lanes, TorqueMode mode) {
+  switch (mode) {
+    case TorqueMode::free:
+      return Kernel::template steps<TorqueMode::free>(L, F, n, h, lanes);
+    case TorqueMode::body:
+      return Kernel::template steps<TorqueMode::body>(L, F, n, h, lanes);
+    case TorqueMode::space:
+      return Kernel::template steps<TorqueMode::space>(L, F, n, h, lanes);
+  }
 }
 
 /// Advances the lanes by n steps of h (s) with the AVX2 or the portable compilation of the kernel's loop; the
-/// two give the same bits (no fused multiply–add: the kernels are compiled with -ffp-contract=off). `free`:
-/// every lane is torque-free.
+/// two give the same bits (no fused multiply–add: the kernels are compiled with -ffp-contract=off).
 template <class Kernel, class KernelLanes>
-void run_steps(bool avx2, KernelLanes& L, FlipLanes& F, long long n, double h, int lanes, bool free) {
+void run_steps(bool avx2, KernelLanes& L, FlipLanes& F, long long n, double h, int lanes, TorqueMode mode) {
   if (avx2) {
-    steps_avx2<Kernel>(L, F, n, h, lanes, free);
+    steps_avx2<Kernel>(L, F, n, h, lanes, mode);
   } else {
-    steps_portable<Kernel>(L, F, n, h, lanes, free);
+    steps_portable<Kernel>(L, F, n, h, lanes, mode);
   }
 }
 

@@ -1,6 +1,8 @@
 // The batched classical Runge–Kutta method (batch.hpp): the free or constant-torque body in its principal
 // frame, y = (q, ω) with q̇ = ½ q ⊗ (0, ω) and ω̇ᵢ = gᵢ ωⱼ ωₖ + τᵢ/Iᵢ, gᵢ = (Iⱼ − Iₖ)/Iᵢ, exactly the
-// operations of dynamics/rk4.cpp (its principal-frame path), lane by lane.
+// operations of dynamics/rk4.cpp (its principal-frame path), lane by lane. A torque constant in space is
+// rotated into the principal frame at every stage, τ = R(q/|q|)ᵀ τ_space (the torque sees the normalised
+// attitude, as in dynamics/rk4.cpp).
 #include <cmath>
 
 #include "batch_kernels.hpp"
@@ -13,8 +15,10 @@ namespace {
 
 struct Rk4Lanes {
   alignas(64) double y[7][B];
-  alignas(64) double g[3][B];    // gyroscopic coefficients (Iⱼ − Iₖ)/Iᵢ
-  alignas(64) double tau[3][B];  // τᵢ · (1/Iᵢ), rad/s²
+  alignas(64) double g[3][B];          // gyroscopic coefficients (Iⱼ − Iₖ)/Iᵢ
+  alignas(64) double tau[3][B];        // τᵢ · (1/Iᵢ), rad/s² (body-frame torque)
+  alignas(64) double tau_space[3][B];  // N·m (space-frame torque)
+  alignas(64) double inv_I[3][B];      // 1/Iᵢ
   alignas(64) double k[4][7][B];
   alignas(64) double tmp[7][B];
 };
@@ -46,13 +50,46 @@ inline __attribute__((always_inline)) void rhs_free(const Rk4Lanes& L, const dou
   }
 }
 
-template <bool Free>
+// A torque constant in space: ω̇ᵢ = gᵢ ωⱼ ωₖ + (Rᵀ τ_space)ᵢ/Iᵢ with R = R(q/|q|), as dynamics/rk4.cpp
+// evaluates it (euler_rhs.hpp): q divided by √|q|² (|q|² in Eigen's order, as renormalise), R by Eigen's
+// Quaternion::toRotationMatrix, Rᵀ τ summed in increasing k, then multiplied by 1/Iᵢ.
+inline __attribute__((always_inline)) void rhs_space(const Rk4Lanes& L, const double (*y)[B],
+                                                     double (*d)[B]) {
+  for (int l = 0; l < B; ++l) {
+    const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
+    d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
+    d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
+    d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
+    d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+    const double norm =
+        std::sqrt((y[0][l] * y[0][l] + y[2][l] * y[2][l]) + (y[1][l] * y[1][l] + y[3][l] * y[3][l]));
+    const double qw = y[0][l] / norm, qx = y[1][l] / norm, qy = y[2][l] / norm, qz = y[3][l] / norm;
+    const double tx = 2.0 * qx, ty = 2.0 * qy, tz = 2.0 * qz;
+    const double twx = tx * qw, twy = ty * qw, twz = tz * qw;
+    const double txx = tx * qx, txy = ty * qx, txz = tz * qx;
+    const double tyy = ty * qy, tyz = tz * qy, tzz = tz * qz;
+    const double R[3][3] = {{1.0 - (tyy + tzz), txy - twz, txz + twy},
+                            {txy + twz, 1.0 - (txx + tzz), tyz - twx},
+                            {txz - twy, tyz + twx, 1.0 - (txx + tyy)}};
+    const double v0 = L.tau_space[0][l], v1 = L.tau_space[1][l], v2 = L.tau_space[2][l];
+    double t[3];
+    for (int i = 0; i < 3; ++i)
+      t[i] = (R[0][i] * v0 + R[1][i] * v1) + R[2][i] * v2;
+    d[4][l] = L.g[0][l] * w2 * w3 + t[0] * L.inv_I[0][l];
+    d[5][l] = L.g[1][l] * w3 * w1 + t[1] * L.inv_I[1][l];
+    d[6][l] = L.g[2][l] * w1 * w2 + t[2] * L.inv_I[2][l];
+  }
+}
+
+template <TorqueMode Mode>
 inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h, bool renormalise) {
   const auto f = [&L](const double(*y)[B], double(*d)[B]) {
-    if constexpr (Free) {
+    if constexpr (Mode == TorqueMode::free) {
       rhs_free(L, y, d);
-    } else {
+    } else if constexpr (Mode == TorqueMode::body) {
       rhs(L, y, d);
+    } else {
+      rhs_space(L, y, d);
     }
   };
   f(L.y, L.k[0]);
@@ -85,7 +122,14 @@ inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h, bool reno
 }
 
 // The rate ṡ of s = Σ eᵢ ωᵢ from ω̇ (the last right-hand side is not at the new state: recomputed per lane).
-inline __attribute__((always_inline)) void flip_rate(const Rk4Lanes& L, const FlipLanes& F, double* r) {
+template <TorqueMode Mode>
+inline __attribute__((always_inline)) void flip_rate(Rk4Lanes& L, const FlipLanes& F, double* r) {
+  if constexpr (Mode == TorqueMode::space) {
+    rhs_space(L, L.y, L.tmp);  // ω̇ at the new state
+    for (int l = 0; l < B; ++l)
+      r[l] = F.e[0][l] * L.tmp[4][l] + F.e[1][l] * L.tmp[5][l] + F.e[2][l] * L.tmp[6][l];
+    return;
+  }
   for (int l = 0; l < B; ++l) {
     const double w1 = L.y[4][l], w2 = L.y[5][l], w3 = L.y[6][l];
     r[l] = F.e[0][l] * (L.g[0][l] * w2 * w3 + L.tau[0][l]) + F.e[1][l] * (L.g[1][l] * w3 * w1 + L.tau[1][l]) +
@@ -93,26 +137,26 @@ inline __attribute__((always_inline)) void flip_rate(const Rk4Lanes& L, const Fl
   }
 }
 
-template <bool Free>
+template <TorqueMode Mode>
 inline __attribute__((always_inline)) void steps(Rk4Lanes& L, FlipLanes& F, long long n, double h,
                                                  int lanes) {
   alignas(64) double s1[B], r1[B];
   flip_component(F, L.y[4], L.y[5], L.y[6], F.s);
-  flip_rate(L, F, F.r);
+  flip_rate<Mode>(L, F, F.r);
   for (long long i = 0; i < n; ++i) {
-    step<Free>(L, h, (i + 1) % dynamics::kRk4RenormaliseEvery == 0);
+    step<Mode>(L, h, (i + 1) % dynamics::kRk4RenormaliseEvery == 0);
     flip_component(F, L.y[4], L.y[5], L.y[6], s1);
-    flip_rate(L, F, r1);
+    flip_rate<Mode>(L, F, r1);
     advance_flips(F, s1, r1, static_cast<double>(i) * h, static_cast<double>(i + 1) * h, lanes);
   }
 }
 
 /// The step loop, for run_steps (batch_lanes.hpp).
 struct Rk4Kernel {
-  template <bool Free>
+  template <TorqueMode Mode>
   static inline __attribute__((always_inline)) void steps(Rk4Lanes& L, FlipLanes& F, long long n, double h,
                                                           int lanes) {
-    ::poinsot::ensemble::detail::steps<Free>(L, F, n, h, lanes);
+    ::poinsot::ensemble::detail::steps<Mode>(L, F, n, h, lanes);
   }
 };
 
@@ -123,7 +167,7 @@ void run_rk4_batch(std::span<const Sample> samples, double t_end, long long n, b
   auto L = std::make_unique<Rk4Lanes>();
   auto F = std::make_unique<FlipLanes>();
   const int lanes = static_cast<int>(samples.size());
-  bool free = true;
+  const TorqueMode mode = torque_mode(samples);
   for (int l = 0; l < B; ++l) {
     const Sample& s = samples[static_cast<std::size_t>(l < lanes ? l : 0)];  // idle lanes repeat lane 0
     const bool aligned = s.axes == Mat3::Identity();
@@ -138,16 +182,18 @@ void run_rk4_batch(std::span<const Sample> samples, double t_end, long long n, b
     const Vec3 tau_body = s.torque == TorqueKind::body ? s.torque_value : Vec3::Zero();
     const Vec3 tau = aligned ? tau_body : Vec3(s.axes.transpose() * tau_body);
     const Vec3 tau_over_I = tau.cwiseProduct(I.cwiseInverse());
-    free = free && s.torque == TorqueKind::none;
+    const Vec3 tau_space = s.torque == TorqueKind::space ? s.torque_value : Vec3::Zero();
     for (int i = 0; i < 3; ++i) {
       L->g[i][l] = g[i];
       L->tau[i][l] = tau_over_I[i];
+      L->tau_space[i][l] = tau_space[i];
+      L->inv_I[i][l] = 1.0 / I[i];
     }
     const double moments[3] = {I[0], I[1], I[2]};
     set_flip_weights(*F, l, moments);
   }
   const double h = t_end / static_cast<double>(n);
-  run_steps<Rk4Kernel>(avx2, *L, *F, n, h, lanes, free);
+  run_steps<Rk4Kernel>(avx2, *L, *F, n, h, lanes, mode);
   for (int l = 0; l < lanes; ++l) {
     const Sample& s = samples[static_cast<std::size_t>(l)];
     const bool aligned = s.axes == Mat3::Identity();

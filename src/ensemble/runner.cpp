@@ -190,11 +190,11 @@ SampleRow run_sample(const Sampler& sampler, std::uint64_t index, const Ensemble
   return row;
 }
 
-void merge_block(EnsembleResult& result, const BlockSummary& block) {
-  for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
-    result.stats[q].merge(block.stats[q]);
-  result.rejected += block.rejected;
-  result.repaired += block.repaired;
+void set_statistics(EnsembleResult& result, std::vector<BlockNode> nodes, std::uint64_t samples) {
+  const BlockSummary root = merge_tree(std::move(nodes), block_count(samples));
+  result.stats = root.stats;
+  result.rejected = root.rejected;
+  result.repaired = root.repaired;
 }
 
 std::uint64_t block_count(std::uint64_t samples) {
@@ -207,7 +207,7 @@ EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& o) {
 
 EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions& o,
                                    std::uint64_t first_block, std::uint64_t last_block,
-                                   std::vector<BlockSummary>* blocks_out) {
+                                   std::vector<BlockNode>* nodes_out) {
   validate(o);
   if (!(first_block <= last_block && last_block <= block_count(o.samples))) {
     throw InvalidInput(fmt::format("ensemble: blocks [{}, {}) of {}; expected a range within the samples",
@@ -244,6 +244,7 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
   std::vector<std::vector<SampleRow>> scratch(o.keep_rows ? 0 : per_round,
                                               std::vector<SampleRow>(kBlockSamples));
   std::vector<BlockSummary> block(per_round);
+  BlockTree tree;  // the blocks' statistics, merged in the fixed tree as they complete
   const long long steps_per_sample = path == Path::exact ? 0 : batch_step_count(o.t_end, o.dt);
 
   for (std::uint64_t round = 0; round * per_round < blocks; ++round) {
@@ -283,9 +284,8 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
     for (auto& t : pool)
       t.join();
     if (error) std::rethrow_exception(error);
-    for (std::uint64_t k = 0; k < nb; ++k) {  // merged in block order: independent of the threads
-      merge_block(result, block[k]);
-      if (blocks_out) blocks_out->push_back(block[k]);
+    for (std::uint64_t k = 0; k < nb; ++k) {  // pushed in block order: independent of the threads
+      tree.push(block[k]);
       if (!o.keep_rows) {
         const std::uint64_t count = std::min(kBlockSamples, range - (b0 + k) * kBlockSamples);
         for (std::uint64_t i = 0; i < count; ++i)
@@ -301,6 +301,8 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
     }
   }
   if (o.keep_rows) result.rows.resize(result.completed);
+  set_statistics(result, tree.nodes(), o.samples);
+  if (nodes_out) nodes_out->insert(nodes_out->end(), tree.nodes().begin(), tree.nodes().end());
   result.body_steps = static_cast<std::int64_t>(result.completed) * steps_per_sample;
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;

@@ -9,7 +9,7 @@ principal_moments = [1.0, 2.0, 2.6]
 omega_body = [0.05, 2.0, 0.05]
 orientation = {{ quaternion = [1.0, 0.0, 0.0, 0.0] }}
 [torque]
-type = "none"
+{torque}
 [integrator]
 method = "{method}"
 dt = 0.01
@@ -24,9 +24,12 @@ axes = {{ law = "cone", angle = 1.0, degrees = true }}
 """
 
 
-def write(tmp_path, method="rk4", width="0.02"):
+NO_TORQUE = 'type = "none"'
+
+
+def write(tmp_path, method="rk4", width="0.02", torque=NO_TORQUE):
     path = tmp_path / "ens.toml"
-    path.write_text(SCENARIO.format(method=method, width=width))
+    path.write_text(SCENARIO.format(method=method, width=width, torque=torque))
     return path
 
 
@@ -48,6 +51,20 @@ def test_writes_csv_and_summary_identically_for_one_and_two_threads(cli, tmp_pat
     flip = sa["outputs"]["attitude_error"]
     assert set(flip["percentiles"]) == {"P1", "P5", "P50", "P95", "P99", "P99.9"}
     assert flip["min"] <= flip["percentiles"]["P50"] <= flip["max"]
+
+
+def test_a_torque_in_space_runs_batched_identically_for_threads_and_simd(cli, tmp_path):
+    for method in ("rk4", "dlm"):
+        scenario = write(tmp_path, method=method, torque='type = "space"\nvalue = [0.01, -0.02, 0.005]')
+        a = cli("ensemble", scenario, "--threads", "1", "--json", "--out", tmp_path / f"{method}_a")
+        b = cli("ensemble", scenario, "--threads", "2", "--no-simd", "--json",
+                "--out", tmp_path / f"{method}_b")
+        assert a.returncode == 0 and b.returncode == 0, a.stderr + b.stderr
+        sa, sb = json.loads(a.stdout), json.loads(b.stdout)
+        assert sa["path"].startswith(f"batched {method}"), sa["path"]
+        assert sa["outputs"] == sb["outputs"]
+        csv_a, csv_b = (tmp_path / f"{method}_{run}/samples.csv" for run in "ab")
+        assert csv_a.read_text() == csv_b.read_text()
 
 
 def test_exact_sample_equals_the_single_body_run_bit_for_bit(cli, tmp_path):
@@ -75,12 +92,12 @@ def test_bad_input_is_one_line_exit_2_and_writes_nothing(cli, tmp_path):
     r = cli("ensemble", scenario, "--samples", "100000000000", "--out", tmp_path / "big")
     assert r.returncode == 2 and "GB" in r.stderr and r.stderr.count("\n") == 1
     assert not (tmp_path / "big/samples.csv").exists()
-    text = SCENARIO.format(method="rk4", width="0.0").replace("[1.0, 2.0, 2.6]", "[1.0, 1.0, 5.0]")
+    text = SCENARIO.format(method="rk4", width="0.0", torque=NO_TORQUE).replace("[1.0, 2.0, 2.6]", "[1.0, 1.0, 5.0]")
     (tmp_path / "tri.toml").write_text(text)
     r = cli("ensemble", tmp_path / "tri.toml", "--out", tmp_path / "tri")
     assert r.returncode == 2 and "triangle" in r.stderr and not (tmp_path / "tri").exists()
     # A reject policy that cannot find valid moments: capped, reported with the sample, nothing written.
-    text = SCENARIO.format(method="rk4", width="3.0").replace("[1.0, 2.0, 2.6]", "[1.0, 1.0, 1.999]")
+    text = SCENARIO.format(method="rk4", width="3.0", torque=NO_TORQUE).replace("[1.0, 2.0, 2.6]", "[1.0, 1.0, 1.999]")
     (tmp_path / "cap.toml").write_text(text.replace("seed = 5", "seed = 5\nmax_tries = 2"))
     r = cli("ensemble", tmp_path / "cap.toml", "--out", tmp_path / "cap")
     assert r.returncode == 2 and "after 2 draws" in r.stderr and r.stderr.count("\n") == 1

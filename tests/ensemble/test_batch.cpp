@@ -38,13 +38,16 @@ Nominal racket(TorqueKind torque) {
   n.omega_body = Vec3(0.02, 3.0, 0.05);
   n.R = test::random_rotation();
   n.torque = torque;
-  n.torque_value = torque == TorqueKind::body ? Vec3(0.01, -0.02, 0.03) : Vec3::Zero();
+  n.torque_value = torque == TorqueKind::body    ? Vec3(0.01, -0.02, 0.03)
+                   : torque == TorqueKind::space ? Vec3(-0.02, 0.01, 0.04)
+                                                 : Vec3::Zero();
   return n;
 }
 
-// Bit for bit against the scalar integrators: rk4 for aligned axes (its principal-frame path), dlm always.
+// Bit for bit against the scalar integrators: rk4 for aligned axes (its principal-frame path), dlm always;
+// free, under a torque constant in the body frame and one constant in space.
 TEST(Batch, LanesEqualTheScalarIntegratorsBitForBit) {
-  for (TorqueKind torque : {TorqueKind::none, TorqueKind::body}) {
+  for (TorqueKind torque : {TorqueKind::none, TorqueKind::body, TorqueKind::space}) {
     Dispersions d;
     d.moments = {Law::normal, 0.05, true};
     d.omega = {Law::normal, 0.1, false};
@@ -63,8 +66,10 @@ TEST(Batch, LanesEqualTheScalarIntegratorsBitForBit) {
           for (std::size_t l = 0; l < count; ++l) {
             const dynamics::State x = scalar_run(method, (*set)[first + l], t_end, dt);
             if (bitwise) {
-              EXPECT_EQ(r[l].final_state.R_space_body, x.R_space_body) << method << " sample " << first + l;
-              EXPECT_EQ(r[l].final_state.omega_body, x.omega_body) << method << " sample " << first + l;
+              EXPECT_EQ(r[l].final_state.R_space_body, x.R_space_body)
+                  << method << " sample " << first + l << " torque " << static_cast<int>(torque);
+              EXPECT_EQ(r[l].final_state.omega_body, x.omega_body)
+                  << method << " sample " << first + l << " torque " << static_cast<int>(torque);
             } else {
               // Another frame, another rounding: agreement to round-off amplified over 100 steps (1e-12),
               // far below rk4's error at this step (~1e-8).
@@ -83,18 +88,20 @@ TEST(Batch, SimdAndPortablePathsAndBatchCompositionGiveIdenticalResults) {
   d.moments = {Law::uniform, 0.2, true};
   d.axes = {RotationLaw::normal, 0.05};
   d.omega = {Law::normal, 0.5, false};
-  const auto samples = draw(racket(TorqueKind::body), d, kBatchLanes);
-  for (const char* method : {"rk4", "dlm"}) {
-    std::vector<LaneResult> a(kBatchLanes), b(kBatchLanes), c(5);
-    run_batch(method, samples, 1.0, 0.01, Simd::automatic, a);
-    run_batch(method, samples, 1.0, 0.01, Simd::off, b);
-    run_batch(method, std::span(samples).subspan(7, 5), 1.0, 0.01, Simd::off, c);
-    for (int l = 0; l < kBatchLanes; ++l) {
-      const auto i = static_cast<std::size_t>(l);
-      EXPECT_EQ(a[i].final_state.R_space_body, b[i].final_state.R_space_body) << method;
-      EXPECT_EQ(a[i].final_state.omega_body, b[i].final_state.omega_body) << method;
-      if (l >= 7 && l < 12) {
-        EXPECT_EQ(a[i].final_state.R_space_body, c[i - 7].final_state.R_space_body) << method;
+  for (TorqueKind torque : {TorqueKind::body, TorqueKind::space}) {
+    const auto samples = draw(racket(torque), d, kBatchLanes);
+    for (const char* method : {"rk4", "dlm"}) {
+      std::vector<LaneResult> a(kBatchLanes), b(kBatchLanes), c(5);
+      run_batch(method, samples, 1.0, 0.01, Simd::automatic, a);
+      run_batch(method, samples, 1.0, 0.01, Simd::off, b);
+      run_batch(method, std::span(samples).subspan(7, 5), 1.0, 0.01, Simd::off, c);
+      for (int l = 0; l < kBatchLanes; ++l) {
+        const auto i = static_cast<std::size_t>(l);
+        EXPECT_EQ(a[i].final_state.R_space_body, b[i].final_state.R_space_body) << method;
+        EXPECT_EQ(a[i].final_state.omega_body, b[i].final_state.omega_body) << method;
+        if (l >= 7 && l < 12) {
+          EXPECT_EQ(a[i].final_state.R_space_body, c[i - 7].final_state.R_space_body) << method;
+        }
       }
     }
   }
@@ -129,7 +136,17 @@ TEST(Batch, RefusesWhatItCannotRun) {
   std::vector<LaneResult> r(2);
   EXPECT_THROW(run_batch("dop853", samples, 1.0, 0.1, Simd::automatic, r), InvalidInput);
   EXPECT_THROW(run_batch("rk4", samples, -1.0, 0.1, Simd::automatic, r), InvalidInput);
-  EXPECT_FALSE(batchable("rk4", Sampler(racket(TorqueKind::space), {}, 1).nominal()));
+  EXPECT_TRUE(batchable("rk4", Sampler(racket(TorqueKind::space), {}, 1).nominal()));
+  Nominal top = racket(TorqueKind::gravity);
+  top.torque_value = Vec3(0.0, 0.0, -9.81);
+  top.mass = 1.0;
+  top.has_pivot = true;
+  top.pivot_to_com = Vec3(0.0, 0.0, 0.1);
+  EXPECT_FALSE(batchable("dlm", Sampler(top, {}, 1).nominal()));
+  // One kind of torque per batch: body-frame and space-frame lanes together are refused.
+  const std::vector<Sample> mixed = {draw(racket(TorqueKind::body), {}, 1)[0],
+                                     draw(racket(TorqueKind::space), {}, 1)[0]};
+  EXPECT_THROW(run_batch("dlm", mixed, 1.0, 0.1, Simd::automatic, r), InvalidInput);
 }
 
 }  // namespace

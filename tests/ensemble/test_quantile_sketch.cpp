@@ -109,15 +109,32 @@ TEST(QuantileSketch, MergingInAnyOrderGivesTheSameBits) {
 }
 
 TEST(QuantileSketch, MemoryIsBoundedByTheRangeNotTheCount) {
-  // 10^5 values in [1, 10]: at most ln 10 / ln γ + 1 buckets (≈ 1152), however many values.
+  // Values in [1, 10]: at most R = ln 10 / ln γ + 1 buckets (≈ 1152) occupied, and the storage (counted, not
+  // timed) at most R + 2 max(16, R/8) (the header's bound): the same after 10^5 and 10^6 values.
   QuantileSketch s;
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(1.0, 10.0);
-  for (int i = 0; i < 100000; ++i)
-    s.add(u(rng));
   const double gamma = (1.0 + kAlpha) / (1.0 - kAlpha);
-  EXPECT_LE(static_cast<double>(s.buckets().size()), std::log(10.0) / std::log(gamma) + 2.0);
+  const double range = std::log(10.0) / std::log(gamma) + 2.0;
+  std::size_t storage_1e5 = 0;
+  for (int i = 0; i < 1000000; ++i) {
+    s.add(u(rng));
+    if (i + 1 == 100000) storage_1e5 = s.storage_buckets();
+  }
+  EXPECT_LE(static_cast<double>(s.buckets().size()), range);
   EXPECT_GT(s.buckets().size(), 1000u);  // and the buckets are used: the bound is not vacuous
+  EXPECT_LE(static_cast<double>(s.storage_buckets()), 1.25 * range + 32.0);
+  EXPECT_EQ(s.storage_buckets(), storage_1e5);
+  // A range filled one bucket at a time from both ends (the tails of an ensemble's outputs fill so): the
+  // storage of each sign stays within R + 2 max(16, R/8), R = n.
+  QuantileSketch tails;
+  const int n = 20000;  // buckets, about 17 decades each side
+  for (int i = 0; i < n; ++i) {
+    tails.add(std::pow(gamma, i - 0.5));    // mid-bucket: bucket i
+    tails.add(-std::pow(gamma, -i - 0.5));  // bucket −i of the negative store
+  }
+  EXPECT_EQ(tails.buckets().size(), static_cast<std::size_t>(2 * n));
+  EXPECT_LE(static_cast<double>(tails.storage_buckets()), 2.0 * (1.25 * n + 32.0));
 }
 
 Sampler racket() {

@@ -128,6 +128,19 @@ TEST(Runner, ExactAndScalarPathsAgreeWithTheClosedFormAndTheTorquedPath) {
   const SampleRow b = run_sample(t, 5, opts(1, "dop853", 2.0));
   EXPECT_LT(test::max_abs_diff(a.final_state.omega_body, b.final_state.omega_body), 1e-9);
   EXPECT_TRUE(std::isnan(a.out[L_space_error]));
+  // Constant space torque, batched too, against dop853 (rtol 1e-10): rk4 (order 4, h = 1e-3) to 1e-9 as
+  // under the body torque above (1e-13 measured), dlm (order 2) to 2e-5, ten times its h² error (2e-6).
+  const Sampler sp = racket_sampler(TorqueKind::space);
+  EXPECT_NE(run_ensemble(sp, opts(3, "dlm", 0.01)).path.find("batched"), std::string::npos);
+  const SampleRow c = run_sample(sp, 5, opts(1, "dop853", 2.0));
+  const SampleRow r4 = run_sample(sp, 5, opts(1, "rk4", 2.0));
+  const SampleRow dl = run_sample(sp, 5, opts(1, "dlm", 2.0));
+  EXPECT_LT(test::max_abs_diff(r4.final_state.omega_body, c.final_state.omega_body), 1e-9);
+  EXPECT_LT(test::max_abs_diff(r4.final_state.R_space_body, c.final_state.R_space_body), 1e-9);
+  EXPECT_LT(test::max_abs_diff(dl.final_state.omega_body, c.final_state.omega_body), 2e-5);
+  // The torque acts: the free sample ends elsewhere by far more than the tolerances.
+  const SampleRow free = run_sample(s, 5, opts(1, "dop853", 2.0));
+  EXPECT_GT(test::max_abs_diff(c.final_state.omega_body, free.final_state.omega_body), 1e-3);
 }
 
 TEST(Runner, StopsBetweenRoundsKeepingCompleteRows) {
@@ -157,23 +170,22 @@ TEST(Runner, RefusesBadOptionsBeforeAllocating) {
 namespace poinsot::ensemble {
 namespace {
 
-// The distributed invariant (MPI ranks): blocks run in separate calls and merged in block order give the
+// The distributed invariant (MPI ranks): blocks run in separate calls and merged in the block tree give the
 // statistics of one run bit for bit, and the rows of the two shares are the rows of the whole.
-TEST(Runner, BlockRangesMergedInOrderEqualOneRun) {
-  const EnsembleOptions o = opts(2100, "dlm", 0.2, 0.01);  // three blocks
+TEST(Runner, BlockRangesMergedInTheTreeEqualOneRun) {
+  const EnsembleOptions o = opts(3100, "dlm", 0.2, 0.01);  // four blocks, the last partial
   const EnsembleResult whole = run_ensemble(racket_sampler(), o);
-  std::vector<BlockSummary> blocks;
-  const std::uint64_t n = block_count(o.samples), split = n / 2;
-  const EnsembleResult a = run_ensemble_blocks(racket_sampler(), o, 0, split, &blocks);
-  const EnsembleResult b = run_ensemble_blocks(racket_sampler(), o, split, n, &blocks);
-  ASSERT_EQ(blocks.size(), n);
+  std::vector<BlockNode> nodes;
+  const std::uint64_t n = block_count(o.samples), split = 1;  // [0, 1) and [1, 4): not a subtree boundary
+  const EnsembleResult a = run_ensemble_blocks(racket_sampler(), o, 0, split, &nodes);
+  const EnsembleResult b = run_ensemble_blocks(racket_sampler(), o, split, n, &nodes);
+  ASSERT_EQ(nodes.size(), 3u);  // block 0 | block 1, blocks [2, 4)
   EXPECT_EQ(a.rows.size() + b.rows.size(), whole.rows.size());
   EXPECT_EQ(b.rows.front().index, split * kBlockSamples);
   EXPECT_EQ(b.rows.front().final_state.R_space_body,
             whole.rows[split * kBlockSamples].final_state.R_space_body);
   EnsembleResult merged;
-  for (const BlockSummary& block : blocks)
-    merge_block(merged, block);
+  set_statistics(merged, nodes, o.samples);
   for (int q = 0; q < kOutputCount; ++q)
     EXPECT_TRUE(same_bits(merged.stats[q], whole.stats[q])) << kOutputNames[q];
   EXPECT_EQ(merged.rejected, whole.rejected);

@@ -14,8 +14,9 @@
 /// bit. Whatever the SIMD width or the batch a sample lands in, its result is the same (lanes do not
 /// interact).
 ///
-/// Supported: free bodies (no pivot) under no torque or a constant body-frame torque. Other cases run through
-/// the scalar integrators (ensemble/runner.hpp).
+/// Supported: free bodies (no pivot) under no torque or a constant torque in the body frame or in space (the
+/// latter rotated into the principal frame at every evaluation, with the scalar integrators' arithmetic; one
+/// kind of torque per batch). Gravity (tops) runs through the scalar integrators (ensemble/runner.hpp).
 ///
 /// Steps: [0, t_end] in n = ⌈t_end/dt − 10⁻⁹⌉ equal steps h = t_end/n, as dynamics::simulate takes them for
 /// one sample interval. Each step tests the intermediate-axis component s = I₂ ω₂ of the body momentum
@@ -46,7 +47,8 @@ struct LaneResult {
   long long flips = 0;
 };
 
-/// True when `method` is rk4 or dlm and the sample is a free body under no torque or a body-frame torque.
+/// True when `method` is rk4 or dlm and the sample is a free body under no torque or a constant torque in the
+/// body frame or in space.
 bool batchable(std::string_view method, const Sample& sample);
 
 /// The number of steps n = ⌈t_end/dt − 10⁻⁹⌉ (at least 1) of a run to t_end with nominal step dt (s).
@@ -54,7 +56,7 @@ long long batch_step_count(double t_end, double dt);
 
 /// Advances up to kBatchLanes samples (all batchable with `method`) from t = 0 to t_end (s) with nominal step
 /// dt (s) and writes one LaneResult each. Throws InvalidInput for an unsupported method or sample, a bad
-/// t_end or dt, or more than kBatchLanes samples.
+/// t_end or dt, more than kBatchLanes samples, or body-frame and space-frame torques in one batch.
 void run_batch(std::string_view method, std::span<const Sample> samples, double t_end, double dt, Simd simd,
                std::span<LaneResult> results);
 

@@ -2,8 +2,8 @@
 /// @file runner.hpp
 /// Runs an ensemble: draws the samples (sampler.hpp), advances them to t_end by the batched kernels (rk4,
 /// dlm: batch.hpp), the closed form (exact: dynamics::ExactFreeBody, whose cost does not depend on t) or the
-/// scalar integrators through dynamics::simulate (any other method, torque or a top), and computes each
-/// sample's outputs on the fly:
+/// scalar integrators through dynamics::simulate (any other method, or a top under gravity), and computes
+/// each sample's outputs on the fly:
 ///   first_flip_time       s, the first sign change of the intermediate-axis momentum (NaN: none; exact: NaN)
 ///   flip_interval         s, between the first two flips (exact: the closed form)
 ///   flip_interval_theory  s, 2K(k)/ω_p of the sample (free_body_theory.hpp; NaN with a torque or no flips)
@@ -17,10 +17,11 @@
 ///   nutation_amplitude    rad, heavy tops: θ_max − θ_min of the axis's angle from the vertical
 ///
 /// Work is split into blocks of kBlockSamples consecutive samples; threads take whole blocks, and the
-/// statistics of the blocks are merged in block order after each round of blocks, so the results are
-/// bit-identical for any number of threads and with or without SIMD. Without stored rows the outputs are
-/// also counted in quantile sketches (integer counts: the same for any threads or ranks), for percentiles.
-/// Memory: the stored rows (when kept) plus O(threads · kBlockSamples) and the sketches' buckets,
+/// statistics of the blocks are merged in the fixed binary tree over the block indices (block_merge.hpp), so
+/// the results are bit-identical for any number of threads, MPI ranks and with or without SIMD. Without
+/// stored rows the outputs are also counted in quantile sketches (integer counts: the same for any threads or
+/// ranks), for percentiles. Memory: the stored rows (when kept) plus O(threads · kBlockSamples), O(log
+/// blocks) subtrees of block statistics and the sketches' buckets (bounded by the range of the values),
 /// independent of the number of samples otherwise.
 #include <array>
 #include <cstdint>
@@ -29,6 +30,7 @@
 #include <vector>
 
 #include "poinsot/ensemble/batch.hpp"
+#include "poinsot/ensemble/block_merge.hpp"
 #include "poinsot/ensemble/quantile_sketch.hpp"
 #include "poinsot/ensemble/sampler.hpp"
 #include "poinsot/ensemble/statistics.hpp"
@@ -101,18 +103,14 @@ struct EnsembleResult {
   SampleRow nominal;  ///< the undispersed sample
 };
 
-/// The statistics of one block of kBlockSamples consecutive samples (the unit of merging).
-struct BlockSummary {
-  std::uint64_t index = 0;  ///< block number: samples [index·kBlockSamples, (index + 1)·kBlockSamples)
-  std::array<RunningStats, kOutputCount> stats;
-  std::int64_t rejected = 0, repaired = 0;
-};
+static_assert(kOutputCount == kOutputSlots, "block_merge.hpp holds one RunningStats per output");
 
 /// The number of blocks of `samples` samples.
 std::uint64_t block_count(std::uint64_t samples);
-/// Merges a block into the result's statistics and counts. Merging every block in index order gives the
-/// statistics of run_ensemble bit for bit, however the blocks were distributed (threads, MPI ranks).
-void merge_block(EnsembleResult& result, const BlockSummary& block);
+/// Sets the result's statistics and validity counts to the root of the block tree (block_merge.hpp) from the
+/// complete subtrees `nodes` of a run of options.samples samples (of one or several run_ensemble_blocks):
+/// the statistics of run_ensemble bit for bit, however the blocks were distributed (threads, MPI ranks).
+void set_statistics(EnsembleResult& result, std::vector<BlockNode> nodes, std::uint64_t samples);
 
 /// Bytes of the stored rows for `samples` samples.
 std::uint64_t row_bytes(std::uint64_t samples);
@@ -123,11 +121,12 @@ std::uint64_t row_bytes(std::uint64_t samples);
 EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& options);
 
 /// Runs the blocks [first_block, last_block) of an ensemble of options.samples samples (rows of those samples
-/// only; `completed` counts them) and appends their summaries in order to `blocks` when not null: the share
-/// of one process of a distributed run. Throws like run_ensemble, and for a block range outside the samples.
+/// only; `completed` counts them; statistics of those blocks) and appends the complete subtrees of their
+/// summaries (BlockTree, at most 2⌈log₂ blocks⌉ + 1) to `nodes` when not null: the share of one process of
+/// a distributed run. Throws like run_ensemble, and for a block range outside the samples.
 EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions& options,
                                    std::uint64_t first_block, std::uint64_t last_block,
-                                   std::vector<BlockSummary>* blocks);
+                                   std::vector<BlockNode>* nodes);
 
 /// One sample alone (the same row run_ensemble computes for it).
 SampleRow run_sample(const Sampler& sampler, std::uint64_t index, const EnsembleOptions& options);
