@@ -38,10 +38,6 @@ struct LambdaOptions {
   bool json = false;
 };
 
-Vec3 vec3(const std::vector<double>& v) {
-  return Vec3(v[0], v[1], v[2]);
-}
-
 dynamics::RigidBody make_body(const LambdaOptions& o) {
   const bool axi = o.A != 0.0 || o.C != 0.0;
   if (axi == !o.moments.empty()) {
@@ -49,12 +45,12 @@ dynamics::RigidBody make_body(const LambdaOptions& o) {
         "lambda: body: got both --moments and --A/--C or neither; expected exactly one of --moments I1 I2 I3 "
         "or --A A --C C [--k x y z]");
   }
-  if (!axi) return dynamics::RigidBody::from_principal_moments(vec3(o.moments));
+  if (!axi) return dynamics::RigidBody::from_principal_moments(vec3_from_list(o.moments));
   if (!(o.A > 0.0) || !(o.C > 0.0)) {
     throw InvalidInput(fmt::format("lambda: --A {} --C {} kg·m²; expected both > 0", format_number(o.A),
                                    format_number(o.C)));
   }
-  const Vec3 k = vec3(o.k);
+  const Vec3 k = vec3_from_list(o.k);
   if (!(k.norm() > 0.0) || !k.allFinite()) {
     throw InvalidInput(fmt::format("lambda: --k {}; expected a finite non-zero vector", format_vector(k)));
   }
@@ -92,7 +88,7 @@ analysis::LambdaReport run_flags(const LambdaOptions& o) {
   }
   const dynamics::RigidBody body = make_body(o);
   dynamics::State initial;
-  initial.omega_body = vec3(o.omega0);
+  initial.omega_body = vec3_from_list(o.omega0);
   analysis::LambdaAnalysisOptions a;
   a.method = o.method;
   a.integrator.dt = o.dt;

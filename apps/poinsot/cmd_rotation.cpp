@@ -29,10 +29,6 @@ struct RotationOptions {
   std::string out_sequence = "ZYX";
 };
 
-Vec3 vec3(const std::vector<double>& v, std::size_t offset = 0) {
-  return Vec3(v[offset], v[offset + 1], v[offset + 2]);
-}
-
 double parse_number(const std::string& field, const std::string& text) {
   try {
     std::size_t used = 0;
@@ -63,9 +59,9 @@ void run(const RotationOptions& o) {
       m(i / 3, i % 3) = o.matrix[static_cast<std::size_t>(i)];
     R = so3::project_to_so3(m);
   } else if (!o.axis_angle.empty()) {
-    R = so3::rotation_from_axis_angle(vec3(o.axis_angle), o.axis_angle[3] * to_rad);
+    R = so3::rotation_from_axis_angle(vec3_from_list(o.axis_angle), o.axis_angle[3] * to_rad);
   } else if (!o.rotvec.empty()) {
-    R = so3::exp_checked(vec3(o.rotvec) * to_rad);
+    R = so3::exp_checked(vec3_from_list(o.rotvec) * to_rad);
   } else {
     const auto seq = so3::EulerSequence::parse(o.euler[0]);
     Vec3 a;

@@ -2,9 +2,13 @@
 // The sub-commands of the poinsot tool. Each cmd_<name>.cpp defines one register_<name> that adds its
 // sub-command to the app and sets its callback; register_commands (commands.cpp) calls them all. A callback
 // reports bad input by throwing poinsot::Error; main prints the message on one line and exits with status 2.
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "poinsot/core/types.hpp"
 
 namespace poinsot::cli {
 
@@ -37,5 +41,10 @@ void register_ensemble(CLI::App& app);
 /// Runs python/poinsot/plot.py on an output folder (cmd_run.cpp); its output goes to stderr when stdout
 /// carries JSON. Throws ComputationFailed when Python or the script fails.
 void make_plots(const std::string& dir, bool stdout_is_json);
+
+/// Three numbers of a list option, from `offset` on, as a vector (CLI11 has checked the option's length).
+inline Vec3 vec3_from_list(const std::vector<double>& v, std::size_t offset = 0) {
+  return Vec3(v[offset], v[offset + 1], v[offset + 2]);
+}
 
 }  // namespace poinsot::cli

@@ -297,7 +297,7 @@ void bind_methods(py::module_& m) {
   m.attr("DEFAULT_METHOD") = std::string(mb::multibody_method_name(mb::kDefaultMultibodyMethod));
 }
 
-void bind_scenario(py::module_& m) {
+void bind_multibody_scenario(py::module_& m) {
   py::class_<mb::Scenario>(m, "Scenario", POINSOT_DOC(file_multibody_scenario))
       .def_readwrite("system", &mb::Scenario::system, "The model.")
       .def_readwrite("initial", &mb::Scenario::initial, "The initial state (velocities already projected).")
@@ -393,7 +393,7 @@ void bind_multibody(py::module_& parent) {
   bind_observables(m);
   bind_rattle(m);
   bind_projected_rk4(m);
-  bind_scenario(m);
+  bind_multibody_scenario(m);
   bind_methods(m);
 }
 

@@ -248,7 +248,7 @@ void bind_problem(py::module_& m) {
       });
 }
 
-void bind_scenario(py::module_& m) {
+void bind_optimal_scenario(py::module_& m) {
   py::class_<io::OptimalScenario>(m, "OptimalScenario", POINSOT_DOC(file_io_optimal_scenario))
       .def(py::init(&scenario_of), py::arg("problem"),
            "A scenario around a problem given in Python (default collocation options, no output folder).")
@@ -308,7 +308,7 @@ void bind_optimal(py::module_& parent) {
                            "Optimal reorientation of one rigid body (the layer optimal/; "
                            "poinsot.optimize runs it): problems, scenario files with [optimal_control].");
   bind_problem(m);
-  bind_scenario(m);
+  bind_optimal_scenario(m);
   m.def(
       "_run",
       [](const io::OptimalScenario& sc, const std::string& out_dir) {

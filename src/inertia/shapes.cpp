@@ -12,8 +12,6 @@
 namespace poinsot::inertia {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 MassProperties diagonal(double mass, double jxx, double jyy, double jzz) {
   MassProperties out;
   out.mass = mass;
@@ -123,8 +121,8 @@ MassProperties capsule(double mass, double r, double L) {
   require_positive("capsule: mass", mass, "kg");
   require_positive("capsule: radius", r, "m");
   require_positive("capsule: length", L, "m");
-  const double vc = kPi * r * r * L;
-  const double vs = 4.0 / 3.0 * kPi * r * r * r;
+  const double vc = std::numbers::pi * r * r * L;
+  const double vs = 4.0 / 3.0 * std::numbers::pi * r * r * r;
   const double mc = mass * vc / (vc + vs);
   const double ms = mass * vs / (vc + vs);
   const double jzz = 0.5 * mc * r * r + 0.4 * ms * r * r;
@@ -167,34 +165,34 @@ double measure_of(const ShapeSpec& s) {
   if (k == "sphere") {
     if (s.hollow) {
       (void)spherical_shell(1.0, s.radius);
-      return 4.0 * kPi * s.radius * s.radius;
+      return 4.0 * std::numbers::pi * s.radius * s.radius;
     }
     (void)hollow_sphere(1.0, s.radius, s.inner_radius);
-    return 4.0 / 3.0 * kPi * (std::pow(s.radius, 3) - std::pow(s.inner_radius, 3));
+    return 4.0 / 3.0 * std::numbers::pi * (std::pow(s.radius, 3) - std::pow(s.inner_radius, 3));
   }
   if (k == "cylinder") {
     if (s.hollow) {
       (void)cylindrical_shell(1.0, s.radius, s.length);
-      return 2.0 * kPi * s.radius * s.length;
+      return 2.0 * std::numbers::pi * s.radius * s.length;
     }
     (void)cylinder(1.0, s.radius, s.length, s.inner_radius);
-    return kPi * (s.radius * s.radius - s.inner_radius * s.inner_radius) * s.length;
+    return std::numbers::pi * (s.radius * s.radius - s.inner_radius * s.inner_radius) * s.length;
   }
   if (k == "cone") {
     (void)cone(1.0, s.radius, s.height);
-    return kPi * s.radius * s.radius * s.height / 3.0;
+    return std::numbers::pi * s.radius * s.radius * s.height / 3.0;
   }
   if (k == "ellipsoid") {
     (void)ellipsoid(1.0, s.size);
-    return 4.0 / 3.0 * kPi * s.size.prod();
+    return 4.0 / 3.0 * std::numbers::pi * s.size.prod();
   }
   if (k == "capsule") {
     (void)capsule(1.0, s.radius, s.length);
-    return kPi * s.radius * s.radius * (s.length + 4.0 / 3.0 * s.radius);
+    return std::numbers::pi * s.radius * s.radius * (s.length + 4.0 / 3.0 * s.radius);
   }
   if (k == "torus") {
     (void)torus(1.0, s.major_radius, s.minor_radius);
-    return 2.0 * kPi * kPi * s.major_radius * s.minor_radius * s.minor_radius;
+    return 2.0 * std::numbers::pi * std::numbers::pi * s.major_radius * s.minor_radius * s.minor_radius;
   }
   throw InvalidInput(
       fmt::format("shape: got \"{}\", expected one of point, rod, plate, box, sphere, cylinder, "

@@ -10,8 +10,6 @@
 namespace poinsot::inertia {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// Arc of a circle of centre (rc, zc) and radius a from angle t0 to t1 in `n` pieces, appended to `p`
 /// without its first point (which the previous piece already placed) unless `first`.
 void arc(std::vector<Eigen::Vector2d>& p, double rc, double zc, double a, double t0, double t1, int n,
@@ -43,7 +41,7 @@ void append(TriangleMesh& into, const TriangleMesh& part, bool reversed) {
 
 std::vector<Eigen::Vector2d> sphere_profile(double radius, int rings) {
   std::vector<Eigen::Vector2d> p;
-  arc(p, 0.0, 0.0, radius, -kPi / 2, kPi / 2, rings, true);
+  arc(p, 0.0, 0.0, radius, -std::numbers::pi / 2, std::numbers::pi / 2, rings, true);
   return p;
 }
 
@@ -63,7 +61,7 @@ TriangleMesh revolve(const std::vector<Eigen::Vector2d>& profile, int segments, 
       std::fill(ring.begin(), ring.end(), idx);
     } else {
       for (std::size_t j = 0; j < n; ++j) {
-        const double phi = 2.0 * kPi * static_cast<double>(j) / static_cast<double>(n);
+        const double phi = 2.0 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(n);
         ring[j] = static_cast<std::int32_t>(m.vertices.size());
         m.vertices.emplace_back(q.x() * std::cos(phi), q.x() * std::sin(phi), q.y());
       }
@@ -136,14 +134,14 @@ TriangleMesh tessellate(const ShapeSpec& s, int segments) {
   if (k == "capsule") {
     const double h = 0.5 * s.length;
     std::vector<Eigen::Vector2d> p;
-    arc(p, 0.0, -h, s.radius, -kPi / 2, 0.0, std::max(1, rings / 2), true);
+    arc(p, 0.0, -h, s.radius, -std::numbers::pi / 2, 0.0, std::max(1, rings / 2), true);
     line(p, Eigen::Vector2d(s.radius, h), 1);
-    arc(p, 0.0, h, s.radius, 0.0, kPi / 2, std::max(1, rings / 2), false);
+    arc(p, 0.0, h, s.radius, 0.0, std::numbers::pi / 2, std::max(1, rings / 2), false);
     return revolve(p, segments);
   }
   if (k == "torus") {
     std::vector<Eigen::Vector2d> p;
-    arc(p, s.major_radius, 0.0, s.minor_radius, 0.0, 2.0 * kPi, segments, true);
+    arc(p, s.major_radius, 0.0, s.minor_radius, 0.0, 2.0 * std::numbers::pi, segments, true);
     p.pop_back();  // the loop closes on its first point
     return revolve(p, segments, true);
   }

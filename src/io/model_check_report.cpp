@@ -10,11 +10,11 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-json vec(const Vec3& v) {
+json json_vector(const Vec3& v) {
   return json::array({v[0], v[1], v[2]});
 }
-json mat(const Mat3& m) {
-  return json::array({vec(m.row(0)), vec(m.row(1)), vec(m.row(2))});
+json json_matrix(const Mat3& m) {
+  return json::array({json_vector(m.row(0)), json_vector(m.row(1)), json_vector(m.row(2))});
 }
 template <class T>
 json optional_number(const std::optional<T>& x) {
@@ -48,26 +48,26 @@ std::string model_check_json(const ModelCheck& check) {
     l["has_inertial"] = c.has_inertial;
     if (c.has_inertial) {
       l["mass"] = c.mass;
-      l["center_of_mass"] = vec(c.com_link);
-      l["inertia_com"] = mat(c.inertia_link);
-      l["principal_moments"] = vec(c.principal.moments);
-      l["principal_axes"] = mat(c.principal.axes);
+      l["center_of_mass"] = json_vector(c.com_link);
+      l["inertia_com"] = json_matrix(c.inertia_link);
+      l["principal_moments"] = json_vector(c.principal.moments);
+      l["principal_axes"] = json_matrix(c.principal.axes);
       l["valid"] = c.validity.valid;
       l["condition"] = c.validity.condition;
       l["amount"] = c.validity.amount;
       l["message"] = c.validity.message;
-      l["repair"] = c.repair ? json{{"inertia", mat(c.repair->inertia)},
-                                    {"moments_before", vec(c.repair->moments_before)},
-                                    {"moments_after", vec(c.repair->moments_after)},
+      l["repair"] = c.repair ? json{{"inertia", json_matrix(c.repair->inertia)},
+                                    {"moments_before", json_vector(c.repair->moments_before)},
+                                    {"moments_after", json_vector(c.repair->moments_after)},
                                     {"distance", c.repair->distance}}
                              : json(nullptr);
       l["geometry"] = c.geometry ? json{{"source", c.geometry->source},
                                         {"volume", c.geometry->volume},
                                         {"mass", c.geometry->props.mass},
-                                        {"center_of_mass", vec(c.geometry->props.com)},
-                                        {"inertia_com", mat(c.geometry->props.inertia_com)},
-                                        {"box_min", vec(c.geometry->box_min)},
-                                        {"box_max", vec(c.geometry->box_max)}}
+                                        {"center_of_mass", json_vector(c.geometry->props.com)},
+                                        {"inertia_com", json_matrix(c.geometry->props.inertia_com)},
+                                        {"box_min", json_vector(c.geometry->box_min)},
+                                        {"box_max", json_vector(c.geometry->box_max)}}
                                  : json(nullptr);
       l["implied_density"] = optional_number(c.implied_density);
       l["trace_ratio"] = optional_number(c.trace_ratio);

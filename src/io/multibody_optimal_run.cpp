@@ -14,13 +14,12 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/io/summary.hpp"
+#include "report_format.hpp"
 
 namespace poinsot::io {
 namespace {
 
-std::string num(double v, int digits = 6) {
-  return format_number(v, digits);
-}
+using detail::report_number;
 
 /// The actuator's name in the files: the joint's (hinge motor, ball-joint torque) or the body's.
 std::string actuator_name(const optimal::MultibodyProblem& p, const optimal::Actuator& a) {
@@ -98,8 +97,8 @@ MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& sc) {
       failure = fmt::format(
           "the re-simulated control misses the target (attitude {} rad, position {} m, velocity {}; "
           "tolerance {}): expected more intervals",
-          num(r.replay.attitude_error, 3), num(r.replay.position_error, 3), num(r.replay.velocity_error, 3),
-          num(sc.target_tolerance, 3));
+          report_number(r.replay.attitude_error, 3), report_number(r.replay.position_error, 3),
+          report_number(r.replay.velocity_error, 3), report_number(sc.target_tolerance, 3));
     }
   } catch (const ComputationFailed& e) {
     if (failure.empty()) failure = fmt::format("the re-simulation failed: {}", e.what());
@@ -121,30 +120,31 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
   out << fmt::format(
       "objective: minimum_energy (∫ Σ u² dt) at T = {} s; {} coordinates, Hermite–Simpson on {} "
       "intervals, Ipopt\n",
-      num(p.final_time, 12), coordinates_name(sc.options.coordinates), p.intervals);
+      report_number(p.final_time, 12), coordinates_name(sc.options.coordinates), p.intervals);
   out << "actuators:";
   for (const optimal::Actuator& a : p.actuators) {
     out << fmt::format("{} {} ({}, |u| ≤ {} N·m)", &a == &p.actuators.front() ? "" : ",", actuator_name(p, a),
-                       actuator_kind_text(a.kind), num(a.torque_max));
+                       actuator_kind_text(a.kind), report_number(a.torque_max));
   }
   for (const optimal::RateBound& b : p.rate_bounds) {
     out << fmt::format("\nrate bound: |q̇ {}| ≤ {} rad/s",
-                       p.system.joints()[static_cast<std::size_t>(b.joint)].name, num(b.rate_max));
+                       p.system.joints()[static_cast<std::size_t>(b.joint)].name, report_number(b.rate_max));
   }
   out << "\nstatus: " << r.status << "\n\n";
   out << fmt::format("solution: {}; {} Ipopt iterations, cost {} N²·m²·s, largest constraint row {}\n",
-                     o.status, o.nlp_iterations, num(o.cost, 12), num(o.max_constraint_error, 3));
+                     o.status, o.nlp_iterations, report_number(o.cost, 12),
+                     report_number(o.max_constraint_error, 3));
   const std::vector<std::string> columns = control_columns(p);
   for (std::size_t c = 0; c < columns.size(); ++c) {
     double peak = 0.0;
     for (const Eigen::VectorXd& u : o.controls)
       peak = std::max(peak, std::abs(u(static_cast<Eigen::Index>(c))));
-    out << fmt::format("  peak |{}| {} N·m\n", columns[c], num(peak));
+    out << fmt::format("  peak |{}| {} N·m\n", columns[c], report_number(peak));
   }
   for (const optimal::RateBound& b : p.rate_bounds) {
     out << fmt::format("  peak |q̇ {}| {} rad/s (bound {})\n",
-                       p.system.joints()[static_cast<std::size_t>(b.joint)].name, num(peak_rate(r, b.joint)),
-                       num(b.rate_max));
+                       p.system.joints()[static_cast<std::size_t>(b.joint)].name,
+                       report_number(peak_rate(r, b.joint)), report_number(b.rate_max));
   }
   for (std::size_t j = 0; j < p.system.joints().size(); ++j) {
     double force = 0.0, couple = 0.0;
@@ -152,18 +152,20 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
       force = std::max(force, m.joint_force_space[j].norm());
       couple = std::max(couple, m.joint_torque_space[j].norm());
     }
-    out << fmt::format("  joint {}: peak reaction {} N, {} N·m\n", p.system.joints()[j].name, num(force),
-                       num(couple));
+    out << fmt::format("  joint {}: peak reaction {} N, {} N·m\n", p.system.joints()[j].name,
+                       report_number(force), report_number(couple));
   }
   const auto& rp = r.replay;
   out << fmt::format(
       "\nre-simulation (projected RK4, {} steps): attitude error {} rad, position error {} m, velocity error "
       "{}; joint gap {} m, ‖RᵀR − I‖ {}\n",
-      rp.steps, num(rp.attitude_error, 3), num(rp.position_error, 3), num(rp.velocity_error, 3),
-      num(rp.max_joint_gap, 3), num(rp.max_orthogonality, 3));
+      rp.steps, report_number(rp.attitude_error, 3), report_number(rp.position_error, 3),
+      report_number(rp.velocity_error, 3), report_number(rp.max_joint_gap, 3),
+      report_number(rp.max_orthogonality, 3));
   out << fmt::format("  target {} (tolerance {} rad, {} m, {} for the velocities)\n",
-                     r.target_reached ? "reached" : "NOT reached", num(sc.target_tolerance, 3),
-                     num(sc.target_tolerance * p.system.length_scale(), 3), num(velocity_bound(sc), 3));
+                     r.target_reached ? "reached" : "NOT reached", report_number(sc.target_tolerance, 3),
+                     report_number(sc.target_tolerance * p.system.length_scale(), 3),
+                     report_number(velocity_bound(sc), 3));
   return out.str();
 }
 

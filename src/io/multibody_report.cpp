@@ -13,23 +13,18 @@
 #include "poinsot/io/multibody_run.hpp"
 #include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/observables.hpp"
+#include "report_format.hpp"
 
 namespace poinsot::io {
 namespace {
+
+using detail::report_number;
+using detail::report_vector;
 
 using multibody::MultibodyMethod;
 
 /// How many rows of the reaction and multiplier tables the report shows; the files hold them all.
 constexpr std::size_t kTableRows = 5;
-
-/// A physical quantity: 6 significant digits, as the single-body report.
-std::string g(double x) {
-  return format_number(x, 6);
-}
-
-std::string vec(const Vec3& v) {
-  return fmt::format("({}, {}, {})", g(v[0]), g(v[1]), g(v[2]));
-}
 
 /// An error or a residual: its order of magnitude is what matters.
 std::string err(double x) {
@@ -96,7 +91,7 @@ std::string format_multibody_report(const multibody::Scenario& sc, const Multibo
   if (!sc.title.empty()) fmt::format_to(o, "  {}\n", sc.title);
 
   fmt::format_to(o, "\nsystem\n  bodies {}, joints {} ({} constraint rows), gravity {} m/s²\n",
-                 sys.body_count(), sys.joint_count(), sys.constraint_rows(), vec(sys.gravity()));
+                 sys.body_count(), sys.joint_count(), sys.constraint_rows(), report_vector(sys.gravity()));
   fmt::format_to(o, "  solver: {}\n", multibody::kkt_method_description(r.kkt_method));
   // Each body's description, a run of identical ones said once.
   for (std::size_t i = 0; i < sc.body_descriptions.size() && i < sys.bodies().size();) {
@@ -114,19 +109,21 @@ std::string format_multibody_report(const multibody::Scenario& sc, const Multibo
   }
 
   fmt::format_to(o, "\nrun\n  method: {}\n", method_description(sc));
-  fmt::format_to(o, "  dt = {} s, duration = {} s, a row every {} steps ({} rows)\n", g(sc.dt),
-                 g(sc.duration), sc.output_every, s.rows);
+  fmt::format_to(o, "  dt = {} s, duration = {} s, a row every {} steps ({} rows)\n", report_number(sc.dt),
+                 report_number(sc.duration), sc.output_every, s.rows);
   if (!r.failure.empty()) fmt::format_to(o, "  FAILED: {}\n", r.failure);
   if (r.interrupted)
-    fmt::format_to(o, "  INTERRUPTED at t = {} s (the files are complete up to there)\n", g(st.time));
-  fmt::format_to(o, "  final: t = {} s after {} steps\n", g(st.time), r.steps);
+    fmt::format_to(o, "  INTERRUPTED at t = {} s (the files are complete up to there)\n",
+                   report_number(st.time));
+  fmt::format_to(o, "  final: t = {} s after {} steps\n", report_number(st.time), r.steps);
 
   fmt::format_to(o, "\nconserved quantities and constraints (worst over every step)\n");
-  fmt::format_to(o, "  energy             E0 = {} J, final {} J, max |E − E0| = {} J\n", g(r.energy_initial),
-                 g(r.energy_final), err(r.max_energy_error));
-  fmt::format_to(o, "  linear momentum    final {} kg·m/s\n", vec(multibody::linear_momentum(sys, st)));
+  fmt::format_to(o, "  energy             E0 = {} J, final {} J, max |E − E0| = {} J\n",
+                 report_number(r.energy_initial), report_number(r.energy_final), err(r.max_energy_error));
+  fmt::format_to(o, "  linear momentum    final {} kg·m/s\n",
+                 report_vector(multibody::linear_momentum(sys, st)));
   fmt::format_to(o, "  angular momentum   final {} kg·m²/s (about the origin)\n",
-                 vec(multibody::angular_momentum(sys, st)));
+                 report_vector(multibody::angular_momentum(sys, st)));
   fmt::format_to(o, "  joint gap          {} m\n", err(r.max_joint_gap));
   fmt::format_to(o, "  joint angle        {} rad\n", err(r.max_joint_angle));
   fmt::format_to(o, "  |RᵀR − I|          {} (largest entry)\n", err(r.max_orthogonality));
@@ -138,27 +135,28 @@ std::string format_multibody_report(const multibody::Scenario& sc, const Multibo
     const multibody::ExactMultipliers& ex = *s.final_multipliers;
     const std::size_t nj = sys.joints().size();
     if (nj > 0) {
-      fmt::format_to(o, "\njoint reactions at t = {} s, on body a at the joint, space frame{}\n", g(st.time),
-                     selection_note(nj, "|F|", s.reactions_file));
+      fmt::format_to(o, "\njoint reactions at t = {} s, on body a at the joint, space frame{}\n",
+                     report_number(st.time), selection_note(nj, "|F|", s.reactions_file));
       std::vector<std::vector<std::string>> rows = {
           {"joint", "on body", "|F| (N)", "F (N)", "|couple| (N·m)"}};
       for (std::size_t j : largest(nj, [&](std::size_t k) { return ex.joint_force_space[k].norm(); })) {
         const multibody::Joint& joint = sys.joints()[j];
         rows.push_back({"'" + joint.name + "'",
                         "'" + sys.bodies()[static_cast<std::size_t>(joint.body_a)].name + "'",
-                        g(ex.joint_force_space[j].norm()), vec(ex.joint_force_space[j]),
-                        g(ex.joint_torque_space[j].norm())});
+                        report_number(ex.joint_force_space[j].norm()), report_vector(ex.joint_force_space[j]),
+                        report_number(ex.joint_torque_space[j].norm())});
       }
       print_table(o, rows);
     }
     const std::size_t nb = sys.bodies().size();
-    fmt::format_to(o, "\nmultipliers Λ at t = {} s, body frame{}\n", g(st.time),
+    fmt::format_to(o, "\nmultipliers Λ at t = {} s, body frame{}\n", report_number(st.time),
                    selection_note(nb, "‖Λ‖_F", s.multipliers_file));
     std::vector<std::vector<std::string>> rows = {
         {"body", "x (m)", "‖Λ‖_F (J)", "eigenvalues of sym Λ (J), ascending"}};
     for (std::size_t i : largest(nb, [&](std::size_t k) { return ex.Lambda_body[k].norm(); })) {
-      rows.push_back({"'" + sys.bodies()[i].name + "'", vec(st.bodies[i].x_space),
-                      g(ex.Lambda_body[i].norm()), vec(analysis::sorted_eigenvalues(ex.Lambda_body[i]))});
+      rows.push_back({"'" + sys.bodies()[i].name + "'", report_vector(st.bodies[i].x_space),
+                      report_number(ex.Lambda_body[i].norm()),
+                      report_vector(analysis::sorted_eigenvalues(ex.Lambda_body[i]))});
     }
     print_table(o, rows);
   }

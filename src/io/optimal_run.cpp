@@ -14,30 +14,26 @@ namespace poinsot::io {
 
 namespace {
 
-std::string num(double v) {
-  return format_number(v);
-}
-
 // "t,v1x,v1y,v1z,...,extra...\n" (std::string::append: GCC 12 reports a false -Wrestrict on "," + string).
 std::string csv_row(double t, std::initializer_list<Vec3> vs, std::initializer_list<double> extra = {}) {
-  std::string s = num(t);
+  std::string s = format_number(t);
   for (const auto& v : vs)
     for (int i = 0; i < 3; ++i)
-      s.append(",").append(num(v[i]));
+      s.append(",").append(format_number(v[i]));
   for (double x : extra)
-    s.append(",").append(num(x));
+    s.append(",").append(format_number(x));
   return s.append("\n");
 }
 
 // "t,qw,qx,qy,qz,ω,u,L\n"
 std::string trajectory_row(double t, const Quat& q, const Vec3& w, const Vec3& u, const Vec3& L) {
-  std::string s = num(t);
+  std::string s = format_number(t);
   for (double c : {q.w(), q.x(), q.y(), q.z()})
-    s.append(",").append(num(c));
-  return s.append(csv_row(t, {w, u, L}).substr(num(t).size()));
+    s.append(",").append(format_number(c));
+  return s.append(csv_row(t, {w, u, L}).substr(format_number(t).size()));
 }
 
-nlohmann::ordered_json vec(const Vec3& v) {
+nlohmann::ordered_json ordered_array(const Vec3& v) {
   return {v[0], v[1], v[2]};
 }
 
@@ -71,12 +67,12 @@ std::string optimal_report(const OptimalRun& r) {
   o << "body: " << r.scenario.body_description << "\n";
   o << "objective: " << optimal::objective_name(p.objective);
   if (p.objective == optimal::Objective::minimum_time_regularised)
-    o << " (T + " << num(p.energy_weight) << " ∫‖u‖²dt: a smoothed minimum-time problem)";
+    o << " (T + " << format_number(p.energy_weight) << " ∫‖u‖²dt: a smoothed minimum-time problem)";
   o << "; torque bound "
     << (p.bound == optimal::TorqueBound::per_axis ? "per axis " + format_vector(p.torque_max)
-                                                  : "norm " + num(p.torque_max[0]))
+                                                  : "norm " + format_number(p.torque_max[0]))
     << " N·m";
-  if (p.has_rate_bound()) o << "; rate bound " << num(p.rate_max) << " rad/s";
+  if (p.has_rate_bound()) o << "; rate bound " << format_number(p.rate_max) << " rad/s";
   o << "\nstatus: " << r.status << "\n\n";
   o << fmt::format(
       "direct (Hermite–Simpson, Ipopt): {}; {} intervals after {} mesh iterations, mesh error {}, "
@@ -136,12 +132,12 @@ std::string optimal_summary_json(const OptimalRun& r) {
   const Quat& qf = p.attitude_final;
   j["problem"] = {
       {"torque_bound", p.bound == optimal::TorqueBound::per_axis ? "per_axis" : "norm"},
-      {"torque_max", p.bound == optimal::TorqueBound::per_axis ? vec(p.torque_max)
+      {"torque_max", p.bound == optimal::TorqueBound::per_axis ? ordered_array(p.torque_max)
                                                                : nlohmann::ordered_json(p.torque_max[0])},
       {"rate_max", p.has_rate_bound() ? nlohmann::ordered_json(p.rate_max) : nlohmann::ordered_json()},
       {"free_final_attitude", p.free_final_attitude},
       {"attitude_final", {qf.w(), qf.x(), qf.y(), qf.z()}},
-      {"omega_final", vec(p.omega_final)}};
+      {"omega_final", ordered_array(p.omega_final)}};
   j["direct"] = {{"converged", r.direct.converged},
                  {"status", r.direct.status},
                  {"final_time", r.direct.final_time},
@@ -149,14 +145,15 @@ std::string optimal_summary_json(const OptimalRun& r) {
                  {"intervals", r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1},
                  {"mesh_error", r.direct.max_mesh_error},
                  {"nlp_iterations", r.direct.nlp_iterations}};
-  nlohmann::ordered_json ind = {{"converged", r.indirect.converged},
-                                {"status", r.indirect.status},
-                                {"final_time", r.indirect.final_time},
-                                {"cost", r.indirect.cost},
-                                {"residual", r.indirect.residual},
-                                {"iterations", r.indirect.iterations},
-                                {"costate_attitude_initial", vec(r.indirect.costate_attitude_initial)},
-                                {"costate_omega_initial", vec(r.indirect.costate_omega_initial)}};
+  nlohmann::ordered_json ind = {
+      {"converged", r.indirect.converged},
+      {"status", r.indirect.status},
+      {"final_time", r.indirect.final_time},
+      {"cost", r.indirect.cost},
+      {"residual", r.indirect.residual},
+      {"iterations", r.indirect.iterations},
+      {"costate_attitude_initial", ordered_array(r.indirect.costate_attitude_initial)},
+      {"costate_omega_initial", ordered_array(r.indirect.costate_omega_initial)}};
   ind["switches"] = nlohmann::ordered_json::array();
   for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k)
     ind["switches"].push_back(

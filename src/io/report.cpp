@@ -7,17 +7,13 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/format.hpp"
+#include "report_format.hpp"
 
 namespace poinsot::io {
 namespace {
 
-std::string g(double x, int digits = 6) {
-  return format_number(x, digits);
-}
-
-std::string vec(const Vec3& v, int digits = 6) {
-  return fmt::format("({}, {}, {})", g(v[0], digits), g(v[1], digits), g(v[2], digits));
-}
+using detail::report_number;
+using detail::report_vector;
 
 std::string symmetry_note(const std::string& sym) {
   if (sym == "asymmetric")
@@ -42,24 +38,24 @@ std::string format_report(const RunSummary& s) {
   if (!s.title.empty()) fmt::format_to(o, "  {}\n", s.title);
   fmt::format_to(o, "\nbody\n  given as: {}\n", s.body_description);
   fmt::format_to(o, "  principal moments I1, I2, I3 = {} kg·m² about the rotation point\n",
-                 vec(s.principal_moments, 7));
+                 report_vector(s.principal_moments, 7));
   fmt::format_to(o, "  symmetry: {}\n", symmetry_note(s.symmetry));
   fmt::format_to(o, "  torque: {}\n", s.torque);
 
   fmt::format_to(o, "\ninitial state (t = 0)\n");
-  fmt::format_to(o, "  omega_body = {} rad/s, |omega| = {} rad/s\n", vec(s.initial.omega_body),
-                 g(s.initial.omega_body.norm()));
-  fmt::format_to(o, "  energy E0 = {} J, L_space = {} kg·m²/s, |L| = {} kg·m²/s\n", g(s.energy0, 9),
-                 vec(s.L_space0), g(s.L_space0.norm(), 9));
+  fmt::format_to(o, "  omega_body = {} rad/s, |omega| = {} rad/s\n", report_vector(s.initial.omega_body),
+                 report_number(s.initial.omega_body.norm()));
+  fmt::format_to(o, "  energy E0 = {} J, L_space = {} kg·m²/s, |L| = {} kg·m²/s\n",
+                 report_number(s.energy0, 9), report_vector(s.L_space0), report_number(s.L_space0.norm(), 9));
 
   fmt::format_to(o, "\nrun\n  method {}, t_end = {} s, a sample every {} s ({} samples)\n", s.method,
-                 g(s.t_end), g(s.sample_dt), s.samples);
+                 report_number(s.t_end), report_number(s.sample_dt), s.samples);
   if (!s.failure.empty()) fmt::format_to(o, "  FAILED: {}\n", s.failure);
   if (r.interrupted)
     fmt::format_to(o, "  INTERRUPTED at t = {} s (the files are complete up to there)\n",
-                   g(r.final_state.time));
-  fmt::format_to(o, "  final: t = {} s, omega_body = {} rad/s\n", g(r.final_state.time),
-                 vec(r.final_state.omega_body));
+                   report_number(r.final_state.time));
+  fmt::format_to(o, "  final: t = {} s, omega_body = {} rad/s\n", report_number(r.final_state.time),
+                 report_vector(r.final_state.omega_body));
 
   fmt::format_to(o, "\ninvariants: worst relative error over the run\n");
   fmt::format_to(o, "  energy            {:.2e}\n", r.errors.energy_rel_max);
@@ -77,24 +73,25 @@ std::string format_report(const RunSummary& s) {
       std::string list;
       const std::size_t shown = std::min<std::size_t>(flips.size(), 12);
       for (std::size_t i = 0; i < shown; ++i)
-        list += (i ? ", " : "") + g(flips[i], 6);
+        list += (i ? ", " : "") + report_number(flips[i], 6);
       if (shown < flips.size()) list += ", ...";
       fmt::format_to(o, "    at t = {} s\n", list);
     }
     if (flips.size() >= 2) {
       const double mean = (flips.back() - flips.front()) / static_cast<double>(flips.size() - 1);
-      fmt::format_to(o, "    interval between flips: measured {} s (mean)", g(mean, 10));
+      fmt::format_to(o, "    interval between flips: measured {} s (mean)", report_number(mean, 10));
       if (s.flip_interval_theory) {
-        fmt::format_to(o, ", theory 2K(k)/ω_p = {} s, {}", g(*s.flip_interval_theory, 10),
+        fmt::format_to(o, ", theory 2K(k)/ω_p = {} s, {}", report_number(*s.flip_interval_theory, 10),
                        rel_diff(mean, *s.flip_interval_theory));
       }
       fmt::format_to(o, "\n");
     } else if (s.flip_interval_theory) {
       fmt::format_to(o, "    theory: interval between flips 2K(k)/ω_p = {} s\n",
-                     g(*s.flip_interval_theory, 10));
+                     report_number(*s.flip_interval_theory, 10));
     }
     if (s.period_theory && s.symmetry == "asymmetric") {
-      fmt::format_to(o, "    period of omega: theory 4K(k)/ω_p = {} s\n", g(*s.period_theory, 10));
+      fmt::format_to(o, "    period of omega: theory 4K(k)/ω_p = {} s\n",
+                     report_number(*s.period_theory, 10));
     }
     if (!s.flip_interval_theory && s.symmetry == "asymmetric") {
       if (s.free_body_regime.empty()) {
@@ -111,13 +108,14 @@ std::string format_report(const RunSummary& s) {
     const std::string about = t.kind == "heavy top" ? "the vertical (−g)" : "L_space";
     fmt::format_to(
         o, "  {}: figure axis {} (body frame), spin omega3 = {} rad/s, I3 = {} kg·m², I1 = {} kg·m²\n",
-        t.kind, vec(t.axis_body, 4), g(t.spin), g(t.moment_axial), g(t.moment_transverse));
+        t.kind, report_vector(t.axis_body, 4), report_number(t.spin), report_number(t.moment_axial),
+        report_number(t.moment_transverse));
     fmt::format_to(o, "    precession about {}: measured mean {} rad/s\n", about,
-                   t.precession_rate_mean ? g(*t.precession_rate_mean) : "n/a");
+                   t.precession_rate_mean ? report_number(*t.precession_rate_mean) : "n/a");
     const auto beside = [&](const char* name, const std::optional<double>& theory,
                             const std::optional<double>& measured) {
       if (!theory) return;
-      fmt::format_to(o, "      {} {} rad/s", name, g(*theory));
+      fmt::format_to(o, "      {} {} rad/s", name, report_number(*theory));
       if (measured) fmt::format_to(o, " ({})", rel_diff(*measured, *theory));
       fmt::format_to(o, "\n");
     };
@@ -127,14 +125,15 @@ std::string format_report(const RunSummary& s) {
     } else {
       beside("theory |L|/I1 =", t.precession_rate_theory, t.precession_rate_mean);
     }
-    fmt::format_to(o, "    nutation: tilt of the axis from {} between {} and {} rad", about, g(t.theta_min),
-                   g(t.theta_max));
+    fmt::format_to(o, "    nutation: tilt of the axis from {} between {} and {} rad", about,
+                   report_number(t.theta_min), report_number(t.theta_max));
     if (t.theta_min_theory && t.theta_max_theory) {
-      fmt::format_to(o, " (exact: {} to {} rad)", g(*t.theta_min_theory), g(*t.theta_max_theory));
+      fmt::format_to(o, " (exact: {} to {} rad)", report_number(*t.theta_min_theory),
+                     report_number(*t.theta_max_theory));
     }
     fmt::format_to(o, "\n");
     if (t.nutation_frequency)
-      fmt::format_to(o, "      measured frequency {} rad/s\n", g(*t.nutation_frequency));
+      fmt::format_to(o, "      measured frequency {} rad/s\n", report_number(*t.nutation_frequency));
     beside("exact heavy top 2π/T_nut =", t.nutation_frequency_theory, t.nutation_frequency);
     beside("fast top I3 omega3/I1 =", t.nutation_frequency_fast_top, t.nutation_frequency);
     if (t.sleeping) {

@@ -128,4 +128,7 @@ class CollocationNlp final : public SparseNlp {
   Eigen::Matrix<double, 3, 4> final_attitude_rows_;  // vec(q_f* ⊗ q) = final_attitude_rows_ q
 };
 
+/// The variables of one collocation point, the stride of the NLP vector z (CollocationNlp::kPointVars).
+inline constexpr int kP = CollocationNlp::kPointVars;
+
 }  // namespace poinsot::optimal::detail

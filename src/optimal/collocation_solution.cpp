@@ -4,9 +4,7 @@
 
 namespace poinsot::optimal::detail {
 
-namespace {
-constexpr int kP = CollocationNlp::kPointVars;
-}  // namespace
+namespace {}  // namespace
 
 IntervalSample sample_interval(const CollocationNlp& nlp, const std::vector<double>& z, int k, double s) {
   const auto pt = [&](int p) { return Eigen::Map<const Vec11>(z.data() + kP * p); };

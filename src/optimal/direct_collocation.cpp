@@ -20,11 +20,11 @@ namespace {
 
 using detail::CollocationNlp;
 using detail::IntervalSample;
+using detail::kP;
 using detail::sample_interval;
 using detail::Vec11;
 using detail::Vec4;
 using detail::Vec7;
-constexpr int kP = CollocationNlp::kPointVars;
 
 /// The eigenaxis guess: q(t) = q_0 ⊗ exp(s Θ n / 2), ω = Θ n / T (body frame) plus a transverse bump,
 /// u = 0, ν = 0.

@@ -16,7 +16,7 @@ namespace poinsot::optimal {
 namespace {
 
 using detail::CollocationNlp;
-constexpr int kP = CollocationNlp::kPointVars;
+using detail::kP;
 
 void require_minimum_time(const ReorientationProblem& p) {
   if (p.objective != Objective::minimum_time)

@@ -14,12 +14,10 @@
 namespace poinsot::so3 {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// Wraps an angle into (−π, π].
 double wrap(double a) {
-  a = std::remainder(a, 2.0 * kPi);  // [−π, π]
-  return a <= -kPi ? a + 2.0 * kPi : a;
+  a = std::remainder(a, 2.0 * std::numbers::pi);  // [−π, π]
+  return a <= -std::numbers::pi ? a + 2.0 * std::numbers::pi : a;
 }
 
 }  // namespace
@@ -91,7 +89,7 @@ Vec3 euler_from_rotation(const EulerSequence& sequence, const Mat3& R) {
   if (second <= kLock) {
     first = 0.0;
     third = 2.0 * half_sum;
-  } else if (second >= kPi - kLock) {
+  } else if (second >= std::numbers::pi - kLock) {
     first = 0.0;
     third = 2.0 * half_diff;
   } else {
@@ -100,7 +98,7 @@ Vec3 euler_from_rotation(const EulerSequence& sequence, const Mat3& R) {
   }
   if (!proper) {
     third *= sign;
-    second -= 0.5 * kPi;
+    second -= 0.5 * std::numbers::pi;
   }
   // Intrinsic order is the reverse of the extrinsic one.
   return Vec3(wrap(third), second, wrap(first));

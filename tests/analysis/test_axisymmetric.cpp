@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "errata_cases.hpp"
 #include "poinsot/analysis/multipliers.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/so3/hat.hpp"
@@ -14,11 +15,10 @@ using dynamics::RigidBody;
 using dynamics::State;
 using test::kEps;
 
-// ERRATA.md worked cases (SI units, R(0) = I).
-const AxisymmetricInertia kCaseB{2.0, 1.0, Vec3::UnitZ()};  // prolate
-const Vec3 kOmegaB(0.3, -0.4, 1.2);
-const AxisymmetricInertia kCaseC{1.0, 1.8, Vec3::UnitZ()};  // oblate
-const Vec3 kOmegaC(1.0, 0.5, -2.0);
+using errata::kCaseB;
+using errata::kCaseC;
+using errata::kOmegaB;
+using errata::kOmegaC;
 
 RigidBody body_of(const AxisymmetricInertia& a) {
   return RigidBody::from_inertia(a.inertia());

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "errata_cases.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot_test.hpp"
 
@@ -26,10 +27,10 @@ LambdaAnalysisOptions opts(const std::string& method, double dt, double t_end, d
   return o;
 }
 
+using errata::kOmegaB;
+using errata::kOmegaC;
 const RigidBody kProlate = RigidBody::from_principal_moments(Vec3(2.0, 2.0, 1.0));  // ERRATA case b
-const Vec3 kOmegaB(0.3, -0.4, 1.2);
-const RigidBody kOblate = RigidBody::from_principal_moments(Vec3(1.0, 1.0, 1.8));  // ERRATA case c
-const Vec3 kOmegaC(1.0, 0.5, -2.0);
+const RigidBody kOblate = RigidBody::from_principal_moments(Vec3(1.0, 1.0, 1.8));   // ERRATA case c
 
 TEST(LambdaReport, ExactSolutionKeepsTheEigenvaluesToRoundOff) {
   for (const auto& [body, w] : {std::pair{kProlate, kOmegaB}, std::pair{kOblate, kOmegaC}}) {

@@ -11,8 +11,6 @@
 namespace poinsot::dynamics {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 /// A synthetic top: R(t) = Rz(Ω t) Rx(θ(t)), θ(t) = θ0 + a sin(ν t). Its z axis precesses about space z at
 /// exactly Ω and nutates with angular frequency ν (the oracle).
 Mat3 attitude(double t, double Omega, double theta0, double a, double nu) {
@@ -22,8 +20,8 @@ Mat3 attitude(double t, double Omega, double theta0, double a, double nu) {
 
 TEST(AxisTracker, RecoversPrecessionAndNutationRates) {
   const double Omega = 0.7, nu = 9.0, theta0 = 0.4, a = 0.05;
-  AxisTracker tr(Vec3::UnitZ(), Vec3(0, 0, 2));  // not unit: normalised
-  const double h = 2 * kPi / nu / 64;            // 64 samples per nutation period
+  AxisTracker tr(Vec3::UnitZ(), Vec3(0, 0, 2));     // not unit: normalised
+  const double h = 2 * std::numbers::pi / nu / 64;  // 64 samples per nutation period
   const int n = 4000;
   for (int i = 0; i <= n; ++i)
     tr.add(i * h, attitude(i * h, Omega, theta0, a, nu));

@@ -13,7 +13,7 @@ namespace {
 
 using dynamics::Dop853Integrator;
 
-IntegratorOptions tolerances(double tol, double dt = 0.5) {
+IntegratorOptions dop853_options(double tol, double dt = 0.5) {
   IntegratorOptions o;
   o.rtol = tol;
   o.atol = tol;
@@ -36,11 +36,11 @@ TEST(Dop853, GlobalErrorFollowsTheTolerance) {
   const State s0 = tumbling();
   const double T = 10.0;
   // The oracle here is dopri5 at a tighter tolerance than tested (another method), and eq. (4.2) above.
-  IntegratorOptions tight = tolerances(1e-14, 0.05);
+  IntegratorOptions tight = dop853_options(1e-14, 0.05);
   dynamics::Dopri5Integrator other(kBody, TorqueModel::none(), tight);
   const State ref = run_adaptive(other, s0, T, 0.05);
   for (double tol : {1e-7, 1e-9, 1e-11}) {
-    Dop853Integrator m(kBody, TorqueModel::none(), tolerances(tol));
+    Dop853Integrator m(kBody, TorqueModel::none(), dop853_options(tol));
     const double e = state_error(run_adaptive(m, s0, T, 0.5), ref);
     EXPECT_LT(e, 30.0 * tol) << "tol " << tol;
   }
@@ -48,7 +48,7 @@ TEST(Dop853, GlobalErrorFollowsTheTolerance) {
 
 TEST(Dop853, DenseOutputIsAsAccurateAsTheSteps) {
   const State s0 = tumbling();
-  Dop853Integrator m(kBody, TorqueModel::none(), tolerances(1e-10, 2.0));
+  Dop853Integrator m(kBody, TorqueModel::none(), dop853_options(1e-10, 2.0));
   State s = s0;
   double worst = 0.0;
   double largest_step = 0.0;
@@ -74,7 +74,7 @@ TEST(Dop853, GravityTopConservesItsEnergyWithinTheTolerance) {
   State s;
   s.R_space_body = so3::exp(Vec3(M_PI / 3, 0, 0));
   s.omega_body = Vec3(0, 0, 100.0);
-  Dop853Integrator m(top, gravity, tolerances(1e-12, 0.01));
+  Dop853Integrator m(top, gravity, dop853_options(1e-12, 0.01));
   const double E0 = dynamics::total_energy(top, s, g);
   const State s1 = run_adaptive(m, s, 2.0, 0.01);
   EXPECT_LT(std::abs(dynamics::total_energy(top, s1, g) - E0) / std::abs(E0), 1e-10);

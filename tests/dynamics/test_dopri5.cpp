@@ -12,7 +12,7 @@ namespace {
 
 using dynamics::Dopri5Integrator;
 
-IntegratorOptions tolerances(double tol) {
+IntegratorOptions dopri5_options(double tol) {
   IntegratorOptions o;
   o.rtol = tol;
   o.atol = tol;
@@ -26,7 +26,7 @@ TEST(Dopri5, GlobalErrorFollowsTheTolerance) {
   const State ref = reference(kBody, TorqueModel::none(), s0, T);
   double previous = 1.0;
   for (double tol : {1e-6, 1e-8, 1e-10}) {
-    Dopri5Integrator m(kBody, TorqueModel::none(), tolerances(tol));
+    Dopri5Integrator m(kBody, TorqueModel::none(), dopri5_options(tol));
     const double e = state_error(run_adaptive(m, s0, T, 0.5), ref);
     // The controller bounds the local error per step by tol; over ~10²–10³ steps of a non-stiff problem the
     // global error stays within a small multiple of tol.
@@ -39,7 +39,7 @@ TEST(Dopri5, GlobalErrorFollowsTheTolerance) {
 
 TEST(Dopri5, DenseOutputIsAsAccurateAsTheSteps) {
   const State s0 = tumbling();
-  Dopri5Integrator m(kBody, TorqueModel::none(), tolerances(1e-9));
+  Dopri5Integrator m(kBody, TorqueModel::none(), dopri5_options(1e-9));
   State s = s0;
   double worst = 0.0;
   for (int i = 0; i < 20; ++i) {
@@ -60,7 +60,7 @@ TEST(Dopri5, ReproducesTheAxisymmetricClosedForm) {
   const RigidBody body = RigidBody::from_principal_moments(Vec3(A, A, C));
   State s0;
   s0.omega_body = Vec3(1.0, 0.5, -2.0);
-  Dopri5Integrator m(body, TorqueModel::none(), tolerances(1e-11));
+  Dopri5Integrator m(body, TorqueModel::none(), dopri5_options(1e-11));
   const State s = run_adaptive(m, s0, 20.0, 0.5);
   EXPECT_LT(state_error(s, axisymmetric_exact(A, C, s0, 20.0)), 1e-9);
 }
@@ -71,7 +71,7 @@ TEST(Dopri5, ReportsAStepThatCannotMeetTheTolerance) {
       TorqueModel::callback([](double t, const Mat3&,
                                const Vec3&) { return t > 0.3 ? Vec3::Constant(std::nan("")) : Vec3::Zero(); },
                             false, "NaN after 0.3 s");
-  Dopri5Integrator m(kBody, bad, tolerances(1e-8));
+  Dopri5Integrator m(kBody, bad, dopri5_options(1e-8));
   State s = tumbling();
   const std::string msg = message_of<ComputationFailed>([&] { run_adaptive(m, s, 1.0, 0.1); });
   const auto at = msg.find("at t = ");

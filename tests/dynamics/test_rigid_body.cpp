@@ -6,23 +6,12 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot_test.hpp"
+#include "point_masses.hpp"
 
 namespace poinsot::test {
 namespace {
 
 using dynamics::RigidBody;
-
-struct PointMass {
-  double m;
-  Vec3 x;
-};
-
-Mat3 inertia_of(const std::vector<PointMass>& pts) {
-  Mat3 J = Mat3::Zero();
-  for (const auto& p : pts)
-    J += p.m * (p.x.squaredNorm() * Mat3::Identity() - p.x * p.x.transpose());
-  return J;
-}
 
 TEST(RigidBody, SquarePlateOfTheLecture) {
   // [LEC]: a square plate of side a, mass m, about a corner: I = m a² [[1/3, −1/4, 0], [−1/4, 1/3, 0],
@@ -56,7 +45,7 @@ TEST(RigidBody, PoinsotTensorIsTheSecondMoment) {
     p.x -= com;
     K += p.m * p.x * p.x.transpose();
   }
-  const RigidBody body = RigidBody::from_inertia(inertia_of(pts));
+  const RigidBody body = RigidBody::from_inertia(inertia_about_origin(pts));
   EXPECT_LT(max_abs_diff(body.poinsot(), K), 1e-13);
   EXPECT_LT(max_abs_diff(body.inertia() * body.inertia_inverse(), Mat3::Identity()), 1e-12);
   // The principal decomposition reproduces J.
@@ -74,9 +63,9 @@ TEST(RigidBody, PivotMovesTheRotationPointByTheParallelAxisTheorem) {
   std::vector<PointMass> about_pivot = pts;
   for (auto& p : about_pivot)
     p.x += d;
-  const RigidBody top = RigidBody::from_inertia(inertia_of(pts)).with_pivot(6.0, d);
-  EXPECT_LT(max_abs_diff(top.inertia(), inertia_of(about_pivot)), 1e-15);
-  EXPECT_LT(max_abs_diff(top.inertia_com(), inertia_of(pts)), 1e-15);
+  const RigidBody top = RigidBody::from_inertia(inertia_about_origin(pts)).with_pivot(6.0, d);
+  EXPECT_LT(max_abs_diff(top.inertia(), inertia_about_origin(about_pivot)), 1e-15);
+  EXPECT_LT(max_abs_diff(top.inertia_com(), inertia_about_origin(pts)), 1e-15);
   EXPECT_TRUE(top.has_pivot());
   EXPECT_EQ(top.mass(), 6.0);
   EXPECT_EQ(top.pivot_to_com(), d);

@@ -8,6 +8,7 @@
 #include "poinsot/so3/exp_log.hpp"
 #include "poinsot/so3/quaternion.hpp"
 #include "poinsot_test.hpp"
+#include "point_masses.hpp"
 
 namespace poinsot::test {
 namespace {
@@ -15,27 +16,15 @@ namespace {
 using dynamics::RigidBody;
 using dynamics::State;
 
-struct PointMass {
-  double m;
-  Vec3 X;  // body frame, about the rotation point
-};
-
 const std::vector<PointMass> kPoints = {{1.0, Vec3(0.3, 0.1, -0.2)},
                                         {0.5, Vec3(-0.4, 0.2, 0.1)},
                                         {2.0, Vec3(0.05, -0.3, 0.25)},
                                         {1.5, Vec3(-0.1, -0.05, 0.4)},
                                         {0.7, Vec3(0.2, 0.35, 0.0)}};
 
-Mat3 inertia_of(const std::vector<PointMass>& pts) {
-  Mat3 J = Mat3::Zero();
-  for (const auto& p : pts)
-    J += p.m * (p.X.squaredNorm() * Mat3::Identity() - p.X * p.X.transpose());
-  return J;
-}
-
 TEST(State, InvariantsAgreeWithSumsOverPointMasses) {
   // Treat the points as a body rotating about the origin (a "free body" whose J is about that point).
-  const RigidBody body = RigidBody::from_inertia(inertia_of(kPoints));
+  const RigidBody body = RigidBody::from_inertia(inertia_about_origin(kPoints));
   State s;
   s.R_space_body = so3::exp(Vec3(0.4, -0.3, 1.1));
   s.omega_body = Vec3(1.5, -0.7, 2.2);
@@ -43,7 +32,7 @@ TEST(State, InvariantsAgreeWithSumsOverPointMasses) {
   double T = 0.0;
   Vec3 L = Vec3::Zero();
   for (const auto& p : kPoints) {
-    const Vec3 x = s.R_space_body * p.X;
+    const Vec3 x = s.R_space_body * p.x;
     const Vec3 v = Omega.cross(x);  // ẋ = Ṙ X = R (ω × X) = Ω × x
     T += 0.5 * p.m * v.squaredNorm();
     L += p.m * x.cross(v);
@@ -60,10 +49,11 @@ TEST(State, PotentialEnergyOfATopIsMinusMassTimesGravityDotCentreOfMass) {
   Vec3 first = Vec3::Zero();
   for (const auto& p : kPoints) {
     mass += p.m;
-    first += p.m * p.X;
+    first += p.m * p.x;
   }
   const Vec3 d = first / mass;  // pivot (origin) → centre of mass
-  Mat3 J_com = inertia_of(kPoints) - mass * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
+  Mat3 J_com =
+      inertia_about_origin(kPoints) - mass * (d.squaredNorm() * Mat3::Identity() - d * d.transpose());
   const RigidBody top = RigidBody::from_inertia(J_com).with_pivot(mass, d);
   State s;
   s.R_space_body = so3::exp(Vec3(-0.6, 0.2, 0.3));
@@ -71,7 +61,7 @@ TEST(State, PotentialEnergyOfATopIsMinusMassTimesGravityDotCentreOfMass) {
   const Vec3 g(0, 0, -9.81);
   double V = 0.0;
   for (const auto& p : kPoints)
-    V -= p.m * g.dot(s.R_space_body * p.X);
+    V -= p.m * g.dot(s.R_space_body * p.x);
   EXPECT_NEAR(dynamics::potential_energy(top, s, g), V, 1e-13 * std::abs(V));
   EXPECT_NEAR(dynamics::total_energy(top, s, g), dynamics::kinetic_energy(top, s) + V, 1e-12);
   // A free body has no potential energy.

@@ -137,7 +137,7 @@ TEST(QuantileSketch, MemoryIsBoundedByTheRangeNotTheCount) {
   EXPECT_LE(static_cast<double>(tails.storage_buckets()), 2.0 * (1.25 * n + 32.0));
 }
 
-Sampler racket() {
+Sampler sketch_racket_sampler() {
   Nominal n;
   n.moments = Vec3(1.0, 2.0, 2.5);
   n.omega_body = Vec3(0.05, 3.0, 0.05);
@@ -153,11 +153,11 @@ TEST(QuantileSketch, EnsembleWithoutRowsGivesPercentilesWithinTheBoundOfTheRowsO
   o.method = "dlm";
   o.t_end = 0.05;
   o.dt = 0.01;
-  const EnsembleResult rows = run_ensemble(racket(), o);
+  const EnsembleResult rows = run_ensemble(sketch_racket_sampler(), o);
   o.keep_rows = false;
-  const EnsembleResult one = run_ensemble(racket(), o);
+  const EnsembleResult one = run_ensemble(sketch_racket_sampler(), o);
   o.threads = 3;
-  const EnsembleResult three = run_ensemble(racket(), o);
+  const EnsembleResult three = run_ensemble(sketch_racket_sampler(), o);
   ASSERT_TRUE(one.rows.empty());
   int checked = 0;
   for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q) {

@@ -52,13 +52,13 @@ std::string bytes_of(T value, bool little) {
   return b;
 }
 
-const Vec3 kSize(2.0, 1.0, 0.5);  // exactly representable in float
+const Vec3 kPlyBoxSize(2.0, 1.0, 0.5);  // exactly representable in float
 
 /// The box as binary PLY: float vertices; faces with a list of length type `Count` and an extra int
 /// property after it (a scalar the walk must step over).
 template <class Count>
 std::string binary_box(bool little, const char* count_type) {
-  const TriangleMesh m = box_mesh(kSize);
+  const TriangleMesh m = box_mesh(kPlyBoxSize);
   std::string s = fmt::format(
       "ply\nformat {} 1.0\ncomment poinsot test\nelement vertex {}\nproperty float x\nproperty float y\n"
       "property float z\nelement face {}\nproperty list {} int vertex_indices\nproperty int "
@@ -77,18 +77,18 @@ std::string binary_box(bool little, const char* count_type) {
   return s;
 }
 
-void expect_box(const TriangleMesh& m) {
+void expect_ply_box(const TriangleMesh& m) {
   const MassProperties p = mesh_mass_properties(m, 1.0);
-  const MassProperties f = box(kSize.prod(), kSize);
+  const MassProperties f = box(kPlyBoxSize.prod(), kPlyBoxSize);
   EXPECT_NEAR(p.mass, f.mass, 1e-14);  // float coordinates of exact binary values: exact up to summation
   EXPECT_LE(test::max_abs_diff(p.inertia_com, f.inertia_com), 1e-14);
 }
 
 TEST_F(PlyCheck, ValidBinaryFilesInBothByteOrdersRead) {
-  expect_box(load_mesh(write("le8.ply", binary_box<std::uint8_t>(true, "uchar"))));
-  expect_box(load_mesh(write("be8.ply", binary_box<std::uint8_t>(false, "uint8"))));
-  expect_box(load_mesh(write("le32.ply", binary_box<std::uint32_t>(true, "uint"))));
-  expect_box(load_mesh(write("be32.ply", binary_box<std::int32_t>(false, "int32"))));
+  expect_ply_box(load_mesh(write("le8.ply", binary_box<std::uint8_t>(true, "uchar"))));
+  expect_ply_box(load_mesh(write("be8.ply", binary_box<std::uint8_t>(false, "uint8"))));
+  expect_ply_box(load_mesh(write("le32.ply", binary_box<std::uint32_t>(true, "uint"))));
+  expect_ply_box(load_mesh(write("be32.ply", binary_box<std::int32_t>(false, "int32"))));
 }
 
 /// A tetrahedron's header and vertices, then one face whose list length is `length` (uint32), then 3 indices.

@@ -24,7 +24,7 @@ namespace {
 
 using test::max_abs_diff;
 
-std::string data(const std::string& name) {
+std::string model_path(const std::string& name) {
   return std::string(POINSOT_TEST_DATA_DIR) + "/models/" + name;
 }
 
@@ -74,16 +74,16 @@ ModelRepair repaired(const RobotModel& m, RepairMode mode) {
 
 TEST(ModelRepair, ValidModelsComeBackByteForByte) {
   for (const char* file : {"valid_arm.urdf", "valid_arm.xml", "valid_robot.sdf"}) {
-    const RobotModel m = load_robot_model(data(file));
+    const RobotModel m = load_robot_model(model_path(file));
     const ModelRepair r = repaired(m, RepairMode::nearest_valid);
     EXPECT_TRUE(r.edits.empty()) << file;
-    EXPECT_EQ(r.text, bytes_of(data(file))) << file;
+    EXPECT_EQ(r.text, bytes_of(model_path(file))) << file;
   }
 }
 
 TEST(ModelRepair, RepairedTensorsAreValidAndNearest) {
   for (const char* file : {"defects.urdf", "defects.xml", "defects.sdf"}) {
-    const RobotModel before = load_robot_model(data(file));
+    const RobotModel before = load_robot_model(model_path(file));
     const ModelRepair r = repaired(before, RepairMode::nearest_valid);
     const RobotModel after = read_robot_model(r.text, file);
     ASSERT_EQ(after.links.size(), before.links.size());
@@ -115,8 +115,8 @@ TEST(ModelRepair, RepairedTensorsAreValidAndNearest) {
 TEST(ModelRepair, OnlyTheEditedValuesChange) {
   // In defects.urdf each tensor is on one line: exactly the <inertia> lines of the three invalid links
   // differ.
-  const std::string original = bytes_of(data("defects.urdf"));
-  const ModelRepair r = repaired(load_robot_model(data("defects.urdf")), RepairMode::nearest_valid);
+  const std::string original = bytes_of(model_path("defects.urdf"));
+  const ModelRepair r = repaired(load_robot_model(model_path("defects.urdf")), RepairMode::nearest_valid);
   const auto a = lines_of(original);
   const auto b = lines_of(r.text);
   ASSERT_EQ(a.size(), b.size());
@@ -129,7 +129,7 @@ TEST(ModelRepair, OnlyTheEditedValuesChange) {
   EXPECT_EQ(changed.size(), 3u);
   EXPECT_EQ(r.edits.size(), 3u);
   // MJCF diaginertia stays three numbers (the repaired tensor is diagonal in the same frame), quat untouched.
-  const ModelRepair m = repaired(load_robot_model(data("defects.xml")), RepairMode::nearest_valid);
+  const ModelRepair m = repaired(load_robot_model(model_path("defects.xml")), RepairMode::nearest_valid);
   std::smatch match;
   ASSERT_TRUE(std::regex_search(m.text, match, std::regex("diaginertia=\"([^\"]*)\"")));
   const auto numbers = lines_of(std::regex_replace(match[1].str(), std::regex(" "), "\n"));
@@ -145,7 +145,7 @@ TEST(ModelRepair, OnlyTheEditedValuesChange) {
 TEST(ModelRepair, FromGeometryWritesTheGeometrysTensorInTheFilesFrame) {
   // valid_arm.urdf already carries its geometry's tensors: --from-geometry gives them back (to round-off of
   // the turned frames), written in each inertial frame (upper_arm: the cylinder's own axes).
-  const RobotModel m = load_robot_model(data("valid_arm.urdf"));
+  const RobotModel m = load_robot_model(model_path("valid_arm.urdf"));
   const ModelRepair r = repaired(m, RepairMode::from_geometry);
   EXPECT_EQ(r.edits.size(), 4u);
   const RobotModel after = read_robot_model(r.text, "a.urdf");
@@ -156,7 +156,7 @@ TEST(ModelRepair, FromGeometryWritesTheGeometrysTensorInTheFilesFrame) {
         << m.links[k].name;
   }
   // A sphere of 500 kg and radius 0.2 m: 2/5 m r² = 8 kg·m² (defects.xml, full_bad: fullinertia rewritten).
-  const ModelRepair x = repaired(load_robot_model(data("defects.xml")), RepairMode::from_geometry);
+  const ModelRepair x = repaired(load_robot_model(model_path("defects.xml")), RepairMode::from_geometry);
   const RobotModel xa = read_robot_model(x.text, "d.xml");
   EXPECT_LE(max_abs_diff(xa.links[1].inertia_link, Mat3(Vec3::Constant(8.0).asDiagonal())), 1e-14);
   // A box turned by 45° in a diaginertia frame: its tensor is not diagonal there, so the link is kept.

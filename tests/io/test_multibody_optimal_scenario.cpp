@@ -16,7 +16,7 @@
 namespace poinsot::io {
 namespace {
 
-const std::string kArm = std::string(POINSOT_SOURCE_DIR) + "/examples/optimal/two_link_arm.toml";
+const std::string kArmScenario = std::string(POINSOT_SOURCE_DIR) + "/examples/optimal/two_link_arm.toml";
 
 void expect_same_state(const multibody::State& a, const multibody::State& b) {
   ASSERT_EQ(a.bodies.size(), b.bodies.size());
@@ -31,7 +31,7 @@ void expect_same_state(const multibody::State& a, const multibody::State& b) {
 TEST(MultibodyOptimalScenario, ArmExampleIsTheTestProblem) {
   // The example is the arm of the optimal/ tests: the same initial state, and a target given by rotations
   // only whose positions the reader places through the joints: the closed-form forward kinematics of the arm.
-  const MultibodyOptimalScenario sc = load_multibody_optimal_scenario(kArm);
+  const MultibodyOptimalScenario sc = load_multibody_optimal_scenario(kArmScenario);
   const double down = -0.5 * std::numbers::pi;
   expect_same_state(sc.problem.initial_state, optimal::testing::two_link_state(down, 0.0));
   expect_same_state(sc.problem.final_state, optimal::testing::two_link_state(down + 1.0, 0.5));
@@ -113,7 +113,7 @@ TEST(MultibodyOptimalScenario, BadInputIsOneLocatedLine) {
 TEST(MultibodyOptimalScenario, ArmFileVariants) {
   // The arm's file with the forearm's target moved off the elbow (the last table of the file is its target):
   // optimal::validate's check, located at [optimal_control].
-  std::ifstream in(kArm);
+  std::ifstream in(kArmScenario);
   std::stringstream text;
   text << in.rdbuf();
   expect_bad(text.str() + "center_of_mass = [5, 5, 0]\n", "optimal control: final state:");

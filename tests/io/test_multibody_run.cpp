@@ -30,13 +30,6 @@ fs::path temp_dir(const std::string& name) {
   return d;
 }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 /// The rows of a CSV file after its header, as numbers (the first `text_columns` fields skipped).
 std::vector<std::vector<double>> read_rows(const fs::path& path, std::string& header, int text_columns = 0) {
   std::ifstream in(path);
@@ -190,7 +183,7 @@ TEST(MultibodyRun, HangingChainReactionsCarryTheWeightBelow) {
   EXPECT_EQ(header.substr(0, 25), "t,body,x,y,z,Lambda_xx,La");
   ASSERT_EQ(lambda_rows.size(), static_cast<std::size_t>(n));
   EXPECT_NEAR(lambda_rows[3][3], -3.5, 1e-9);  // link3's centre of mass, z (m)
-  const std::string report = read(dir / "report.txt");
+  const std::string report = test::read_text(dir / "report.txt");
   EXPECT_NE(report.find("the 5 largest of 8 by |F|, all in " + (dir / "reactions.csv").string()),
             std::string::npos)
       << report;
@@ -198,7 +191,7 @@ TEST(MultibodyRun, HangingChainReactionsCarryTheWeightBelow) {
   EXPECT_NE(report.find("'j4'"), std::string::npos);
   EXPECT_EQ(report.find("'j5'"), std::string::npos);  // the sixth largest is only in the file
   EXPECT_EQ(report, format_multibody_report(sc, s));
-  const auto j = nlohmann::json::parse(read(dir / "summary.json"));
+  const auto j = nlohmann::json::parse(test::read_text(dir / "summary.json"));
   EXPECT_EQ(j["status"], "completed");
   EXPECT_EQ(j["files"]["reactions"], (dir / "reactions.csv").string());
   EXPECT_EQ(j["rows"], s.rows);
@@ -241,12 +234,12 @@ TEST(MultibodyRun, StopRequestLeavesCompleteFilesAndAnInterruptedSummary) {
   ASSERT_EQ(traj.size(), 4u);
   ASSERT_EQ(diag.size(), 4u);
   EXPECT_EQ(traj.back()[0], 0.03);
-  const auto j = nlohmann::json::parse(read(dir / "summary.json"));
+  const auto j = nlohmann::json::parse(test::read_text(dir / "summary.json"));
   EXPECT_EQ(j["status"], "interrupted");
   EXPECT_EQ(j["interrupted"], true);
   EXPECT_EQ(j["t_final"], 0.03);
   EXPECT_EQ(j["steps"], 30);
-  EXPECT_NE(read(dir / "report.txt").find("INTERRUPTED at t = 0.03 s"), std::string::npos);
+  EXPECT_NE(test::read_text(dir / "report.txt").find("INTERRUPTED at t = 0.03 s"), std::string::npos);
 }
 
 TEST(MultibodyRun, FailureKeepsTheRowsWrittenAndSaysFailed) {
@@ -273,12 +266,12 @@ TEST(MultibodyRun, FailureKeepsTheRowsWrittenAndSaysFailed) {
   std::getline(din, row);
   EXPECT_EQ(header.substr(0, 16), "t,energy,energy_");
   EXPECT_EQ(row.substr(0, 8), "0,600,0,");  // t = 0, E0 = ½ J₃ ω₃² = ½ · 3 · 20² J, E − E0 = 0
-  const auto j = nlohmann::json::parse(read(dir / "summary.json"));
+  const auto j = nlohmann::json::parse(test::read_text(dir / "summary.json"));
   EXPECT_EQ(j["status"], "failed");
   EXPECT_TRUE(j["failure"].is_string());
   EXPECT_TRUE(j["files"]["reactions"].is_null());
   EXPECT_FALSE(fs::exists(dir / "reactions.csv"));
-  EXPECT_NE(read(dir / "report.txt").find("FAILED: "), std::string::npos);
+  EXPECT_NE(test::read_text(dir / "report.txt").find("FAILED: "), std::string::npos);
 }
 
 TEST(MultibodyRun, UnwritableFolderIsRefusedBeforeTheFirstStep) {

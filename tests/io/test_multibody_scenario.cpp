@@ -27,7 +27,7 @@ using multibody::State;
 
 const std::string kExamples = std::string(POINSOT_SOURCE_DIR) + "/examples/";
 
-std::string error_of(const std::string& text) {
+std::string multibody_error_of(const std::string& text) {
   return test::message_of([&] { (void)parse_multibody_scenario(text, "t.toml", kExamples); }, text);
 }
 
@@ -147,84 +147,92 @@ axis_a = [0, 0, 1]
   multibody::check_consistent(sc.system, sc.initial);
   EXPECT_LT(multibody::constraint_violation(sc.system, sc.initial).joint_velocity, 1e-14);
   const std::string a = bodies + "[[joints]]\nbody_a = \"a\"\n";
-  expect_has(error_of(a + "type = \"universal\"\naxis_a = [1, 0, 0]\n"), {"[joints[0]] axis_b: missing"});
-  expect_has(error_of(a + "type = \"prismatic\"\n"), {"[joints[0]] axis_a: missing"});
-  expect_has(error_of(a + "type = \"prismatic\"\naxis_a = [1, 0, 0]\naxis_b = [1, 0, 0]\n"),
+  expect_has(multibody_error_of(a + "type = \"universal\"\naxis_a = [1, 0, 0]\n"),
+             {"[joints[0]] axis_b: missing"});
+  expect_has(multibody_error_of(a + "type = \"prismatic\"\n"), {"[joints[0]] axis_a: missing"});
+  expect_has(multibody_error_of(a + "type = \"prismatic\"\naxis_a = [1, 0, 0]\naxis_b = [1, 0, 0]\n"),
              {"[joints[0]] axis_b: given for a prismatic joint; only hinge or universal joints take axis_b"});
 }
 
 TEST(MultibodyScenario, ErrorsNameTheFileTheEntryTheFieldTheValueAndTheExpectation) {
   const std::string a = "[[bodies]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 1]\n";
-  expect_has(error_of("[[bodies]]\nname = \"a\"\nmass = -1\ninertia = [1, 1, 1]\n"),
+  expect_has(multibody_error_of("[[bodies]]\nname = \"a\"\nmass = -1\ninertia = [1, 1, 1]\n"),
              {"t.toml:3:8: [bodies[0]] mass: got -1 kg, expected a number > 0"});
-  expect_has(error_of("[[bodies]]\nmass = 1\n"),
+  expect_has(multibody_error_of("[[bodies]]\nmass = 1\n"),
              {"t.toml:1:1: [bodies[0]] the inertia (one way to give it) is missing; expected exactly one of "
               "principal_moments, inertia, poinsot, shape, mesh, composite"});
-  expect_has(error_of("[[bodies]]\ninertia = [1, 1, 1]\n"), {"[bodies[0]] mass: missing"});
-  expect_has(error_of(a + "[[joints]]\ntype = \"slider\"\nbody_a = \"a\"\n"),
+  expect_has(multibody_error_of("[[bodies]]\ninertia = [1, 1, 1]\n"), {"[bodies[0]] mass: missing"});
+  expect_has(multibody_error_of(a + "[[joints]]\ntype = \"slider\"\nbody_a = \"a\"\n"),
              {"t.toml:6:8: [joints[0]] type: got \"slider\", expected \"ball\", \"hinge\", \"weld\", "
               "\"universal\" or \"prismatic\""});
-  expect_has(error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"nobody\"\n"),
+  expect_has(multibody_error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"nobody\"\n"),
              {"t.toml:7:10: [joints[0]] body_a: got \"nobody\", expected the name of a body"});
-  expect_has(error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"world\"\n"),
+  expect_has(multibody_error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"world\"\n"),
              {"[joints[0]] body_a: got \"world\", expected a body"});
   expect_has(
-      error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"a\"\naxis_a = [0, 0, 1]\n"),
+      multibody_error_of(a + "[[joints]]\ntype = \"ball\"\nbody_a = \"a\"\naxis_a = [0, 0, 1]\n"),
       {"[joints[0]] axis_a: given for a ball joint; only hinge, universal or prismatic joints take an axis"});
-  expect_has(error_of(a + "[[joints]]\ntype = \"hinge\"\nbody_a = \"a\"\n"), {"[joints[0]] axis_a: missing"});
-  expect_has(error_of(a + "[[joints]]\ntype = \"hinge\"\nbody_a = \"a\"\naxis_a = [0, 0, 0]\n"),
+  expect_has(multibody_error_of(a + "[[joints]]\ntype = \"hinge\"\nbody_a = \"a\"\n"),
+             {"[joints[0]] axis_a: missing"});
+  expect_has(multibody_error_of(a + "[[joints]]\ntype = \"hinge\"\nbody_a = \"a\"\naxis_a = [0, 0, 0]\n"),
              {"t.toml:6:8: [joints[0]] type:", "axis", "zero"});
   // J violates the triangle inequality: the model's message, at the key.
-  expect_has(error_of("[[bodies]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 5]\n"),
+  expect_has(multibody_error_of("[[bodies]]\nname = \"a\"\nmass = 1\ninertia = [1, 1, 5]\n"),
              {"t.toml:4:11: [bodies[0]] inertia: multibody body 'a'"});
-  expect_has(error_of("x = [1,\n"), {"t.toml:1:9: TOML syntax error"});
-  expect_has(error_of("[simulation]\ndt = 1e-3\n"), {"[top level] bodies: missing"});
-  expect_has(error_of("bodies = 3\n"), {"[top level] bodies: got 3, expected an array of tables [[bodies]]"});
-  expect_has(error_of("[simulation]\ndt = -1\n" + a), {"t.toml:2:6: [simulation] dt: got -1 s, expected"});
-  expect_has(error_of("[simulation]\noutput_every = 2.5\n" + a),
+  expect_has(multibody_error_of("x = [1,\n"), {"t.toml:1:9: TOML syntax error"});
+  expect_has(multibody_error_of("[simulation]\ndt = 1e-3\n"), {"[top level] bodies: missing"});
+  expect_has(multibody_error_of("bodies = 3\n"),
+             {"[top level] bodies: got 3, expected an array of tables [[bodies]]"});
+  expect_has(multibody_error_of("[simulation]\ndt = -1\n" + a),
+             {"t.toml:2:6: [simulation] dt: got -1 s, expected"});
+  expect_has(multibody_error_of("[simulation]\noutput_every = 2.5\n" + a),
              {"[simulation] output_every: got 2.5, expected an integer >= 1"});
-  expect_has(error_of("[simulation]\norder = 3\n" + a),
+  expect_has(multibody_error_of("[simulation]\norder = 3\n" + a),
              {"t.toml:2:9: [simulation] order: got 3, expected 2 (RATTLE) or 4"});
-  expect_has(error_of("[simulation]\nmethod = \"euler\"\n" + a),
+  expect_has(multibody_error_of("[simulation]\nmethod = \"euler\"\n" + a),
              {"t.toml:2:10: [simulation] method: got \"euler\", expected \"rattle\"", "or \"rk4\""});
-  expect_has(error_of("[simulation]\nmethod = \"rk4\"\norder = 2\n" + a),
+  expect_has(multibody_error_of("[simulation]\nmethod = \"rk4\"\norder = 2\n" + a),
              {"t.toml:3:9: [simulation] order: applies to method = \"rattle\" only"});
-  expect_has(error_of(a + "colour = \"red\"\n"),
+  expect_has(multibody_error_of(a + "colour = \"red\"\n"),
              {"t.toml:5:1: [bodies[0]] unknown key \"colour\"; valid keys:"});
-  expect_has(error_of(a + "quaternion = [0, 0, 0, 0]\n"), {"[bodies[0]] quaternion: got a zero quaternion"});
-  expect_has(error_of(a + "rotation = [[1, 0, 0], [0, 1, 0], [0, 0, -1]]\n"),
+  expect_has(multibody_error_of(a + "quaternion = [0, 0, 0, 0]\n"),
+             {"[bodies[0]] quaternion: got a zero quaternion"});
+  expect_has(multibody_error_of(a + "rotation = [[1, 0, 0], [0, 1, 0], [0, 0, -1]]\n"),
              {"[bodies[0]] rotation: got", "expected { axis = [x, y, z], angle = a } or a rotation matrix"});
-  expect_has(error_of(a + "rotation = { axis = [0, 0, 0], angle = 1 }\n"),
+  expect_has(multibody_error_of(a + "rotation = { axis = [0, 0, 0], angle = 1 }\n"),
              {"[bodies[0].rotation] axis: got (0, 0, 0), expected a non-zero vector"});
-  expect_has(error_of(a + "[[torques]]\nbody = \"a\"\ntorque = [1, 0, 0]\nframe = \"moon\"\n"),
+  expect_has(multibody_error_of(a + "[[torques]]\nbody = \"a\"\ntorque = [1, 0, 0]\nframe = \"moon\"\n"),
              {"[torques[0]] frame: got \"moon\", expected \"space\" or \"body\""});
-  expect_has(error_of(a + "[[forces]]\nbody = \"a\"\n"), {"[forces[0]] force: missing"});
-  expect_has(error_of(a + "[[springs]]\nbody_a = \"a\"\nstiffness = -1\n"),
+  expect_has(multibody_error_of(a + "[[forces]]\nbody = \"a\"\n"), {"[forces[0]] force: missing"});
+  expect_has(multibody_error_of(a + "[[springs]]\nbody_a = \"a\"\nstiffness = -1\n"),
              {"t.toml:7:13: [springs[0]] stiffness:"});
   // Bodies from the inertia layer: the same messages as a single-body [body], with the entry's name.
-  expect_has(error_of("[[bodies]]\nshape = { type = \"blob\", mass = 1 }\n"),
+  expect_has(multibody_error_of("[[bodies]]\nshape = { type = \"blob\", mass = 1 }\n"),
              {"[bodies[0].shape] type: got \"blob\", expected one of point, rod"});
   expect_has(
-      error_of("[[bodies]]\nshape = { type = \"box\", size = [1, 1, 1] }\n"),
+      multibody_error_of("[[bodies]]\nshape = { type = \"box\", size = [1, 1, 1] }\n"),
       {"[bodies[0].shape] mass: missing; expected mass (kg) or density in the table, or [bodies[0]] mass"});
-  expect_has(error_of("[[bodies]]\nmass = 2\nshape = { type = \"box\", size = [1, 1, 1], mass = 1 }\n"),
-             {"t.toml:2:8: [bodies[0]] mass: got 2 kg, but the shape already gives the mass (1 kg)"});
-  expect_has(error_of("[[bodies]]\nshape = { type = \"rod\", length = 1, mass = 1 }\n"),
+  expect_has(
+      multibody_error_of("[[bodies]]\nmass = 2\nshape = { type = \"box\", size = [1, 1, 1], mass = 1 }\n"),
+      {"t.toml:2:8: [bodies[0]] mass: got 2 kg, but the shape already gives the mass (1 kg)"});
+  expect_has(multibody_error_of("[[bodies]]\nshape = { type = \"rod\", length = 1, mass = 1 }\n"),
              {"[bodies[0]] shape:", "give it a radius"});  // an ideal rod has no moment about its axis
   expect_has(
-      error_of(
+      multibody_error_of(
           "[[bodies]]\nshape = { type = \"cylinder\", radius = 1, length = 1, mass = 1, axis = \"w\" }\n"),
       {"[bodies[0].shape] axis: got \"w\", expected \"x\", \"y\" or \"z\""});
-  expect_has(error_of("[[bodies]]\nshape = { type = \"box\", size = [1, 1, 1], mass = 1, axis = \"z\" }\n"),
+  expect_has(multibody_error_of(
+                 "[[bodies]]\nshape = { type = \"box\", size = [1, 1, 1], mass = 1, axis = \"z\" }\n"),
              {"key \"axis\" does not apply to a box"});
-  expect_has(error_of("[[bodies]]\nmesh = { file = \"meshes/none.stl\", density = 1000 }\n"),
+  expect_has(multibody_error_of("[[bodies]]\nmesh = { file = \"meshes/none.stl\", density = 1000 }\n"),
              {"t.toml:2:17: [bodies[0].mesh] file:", "none.stl"});
-  expect_has(error_of("[[bodies]]\nmesh = { file = \"meshes/l_bracket.obj\", density = -1 }\n"),
+  expect_has(multibody_error_of("[[bodies]]\nmesh = { file = \"meshes/l_bracket.obj\", density = -1 }\n"),
              {"[bodies[0].mesh] density: got -1, expected a number > 0"});
-  expect_has(error_of("[[bodies]]\ncomposite = { file = \"none.toml\" }\n"),
+  expect_has(multibody_error_of("[[bodies]]\ncomposite = { file = \"none.toml\" }\n"),
              {"[bodies[0].composite] file:", "none.toml"});
-  expect_has(error_of("[[bodies]]\ncomposite = { }\n"), {"[bodies[0].composite] file: missing"});
-  expect_has(error_of("[[bodies]]\nmass = 1\ncomposite = { file = \"../tests/data/inertia/wheel.toml\" }\n"),
+  expect_has(multibody_error_of("[[bodies]]\ncomposite = { }\n"), {"[bodies[0].composite] file: missing"});
+  expect_has(multibody_error_of(
+                 "[[bodies]]\nmass = 1\ncomposite = { file = \"../tests/data/inertia/wheel.toml\" }\n"),
              {"[bodies[0]] mass: got 1 kg, but the composite already gives the mass"});
   EXPECT_THROW((void)load_multibody_scenario("/nonexistent/file.toml"), InvalidInput);
 }

@@ -23,13 +23,6 @@ mesh_tolerance = 1e-6
 orientation = { axis_angle = { axis = [1.0, -2.0, 0.5], angle = 2.0 } }
 )";
 
-std::string read(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // The whole run on the minimum-energy sphere (cost 12 j²Θ²/T³), its texts, and determinism: two runs of the
 // same input give the same summary, byte for byte.
 TEST(OptimalRun, SphereEnergyRunIsVerifiedAndDeterministic) {
@@ -38,17 +31,17 @@ TEST(OptimalRun, SphereEnergyRunIsVerifiedAndDeterministic) {
   ASSERT_TRUE(r.optimal) << r.status;
   EXPECT_EQ(r.status, "optimal (verified)");
   EXPECT_NEAR(r.indirect.cost / (12.0 * 2.5 * 2.5 * 4.0 / 27.0), 1.0, 1e-11);
-  const std::string json = optimal_summary_json(r);
-  EXPECT_NE(json.find("\"optimal\": true"), std::string::npos);
-  EXPECT_EQ(json, optimal_summary_json(run_optimal(sc)));
+  const std::string summary = optimal_summary_json(r);
+  EXPECT_NE(summary.find("\"optimal\": true"), std::string::npos);
+  EXPECT_EQ(summary, optimal_summary_json(run_optimal(sc)));
   EXPECT_NE(optimal_report(r).find("status: optimal (verified)"), std::string::npos);
 
   const auto dir = ::poinsot::test::temp_path("poinsot_test_optimal_run");
   std::filesystem::remove_all(dir);
   write_optimal_files(r, dir.string());
   for (const char* f : {"trajectory.csv", "control.csv", "costates.csv"})
-    EXPECT_EQ(read(dir / f).rfind("# status: optimal (verified)\n", 0), 0u) << f;
-  EXPECT_EQ(read(dir / "summary.json"), json);
+    EXPECT_EQ(test::read_text(dir / f).rfind("# status: optimal (verified)\n", 0), 0u) << f;
+  EXPECT_EQ(test::read_text(dir / "summary.json"), summary);
   std::filesystem::remove_all(dir);
 }
 

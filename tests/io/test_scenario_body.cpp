@@ -17,7 +17,7 @@ std::string scenario_with_body(const std::string& body) {
   return "[body]\n" + body + "\n[initial]\nomega_body = [1, 2, 3]\n[output]\nt_end = 1\n";
 }
 
-std::string error_of(const std::string& text) {
+std::string body_error_of(const std::string& text) {
   return test::message_of([&] { (void)parse_scenario(text, "b.toml", POINSOT_SOURCE_DIR "/examples"); },
                           text);
 }
@@ -69,29 +69,30 @@ TEST(ScenarioBody, MeshBracketIsTwoBoxes) {
 }
 
 TEST(ScenarioBody, ShapeMistakesAreNamed) {
-  expect_has(error_of(scenario_with_body("shape = { type = \"blob\", mass = 1 }")),
+  expect_has(body_error_of(scenario_with_body("shape = { type = \"blob\", mass = 1 }")),
              {"[body.shape] type: got \"blob\"", "expected one of point, rod, plate, box"});
-  expect_has(error_of(scenario_with_body("shape = { type = \"sphere\", size = [1, 1, 1], mass = 1 }")),
+  expect_has(body_error_of(scenario_with_body("shape = { type = \"sphere\", size = [1, 1, 1], mass = 1 }")),
              {"key \"size\" does not apply to a sphere", "valid keys: type, mass, density, radius"});
-  expect_has(error_of(scenario_with_body("shape = { type = \"box\", mass = 1 }")),
+  expect_has(body_error_of(scenario_with_body("shape = { type = \"box\", mass = 1 }")),
              {"[body.shape] size: missing; a box needs size"});
-  expect_has(
-      error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1], mass = 1, density = 2 }")),
-      {"the amount of matter is given 2 times"});
-  expect_has(error_of(scenario_with_body("shape = { type = \"box\", size = [1, -1, 1], mass = 1 }")),
+  expect_has(body_error_of(
+                 scenario_with_body("shape = { type = \"box\", size = [1, 1, 1], mass = 1, density = 2 }")),
+             {"the amount of matter is given 2 times"});
+  expect_has(body_error_of(scenario_with_body("shape = { type = \"box\", size = [1, -1, 1], mass = 1 }")),
              {"b.toml:2:", "[body.shape] type:", "box"});
-  expect_has(error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1], mass = 1 }\nmass = 2")),
-             {"[body] mass: got 2 kg, but the shape already gives the mass (1 kg)"});
-  expect_has(error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1], mass = 1 }\n"
-                                         "pivot = [0, 0, 0]\npivot_to_com = [0, 0, 1]")),
+  expect_has(
+      body_error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1], mass = 1 }\nmass = 2")),
+      {"[body] mass: got 2 kg, but the shape already gives the mass (1 kg)"});
+  expect_has(body_error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1], mass = 1 }\n"
+                                              "pivot = [0, 0, 0]\npivot_to_com = [0, 0, 1]")),
              {"[body] pivot: given with [body] pivot_to_com"});
 }
 
 TEST(ScenarioBody, MeshMistakesAreNamed) {
-  expect_has(error_of(scenario_with_body("mesh = { file = \"meshes/none.stl\", density = 1000 }")),
+  expect_has(body_error_of(scenario_with_body("mesh = { file = \"meshes/none.stl\", density = 1000 }")),
              {"[body.mesh] file:", "none.stl"});
-  expect_has(error_of(scenario_with_body("mesh = { density = 1000 }")), {"[body.mesh] file: missing"});
-  expect_has(error_of(scenario_with_body("mesh = { file = \"meshes/l_bracket.obj\", density = -1 }")),
+  expect_has(body_error_of(scenario_with_body("mesh = { density = 1000 }")), {"[body.mesh] file: missing"});
+  expect_has(body_error_of(scenario_with_body("mesh = { file = \"meshes/l_bracket.obj\", density = -1 }")),
              {"[body.mesh] density: got -1, expected a number > 0"});
 }
 
@@ -125,11 +126,11 @@ TEST(ScenarioBody, TheSameKeysAsAMultibodyBody) {
   EXPECT_LE(test::max_abs_diff(w.body.inertia_com(), wheel.body.inertia_com),
             4 * test::kEps * wheel.body.inertia_com.norm());
   expect_has(w.body_description, {"composite", "wheel.toml", "2 parts, 1 voids"});
-  expect_has(error_of(scenario_with_body("composite = { file = \"wheel.toml\", density = 2 }")),
+  expect_has(body_error_of(scenario_with_body("composite = { file = \"wheel.toml\", density = 2 }")),
              {"[body.composite] unknown key \"density\"; valid keys: file"});
-  expect_has(error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1] }")),
+  expect_has(body_error_of(scenario_with_body("shape = { type = \"box\", size = [1, 1, 1] }")),
              {"[body.shape] mass: missing; expected mass (kg) or density in the table, or [body] mass"});
-  expect_has(error_of(scenario_with_body("inertia = [1, 2, 3]\nmass = 1")),
+  expect_has(body_error_of(scenario_with_body("inertia = [1, 2, 3]\nmass = 1")),
              {"[body] mass: given without a pivot"});
 }
 

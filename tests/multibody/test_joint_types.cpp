@@ -24,7 +24,7 @@
 namespace poinsot::multibody {
 namespace {
 
-constexpr double kG = 9.81;
+using test::kG;  // the fixtures' gravity, m/s²
 
 Mat3 rot(const Vec3& axis, double angle) {
   return Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();

@@ -14,7 +14,7 @@ namespace poinsot::multibody {
 namespace {
 
 using poinsot::so3::hat;
-constexpr double kG = 9.81;
+using test::kG;  // the fixtures' gravity, m/s²
 
 TEST(Multipliers, ConicalPendulumReactionIsTheClosedForm) {
   const test::Conical c;

@@ -17,7 +17,7 @@ namespace poinsot::multibody {
 namespace {
 
 using poinsot::so3::hat;
-constexpr double kG = 9.81;
+using test::kG;  // the fixtures' gravity, m/s²
 
 Mat3 rot_y(double a) {
   return Eigen::AngleAxisd(a, Vec3::UnitY()).toRotationMatrix();

@@ -6,9 +6,17 @@
 
 #include <Eigen/Geometry>
 
+#include "poinsot/optimal/multibody_direct.hpp"
 #include "poinsot/optimal/multibody_problem.hpp"
 
 namespace poinsot::optimal::testing {
+
+/// `p` solved in the coordinates `c` with the default options.
+inline MultibodyOptimum solve_in(const MultibodyProblem& p, MultibodyCoordinates c) {
+  MultibodyOptions o;
+  o.coordinates = c;
+  return solve_multibody(p, o);
+}
 
 /// A solid cylinder of mass m, length ℓ and radius r along body x: J about its centre of mass (kg·m²).
 inline Mat3 rod_inertia(double m, double length, double radius) {

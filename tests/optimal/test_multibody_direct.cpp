@@ -12,12 +12,6 @@
 namespace poinsot::optimal {
 namespace {
 
-MultibodyOptimum solve(const MultibodyProblem& p, MultibodyCoordinates c) {
-  MultibodyOptions o;
-  o.coordinates = c;
-  return solve_multibody(p, o);
-}
-
 double single_hinge_cost(double theta, double T) {
   const double I = testing::single_hinge_inertia();
   return 12.0 * I * I * theta * theta / (T * T * T);
@@ -26,7 +20,8 @@ double single_hinge_cost(double theta, double T) {
 TEST(MultibodyDirect, SingleHingeMinimalCoordinatesAreExact) {
   // θ(t) is a cubic and u(t) linear: Hermite–Simpson represents both exactly, so the cost is the closed form
   // to Ipopt's tolerance (1e-10 on the scaled KKT error).
-  const MultibodyOptimum m = solve(testing::single_hinge(1.2, 2.0, 4), MultibodyCoordinates::minimal);
+  const MultibodyOptimum m =
+      testing::solve_in(testing::single_hinge(1.2, 2.0, 4), MultibodyCoordinates::minimal);
   ASSERT_TRUE(m.converged) << m.status;
   EXPECT_NEAR(m.cost / single_hinge_cost(1.2, 2.0), 1.0, 1e-10);
 }
@@ -36,9 +31,9 @@ TEST(MultibodyDirect, SingleHingeRotationMatrixConvergesAtFourthOrder) {
   // Simpson's order (h⁴ or better; measured −6.4e-4 at N = 4, −2.0e-5 at N = 8, a ratio of 31).
   const double exact = single_hinge_cost(1.2, 2.0);
   const MultibodyOptimum r4 =
-      solve(testing::single_hinge(1.2, 2.0, 4), MultibodyCoordinates::rotation_matrix);
+      testing::solve_in(testing::single_hinge(1.2, 2.0, 4), MultibodyCoordinates::rotation_matrix);
   const MultibodyOptimum r8 =
-      solve(testing::single_hinge(1.2, 2.0, 8), MultibodyCoordinates::rotation_matrix);
+      testing::solve_in(testing::single_hinge(1.2, 2.0, 8), MultibodyCoordinates::rotation_matrix);
   ASSERT_TRUE(r4.converged) << r4.status;
   ASSERT_TRUE(r8.converged) << r8.status;
   const double e4 = std::abs(r4.cost / exact - 1.0), e8 = std::abs(r8.cost / exact - 1.0);
@@ -49,7 +44,7 @@ TEST(MultibodyDirect, SingleHingeRotationMatrixConvergesAtFourthOrder) {
 TEST(MultibodyDirect, SingleHingeReactionsAndReplay) {
   const double theta = 1.2, T = 2.0;
   const MultibodyProblem p = testing::single_hinge(theta, T, 8);
-  const MultibodyOptimum r = solve(p, MultibodyCoordinates::rotation_matrix);
+  const MultibodyOptimum r = testing::solve_in(p, MultibodyCoordinates::rotation_matrix);
   ASSERT_TRUE(r.converged) << r.status;
   ASSERT_EQ(r.multipliers.size(), r.time.size());
   // The hinge's force on the rod is m a_com (no gravity): with r = R (0.5, 0, 0) from the hinge,
@@ -84,7 +79,8 @@ TEST(MultibodyDirect, SingleHingeMinimalReactionsAreTheClosedForm) {
   // continuous equations there: the closed form m a_com to round-off (1e-9 N against a peak of 0.9 N, for
   // states solved to Ipopt's 1e-10), and Λ symmetric.
   const double theta = 1.2, T = 2.0;
-  const MultibodyOptimum m = solve(testing::single_hinge(theta, T, 4), MultibodyCoordinates::minimal);
+  const MultibodyOptimum m =
+      testing::solve_in(testing::single_hinge(theta, T, 4), MultibodyCoordinates::minimal);
   ASSERT_TRUE(m.converged) << m.status;
   ASSERT_EQ(m.multipliers.size(), m.time.size());
   for (std::size_t k = 0; k < m.time.size(); ++k) {
@@ -106,8 +102,8 @@ TEST(MultibodyDirect, TwoLinkArmBothFormulationsAgree) {
   // minimal coordinates; 38.52 minimal and 38.03 R-coordinates at N = 8), so the test asks for 5 %. The
   // finer meshes are compared by bench/bench_optimal_multibody (docs/optimal_control.md).
   const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 8);
-  const MultibodyOptimum r = solve(p, MultibodyCoordinates::rotation_matrix);
-  const MultibodyOptimum m = solve(p, MultibodyCoordinates::minimal);
+  const MultibodyOptimum r = testing::solve_in(p, MultibodyCoordinates::rotation_matrix);
+  const MultibodyOptimum m = testing::solve_in(p, MultibodyCoordinates::minimal);
   ASSERT_TRUE(r.converged) << r.status;
   ASSERT_TRUE(m.converged) << m.status;
   const double fine = 39.35276577;

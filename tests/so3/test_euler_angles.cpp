@@ -9,7 +9,6 @@
 namespace poinsot::so3 {
 namespace {
 using test::kEps;
-constexpr double kPi = std::numbers::pi;
 
 std::vector<EulerSequence> all_sequences() {
   std::vector<EulerSequence> out;
@@ -30,7 +29,7 @@ Mat3 oracle(const EulerSequence& s, const Vec3& a) {
 TEST(EulerAngles, AnglesToMatrixIsTheIntrinsicProduct) {
   for (const auto& s : all_sequences()) {
     for (int i = 0; i < 200; ++i) {
-      const Vec3 a = test::random_vector(kPi);
+      const Vec3 a = test::random_vector(std::numbers::pi);
       EXPECT_LE(test::max_abs_diff(rotation_from_euler(s, a), oracle(s, a)), 8 * kEps) << s.name();
     }
   }
@@ -49,7 +48,7 @@ TEST(EulerAngles, ClassicalZXZOfTopsPutsTheSymmetryAxisAtPolarAngleTheta) {
   const double phi = 0.7, theta = 0.4, psi = 2.1;
   const Vec3 axis = rotation_from_euler(EulerSequence::ZXZ(), Vec3(phi, theta, psi)) * Vec3::UnitZ();
   EXPECT_NEAR(std::acos(axis.z()), theta, 4 * kEps);
-  EXPECT_NEAR(std::atan2(axis.y(), axis.x()), phi - kPi / 2, 4 * kEps);
+  EXPECT_NEAR(std::atan2(axis.y(), axis.x()), phi - std::numbers::pi / 2, 4 * kEps);
 }
 
 TEST(EulerAngles, MatrixRoundTripForAllTwelveSequences) {
@@ -60,12 +59,12 @@ TEST(EulerAngles, MatrixRoundTripForAllTwelveSequences) {
       EXPECT_LE(test::max_abs_diff(rotation_from_euler(s, a), R), 16 * kEps) << s.name();
       if (s.is_proper()) {
         EXPECT_GE(a[1], 0.0);
-        EXPECT_LE(a[1], kPi);
+        EXPECT_LE(a[1], std::numbers::pi);
       } else {
-        EXPECT_LE(std::abs(a[1]), kPi / 2 + 4 * kEps);
+        EXPECT_LE(std::abs(a[1]), std::numbers::pi / 2 + 4 * kEps);
       }
-      EXPECT_LE(std::abs(a[0]), kPi);
-      EXPECT_LE(std::abs(a[2]), kPi);
+      EXPECT_LE(std::abs(a[0]), std::numbers::pi);
+      EXPECT_LE(std::abs(a[2]), std::numbers::pi);
     }
   }
 }
@@ -73,8 +72,10 @@ TEST(EulerAngles, MatrixRoundTripForAllTwelveSequences) {
 TEST(EulerAngles, AnglesRoundTripInsideTheirRanges) {
   for (const auto& s : all_sequences()) {
     for (int i = 0; i < 500; ++i) {
-      Vec3 a(test::uniform(-kPi + 0.01, kPi - 0.01), 0.0, test::uniform(-kPi + 0.01, kPi - 0.01));
-      a[1] = s.is_proper() ? test::uniform(0.01, kPi - 0.01) : test::uniform(-kPi / 2 + 0.01, kPi / 2 - 0.01);
+      Vec3 a(test::uniform(-std::numbers::pi + 0.01, std::numbers::pi - 0.01), 0.0,
+             test::uniform(-std::numbers::pi + 0.01, std::numbers::pi - 0.01));
+      a[1] = s.is_proper() ? test::uniform(0.01, std::numbers::pi - 0.01)
+                           : test::uniform(-std::numbers::pi / 2 + 0.01, std::numbers::pi / 2 - 0.01);
       const Vec3 back = euler_from_rotation(s, rotation_from_euler(s, a));
       // Conditioning: the outer angles are determined to ~ulp / sin(distance to gimbal lock) ≈ 100 ulp here.
       EXPECT_LE((back - a).cwiseAbs().maxCoeff(), 400 * kEps) << s.name() << " " << a.transpose();
@@ -84,8 +85,9 @@ TEST(EulerAngles, AnglesRoundTripInsideTheirRanges) {
 
 TEST(EulerAngles, GimbalLockStillReproducesTheMatrix) {
   for (const auto& s : all_sequences()) {
-    const std::vector<double> locks =
-        s.is_proper() ? std::vector<double>{0.0, kPi} : std::vector<double>{-kPi / 2, kPi / 2};
+    const std::vector<double> locks = s.is_proper()
+                                          ? std::vector<double>{0.0, std::numbers::pi}
+                                          : std::vector<double>{-std::numbers::pi / 2, std::numbers::pi / 2};
     for (double lock : locks) {
       const Vec3 a(0.4, lock, -1.1);
       const Mat3 R = rotation_from_euler(s, a);

@@ -9,7 +9,6 @@
 namespace poinsot::so3 {
 namespace {
 using test::kEps;
-constexpr double kPi = std::numbers::pi;
 
 /// Independent oracle: the rotation matrix of the quaternion (cos θ/2, sin θ/2 n), by Eigen.
 Mat3 oracle_exp(const Vec3& v) {
@@ -20,7 +19,7 @@ Mat3 oracle_exp(const Vec3& v) {
 
 TEST(Exp, MatchesTheQuaternionFormulaOverThousandsOfRandomVectors) {
   for (int i = 0; i < 5000; ++i) {
-    const Vec3 v = test::random_unit_vector() * test::uniform(0.0, 3.0 * kPi);
+    const Vec3 v = test::random_unit_vector() * test::uniform(0.0, 3.0 * std::numbers::pi);
     EXPECT_LE(test::max_abs_diff(exp(v), oracle_exp(v)), 8 * kEps) << v.transpose();
   }
 }
@@ -67,7 +66,7 @@ TEST(Exp, CheckedVersionRejectsNonFiniteInput) {
 
 TEST(Log, InvertsExpForThousandsOfRandomVectors) {
   for (int i = 0; i < 5000; ++i) {
-    const Vec3 v = test::random_unit_vector() * test::uniform(0.0, kPi * (1 - 1e-9));
+    const Vec3 v = test::random_unit_vector() * test::uniform(0.0, std::numbers::pi * (1 - 1e-9));
     const Vec3 back = log(exp(v));
     EXPECT_LE((back - v).norm(), 16 * kEps * std::max(1.0, v.norm())) << v.transpose();
   }
@@ -77,7 +76,7 @@ TEST(Log, ExpOfLogIsIdentityOnRandomRotations) {
   for (int i = 0; i < 5000; ++i) {
     const Mat3 R = test::random_rotation();
     const Vec3 v = log(R);
-    EXPECT_LE(v.norm(), kPi);
+    EXPECT_LE(v.norm(), std::numbers::pi);
     EXPECT_LE(test::max_abs_diff(exp(v), R), 16 * kEps);
   }
 }
@@ -94,7 +93,7 @@ TEST(Log, NoLossOfAccuracyNearZero) {
 TEST(Log, NoLossOfAccuracyNearPi) {
   const Vec3 n = Vec3(0.2, 0.7, -0.4).normalized();
   for (double delta : {1e-4, 1e-8, 1e-10, 1e-12}) {
-    const double theta = kPi - delta;
+    const double theta = std::numbers::pi - delta;
     const Vec3 back = log(exp(theta * n));
     // exp rounds its entries to ~1 ulp; log recovers θ and n with an error of the same order. The classical
     // acos((tr R − 1)/2) would be off by ~sqrt(ulp) ≈ 1e-8 here.
@@ -105,9 +104,9 @@ TEST(Log, NoLossOfAccuracyNearPi) {
 TEST(Log, AtExactlyPiReturnsAValidHalfTurn) {
   for (const Vec3& n : {Vec3(Vec3::UnitX()), Vec3(Vec3::UnitY()), Vec3(Vec3::UnitZ()),
                         Vec3(1, 1, 0).normalized(), Vec3(-1, 2, 2).normalized()}) {
-    const Mat3 R = oracle_exp(kPi * n);
+    const Mat3 R = oracle_exp(std::numbers::pi * n);
     const Vec3 v = log(R);
-    EXPECT_NEAR(v.norm(), kPi, 8 * kEps);
+    EXPECT_NEAR(v.norm(), std::numbers::pi, 8 * kEps);
     EXPECT_LE(test::max_abs_diff(exp(v), R), 16 * kEps);
     EXPECT_NEAR(std::abs(v.normalized().dot(n)), 1.0, 8 * kEps);
   }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <initializer_list>
 #include <limits>
 #include <random>
@@ -26,6 +27,14 @@ namespace poinsot::test {
 /// process's id (tests of two build trees, or two CTest jobs, may run side by side on one machine).
 inline std::filesystem::path temp_path(const std::string& name) {
   return std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+}
+
+/// The whole content of a text file ("" when it cannot be read: the test's comparison then fails).
+inline std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
 }
 
 inline constexpr double kEps = std::numeric_limits<double>::epsilon();  // 2.22e-16
