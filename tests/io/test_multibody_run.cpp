@@ -24,7 +24,7 @@ namespace {
 namespace fs = std::filesystem;
 using multibody::Scenario;
 
-fs::path temp_dir(const std::string& name) {
+fs::path multibody_run_temp_dir(const std::string& name) {
   const auto d = ::poinsot::test::temp_path("poinsot_io_multibody_run_" + name);
   fs::remove_all(d);
   return d;
@@ -163,7 +163,7 @@ TEST(MultibodyRun, HangingChainReactionsCarryTheWeightBelow) {
   }
   sc.source = "hanging.toml";
   sc.duration = 0.01;
-  const auto dir = temp_dir("hanging");
+  const auto dir = multibody_run_temp_dir("hanging");
   MultibodyRunOptions o;
   o.out_dir = dir.string();
   const MultibodyRunSummary s = run_multibody_scenario(sc, o);
@@ -220,7 +220,7 @@ TEST(MultibodyRun, StopRequestLeavesCompleteFilesAndAnInterruptedSummary) {
   // The stop is asked at the 4th row (t = 3 × 10 steps): every file ends at that row, summary.json says
   // interrupted, and the report says where.
   Scenario sc = compound_pendulum();
-  const auto dir = temp_dir("stop");
+  const auto dir = multibody_run_temp_dir("stop");
   MultibodyRunOptions o;
   o.out_dir = dir.string();
   int rows = 0;
@@ -251,7 +251,7 @@ TEST(MultibodyRun, FailureKeepsTheRowsWrittenAndSaysFailed) {
   sc.initial.bodies[0].omega_body = Vec3(0, 0, 20);
   sc.dt = 0.1;
   sc.duration = 1.0;
-  const auto dir = temp_dir("fast");
+  const auto dir = multibody_run_temp_dir("fast");
   MultibodyRunOptions o;
   o.out_dir = dir.string();
   EXPECT_THROW(run_multibody_scenario(sc, o), ComputationFailed);
@@ -275,7 +275,7 @@ TEST(MultibodyRun, FailureKeepsTheRowsWrittenAndSaysFailed) {
 }
 
 TEST(MultibodyRun, UnwritableFolderIsRefusedBeforeTheFirstStep) {
-  const auto dir = temp_dir("unwritable");
+  const auto dir = multibody_run_temp_dir("unwritable");
   fs::create_directories(dir);
   std::ofstream(dir / "file") << "x";
   MultibodyRunOptions o;

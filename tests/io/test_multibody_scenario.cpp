@@ -25,10 +25,10 @@ namespace {
 
 using multibody::State;
 
-const std::string kExamples = std::string(POINSOT_SOURCE_DIR) + "/examples/";
+const std::string kMultibodyExamples = std::string(POINSOT_SOURCE_DIR) + "/examples/";
 
 std::string multibody_error_of(const std::string& text) {
-  return test::message_of([&] { (void)parse_multibody_scenario(text, "t.toml", kExamples); }, text);
+  return test::message_of([&] { (void)parse_multibody_scenario(text, "t.toml", kMultibodyExamples); }, text);
 }
 
 using test::expect_has;
@@ -239,7 +239,7 @@ TEST(MultibodyScenario, ErrorsNameTheFileTheEntryTheFieldTheValueAndTheExpectati
 
 TEST(MultibodyScenario, EveryExampleLoadsAndRuns) {
   int count = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(kExamples + "multibody/")) {
+  for (const auto& entry : std::filesystem::directory_iterator(kMultibodyExamples + "multibody/")) {
     if (entry.path().extension() != ".toml") continue;
     ++count;
     SCOPED_TRACE(entry.path().string());
@@ -365,9 +365,9 @@ TEST(MultibodyScenario, MeshBodyHasTheInertiaLayersMassPropertiesAndPointsInTheM
   const auto sc =
       parse_multibody_scenario(pendulum("mesh = { file = \"meshes/l_bracket.obj\", density = 2700.0 }",
                                         bracket_com(), pivot, Vec3::UnitZ(), 0.2, 1e-3),
-                               "t.toml", kExamples);
+                               "t.toml", kMultibodyExamples);
   const inertia::MassProperties mp =
-      inertia::mesh_mass_properties(inertia::load_mesh(kExamples + "meshes/l_bracket.obj"), 2700.0);
+      inertia::mesh_mass_properties(inertia::load_mesh(kMultibodyExamples + "meshes/l_bracket.obj"), 2700.0);
   const multibody::Body& body = sc.system.bodies()[0];
   // The same code path as the inertia layer: equal to round-off of K = tr(J)/2 − J.
   EXPECT_EQ(body.mass, mp.mass);
@@ -392,9 +392,10 @@ TEST(MultibodyScenario, OmittedPointsAreTheCentreOfMassGivenOnesAreInTheBodysFra
   const std::string body =
       "[[bodies]]\nname = \"b\"\nmesh = { file = \"meshes/l_bracket.obj\", density = 2700.0 }\n";
   const auto at_com = parse_multibody_scenario(body + "[[forces]]\nbody = \"b\"\nforce = [0, 0.01, 0]\n",
-                                               "t.toml", kExamples);
-  const auto at_origin = parse_multibody_scenario(
-      body + "[[forces]]\nbody = \"b\"\nforce = [0, 0.01, 0]\npoint = [0, 0, 0]\n", "t.toml", kExamples);
+                                               "t.toml", kMultibodyExamples);
+  const auto at_origin =
+      parse_multibody_scenario(body + "[[forces]]\nbody = \"b\"\nforce = [0, 0.01, 0]\npoint = [0, 0, 0]\n",
+                               "t.toml", kMultibodyExamples);
   const Vec3 c = at_com.initial.bodies[0].x_space;  // position 0, R = I: the centre of mass at c
   EXPECT_EQ(at_com.system.forces()[0].point_body, Vec3::Zero());
   EXPECT_EQ(at_origin.system.forces()[0].point_body, Vec3(-c));
@@ -428,7 +429,7 @@ TEST(MultibodyScenario, MeshPendulumHasTheCompoundPendulumPeriod) {
     const auto sc =
         parse_multibody_scenario(pendulum("mesh = { file = \"meshes/l_bracket.obj\", density = 2700.0 }",
                                           bracket_com(), pivot, Vec3::UnitZ(), theta0, h),
-                                 "t.toml", kExamples);
+                                 "t.toml", kMultibodyExamples);
     const double Th = measured_period(sc, static_cast<int>(std::lround(3.2 * T / h)));
     errors.push_back((Th - T) / T);
     // RATTLE's period is short by the Störmer-Verlet amount (ωh)²/24 (ω̃ = (2/h) asin(ωh/2)) and the finite
@@ -462,7 +463,7 @@ TEST(MultibodyScenario, CompositeBodyEqualsTheMeshItDescribes) {
   const auto mesh =
       parse_multibody_scenario(pendulum("mesh = { file = \"meshes/l_bracket.obj\", density = 2700.0 }",
                                         bracket_com(), pivot, Vec3::UnitZ(), 0.3, 1e-3),
-                               "t.toml", kExamples);
+                               "t.toml", kMultibodyExamples);
   const multibody::Body& bc = composite.system.bodies()[0];
   const multibody::Body& bm = mesh.system.bodies()[0];
   EXPECT_NEAR(bc.mass, bm.mass, 1e-6 * bm.mass);

@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path temp_dir(const std::string& name) {
+fs::path run_temp_dir(const std::string& name) {
   const auto d = ::poinsot::test::temp_path("poinsot_io_run_" + name);
   fs::remove_all(d);
   return d;
@@ -47,7 +47,7 @@ dt = 0.01
 t_end = 20
 sample_dt = 0.01
 )");
-  const auto dir = temp_dir("racket");
+  const auto dir = run_temp_dir("racket");
   RunOptions o;
   o.out_dir = dir.string();
   const RunSummary s = run_scenario(sc, o);
@@ -153,7 +153,7 @@ dt = 1e-3
 t_end = 100
 sample_dt = 0.01
 )");
-  const auto dir = temp_dir("stop");
+  const auto dir = run_temp_dir("stop");
   RunOptions o;
   o.out_dir = dir.string();
   long long seen = 0;
@@ -169,7 +169,7 @@ sample_dt = 0.01
 }
 
 TEST(Run, UnwritableOutputIsRefusedBeforeSimulating) {
-  const auto dir = temp_dir("unwritable");
+  const auto dir = run_temp_dir("unwritable");
   fs::create_directories(dir);
   std::ofstream(dir / "a_file") << "x";
   Scenario sc = parse_scenario(

@@ -14,7 +14,7 @@
 namespace poinsot::io {
 namespace {
 
-std::filesystem::path temp_dir(const std::string& name) {
+std::filesystem::path writer_temp_dir(const std::string& name) {
   const auto d = ::poinsot::test::temp_path("poinsot_io_test_" + name);
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
@@ -38,7 +38,7 @@ std::vector<double> fields(const std::string& line) {
 }
 
 TEST(TrajectoryCsvWriter, RowsReadBackExactlyWithTheirInvariants) {
-  const auto dir = temp_dir("csv");
+  const auto dir = writer_temp_dir("csv");
   const auto body =
       dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3)).with_pivot(2.0, Vec3(0, 0, 0.1));
   const Vec3 g(0, 0, -9.81);
@@ -77,7 +77,7 @@ TEST(TrajectoryCsvWriter, RowsReadBackExactlyWithTheirInvariants) {
 }
 
 TEST(TrajectoryCsvWriter, FlushHandsOverEveryWholeRow) {
-  const auto dir = temp_dir("flush");
+  const auto dir = writer_temp_dir("flush");
   const auto body = dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3));
   TrajectoryCsvWriter w((dir / "t.csv").string(), body, Vec3::Zero());
   dynamics::State s;
@@ -95,7 +95,7 @@ TEST(TrajectoryCsvWriter, FlushHandsOverEveryWholeRow) {
 }
 
 TEST(TrajectoryCsvWriter, UnwritablePathIsAnInvalidInput) {
-  const auto dir = temp_dir("bad");
+  const auto dir = writer_temp_dir("bad");
   std::ofstream(dir / "file") << "x";
   const auto body = dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3));
   EXPECT_THROW(TrajectoryCsvWriter((dir / "file" / "t.csv").string(), body, Vec3::Zero()), InvalidInput);
