@@ -1,6 +1,7 @@
 // The rotation-matrix point model of a multibody problem (multibody_rotation_model.hpp).
 #include "multibody_rotation_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -292,13 +293,38 @@ void MultibodyRotationModel::variable_bounds(bool first_node, double* lower, dou
       upper[control(static_cast<int>(ai)) + k] = bound;
     }
   }
-  if (!first_node) return;
+  // Node 0: S = μ = 0 (its state is given and consistent); elsewhere the bounds of stabilisation_bound().
+  const double sigma = first_node ? 0.0 : stabilisation_bound();
+  const double L = point_row_scale();
+  for (int i = 0; i < bodies_; ++i)
+    for (int k = 0; k < 6; ++k) {
+      lower[S(i, 0, 0) + k] = -sigma;
+      upper[S(i, 0, 0) + k] = sigma;
+    }
+  for (int j = 0; j < problem_.system.joint_count(); ++j)
+    for (int k = 0; k < problem_.system.joints()[static_cast<std::size_t>(j)].rows(); ++k) {
+      const bool point_row = k < problem_.system.joints()[static_cast<std::size_t>(j)].translation_rows();
+      const double bound = point_row ? sigma * L : sigma;
+      lower[mu(j) + k] = -bound;
+      upper[mu(j) + k] = bound;
+    }
+}
+
+double MultibodyRotationModel::stabilisation_fraction(const double* w) const {
+  const double sigma = stabilisation_bound();
+  const double L = point_row_scale();
+  double fraction = 0.0;
   for (int i = 0; i < bodies_; ++i)
     for (int k = 0; k < 6; ++k)
-      lower[S(i, 0, 0) + k] = upper[S(i, 0, 0) + k] = 0.0;
+      fraction = std::max(fraction, std::abs(w[S(i, 0, 0) + k]) / sigma);
   for (int j = 0; j < problem_.system.joint_count(); ++j)
     for (int k = 0; k < problem_.system.joints()[static_cast<std::size_t>(j)].rows(); ++k)
-      lower[mu(j) + k] = upper[mu(j) + k] = 0.0;
+      fraction =
+          std::max(fraction, std::abs(w[mu(j) + k]) /
+                                 (k < problem_.system.joints()[static_cast<std::size_t>(j)].translation_rows()
+                                      ? sigma * L
+                                      : sigma));
+  return fraction;
 }
 
 Eigen::VectorXd MultibodyRotationModel::state_vector(const multibody::State& state) const {
