@@ -116,8 +116,6 @@ void check_warm_start(const MultibodyProblem& problem, const MultibodyOptimum& w
   }
 }
 
-constexpr double kMaxStabilisationFraction = 0.5;
-
 void check_resolved_rotations(const MultibodyProblem& problem, MultibodyOptimum& out) {
   if (!out.converged) return;
   for (std::size_t p = 1; p < out.states.size(); ++p) {
@@ -137,18 +135,19 @@ void check_resolved_rotations(const MultibodyProblem& problem, MultibodyOptimum&
   }
 }
 
-/// The stabilising variables S and μ vanish on the continuous problem's solution and are of the
-/// transcription's error on the discrete one; their bounds (multibody_rotation_model.hpp) only exclude the
-/// spurious half-turn jumps. A result that uses more than half of a bound is the sign of such a jump, or
-/// of a mesh too coarse for the motion: reported as not converged. Below it, no bound is active, so the
-/// result is also a KKT point of the transcription without the bounds.
-void check_stabilisation(MultibodyOptimum& out) {
-  if (!out.converged || out.stabilisation <= kMaxStabilisationFraction) return;
+/// With bounded stabilising variables (MultibodyOptions::stabilisation_step c > 0), a result that uses more
+/// than half of a bound is shaped by the bounds (a mesh too coarse for the motion, or the remains of a
+/// spurious jump): reported as not converged. Below it no bound is active, so the result is also a KKT point
+/// of the transcription without them.
+void check_stabilisation(const MultibodyOptions& options, MultibodyOptimum& out) {
+  const double limit = 0.5 * options.stabilisation_step;
+  if (!out.converged || options.stabilisation_step <= 0.0 || out.stabilisation_step <= limit) return;
   out.converged = false;
   out.status = fmt::format(
-      "not converged: the stabilising variables reach {:.3g} of their bound (expected at most {:.3g}: a "
-      "mesh that resolves the motion)",
-      out.stabilisation, kMaxStabilisationFraction);
+      "not converged: the stabilising variables carry a step of {:.3g} (expected at most {:.3g}, half of "
+      "their "
+      "bound: a mesh that resolves the motion)",
+      out.stabilisation_step, limit);
 }
 
 }  // namespace
@@ -178,7 +177,13 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     check_resolved_rotations(problem, out);
     return out;
   }
-  const detail::MultibodyRotationModel model(problem);
+  if (!(options.stabilisation_step >= 0.0 && options.stabilisation_step < 0.6)) {
+    throw InvalidInput(
+        fmt::format("optimal control: stabilisation_step: got {}; expected a number from 0 to 0.6 "
+                    "(0: unbounded)",
+                    options.stabilisation_step));
+  }
+  const detail::MultibodyRotationModel model(problem, options.stabilisation_step);
   const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
   const Eigen::VectorXd yf = model.state_vector(problem.final_state);
   // The tangent space of the constraints at the target: an orthonormal basis N of the null space of the
@@ -198,13 +203,13 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
       problem, model, y0, yf, rows, detail::rotation_rate_rows(problem, model), options,
       [&](const double* w, double t) {
         multipliers.push_back(model.multipliers_of(w));
-        stabilisation = std::max(stabilisation, model.stabilisation_fraction(w));
+        stabilisation = std::max(stabilisation, model.stabilisation_step(w));
         return model.state_of(w, t);
       },
       [&](const multibody::State& s) { return model.state_vector(s); }, start);
   out.multipliers = std::move(multipliers);
-  out.stabilisation = stabilisation;
-  check_stabilisation(out);
+  out.stabilisation_step = stabilisation;
+  check_stabilisation(options, out);
   check_resolved_rotations(problem, out);
   return out;
 }

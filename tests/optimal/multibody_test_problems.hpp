@@ -137,6 +137,9 @@ inline MultibodyProblem falling_cat(double alpha, double turn, double T, int int
   p.actuators = {{ActuatorKind::ball_torque, waist, 100.0}};
   return p;
 }
+/// The bound on the stabilising variables' step for the falling cat (MultibodyOptions::stabilisation_step):
+/// unbounded, the half turn from the naive guess ends on a spurious jump of cost ~1e-26.
+inline constexpr double kCatStabilisationStep = 0.05;
 /// Kane & Scher's no-twist condition on the cat's waist: the relative rotation R_aᵀR_b is C M with C the
 /// straight cat's (a half-turn about body z: the halves face each other) and M a bend about an axis
 /// perpendicular to the spine (body x).

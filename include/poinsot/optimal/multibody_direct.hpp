@@ -44,6 +44,11 @@ struct MultibodyOptions {
   /// owned; e.g. a coarser mesh's): its states linearly interpolated between its collocation points, its
   /// controls by control_at, every other variable zero.
   const MultibodyOptimum* warm_start = nullptr;
+  /// Rotation-matrix coordinates: c > 0 bounds the stabilising variables S and μ of the stabilised index-2
+  /// form by c/h at every point (h = T/N; for c < 0.6 no body can then cross a half-turn inside one interval
+  /// without angular velocity, which the unbounded form allows at no cost), and a result whose
+  /// stabilisation_step exceeds c/2 is reported as not converged (the bounds would shape it). 0: unbounded.
+  double stabilisation_step = 0.0;
 };
 
 struct MultibodyOptimum {
@@ -60,9 +65,11 @@ struct MultibodyOptimum {
   /// continuous equations at the point's state and controls (multibody::exact_multipliers).
   std::vector<multibody::Multipliers> multipliers;
   double max_constraint_error = 0.0;  ///< largest |row| of the NLP's constraints at the last iterate
-  /// Rotation-matrix coordinates: the largest stabilising variable (S of a body, μ of a joint) at any point,
-  /// as a fraction of its bound (docs/optimal_control.md, "The falling cat"); 0 in minimal coordinates.
-  double stabilisation = 0.0;
+  /// Rotation-matrix coordinates: the largest step the stabilising variables carry at any point, h|S_kl| of
+  /// a body, h|μ| of a joint (MultibodyOptions::stabilisation_step); 0 in minimal coordinates. They vanish on
+  /// the continuous problem's solution: a step comparable to a body's turn per interval is the transcription
+  /// using them to move the body (docs/optimal_control.md, "The falling cat").
+  double stabilisation_step = 0.0;
 };
 
 /// Throws InvalidInput for an invalid problem (validate), for a warm start whose points do not span [0, T]
