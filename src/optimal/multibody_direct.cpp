@@ -97,10 +97,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   return out;
 }
 
-/// A body that turns by more than π/2 between two neighbouring collocation points is not resolved by the mesh
-/// (Hermite–Simpson's cubic cannot follow it), and in R-coordinates it is the sign of a spurious solution:
-/// the stabilising term R S (S symmetric) can carry R across a half-turn Q in one interval, since R(Q − I) is
-/// of that form. Such a result is reported as not converged, never as an optimum.
+/// Throws InvalidInput unless `warm` is a solution of `problem` on some mesh (multibody_direct.hpp).
 void check_warm_start(const MultibodyProblem& problem, const MultibodyOptimum& warm) {
   const double T = problem.final_time;
   const bool spans = warm.time.size() >= 3 && warm.states.size() == warm.time.size() &&
@@ -116,6 +113,10 @@ void check_warm_start(const MultibodyProblem& problem, const MultibodyOptimum& w
   }
 }
 
+/// A body that turns by more than π/2 between two neighbouring collocation points is not resolved by the mesh
+/// (Hermite–Simpson's cubic cannot follow it), and in R-coordinates it is the sign of a spurious solution:
+/// the stabilising term R S (S symmetric) can carry R across a half-turn Q in one interval, since R(Q − I) is
+/// of that form. Such a result is reported as not converged, never as an optimum.
 void check_resolved_rotations(const MultibodyProblem& problem, MultibodyOptimum& out) {
   if (!out.converged) return;
   for (std::size_t p = 1; p < out.states.size(); ++p) {
@@ -144,9 +145,8 @@ void check_stabilisation(const MultibodyOptions& options, MultibodyOptimum& out)
   if (!out.converged || options.stabilisation_step <= 0.0 || out.stabilisation_step <= limit) return;
   out.converged = false;
   out.status = fmt::format(
-      "not converged: the stabilising variables carry a step of {:.3g} (expected at most {:.3g}, half of "
-      "their "
-      "bound: a mesh that resolves the motion)",
+      "not converged: the stabilising variables carry a step of {:.3g}; expected at most {:.3g} (half of "
+      "their bound: a mesh that resolves the motion)",
       out.stabilisation_step, limit);
 }
 
