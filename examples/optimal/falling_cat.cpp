@@ -158,8 +158,11 @@ int main(int argc, char** argv) {
     std::printf("falling cat: not solved on 24 intervals: %s\n", previous.status.c_str());
     return 1;
   }
-  std::printf("  effort differences %.3g, %.3g: observed order %.2f\n", effort[1] - effort[0],
-              effort[2] - effort[1], std::log2((effort[1] - effort[0]) / (effort[2] - effort[1])));
+  const double d1 = effort[1] - effort[0], d2 = effort[2] - effort[1];
+  if (d1 * d2 > 0.0)
+    std::printf("  effort differences %.3g, %.3g: observed order %.2f\n", d1, d2, std::log2(d1 / d2));
+  else
+    std::printf("  effort differences %.3g, %.3g: of opposite signs, no order\n", d1, d2);
   const MultibodyReplay replay = replay_controls(p, previous, 256);
   std::printf(
       "  re-simulated (256 steps per interval): attitude error %.2e rad, joint gap %.2e m, momentum change "

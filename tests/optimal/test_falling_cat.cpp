@@ -62,6 +62,18 @@ TEST(FallingCat, HalfTurnIsAVerifiedOptimum) {
   expect_verified_half_turn(p, r);
 }
 
+TEST(FallingCat, UnboundedHalfTurnEndsOnTheSpuriousJumpAndIsNotPresentedAsAnOptimum) {
+  // Without the bound, from the naive guess on 6 intervals, the NLP ends on the spurious solution: one
+  // interval's stabilising term R S carries both halves across the half-turn (R (Q − I) with Q − I
+  // symmetric) at no cost. The step check names the unresolved turn; the stabilisation step is of order 1.
+  const MultibodyProblem p = testing::falling_cat(kBend, kTurn, 1.0, 6);
+  const MultibodyOptimum r = solve_multibody(p);
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.status.find("between the collocation points"), std::string::npos) << r.status;
+  EXPECT_LT(r.cost, 1e-6);
+  EXPECT_GT(r.stabilisation_step, 0.5);
+}
+
 TEST(FallingCat, NoTwistRowIsTheTwistOfTheRelativeRotation) {
   // A twisted, bent relative rotation: M = Cᵀ R_aᵀ R_b with the unit quaternion (q₀, q) has the twist
   // s·vee(M − Mᵀ) = 4 q₀ (q·s) (vee(M − Mᵀ) = 2 sin θ n = 4 q₀ q): the residual, and the transcription's
