@@ -27,13 +27,14 @@ using detail::PointFunctions;
 using detail::SparseNlp;
 
 /// Solves the transcription of `model` and fills the parts of the optimum common to both formulations.
-/// `decode(w, t)` gives the multibody state of the point variables w; `rates` the hinge rates of the
+/// `decode(w, t)` gives the multibody state of the point variables w, `state_vector(state)` the state y of a
+/// multibody state (for a warm start); `rates` the hinge rates of the
 /// problem's rate bounds at a point (multibody_rate_rows.hpp), bounded at every point but the first.
-template <class Decode>
+template <class Decode, class Encode>
 MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationModel& model,
                              const Eigen::VectorXd& y0, const Eigen::VectorXd& yf,
                              const Eigen::MatrixXd& final_rows, const PointFunctions& rates,
-                             const MultibodyOptions& options, Decode decode,
+                             const MultibodyOptions& options, Decode decode, Encode state_vector,
                              std::chrono::steady_clock::time_point start) {
   const HermiteSimpsonDae base(model, problem.intervals, problem.final_time, y0, final_rows, final_rows * yf);
   std::vector<double> rate_max;
@@ -41,6 +42,8 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
     rate_max.push_back(b.rate_max);
   std::vector<double> rate_min(rate_max.size());
   std::transform(rate_max.begin(), rate_max.end(), rate_min.begin(), [](double r) { return -r; });
+  rate_min.resize(static_cast<std::size_t>(rates.rows()), 0.0);  // the no-twist rows: = 0
+  rate_max.resize(static_cast<std::size_t>(rates.rows()), 0.0);
   const PathInequalityNlp bounded(base, rates, rate_min, rate_max);
   const SparseNlp& nlp = rates.rows() > 0 ? static_cast<const SparseNlp&>(bounded) : base;
   const int nw = model.point_size();
@@ -48,7 +51,22 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   std::vector<double> guess(static_cast<std::size_t>(nlp.num_variables()), 0.0);
   for (int p = 0; p < base.points(); ++p) {
     const double s = static_cast<double>(p) / (base.points() - 1);
-    Eigen::Map<Eigen::VectorXd>(guess.data() + nw * p, ny) = (1.0 - s) * y0 + s * yf;
+    Eigen::Map<Eigen::VectorXd> y(guess.data() + nw * p, ny);
+    if (options.warm_start == nullptr) {
+      y = (1.0 - s) * y0 + s * yf;
+      continue;
+    }
+    const MultibodyOptimum& warm = *options.warm_start;
+    const double t = base.point_time(p);
+    const auto after = std::upper_bound(warm.time.begin(), warm.time.end(), t);
+    const std::size_t j =
+        std::min(static_cast<std::size_t>(std::max(after - warm.time.begin(), std::ptrdiff_t{1})),
+                 warm.time.size() - 1);
+    const double f = std::clamp((t - warm.time[j - 1]) / (warm.time[j] - warm.time[j - 1]), 0.0, 1.0);
+    y = (1.0 - f) * state_vector(warm.states[j - 1]) + f * state_vector(warm.states[j]);
+    const Eigen::VectorXd u = control_at(warm, t);
+    for (std::size_t k = 0; k < model.control_indices().size(); ++k)
+      guess[static_cast<std::size_t>(nw * p + model.control_indices()[k])] = u(static_cast<Eigen::Index>(k));
   }
   detail::IpoptSettings settings;
   settings.tolerance = options.nlp_tolerance;
@@ -79,6 +97,22 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   return out;
 }
 
+/// Throws InvalidInput unless `warm` is a solution of `problem` on some mesh (multibody_direct.hpp).
+void check_warm_start(const MultibodyProblem& problem, const MultibodyOptimum& warm) {
+  const double T = problem.final_time;
+  const bool spans = warm.time.size() >= 3 && warm.states.size() == warm.time.size() &&
+                     warm.controls.size() == warm.time.size() && warm.time.front() == 0.0 &&
+                     std::abs(warm.time.back() - T) <= 1e-12 * T;
+  if (!spans || warm.states.front().bodies.size() != static_cast<std::size_t>(problem.system.body_count()) ||
+      warm.controls.front().size() != control_count(problem)) {
+    throw InvalidInput(fmt::format(
+        "optimal control: warm_start: got {} points ending at t = {:.6g} s; expected an optimum of the same "
+        "problem (points spanning [0, {:.6g}] s, {} bodies, {} controls)",
+        warm.time.size(), warm.time.empty() ? 0.0 : warm.time.back(), T, problem.system.body_count(),
+        control_count(problem)));
+  }
+}
+
 /// A body that turns by more than π/2 between two neighbouring collocation points is not resolved by the mesh
 /// (Hermite–Simpson's cubic cannot follow it), and in R-coordinates it is the sign of a spurious solution:
 /// the stabilising term R S (S symmetric) can carry R across a half-turn Q in one interval, since R(Q − I) is
@@ -102,10 +136,25 @@ void check_resolved_rotations(const MultibodyProblem& problem, MultibodyOptimum&
   }
 }
 
+/// With bounded stabilising variables (MultibodyOptions::stabilisation_step c > 0), a result that uses more
+/// than half of a bound is shaped by the bounds (a mesh too coarse for the motion, or the remains of a
+/// spurious jump): reported as not converged. Below it no bound is active, so the result is also a KKT point
+/// of the transcription without them.
+void check_stabilisation(const MultibodyOptions& options, MultibodyOptimum& out) {
+  const double limit = 0.5 * options.stabilisation_step;
+  if (!out.converged || options.stabilisation_step <= 0.0 || out.stabilisation_step <= limit) return;
+  out.converged = false;
+  out.status = fmt::format(
+      "not converged: the stabilising variables carry a step of {:.3g}; expected at most {:.3g} (half of "
+      "their bound: a mesh that resolves the motion)",
+      out.stabilisation_step, limit);
+}
+
 }  // namespace
 
 MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options) {
   validate(problem);
+  if (options.warm_start != nullptr) check_warm_start(problem, *options.warm_start);
   const auto start = std::chrono::steady_clock::now();
   if (options.coordinates == MultibodyCoordinates::minimal) {
     const detail::MultibodyMinimalModel model(problem);
@@ -117,7 +166,8 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
         [&](const multibody::State& s) { return model.state_vector(s); });
     MultibodyOptimum out = solve_model(
         problem, model, y0, yf, rows, detail::minimal_rate_rows(problem), options,
-        [&](const double* w, double t) { return model.state_of(w, t); }, start);
+        [&](const double* w, double t) { return model.state_of(w, t); },
+        [&](const multibody::State& s) { return model.state_vector(s); }, start);
     // No multiplier is a variable here: the reactions and Λ of the continuous equations at each point's
     // state and controls (one KKT solve each, multibody/multipliers.hpp).
     for (std::size_t p = 0; p < out.states.size(); ++p) {
@@ -127,7 +177,13 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     check_resolved_rotations(problem, out);
     return out;
   }
-  const detail::MultibodyRotationModel model(problem);
+  if (!(options.stabilisation_step >= 0.0 && options.stabilisation_step < 0.6)) {
+    throw InvalidInput(
+        fmt::format("optimal control: stabilisation_step: got {}; expected a number from 0 to 0.6 "
+                    "(0: unbounded)",
+                    options.stabilisation_step));
+  }
+  const detail::MultibodyRotationModel model(problem, options.stabilisation_step);
   const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
   const Eigen::VectorXd yf = model.state_vector(problem.final_state);
   // The tangent space of the constraints at the target: an orthonormal basis N of the null space of the
@@ -142,14 +198,18 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
       },
       [&](const multibody::State& s) { return model.state_vector(s); });
   std::vector<multibody::Multipliers> multipliers;
+  double stabilisation = 0.0;
   MultibodyOptimum out = solve_model(
       problem, model, y0, yf, rows, detail::rotation_rate_rows(problem, model), options,
       [&](const double* w, double t) {
         multipliers.push_back(model.multipliers_of(w));
+        stabilisation = std::max(stabilisation, model.stabilisation_step(w));
         return model.state_of(w, t);
       },
-      start);
+      [&](const multibody::State& s) { return model.state_vector(s); }, start);
   out.multipliers = std::move(multipliers);
+  out.stabilisation_step = stabilisation;
+  check_stabilisation(options, out);
   check_resolved_rotations(problem, out);
   return out;
 }

@@ -146,6 +146,31 @@ void validate(const MultibodyProblem& p) {
       }
     }
   }
+  for (std::size_t i = 0; i < p.no_twist.size(); ++i) {
+    const NoTwist& c = p.no_twist[i];
+    const std::string what = fmt::format("optimal control: no_twist[{}]", i);
+    if (c.joint < 0 || c.joint >= p.system.joint_count() ||
+        p.system.joints()[static_cast<std::size_t>(c.joint)].type != multibody::JointType::ball) {
+      throw InvalidInput(fmt::format("{}: joint: got index {}; expected a ball joint", what, c.joint));
+    }
+    if (!(std::abs(c.axis_a.norm() - 1.0) <= 1e-9))
+      throw InvalidInput(
+          fmt::format("{}: axis_a: got norm {}; expected a unit vector", what, c.axis_a.norm()));
+    const double orthogonality = (c.straight.transpose() * c.straight - Mat3::Identity()).norm();
+    if (!(orthogonality <= 1e-9) || !(c.straight.determinant() > 0.0)) {
+      throw InvalidInput(fmt::format("{}: straight: got ‖CᵀC − I‖ = {:.3g}, det {:.3g}; expected a rotation",
+                                     what, orthogonality, c.straight.determinant()));
+    }
+    for (const auto& [state, name] :
+         {std::pair{&p.initial_state, "initial"}, std::pair{&p.final_state, "final"}}) {
+      const double twist = twist_residual(p.system, *state, c);
+      if (!(std::abs(twist) <= 1e-9)) {
+        throw InvalidInput(
+            fmt::format("{}: the {} state has the twist {:.3g}; expected boundary states without twist", what,
+                        name, twist));
+      }
+    }
+  }
   if (detail::conserves_momenta(p)) {
     // Free floating with internal torques only: P, H and M x_com − t P cannot change.
     const Eigen::VectorXd q0 = detail::conserved_quantities(p.system, p.initial_state, 0.0);
@@ -163,6 +188,16 @@ void validate(const MultibodyProblem& p) {
           gap));
     }
   }
+}
+
+double twist_residual(const multibody::System& system, const multibody::State& state,
+                      const NoTwist& condition) {
+  const multibody::Joint& j = system.joints()[static_cast<std::size_t>(condition.joint)];
+  const Mat3 M = condition.straight.transpose() *
+                 multibody::side_state(state.bodies, j.body_a).R_space_body.transpose() *
+                 multibody::side_state(state.bodies, j.body_b).R_space_body;
+  const Mat3 W = M - M.transpose();
+  return condition.axis_a.dot(Vec3(W(2, 1), W(0, 2), W(1, 0)));
 }
 
 int hinge_index(const multibody::System& system, const std::string& name) {

@@ -39,6 +39,29 @@ QuadraticFunctions rotation_rate_rows(const MultibodyProblem& problem, const Mul
     add_axis_rate(out, row, model, j.body_a, j.p_a[0].cross(j.p_a[1]), 1.0);
     if (j.body_b != multibody::kWorld) add_axis_rate(out, row, model, j.body_b, j.u_b[0], -1.0);
   }
+  // s·vee(M − Mᵀ) = Σ_ij c_ij M_ij with c_ij = −Σ_m ε_ijm s_m, M = Cᵀ R_aᵀ R_b: M_ij = Σ_kl C_li R_a(k, l)
+  // R_b(k, j).
+  for (const NoTwist& t : problem.no_twist) {
+    const multibody::Joint& j = problem.system.joints()[static_cast<std::size_t>(t.joint)];
+    const int row = out.add_row();
+    for (int i = 0; i < 3; ++i) {
+      for (int jj = 0; jj < 3; ++jj) {
+        const Vec3 e_i = Vec3::Unit(i), e_j = Vec3::Unit(jj);
+        const double c = -e_i.cross(e_j).dot(t.axis_a);  // ε_ijm s_m = (e_i × e_j)·s
+        if (c == 0.0) continue;
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l) {
+            const double coeff = c * t.straight(l, i);
+            if (coeff == 0.0) continue;
+            if (j.body_b == multibody::kWorld) {
+              if (k == jj) out.add_linear(row, model.R(j.body_a, k, l), coeff);
+            } else {
+              out.add_bilinear(row, model.R(j.body_a, k, l), model.R(j.body_b, k, jj), coeff);
+            }
+          }
+      }
+    }
+  }
   out.finish();
   return out;
 }

@@ -1,6 +1,7 @@
 // The rotation-matrix point model of a multibody problem (multibody_rotation_model.hpp).
 #include "multibody_rotation_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -29,7 +30,8 @@ int MultibodyRotationModel::mu(int joint) const {
   return lambda(joint) + problem_.system.joints()[static_cast<std::size_t>(joint)].rows();
 }
 
-MultibodyRotationModel::MultibodyRotationModel(const MultibodyProblem& problem) : problem_(problem) {
+MultibodyRotationModel::MultibodyRotationModel(const MultibodyProblem& problem, double stabilisation_step)
+    : problem_(problem), stabilisation_step_(stabilisation_step) {
   bodies_ = problem_.system.body_count();
   z_ = 24 * bodies_;
   int next = z_ + 24 * bodies_;
@@ -292,13 +294,38 @@ void MultibodyRotationModel::variable_bounds(bool first_node, double* lower, dou
       upper[control(static_cast<int>(ai)) + k] = bound;
     }
   }
-  if (!first_node) return;
+  // Node 0: S = μ = 0 (its state is given and consistent); elsewhere the bounds of the constructor, if any.
+  const double h = problem_.final_time / problem_.intervals;
+  const double sigma = first_node ? 0.0 : stabilisation_step_ > 0.0 ? stabilisation_step_ / h : kNoBound;
+  const double ell = point_row_scale();
+  for (int i = 0; i < bodies_; ++i)
+    for (int k = 0; k < 6; ++k) {
+      lower[S(i, 0, 0) + k] = -sigma;
+      upper[S(i, 0, 0) + k] = sigma;
+    }
+  for (int j = 0; j < problem_.system.joint_count(); ++j) {
+    const multibody::Joint& joint = problem_.system.joints()[static_cast<std::size_t>(j)];
+    for (int k = 0; k < joint.rows(); ++k) {
+      const double bound = k < joint.translation_rows() ? std::min(sigma * ell, kNoBound) : sigma;
+      lower[mu(j) + k] = -bound;
+      upper[mu(j) + k] = bound;
+    }
+  }
+}
+
+double MultibodyRotationModel::stabilisation_step(const double* w) const {
+  const double h = problem_.final_time / problem_.intervals;
+  const double ell = point_row_scale();
+  double step = 0.0;
   for (int i = 0; i < bodies_; ++i)
     for (int k = 0; k < 6; ++k)
-      lower[S(i, 0, 0) + k] = upper[S(i, 0, 0) + k] = 0.0;
-  for (int j = 0; j < problem_.system.joint_count(); ++j)
-    for (int k = 0; k < problem_.system.joints()[static_cast<std::size_t>(j)].rows(); ++k)
-      lower[mu(j) + k] = upper[mu(j) + k] = 0.0;
+      step = std::max(step, h * std::abs(w[S(i, 0, 0) + k]));
+  for (int j = 0; j < problem_.system.joint_count(); ++j) {
+    const multibody::Joint& joint = problem_.system.joints()[static_cast<std::size_t>(j)];
+    for (int k = 0; k < joint.rows(); ++k)
+      step = std::max(step, h * std::abs(w[mu(j) + k]) / (k < joint.translation_rows() ? ell : 1.0));
+  }
+  return step;
 }
 
 Eigen::VectorXd MultibodyRotationModel::state_vector(const multibody::State& state) const {

@@ -21,9 +21,12 @@
 /// so that every body stays a rotation and every joint holds at every collocation point; μ and S vanish on
 /// the exact solution (they absorb the discretisation's drift, O(h⁴)). At node 0, where y is given and
 /// consistent, the position and velocity rows are replaced by their second derivatives (AᵀR + 2VᵀV + RᵀA = 0,
-/// g̈ = 0), which fix the initial multipliers, and μ, S are fixed to 0. A hinge motor's torque u gives
-/// F_R = ½ u R_a j(axis_a) on body a and −½ u R_b j(axis_b) on body b; a body torque τ (body frame) gives
-/// F_R = ½ R j(τ) (loads.hpp).
+/// g̈ = 0), which fix the initial multipliers, and μ, S are fixed to 0. Elsewhere they may be bounded (the
+/// constructor): unbounded, the discrete equations admit a spurious jump of a body across a half-turn Q
+/// inside one interval at no cost, R (Q − I) being of the form R S with S symmetric. A hinge
+/// motor's torque u gives F_R = ½ u R_a j(axis_a) on body a and −½ u R_b j(axis_b) on body b; a body torque τ
+/// (body frame) gives F_R = ½ R j(τ) (loads.hpp).
+#include <algorithm>
 #include <vector>
 
 #include "hermite_simpson_dae.hpp"
@@ -34,8 +37,6 @@ namespace poinsot::optimal::detail {
 
 class MultibodyRotationModel final : public CollocationModel {
  public:
-  explicit MultibodyRotationModel(const MultibodyProblem& problem);
-
   int state_size() const override { return 24 * bodies_; }
   int point_size() const override { return size_; }
   const std::vector<int>& control_indices() const override { return controls_; }
@@ -43,6 +44,26 @@ class MultibodyRotationModel final : public CollocationModel {
   const PointFunctions& first_path() const override { return first_path_; }
   const PointFunctions& path() const override { return path_; }
   void variable_bounds(bool first_node, double* lower, double* upper) const override;
+
+  /// With `stabilisation_step` c > 0, every stabilising variable at every point but node 0 is bounded by
+  /// σ = c/h (h = T/N): |S_kl| ≤ σ (1/s), |μ| ≤ σ for a joint's perpendicularity rows and σ ℓ for its point
+  /// rows (point_row_scale). Over one interval (R_{k+1} − R_k = h/6 (f_k + 4 f_m + f_{k+1}), R a rotation
+  /// at every point) the terms R S then move R by at most 3c in the Frobenius norm (‖R S‖ = ‖S‖ ≤ 3σ) and
+  /// the terms G_Rᵀμ = μ pᵀ by at most √3 c ℓ |p| ≤ √3 c, so for c < 0.6 a jump across a half-turn (‖R (Q −
+  /// I)‖ = 2√2) must be made by V, i.e. by angular velocity. On a solution of the continuous problem
+  /// S = μ = 0. With c = 0 (the default) they are unbounded.
+  MultibodyRotationModel(const MultibodyProblem& problem, double stabilisation_step);
+  explicit MultibodyRotationModel(const MultibodyProblem& problem) : MultibodyRotationModel(problem, 0.0) {}
+
+  /// ℓ = L / max(1, L²) with L = System::length_scale() (numerically, in metres): the point rows' μ moves x
+  /// by at most c ℓ ≤ c L and R by at most √3 c ℓ |p| ≤ √3 c (|p| ≤ L).
+  double point_row_scale() const {
+    const double L = problem_.system.length_scale();
+    return L / std::max(1.0, L * L);
+  }
+  /// The step the stabilising variables carry at the point variables w: the largest h|S_kl|, h|μ_k| of a
+  /// perpendicularity row and h|μ_k|/ℓ of a point row (dimensionless; ≤ c when bounded).
+  double stabilisation_step(const double* w) const;
 
   /// The state y of `state` (bodies' x, R, v, V = R j(ω)).
   Eigen::VectorXd state_vector(const multibody::State& state) const;
@@ -76,6 +97,7 @@ class MultibodyRotationModel final : public CollocationModel {
   void add_invariant_rows(QuadraticFunctions& out, int level) const;
 
   MultibodyProblem problem_;
+  double stabilisation_step_ = 0.0;
   int bodies_ = 0, z_ = 0, size_ = 0;
   std::vector<int> joint_offset_, control_offset_, controls_;
   QuadraticFunctions rhs_, first_path_, path_, invariants0_, invariants1_;

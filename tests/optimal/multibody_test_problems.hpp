@@ -1,6 +1,6 @@
 #pragma once
 // Multibody optimal-control problems of the optimal/ tests: the planar two-link arm, one rod on a hinge, the
-// spacecraft with a reaction wheel.
+// spacecraft with a reaction wheel, the falling cat.
 #include <cmath>
 #include <numbers>
 
@@ -143,6 +143,37 @@ inline MultibodyProblem falling_cat(double alpha, double turn, double T, int int
   p.intervals = intervals;
   p.actuators = {{ActuatorKind::ball_torque, waist, 100.0}};
   return p;
+}
+/// The bound on the stabilising variables' step for the falling cat (MultibodyOptions::stabilisation_step):
+/// unbounded, the half turn from the naive guess ends on a spurious jump of cost ~1e-26.
+inline constexpr double kCatStabilisationStep = 0.05;
+/// Kane & Scher's no-twist condition on the cat's waist: the relative rotation R_aᵀR_b is C M with C the
+/// straight cat's (a half-turn about body z: the halves face each other) and M a bend about an axis
+/// perpendicular to the spine (body x).
+inline NoTwist falling_cat_no_twist() {
+  return {0, Vec3::UnitX(), Eigen::AngleAxisd(std::numbers::pi, Vec3::UnitZ()).toRotationMatrix()};
+}
+
+/// An initial guess for falling_cat(α, turn, T, ·): the bent cat turned rigidly about the spine at the
+/// constant rate turn/T (not a motion at zero angular momentum, but made of rotations that keep the joint),
+/// on `intervals` equal intervals, with zero controls, as a MultibodyOptimum for
+/// MultibodyOptions::warm_start.
+inline MultibodyOptimum falling_cat_rigid_turn(double alpha, double turn, double T, int intervals) {
+  MultibodyOptimum guess;
+  const Vec3 omega_space(turn / T, 0.0, 0.0);
+  for (int p = 0; p <= 2 * intervals; ++p) {
+    const double t = T * p / (2.0 * intervals);
+    multibody::State s = cat_state(alpha, Eigen::AngleAxisd(turn * t / T, Vec3::UnitX()).toRotationMatrix());
+    s.time = t;
+    for (multibody::BodyState& b : s.bodies) {
+      b.omega_body = b.R_space_body.transpose() * omega_space;
+      b.v_space = omega_space.cross(b.x_space);
+    }
+    guess.time.push_back(t);
+    guess.states.push_back(s);
+    guess.controls.push_back(Eigen::VectorXd::Zero(3));
+  }
+  return guess;
 }
 
 }  // namespace poinsot::optimal::testing

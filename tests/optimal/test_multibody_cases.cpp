@@ -1,8 +1,8 @@
 // Optimal motions of coupled bodies, the cases: the spacecraft with a reaction wheel (a free-floating system
 // whose final conditions leave the wheel angle free and skip the conserved momenta) against the closed form
 // of the equivalent single axis (the bounded case against the single-body optimum of the same effective
-// inertia is measured by bench/bench_optimal_multibody: its solve takes minutes); the falling cat turned by
-// its waist's motors at zero angular momentum; the arm with a free elbow angle.
+// inertia is measured by bench/bench_optimal_multibody: its solve takes minutes); the arm with a free elbow
+// angle. The falling cat is tested in test_falling_cat.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -74,37 +74,6 @@ TEST(MultibodyCases, FreeElbowAngleInMinimalCoordinates) {
   EXPECT_LT(end.bodies[0].omega_body.norm(), 1e-8);
   EXPECT_LT(end.bodies[1].omega_body.norm(), 1e-8);
   EXPECT_GT(so3::angle_between(end.bodies[1].R_space_body, p.final_state.bodies[1].R_space_body), 1e-3);
-}
-
-TEST(MultibodyCases, FallingCatTurnsWithInternalTorquesOnly) {
-  // The two halves, bent by 2 × 0.5 rad, turn together by a quarter turn about the spine with zero angular
-  // momentum, driven only by the waist's three motors (N = 6). Both attitudes are NLP rows at T; P, H and the
-  // centre of mass are left to the dynamics (9 of the 18 tangent directions).
-  const MultibodyProblem p = testing::falling_cat(0.5, 0.5 * std::numbers::pi, 1.0, 6);
-  const MultibodyOptimum r = solve(p, MultibodyCoordinates::rotation_matrix);
-  ASSERT_TRUE(r.converged) << r.status;
-  EXPECT_GT(r.cost, 0.1);  // a net rotation at zero momentum needs a shape change: measured 0.7346 N²·m²·s
-  for (std::size_t i = 0; i < 2; ++i)
-    EXPECT_LT(
-        so3::angle_between(r.states.back().bodies[i].R_space_body, p.final_state.bodies[i].R_space_body),
-        1e-8);
-  // Re-simulated by the projected RK4 (256 steps per interval): the target is missed by the coarse mesh's
-  // error (measured 0.019 rad at N = 6); the joint stays closed and the momenta stay zero to the integrator's
-  // O(dt⁴) drift of the quadratic invariant H (measured 7.6e-14 kg·m²/s; 1.2e-12 at 128 steps per interval).
-  const MultibodyReplay replay = replay_controls(p, r, 256);
-  EXPECT_LT(replay.attitude_error, 0.05);
-  EXPECT_LT(replay.max_joint_gap, 1e-12);
-  EXPECT_LT(replay.max_momentum_change, 1e-12);
-}
-
-TEST(MultibodyCases, FallingCatHalfTurnIsNotPresentedAsAnOptimum) {
-  // Turned over by π, the R-coordinate NLP has a spurious solution of cost ~0 that reaches the target: one
-  // interval's stabilising term R S carries both halves across the half-turn (R (Q − I) with Q − I
-  // symmetric). It must come back as not converged, naming the unresolved turn.
-  const MultibodyProblem p = testing::falling_cat(0.5, std::numbers::pi, 1.0, 6);
-  const MultibodyOptimum r = solve(p, MultibodyCoordinates::rotation_matrix);
-  EXPECT_FALSE(r.converged);
-  EXPECT_NE(r.status.find("between the collocation points"), std::string::npos) << r.status;
 }
 
 TEST(MultibodyCases, ReactionWheelBadInput) {

@@ -16,11 +16,12 @@
 /// Both minimise ∫ Σ u_i² dt at fixed T, from the full initial state to the final state, on N equal
 /// intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point but
 /// the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
-/// ones). The naive initial guess is used: every state coordinate linearly interpolated between the two
-/// boundary states, every other variable zero. A result is `converged` only when Ipopt reports success and no
-/// body turns by more than π/2 between neighbouring collocation points (an unresolved mesh, or in
-/// R-coordinates a spurious half-turn jump of the stabilised form: docs/optimal_control.md, "The falling
-/// cat"); otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
+/// ones). The naive initial guess is used unless MultibodyOptions::warm_start is given: every state
+/// coordinate linearly interpolated between the two boundary states, every other variable zero. A result is
+/// `converged` only when Ipopt reports success and no body turns by more than π/2 between neighbouring
+/// collocation points (an unresolved mesh, or in R-coordinates a spurious half-turn jump of the stabilised
+/// form: docs/optimal_control.md, "The falling cat"); otherwise `status` says what happened and the last
+/// iterate is kept, never presented as an optimum.
 #include <string>
 #include <vector>
 
@@ -32,11 +33,22 @@ namespace poinsot::optimal {
 
 enum class MultibodyCoordinates { rotation_matrix, minimal };
 
+struct MultibodyOptimum;
+
 struct MultibodyOptions {
   MultibodyCoordinates coordinates = MultibodyCoordinates::rotation_matrix;
   double nlp_tolerance = 1e-10;  ///< Ipopt's tol
   int max_nlp_iterations = 500;
   int print_level = 0;
+  /// The initial guess: null for the naive one (below), or an optimum of the same problem on any mesh (not
+  /// owned; e.g. a coarser mesh's): its states linearly interpolated between its collocation points, its
+  /// controls by control_at, every other variable zero.
+  const MultibodyOptimum* warm_start = nullptr;
+  /// Rotation-matrix coordinates: c > 0 bounds the stabilising variables S and μ of the stabilised index-2
+  /// form by c/h at every point (h = T/N; for c < 0.6 no body can then cross a half-turn inside one interval
+  /// without angular velocity, which the unbounded form allows at no cost), and a result whose
+  /// stabilisation_step exceeds c/2 is reported as not converged (the bounds would shape it). 0: unbounded.
+  double stabilisation_step = 0.0;
 };
 
 struct MultibodyOptimum {
@@ -53,9 +65,15 @@ struct MultibodyOptimum {
   /// continuous equations at the point's state and controls (multibody::exact_multipliers).
   std::vector<multibody::Multipliers> multipliers;
   double max_constraint_error = 0.0;  ///< largest |row| of the NLP's constraints at the last iterate
+  /// Rotation-matrix coordinates: the largest step the stabilising variables carry at any point, h|S_kl| of
+  /// a body, h|μ| of a joint (MultibodyOptions::stabilisation_step); 0 in minimal coordinates. They vanish on
+  /// the continuous problem's solution: a step comparable to a body's turn per interval is the transcription
+  /// using them to move the body (docs/optimal_control.md, "The falling cat").
+  double stabilisation_step = 0.0;
 };
 
-/// Throws InvalidInput for an invalid problem (validate), and for `minimal` coordinates unless the system is
+/// Throws InvalidInput for an invalid problem (validate), for a warm start whose points do not span [0, T]
+/// or whose states have another number of bodies, and for `minimal` coordinates unless the system is
 /// a tree of hinges rooted at the world (each body the body_a of exactly one hinge, its body_b the world or
 /// a body of lower index) with only hinge-motor actuators and no constant loads besides gravity.
 MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options = {});

@@ -47,6 +47,18 @@ struct RateBound {
   double rate_max = 1.0;  ///< rad/s, > 0
 };
 
+/// The no-twist condition of a ball joint (Kane & Scher 1969: the torso bends but does not twist), a path
+/// constraint at every collocation point but the first: the relative rotation E = R_aᵀR_b of the joint's
+/// bodies is E = C M, where C is the relative rotation of the straight, untwisted configuration and M turns
+/// about an axis perpendicular to the symmetry axis s of body a (the swing–twist decomposition of M about s
+/// has no twist): s·vee(M − Mᵀ) = 0, which is 4 q₀ (q·s) for M's unit quaternion (q₀, q), so it also holds
+/// for a half-turn M: it describes bends below π. Bilinear in R_a and R_b. Rotation-matrix coordinates only.
+struct NoTwist {
+  int joint = 0;                     ///< a ball joint's index
+  Vec3 axis_a = Vec3::UnitX();       ///< s, body a's frame, unit
+  Mat3 straight = Mat3::Identity();  ///< C, a rotation
+};
+
 struct MultibodyProblem {
   multibody::System system;        ///< ball, hinge, weld and universal joints; gravity, constant loads
   multibody::State initial_state;  ///< consistent (multibody::check_consistent), velocities on the joints
@@ -57,6 +69,7 @@ struct MultibodyProblem {
   std::vector<RateBound> rate_bounds;  ///< path constraints on hinge rates (none by default)
   /// Hinges (joint indices) whose angle at T is left free; each one's body_a must be in no other joint.
   std::vector<int> free_final_hinges;
+  std::vector<NoTwist> no_twist;  ///< path constraints on ball joints (none by default)
 };
 
 /// The index of the hinge joint called `name`. Throws InvalidInput `got "NAME", expected the name of a hinge
@@ -65,6 +78,10 @@ int hinge_index(const multibody::System& system, const std::string& name);
 
 /// The rate q̇ (rad/s) of hinge `joint` at `state` (RateBound's definition).
 double hinge_rate(const multibody::System& system, const multibody::State& state, int joint);
+
+/// The twist s·vee(M − Mᵀ) of NoTwist at `state` (dimensionless; 0 without twist).
+double twist_residual(const multibody::System& system, const multibody::State& state,
+                      const NoTwist& condition);
 
 /// Total number of scalar controls.
 int control_count(const MultibodyProblem& problem);
@@ -75,7 +92,8 @@ int control_count(const MultibodyProblem& problem);
 /// actuator; both states are consistent (multibody::check_consistent) and have joint velocities below 1e-9
 /// (relative); every hinge axis points the same way on both sides; every rate bound names a hinge, is > 0 and
 /// holds at both states; every free final hinge is a hinge whose body_a is in no other joint; a free-floating
-/// system's final state has the initial state's P, H and M x_com − t P (to 1e-9 relative).
+/// system's final state has the initial state's P, H and M x_com − t P (to 1e-9 relative); every no-twist
+/// condition names a ball joint, has a unit axis and a rotation C (to 1e-9) and holds at both states (1e-9).
 void validate(const MultibodyProblem& problem);
 
 }  // namespace poinsot::optimal
