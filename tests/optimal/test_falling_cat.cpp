@@ -113,7 +113,7 @@ TEST(FallingCat, HalfTurnWithoutTwist) {
     EXPECT_LT(std::abs(twist_residual(p.system, s, p.no_twist[0])), 1e-9) << "t = " << s.time;
 }
 
-void expect_invalid(const MultibodyProblem& p, const std::string& message, const MultibodyOptions& o = {}) {
+void expect_refused(const MultibodyProblem& p, const std::string& message, const MultibodyOptions& o = {}) {
   try {
     solve_multibody(p, o);
     ADD_FAILURE() << "expected InvalidInput: " << message;
@@ -128,23 +128,23 @@ TEST(FallingCat, BadInput) {
   MultibodyProblem p = base;
   p.no_twist = {testing::falling_cat_no_twist()};
   p.no_twist[0].joint = 3;
-  expect_invalid(p, "no_twist[0]: joint: got index 3; expected a ball joint");
+  expect_refused(p, "no_twist[0]: joint: got index 3; expected a ball joint");
   p.no_twist[0] = testing::falling_cat_no_twist();
   p.no_twist[0].axis_a = Vec3(1.0, 1.0, 0.0);
-  expect_invalid(p, "no_twist[0]: axis_a: got norm");
+  expect_refused(p, "no_twist[0]: axis_a: got norm");
   p.no_twist[0] = testing::falling_cat_no_twist();
   p.no_twist[0].straight = 2.0 * Mat3::Identity();
-  expect_invalid(p, "no_twist[0]: straight:");
+  expect_refused(p, "no_twist[0]: straight:");
   p.no_twist[0] = testing::falling_cat_no_twist();
   p.no_twist[0].straight =
       (Eigen::AngleAxisd(std::numbers::pi, Vec3::UnitZ()) * Eigen::AngleAxisd(0.3, Vec3::UnitX()))
           .toRotationMatrix();  // a straight cat twisted by 0.3 rad
-  expect_invalid(p, "no_twist[0]: the initial state has the twist");
+  expect_refused(p, "no_twist[0]: the initial state has the twist");
 
   const MultibodyOptimum short_guess = testing::falling_cat_rigid_turn(kBend, kTurn, 0.5, 4);
   MultibodyOptions o;
   o.warm_start = &short_guess;
-  expect_invalid(base,
+  expect_refused(base,
                  "warm_start: got 9 points ending at t = 0.5 s; expected an optimum of the same problem", o);
 }
 

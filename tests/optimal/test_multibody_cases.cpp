@@ -17,18 +17,12 @@
 namespace poinsot::optimal {
 namespace {
 
-MultibodyOptimum solve(const MultibodyProblem& p, MultibodyCoordinates c) {
-  MultibodyOptions o;
-  o.coordinates = c;
-  return solve_multibody(p, o);
-}
-
 TEST(MultibodyCases, ReactionWheelUnboundedIsTheSingleAxisClosedForm) {
   // Θ = 1 rad in 10 s with a bound above the unbounded peak 6IΘ/T² = 0.12 N·m: the bus follows the
   // single-axis optimum, cost 12 I² Θ² / T³ with I = I_bus,zz = 2 kg·m².
   const double theta = 1.0, T = 10.0, I = 2.0;
   const MultibodyProblem p = testing::reaction_wheel(theta, T, 1.0, 8);
-  const MultibodyOptimum r = solve(p, MultibodyCoordinates::rotation_matrix);
+  const MultibodyOptimum r = testing::solve_in(p, MultibodyCoordinates::rotation_matrix);
   ASSERT_TRUE(r.converged) << r.status;
   const double exact = 12.0 * I * I * theta * theta / (T * T * T);
   EXPECT_NEAR(r.cost / exact, 1.0, 1e-3) << r.cost;
