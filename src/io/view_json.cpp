@@ -10,17 +10,6 @@
 
 namespace poinsot::io::detail {
 
-ViewJson vec(const Vec3& v) {
-  return ViewJson::array({v[0], v[1], v[2]});
-}
-
-ViewJson mat(const Mat3& m) {
-  ViewJson rows = ViewJson::array();
-  for (int i = 0; i < 3; ++i)
-    rows.push_back(ViewJson::array({m(i, 0), m(i, 1), m(i, 2)}));
-  return rows;
-}
-
 /// The equivalent box and ellipsoid, and the scenario's own surface (about the centre of mass, body axes)
 /// when there is one: `surface` {vertices (x, y, z …), triangles (i, j, k …)} or null, and
 /// `surface_triangles` (its count, also when it is over kViewSurfaceTrianglesMax and left out).

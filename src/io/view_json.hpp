@@ -1,7 +1,7 @@
 #pragma once
 /// @file view_json.hpp
 /// The pieces of view.html's data (view_page.hpp, docs/viewer.md) shared by its kinds of runs (a body, a
-/// multibody file, an optimal manoeuvre): vectors and matrices as JSON, a body's drawn shapes, the frames'
+/// multibody file, an optimal manoeuvre): a body's drawn shapes, the frames'
 /// columns and the page's budget of numbers. Internal to the io layer.
 
 #include <string>
@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_values.hpp"  // vec, mat: the io layer's JSON forms of vectors and matrices
 #include "poinsot/core/types.hpp"
 #include "poinsot/inertia/mesh.hpp"
 #include "view_data.hpp"
@@ -16,9 +17,6 @@
 namespace poinsot::io::detail {
 
 using ViewJson = nlohmann::ordered_json;
-
-ViewJson vec(const Vec3& v);  ///< [x, y, z]
-ViewJson mat(const Mat3& m);  ///< rows
 
 /// The equivalent box and ellipsoid of `inertia_com` (J about the centre of mass, body frame) and `mass`, and
 /// the scenario's own surface (about the centre of mass, body axes) when there is one: `surface` {vertices
