@@ -173,32 +173,47 @@ bool Shooter::jacobian(const Eigen::VectorXd& x, const std::vector<SegmentEnd>& 
   std::vector<Eigen::Triplet<double>> entries;
   const int first_node = node_base(1);
   for (int j = 0; j < n; ++j) {
-    // Step: 1e-7 of the unknown or of 1 % of its group's size (p_θ, p_ω, ω, δ in rad: 1).
-    const int group_begin = j < first_node ? (j < 3 ? 0 : j < 6 ? 3 : j) : j - (j - first_node) % 3;
-    const int group_size = j < 6 || j >= first_node ? 3 : 1;
-    const bool attitude = j >= first_node && (j - first_node) % 12 < 3;
-    const double scale = attitude ? 100.0 : x.segment(group_begin, group_size).cwiseAbs().maxCoeff();
-    const double h = 1e-7 * std::max({std::abs(x[j]), 1e-2 * scale, 1e-12});
-    // A node's unknowns move its own segment only: re-integrate that one.
-    const int node = j >= first_node ? 1 + (j - first_node) / 12 : -1;
+    // Central differences with a step of 1e-5 of the unknown or of 1 % of its group's size: truncation
+    // error ~1e-10, integration noise (1e-13) / 1e-5 ~ 1e-8, both relative. The groups of a node (m = 0: the
+    // initial costates) are δ (rad: size 1), ω (at least s_ω), p_θ and p_ω; p_θ and p_ω T have the same
+    // units, and each is at least the other's size, so that a vanishing p_θ (a free final attitude) still
+    // gets a step.
+    const int node = j >= first_node ? 1 + (j - first_node) / 12 : j < 6 ? 0 : -1;
+    double scale = std::abs(x[j]);
+    if (node >= 0) {
+      const int base = node == 0 ? -6 : node_base(node);  // node 0: p_θ at 0, p_ω at 3
+      const int group = (j - base) / 3;                   // 0 δ, 1 ω, 2 p_θ, 3 p_ω
+      const double T = std::max(final_time(x), 1e-300);
+      const double p_theta = x.segment<3>(base + 6).cwiseAbs().maxCoeff();
+      const double p_omega = x.segment<3>(base + 9).cwiseAbs().maxCoeff();
+      scale = group == 0   ? 100.0
+              : group == 1 ? std::max(x.segment<3>(base + 3).cwiseAbs().maxCoeff(), omega_scale_)
+              : group == 2 ? std::max(p_theta, p_omega / T)
+                           : std::max(p_omega, p_theta * T);
+    }
+    const double h = 1e-5 * std::max({std::abs(x[j]), 1e-2 * scale, 1e-12});
+    // An interior node's unknowns move its own segment only: re-integrate that one.
     auto evaluate = [&](const Eigen::VectorXd& xp, Eigen::VectorXd& Fp) {
-      if (node < 0) return residual(xp, Fp);
+      if (node < 1) return residual(xp, Fp);
       std::vector<Knot> knots;
       if (!sorted_knots(xp, knots)) return false;
       std::vector<SegmentEnd> changed = ends;
       integrate_segment(xp, node, knots, 2, changed[static_cast<std::size_t>(node)], nullptr);
       return assemble(xp, changed, Fp);
     };
-    Eigen::VectorXd xp = x, Fp;
+    Eigen::VectorXd xp = x, xm = x, Fp, Fm;
     xp[j] += h;
+    xm[j] -= h;
+    const bool plus = evaluate(xp, Fp), minus = evaluate(xm, Fm);
     Eigen::VectorXd column;
-    if (evaluate(xp, Fp)) {
+    if (plus && minus)
+      column = (Fp - Fm) / (2.0 * h);
+    else if (plus)
       column = (Fp - F) / h;
-    } else {
-      xp[j] = x[j] - h;
-      if (!evaluate(xp, Fp)) return false;
-      column = (F - Fp) / h;
-    }
+    else if (minus)
+      column = (F - Fm) / h;
+    else
+      return false;
     for (int i = 0; i < n; ++i)
       if (column[i] != 0.0) entries.emplace_back(i, j, column[i]);
   }

@@ -13,7 +13,7 @@
 /// (σ_i(t_s) = 0, or σ·ŝ = 0 at a reversal), and 12 continuity defects per interior node:
 /// ½vee(R_mᵀR⁻ − R⁻ᵀR_m) (rad), T(ω⁻ − ω_m) (rad), s_ω(p_θ⁻ − p_θ,m) and ū J⁻¹(p_ω⁻ − p_ω,m) (both in the
 /// units of H; s_ω a typical ‖ω‖ of the guess, ū the torque's norm bound), where ⁻ is the end of segment m−1.
-/// The Jacobian is by forward differences: a node's 12 columns re-integrate its segment only (they move no
+/// The Jacobian is by central differences: a node's 12 columns re-integrate its segment only (they move no
 /// other segment), the other columns the whole horizon, so the Jacobian is block sparse and is factorised
 /// by Eigen's SparseLU.
 #include <Eigen/Sparse>
@@ -64,7 +64,7 @@ class Shooter {
   /// The scaled residual from the segments' ends; false when it is not finite.
   bool assemble(const Eigen::VectorXd& x, const std::vector<SegmentEnd>& ends, Eigen::VectorXd& F) const;
   bool residual(const Eigen::VectorXd& x, Eigen::VectorXd& F) const;
-  /// The forward-difference Jacobian at x (F its residual); false when a column cannot be formed.
+  /// The central-difference Jacobian at x (F its residual); false when a column cannot be formed.
   bool jacobian(const Eigen::VectorXd& x, const std::vector<SegmentEnd>& ends, const Eigen::VectorXd& F,
                 Eigen::SparseMatrix<double>& jac) const;
 

@@ -25,7 +25,7 @@
 /// rtol = atol = integration_tolerance; at an interior node the attitude is three coordinates on SO(3) about
 /// the guess, R = R̄ exp(j(δ)), and the attitude costate the body vector p_θ (gauge P = ½ R j(p_θ)), so that
 /// RᵀR = I holds by construction; continuity of (R, ω, p_θ, p_ω) is imposed at each node. The Jacobian is by
-/// forward differences, block sparse (a node's columns re-integrate its own segment only), factorised by
+/// central differences, block sparse (a node's columns re-integrate its own segment only), factorised by
 /// Eigen's SparseLU; the Newton step is damped by a backtracking line search on the residual's max norm. When
 /// Newton stalls within 100× the tolerance it is resumed with a tenfold tighter integration; a residual that
 /// then still stalls within 10× the tolerance is the round-off floor of the residual and is accepted as
