@@ -47,7 +47,8 @@ OptimalRun run_optimal(const OptimalScenario& sc) {
   OptimalRun r;
   r.scenario = sc;
   r.direct = optimal::solve_direct(sc.problem, sc.collocation);
-  if (r.direct.costate_time.size() >= 2) r.indirect = optimal::solve_indirect(sc.problem, r.direct);
+  if (r.direct.costate_time.size() >= 2)
+    r.indirect = optimal::solve_indirect(sc.problem, r.direct, sc.shooting);
   if (!r.indirect.time.empty()) {
     r.verification = optimal::verify(sc.problem, r.direct, r.indirect);
     r.interpretation = optimal::interpret(sc.problem, r.indirect);
