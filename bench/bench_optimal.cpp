@@ -3,7 +3,8 @@
 // to 1e-5), the indirect phase (shooting from the direct costates) and the verification, timed separately and
 // together. PSOPT's published run of the same problem takes 98.65 s. BettsPhased: the phase-per-arc re-solve
 // (phased_collocation.hpp) from the direct solution, with its t* error against the indirect optimum as a
-// counter, per number of intervals per arc (h⁴: 16 times smaller per doubling).
+// counter, per number of intervals per arc (h⁴: 16 times smaller per doubling). BettsIndirect/M: single
+// (M = 1) and multiple shooting over M segments, from the same direct solution.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
@@ -42,13 +43,21 @@ void BM_BettsDirect(benchmark::State& state) {
 }
 BENCHMARK(BM_BettsDirect)->Unit(benchmark::kMillisecond);
 
+// The indirect phase by shooting over M segments (Arg; 1: single shooting), from the same direct solution:
+// counters t_star and the Newton iterations.
 void BM_BettsIndirect(benchmark::State& state) {
   const auto p = betts();
   const DirectSolution d = solve_direct(p, direct_options());
-  for (auto _ : state)
-    benchmark::DoNotOptimize(solve_indirect(p, d));
+  ShootingOptions o;
+  o.shooting_nodes = static_cast<int>(state.range(0));
+  for (auto _ : state) {
+    const IndirectSolution s = solve_indirect(p, d, o);
+    if (!s.converged) state.SkipWithError("shooting did not converge");
+    state.counters["t_star"] = s.final_time;
+    state.counters["newton"] = s.iterations;
+  }
 }
-BENCHMARK(BM_BettsIndirect)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BettsIndirect)->Arg(1)->Arg(4)->Arg(16)->Unit(benchmark::kMillisecond);
 
 void BM_BettsVerification(benchmark::State& state) {
   const auto p = betts();

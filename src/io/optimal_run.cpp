@@ -43,7 +43,8 @@ OptimalRun run_optimal(const OptimalScenario& sc) {
   OptimalRun r;
   r.scenario = sc;
   r.direct = optimal::solve_direct(sc.problem, sc.collocation);
-  if (r.direct.costate_time.size() >= 2) r.indirect = optimal::solve_indirect(sc.problem, r.direct);
+  if (r.direct.costate_time.size() >= 2)
+    r.indirect = optimal::solve_indirect(sc.problem, r.direct, sc.shooting);
   if (!r.indirect.time.empty()) {
     r.verification = optimal::verify(sc.problem, r.direct, r.indirect);
     r.interpretation = optimal::interpret(sc.problem, r.indirect);
@@ -80,9 +81,10 @@ std::string optimal_report(const OptimalRun& r) {
       r.direct.status, r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1,
       r.direct.mesh_iterations, format_number(r.direct.max_mesh_error, 3), r.direct.nlp_iterations,
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));
-  o << fmt::format(
-      "indirect (minimum principle in (R, ω), shooting): {}; {} Newton iterations, residual {}\n",
-      r.indirect.status, r.indirect.iterations, format_number(r.indirect.residual, 3));
+  const int segments = r.scenario.shooting.shooting_nodes;
+  o << fmt::format("indirect (minimum principle in (R, ω), {}): {}; {} Newton iterations, residual {}\n",
+                   segments > 1 ? fmt::format("multiple shooting over {} segments", segments) : "shooting",
+                   r.indirect.status, r.indirect.iterations, format_number(r.indirect.residual, 3));
   if (!r.indirect.time.empty()) {
     o << fmt::format("  final time {} s, cost {}\n", format_number(r.indirect.final_time, 14),
                      format_number(r.indirect.cost, 14));

@@ -149,7 +149,15 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
   for (int k = 0; k <= options.initial_intervals; ++k)
     tau[k] = static_cast<double>(k) / options.initial_intervals;
   auto nlp = std::make_unique<CollocationNlp>(problem, tau);
-  const double T0 = problem.free_final_time() ? 2.0 * minimum_duration_bound(problem) : problem.final_time;
+  // Stopping a tumble (free final attitude, ω_f = 0) in minimum time under a norm bound attains the duration
+  // bound ‖L_0‖/ū exactly (‖L̇_space‖ = ‖u‖ ≤ ū, and u = −ū L/‖L‖ meets it for any inertia): the guess, the
+  // momentum-dumping motion, is then the continuous optimum itself. Otherwise twice the bound.
+  const bool dumping_is_optimal = problem.objective == Objective::minimum_time &&
+                                  problem.bound == TorqueBound::norm && problem.free_final_attitude &&
+                                  problem.omega_final.isZero(0.0) && !problem.has_rate_bound();
+  const double T0 = !problem.free_final_time() ? problem.final_time
+                    : dumping_is_optimal       ? minimum_duration_bound(problem)
+                                               : 2.0 * minimum_duration_bound(problem);
   std::vector<double> z = initial_guess(*nlp, T0);
   std::vector<double> y;
 

@@ -1,15 +1,10 @@
 #include "poinsot/optimal/indirect_shooting.hpp"
 
-// GCC 12 reports -Wmaybe-uninitialized and -Wrestrict inside Boost.Odeint's stepper copy constructors when
-// they are inlined here (false positives in library code: the work arrays are resized before use).
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#pragma GCC diagnostic ignored "-Wrestrict"
-
 #include <Eigen/Dense>
 #include <algorithm>
-#include <boost/numeric/odeint.hpp>
 #include <cmath>
 
+#include "multiple_shooting.hpp"
 #include "pmp_system.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
@@ -22,185 +17,27 @@ namespace {
 using detail::PmpState;
 using detail::read_reversals;
 using detail::read_switching_structure;
+using detail::Shooter;
 using detail::SwitchGuess;
-namespace odeint = boost::numeric::odeint;
 
-class Shooter {
- public:
-  Shooter(const ReorientationProblem& p, const ShootingOptions& o, const SwitchGuess& s, bool bang_bang)
-      : p_(p),
-        o_(o),
-        s_(s),
-        bang_(bang_bang),
-        rev_(!bang_bang && !s.reversals.empty()),
-        J_inv_(p.inertia_body.inverse()) {
-    R0_ = p.attitude_initial.toRotationMatrix();
-    Rf_ = p.attitude_final.toRotationMatrix();
-  }
+/// The direct solution's state at t (linear in ω, normalised linear in q; t clamped to the samples).
+void direct_state_at(const DirectSolution& d, double t, Mat3& R, Vec3& omega) {
+  const auto it = std::upper_bound(d.time.begin(), d.time.end(), t);
+  const std::size_t j = std::clamp<std::size_t>(it - d.time.begin(), 1, d.time.size() - 1);
+  const double w = std::clamp((t - d.time[j - 1]) / (d.time[j] - d.time[j - 1]), 0.0, 1.0);
+  Quat q0 = d.attitude[j - 1], q1 = d.attitude[j];
+  if (q0.dot(q1) < 0.0) q1.coeffs() = -q1.coeffs();
+  R = Quat(((1.0 - w) * q0.coeffs() + w * q1.coeffs()).normalized()).toRotationMatrix();
+  omega = (1.0 - w) * d.omega_body[j - 1] + w * d.omega_body[j];
+}
 
-  int size() const { return 6 + (p_.free_final_time() ? 1 : 0) + static_cast<int>(knot_count()); }
-
-  /// The torque on the arc that starts after the switches at times ≤ t_begin (bang-bang), from x.
-  Vec3 arc_torque(const Eigen::VectorXd& x, double t_mid) const {
-    Vec3 u;
-    for (int i = 0; i < 3; ++i) {
-      double sign = s_.initial_sign[i];
-      for (std::size_t k = 0; k < s_.axes.size(); ++k)
-        if (s_.axes[k] == i && switch_time(x, k) < t_mid) sign = -sign;
-      u[i] = sign * p_.torque_max[i];
-    }
-    return u;
-  }
-  /// The unknown times between arcs: the switches (bang-bang) or the reversals (norm bound).
-  std::size_t knot_count() const { return bang_ ? s_.axes.size() : rev_ ? s_.reversals.size() : 0; }
-  double switch_time(const Eigen::VectorXd& x, std::size_t k) const { return x[7 + static_cast<int>(k)]; }
-  /// The scale of the k-th knot's condition (σ times a torque, like H).
-  double knot_scale(std::size_t k) const { return bang_ ? p_.torque_max[s_.axes[k]] : p_.torque_max[0]; }
-  double final_time(const Eigen::VectorXd& x) const { return p_.free_final_time() ? x[6] : p_.final_time; }
-
-  /// Integrates from 0 to T; calls observe(t, y, u) at samples_per_arc points of each arc when asked.
-  /// Returns false when the switching times are out of order or out of (0, T).
-  template <class Observer>
-  bool propagate(const Eigen::VectorXd& x, std::vector<double>* sigma_at_switch, Observer&& observe) const {
-    const double T = final_time(x);
-    if (!(T > 0.0)) return false;
-    std::vector<double> knots{0.0};
-    std::vector<std::size_t> order;
-    if (knot_count() > 0) {
-      for (std::size_t k = 0; k < knot_count(); ++k)
-        order.push_back(k);
-      std::sort(order.begin(), order.end(),
-                [&](auto a, auto b) { return switch_time(x, a) < switch_time(x, b); });
-      for (auto k : order) {
-        if (!(switch_time(x, k) > 0.0 && switch_time(x, k) < T)) return false;
-        knots.push_back(switch_time(x, k));
-      }
-    }
-    knots.push_back(T);
-    const Vec3 p_theta0 = x.segment<3>(0);
-    PmpState y = detail::pack(R0_, p_.omega_initial, 0.5 * R0_ * so3::hat(p_theta0), x.segment<3>(3), 0.0);
-    if (sigma_at_switch) sigma_at_switch->assign(knot_count(), 0.0);
-    // Reversals: on each arc u = −ū σ/‖σ‖ with σ's sign locked to the side of `side` (σ(0) on the first arc,
-    // reversed at each reversal), so that the control is continued smoothly through σ = 0 up to the arc's end
-    // and the knot conditions σ(t_k)·side = 0 are smooth in t_k.
-    Vec3 side = J_inv_ * x.segment<3>(3);
-    for (std::size_t a = 0; a + 1 < knots.size(); ++a) {
-      const double t0 = knots[a], t1 = knots[a + 1];
-      const Vec3 u_arc = bang_ ? arc_torque(x, 0.5 * (t0 + t1)) : Vec3::Zero();
-      auto control = [&](const PmpState& yy) -> Vec3 {
-        if (bang_) return u_arc;
-        const Vec3 p_omega = Eigen::Map<const Vec3>(yy.data() + 21);
-        if (!rev_) return minimising_control(p_, p_omega);
-        const Vec3 sigma = J_inv_ * p_omega;
-        return sigma.norm() > 0.0
-                   ? Vec3(-p_.torque_max[0] * (sigma.dot(side) < 0.0 ? -1.0 : 1.0) * sigma.normalized())
-                   : Vec3::Zero();
-      };
-      auto rhs = [&](const PmpState& yy, PmpState& dy, double) {
-        detail::pmp_rhs(p_, J_inv_, yy, dy, control(yy));
-      };
-      const int n = std::max(2, o_.samples_per_arc);
-      for (int i = 0; i < n; ++i) {
-        const double ts = t0 + (t1 - t0) * i / (n - 1);
-        if (i > 0 && t1 > t0) {
-          const double ta = t0 + (t1 - t0) * (i - 1) / (n - 1);
-          odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(
-                                         o_.integration_tolerance, o_.integration_tolerance),
-                                     rhs, y, ta, ts, (ts - ta) / 4);
-        }
-        observe(ts, y, control(y));
-      }
-      if (a + 1 < knots.size() - 1) {
-        const Vec3 sigma = J_inv_ * Eigen::Map<const Vec3>(y.data() + 21);
-        const std::size_t k = order[a];
-        if (sigma_at_switch) (*sigma_at_switch)[k] = bang_ ? sigma[s_.axes[k]] : sigma.dot(side.normalized());
-        side = -side;
-      }
-    }
-    return true;
-  }
-
-  /// The scaled shooting residual; false when x is outside the domain.
-  bool residual(const Eigen::VectorXd& x, Eigen::VectorXd& F) const {
-    PmpState yT{};
-    Vec3 uT = Vec3::Zero();
-    std::vector<double> sigma;
-    ShootingOptions quick = o_;
-    quick.samples_per_arc = 2;
-    Shooter fast(p_, quick, s_, bang_);
-    if (!fast.propagate(x, &sigma, [&](double, const PmpState& y, const Vec3& u) {
-          yT = y;
-          uT = u;
-        }))
-      return false;
-    const detail::PmpView v = detail::unpack(yT);
-    const double T = final_time(x);
-    F.resize(size());
-    const Mat3 E = Rf_.transpose() * v.R;
-    // Free final attitude: p_θ(T) = 0, i.e. p_θ(0) = 0 (R p_θ is constant).
-    F.segment<3>(0) =
-        p_.free_final_attitude ? Vec3(x.segment<3>(0)) : Vec3(0.5 * so3::vee(E - E.transpose()));
-    F.segment<3>(3) = (v.omega - p_.omega_final) * T;
-    int row = 6;
-    if (p_.free_final_time()) F[row++] = detail::hamiltonian(p_, J_inv_, v, uT);
-    for (std::size_t k = 0; k < sigma.size(); ++k)
-      F[row++] = sigma[k] * knot_scale(k);
-    return F.allFinite();
-  }
-
- private:
-  const ReorientationProblem& p_;
-  ShootingOptions o_;
-  const SwitchGuess& s_;
-  bool bang_, rev_;
-  Mat3 J_inv_, R0_, Rf_;
-};
-
-/// Newton's method with a backtracking line search on the shooting residual, from x (F = its residual);
-/// stops at norm ≤ o.tolerance, after o.max_iterations, or when no step decreases the residual. Returns the
-/// iterations taken; x, F and norm are the last accepted iterate; `stalled` tells whether it stopped because
-/// no step decreased the residual.
-int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x, Eigen::VectorXd& F,
-           double& norm, bool& stalled) {
-  int it = 0;
-  stalled = false;
-  for (; it < o.max_iterations && norm > o.tolerance; ++it) {
-    const int n = shooter.size();
-    Eigen::MatrixXd Jac(n, n);
-    for (int j = 0; j < n; ++j) {
-      const double scale = j < 3   ? x.segment<3>(0).cwiseAbs().maxCoeff()
-                           : j < 6 ? x.segment<3>(3).cwiseAbs().maxCoeff()
-                                   : std::abs(x[j]);
-      const double h = 1e-7 * std::max({std::abs(x[j]), 1e-2 * scale, 1e-12});
-      Eigen::VectorXd xp = x, Fp;
-      xp[j] += h;
-      if (!shooter.residual(xp, Fp)) {
-        xp[j] = x[j] - h;
-        if (!shooter.residual(xp, Fp)) break;
-        Jac.col(j) = (F - Fp) / h;
-      } else {
-        Jac.col(j) = (Fp - F) / h;
-      }
-    }
-    const Eigen::VectorXd step = Jac.colPivHouseholderQr().solve(-F);
-    double alpha = 1.0;
-    bool accepted = false;
-    for (int ls = 0; ls < 30; ++ls, alpha *= 0.5) {
-      Eigen::VectorXd xn = x + alpha * step, Fn;
-      if (shooter.residual(xn, Fn) && Fn.cwiseAbs().maxCoeff() < (1.0 - 1e-4 * alpha) * norm) {
-        x = xn;
-        F = Fn;
-        norm = Fn.cwiseAbs().maxCoeff();
-        accepted = true;
-        break;
-      }
-    }
-    if (!accepted) {
-      stalled = true;
-      break;
-    }
-  }
-  return it;
+/// The direct estimate of p_ω at t: linear between interval centres, extrapolated beyond them.
+Vec3 direct_costate_omega_at(const DirectSolution& d, double t) {
+  const auto& c = d.costate_time;
+  const auto it = std::upper_bound(c.begin(), c.end(), t);
+  const std::size_t j = std::clamp<std::size_t>(it - c.begin(), 1, c.size() - 1);
+  const double w = (t - c[j - 1]) / (c[j] - c[j - 1]);
+  return (1.0 - w) * d.costate_omega[j - 1] + w * d.costate_omega[j];
 }
 
 }  // namespace
@@ -233,6 +70,9 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   if (d.costate_time.size() < 2 || d.time.empty())
     throw InvalidInput(
         "indirect: the direct solution has no costate estimates; expected a solve_direct result");
+  if (o.shooting_nodes < 1 || o.shooting_nodes > 1000)
+    throw InvalidInput("indirect: shooting_nodes = " + std::to_string(o.shooting_nodes) +
+                       "; expected an integer in 1 … 1000 (1: single shooting)");
   IndirectSolution out;
   out.bang_bang = p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis;
 
@@ -251,9 +91,9 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     out.status = "not applied: " + sw.singular + "; singular arcs are not handled by the shooting method";
     return out;
   }
-  Shooter shooter(p, o, sw, out.bang_bang);
-
-  // Initial costates: R p_θ is constant, so p_θ(0) = R_0ᵀ · mean_k(R_k p_θ,k); p_ω(0) extrapolated linearly.
+  // Initial costates: R p_θ is constant, so p_θ(t) = R(t)ᵀ · mean_k(R_k p_θ,k); p_ω linear between the
+  // direct estimates (extrapolated to t = 0). Multiple shooting: R and ω at the nodes from the direct
+  // samples.
   Vec3 pi_space = Vec3::Zero();
   for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
     // attitude at the costate time: nearest sample (interval centres coincide with midpoints)
@@ -262,15 +102,29 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     pi_space += d.attitude[j].toRotationMatrix() * d.costate_attitude_body[k];
   }
   pi_space /= static_cast<double>(d.costate_time.size());
+  const int M = o.shooting_nodes;
+  std::vector<Mat3> node_R(static_cast<std::size_t>(M - 1));
+  std::vector<Vec3> node_omega(node_R.size());
+  double omega_scale = std::max(p.omega_initial.norm(), p.omega_final.norm());
+  for (int m = 1; m < M; ++m) {
+    direct_state_at(d, d.final_time * m / M, node_R[m - 1], node_omega[m - 1]);
+    omega_scale = std::max(omega_scale, node_omega[m - 1].norm());
+  }
+  if (!(omega_scale > 0.0)) omega_scale = 1.0;
+  Shooter shooter(p, o, sw, out.bang_bang, node_R, omega_scale);
   Eigen::VectorXd x(shooter.size());
   x.segment<3>(0) = p.attitude_initial.toRotationMatrix().transpose() * pi_space;
-  const double c0 = d.costate_time[0], c1 = d.costate_time[1];
-  x.segment<3>(3) = d.costate_omega[0] - c0 / (c1 - c0) * (d.costate_omega[1] - d.costate_omega[0]);
+  x.segment<3>(3) = direct_costate_omega_at(d, 0.0);
   if (p.free_final_time()) x[6] = d.final_time;
   for (std::size_t k = 0; k < sw.times.size(); ++k)
-    x[7 + static_cast<int>(k)] = sw.times[k];
+    x[shooter.knot_base() + static_cast<int>(k)] = sw.times[k];
   for (std::size_t k = 0; k < sw.reversals.size(); ++k)
-    x[7 + static_cast<int>(k)] = sw.reversals[k];
+    x[shooter.knot_base() + static_cast<int>(k)] = sw.reversals[k];
+  for (int m = 1; m < M; ++m) {
+    const Mat3& R = node_R[m - 1];
+    shooter.set_node(x, m, R, node_omega[m - 1], R.transpose() * pi_space,
+                     direct_costate_omega_at(d, d.final_time * m / M));
+  }
 
   Eigen::VectorXd F;
   if (!shooter.residual(x, F)) {
@@ -286,7 +140,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
     ShootingOptions tight = o;
     tight.integration_tolerance = o.integration_tolerance / 10.0;
-    const Shooter polish(p, tight, sw, out.bang_bang);
+    const Shooter polish(p, tight, sw, out.bang_bang, node_R, omega_scale);
     if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
       F = Fp;
       norm = Fp.cwiseAbs().maxCoeff();
@@ -297,7 +151,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // Still stalled within 10× the tolerance with the tighter integration: the residual's round-off floor.
   const bool floor = norm > o.tolerance && stalled && used.integration_tolerance < o.integration_tolerance &&
                      norm <= 10.0 * o.tolerance;
-  const Shooter result_shooter(p, used, sw, out.bang_bang);
+  const Shooter result_shooter(p, used, sw, out.bang_bang, node_R, omega_scale);
   out.iterations = it;
   out.residual = norm;
   out.converged = norm <= o.tolerance || floor;
@@ -328,7 +182,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     out.switch_axes = a;
   }
   const Mat3 J_inv = p.inertia_body.inverse();
-  result_shooter.propagate(x, nullptr, [&](double t, const PmpState& y, const Vec3& u) {
+  result_shooter.propagate(x, [&](double t, const PmpState& y, const Vec3& u) {
     const detail::PmpView v = detail::unpack(y);
     out.time.push_back(t);
     out.attitude.push_back(v.R);

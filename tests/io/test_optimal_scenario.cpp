@@ -33,6 +33,11 @@ TEST(OptimalScenario, ReadsTheProblem) {
   EXPECT_NEAR(p.attitude_final.x(), std::sin(half), 1e-15);
   EXPECT_TRUE(p.omega_final.isZero(0.0));
   EXPECT_FALSE(p.free_final_attitude);
+  EXPECT_EQ(sc.shooting.shooting_nodes, 1);  // single shooting unless the file asks
+  const std::string t = kBetts;
+  const OptimalScenario multiple = parse_optimal_scenario(
+      std::string(t).replace(t.find("rate_max = 0.5"), 14, "shooting_nodes = 8"), "betts.toml", ".");
+  EXPECT_EQ(multiple.shooting.shooting_nodes, 8);
 }
 
 // Each message is one line that locates the key and says what was expected.
@@ -53,6 +58,8 @@ TEST(OptimalScenario, LocatedErrors) {
   expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "final_time = 3.0"), "final_time");
   expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "initial_intervals = 1.5"),
                "initial_intervals");
+  expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "shooting_nodes = 0"),
+               "shooting_nodes");
   expect_error("[body]\nprincipal_moments = [1.0, 1.0, 1.0]\n", "optimal_control");
 }
 

@@ -15,6 +15,7 @@
 ///     mesh_tolerance = 1e-5          # direct method, optional
 ///     initial_intervals = 10         # direct method, optional (2 … 4000)
 ///     max_mesh_iterations = 10       # direct method, optional (1 … 100)
+///     shooting_nodes = 1             # indirect method, optional (1 … 1000): segments of multiple shooting
 ///     [optimal_control.initial]      # orientation = { ... } as in [initial]; omega_body (rad/s)
 ///     [optimal_control.final]        # the same, or free_attitude = true (detumbling)
 ///     [output]
@@ -29,6 +30,7 @@
 
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/problem.hpp"
 
 namespace poinsot::io {
@@ -40,6 +42,7 @@ struct OptimalScenario {
   std::string body_description;             ///< how [body] gave the inertia
   optimal::ReorientationProblem problem;    ///< the validated problem of [optimal_control]
   optimal::CollocationOptions collocation;  ///< the direct method's options
+  optimal::ShootingOptions shooting;        ///< the indirect method's options (shooting_nodes from the file)
   std::string out_dir;                      ///< [output] dir; empty: the default
   /// For drawing (view.html): the body's mass (kg) when the file gives one, and its surface about the centre
   /// of mass (body axes, m) when it gives a shape or a mesh, else null.

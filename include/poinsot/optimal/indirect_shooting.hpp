@@ -20,17 +20,23 @@
 /// Bang-bang controls (per-axis bounds, minimum time): the switching structure (the initial sign of each u_i
 /// and the order of its sign changes) is read from the direct solution's torques, and the switching times
 /// are unknowns of the Newton iteration with the conditions σ_i(t_s) = 0, so the switches are exact.
-/// Shooting: single shooting over the arcs between switches (integration by Runge–Kutta–Fehlberg 7(8) at
-/// rtol = atol = integration_tolerance); the Jacobian by forward differences. When Newton stalls within 100×
-/// the tolerance it is resumed with a tenfold tighter integration; a residual that then still stalls within
-/// 10× the tolerance is the round-off floor of the residual and is accepted as converged (the status says
-/// so). Norm bound, minimum time: where the direct solution's torque turns by more than 90° between
-/// consecutive saturated samples, σ passes through 0 and u = −ū σ/‖σ‖ reverses (the eigenaxis slew of a
-/// sphere at T/2). Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of
-/// σ at the start of the arc ending there; on each arc the control is continued through σ = 0 without
-/// flipping, so the conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a
-/// sphere). Not handled: active rate bounds (state constraints; the solver reports them and does not claim
-/// optimality), singular arcs (|u_i| strictly inside its bound over an interval of the direct solution).
+/// Shooting: over M segments of equal length T/M (ShootingOptions::shooting_nodes; M = 1 is single
+/// shooting), each split at the switches inside it and integrated by Runge–Kutta–Fehlberg 7(8) at
+/// rtol = atol = integration_tolerance; at an interior node the attitude is three coordinates on SO(3) about
+/// the guess, R = R̄ exp(j(δ)), and the attitude costate the body vector p_θ (gauge P = ½ R j(p_θ)), so that
+/// RᵀR = I holds by construction; continuity of (R, ω, p_θ, p_ω) is imposed at each node. The Jacobian is by
+/// central differences, block sparse (a node's columns re-integrate its own segment only), factorised by
+/// Eigen's SparseLU; the Newton step is damped by a backtracking line search on the residual's max norm. When
+/// Newton stalls within 100× the tolerance it is resumed with a tenfold tighter integration; a residual that
+/// then still stalls within 10× the tolerance is the round-off floor of the residual and is accepted as
+/// converged (the status says so). Norm bound, minimum time: where the direct solution's torque turns by more
+/// than 90° between consecutive saturated samples, σ passes through 0 and u = −ū σ/‖σ‖ reverses (the
+/// eigenaxis slew of a sphere at T/2). Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0,
+/// ŝ the direction of σ at the start of the arc ending there; on each arc the control is continued through σ
+/// = 0 without flipping, so the conditions are smooth. This assumes σ turns by less than 90° along an arc
+/// (exact for a sphere). Not handled: active rate bounds (state constraints; the solver reports them and does
+/// not claim optimality), singular arcs (|u_i| strictly inside its bound over an interval of the direct
+/// solution).
 #include <string>
 #include <vector>
 
@@ -45,6 +51,10 @@ struct ShootingOptions {
   int max_iterations = 40;
   double integration_tolerance = 1e-13;  ///< RKF78 rtol and atol
   int samples_per_arc = 64;              ///< output samples on each arc (ends included)
+  /// M, the number of shooting segments of equal length T/M (1 … 1000): 1 is single shooting; with M > 1 the
+  /// state and costates at the M − 1 interior nodes are unknowns too, started from the direct solution, and
+  /// the continuity of (R, ω, p_θ, p_ω) at each node is a Newton equation (multiple shooting).
+  int shooting_nodes = 1;
 };
 
 /// A time interval on which the torque is constant (bang-bang solutions).
@@ -79,8 +89,9 @@ struct IndirectSolution {
   std::vector<double> hamiltonian;          ///< H (0 on a free-time extremal)
 };
 
-/// Shoots from the direct solution's costates. Throws InvalidInput for an invalid problem or a direct
-/// solution of another problem size (empty); failures are reported in converged/status with the last iterate.
+/// Shoots from the direct solution's costates (and, for M > 1, its states at the nodes). Throws InvalidInput
+/// for an invalid problem, a direct solution without costates, or shooting_nodes outside 1 … 1000; failures
+/// are reported in converged/status with the last iterate.
 IndirectSolution solve_indirect(const ReorientationProblem& problem, const DirectSolution& direct,
                                 const ShootingOptions& options = {});
 

@@ -33,8 +33,8 @@ struct VerificationReport {
   double hamiltonian_deviation = 0.0;  ///< max |H − H̄|
   double control_gap = 0.0;            ///< max relative H(u) − min_v H(v)
   int switching_sign_violations = 0;   ///< samples with u_i σ_i > 0 where |σ_i| is not negligible
-  double costate_drift = 0.0;          ///< max ‖R p_θ − R_0 p_θ(0)‖ / ‖p_θ(0)‖
-  double orthogonality = 0.0;          ///< max ‖RᵀR − I‖_F
+  double costate_drift = 0.0;  ///< max ‖R p_θ − R_0 p_θ(0)‖ / max(‖p_θ(0)‖, max ‖p_ω‖/T)
+  double orthogonality = 0.0;  ///< max ‖RᵀR − I‖_F
   double lambda_torque_error = 0.0;  ///< max ‖vee(Λ − Λᵀ) − u‖ / ū: the paper's Λ carries the torque
   double resimulated_attitude_error = 0.0;  ///< rad, angle between the re-simulated R(T) and R_f (free
                                             ///< final attitude: the indirect solution's R(T))
