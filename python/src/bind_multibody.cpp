@@ -261,7 +261,7 @@ void bind_projected_rk4(py::module_& m) {
 }
 
 /// poinsot.multibody.MethodInfo, METHODS (name → entry) and DEFAULT_METHOD: the registry of methods.hpp.
-void bind_methods(py::module_& m) {
+void bind_multibody_methods(py::module_& m) {
   using mb::MultibodyMethodInfo;
   py::class_<MultibodyMethodInfo>(m, "MethodInfo", POINSOT_DOC(multibody_MultibodyMethodInfo))
       .def_property_readonly(
@@ -394,7 +394,7 @@ void bind_multibody(py::module_& parent) {
   bind_rattle(m);
   bind_projected_rk4(m);
   bind_multibody_scenario(m);
-  bind_methods(m);
+  bind_multibody_methods(m);
 }
 
 }  // namespace poinsot::python

@@ -373,7 +373,7 @@ void bind_exact(py::module_& m) {
 
 /// poinsot.MethodInfo and poinsot.METHODS (name → entry, the registry's order), DEFAULT_METHOD and
 /// DEFAULT_LAMBDA_METHOD: the registry of methods.hpp.
-void bind_methods(py::module_& m) {
+void bind_simulation_methods(py::module_& m) {
   using dynamics::MethodInfo;
   py::class_<MethodInfo>(m, "MethodInfo", POINSOT_DOC(dynamics_MethodInfo))
       .def_property_readonly(
@@ -416,7 +416,7 @@ void bind_methods(py::module_& m) {
 
 void bind_simulate(py::module_& m) {
   bind_exact(m);
-  bind_methods(m);
+  bind_simulation_methods(m);
   m.def(
       "_simulate",
       [](const RigidBody& body, const State& initial, const py::object& torque, const std::string& method,

@@ -30,7 +30,7 @@ Mat3 rotation_of_quat(const XmlSource& xml, const XMLElement& e,
   return so3::rotation_from_quaternion(so3::quaternion_wxyz((*q)[0], (*q)[1], (*q)[2], (*q)[3]));
 }
 
-void read_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
+void read_mjcf_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
   link.has_inertial = true;
   for (const char* other : kOtherOrientations) {
     if (inertial.Attribute(other) != nullptr) {
@@ -220,7 +220,8 @@ void read_mjcf(const XmlSource& xml, const std::string& base_dir, RobotModel& mo
     const char* name = e->Attribute("name");
     link.name = name != nullptr ? name : fmt::format("(body at line {})", e->GetLineNum());
     link.line = e->GetLineNum();
-    if (const XMLElement* inertial = e->FirstChildElement("inertial")) read_inertial(xml, *inertial, link);
+    if (const XMLElement* inertial = e->FirstChildElement("inertial"))
+      read_mjcf_inertial(xml, *inertial, link);
     for (const XMLElement* g = e->FirstChildElement("geom"); g != nullptr; g = g->NextSiblingElement("geom"))
       read_geom(xml, *g, defaults, assets, link);
     model.links.push_back(std::move(link));

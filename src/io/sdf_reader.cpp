@@ -47,7 +47,7 @@ bool read_pose(const XmlSource& xml, const XMLElement& parent, const std::string
   return true;
 }
 
-void read_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
+void read_sdf_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
   link.has_inertial = true;
   Mat3 R;
   if (!read_pose(xml, inertial, link.name, R, link.com_link, link)) {
@@ -98,7 +98,7 @@ std::string mesh_uri(const XmlSource& xml, const XMLElement& mesh) {
   return file;
 }
 
-std::optional<Vec3> mesh_scale(const XmlSource& xml, const XMLElement& mesh) {
+std::optional<Vec3> sdf_mesh_scale(const XmlSource& xml, const XMLElement& mesh) {
   if (mesh.FirstChildElement("scale") == nullptr) return std::nullopt;
   return child_vector(xml, mesh, "scale");
 }

@@ -27,7 +27,7 @@ double required_number(const XmlSource& xml, const XMLElement& e, const char* at
   return (*v)[0];
 }
 
-void read_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
+void read_urdf_inertial(const XmlSource& xml, const XMLElement& inertial, RobotLink& link) {
   link.has_inertial = true;
   Mat3 R;
   read_origin(xml, inertial, R, link.com_link);
@@ -79,7 +79,7 @@ std::string mesh_filename(const XmlSource& xml, const XMLElement& mesh) {
   return file;
 }
 
-std::optional<Vec3> mesh_scale(const XmlSource& xml, const XMLElement& mesh) {
+std::optional<Vec3> urdf_mesh_scale(const XmlSource& xml, const XMLElement& mesh) {
   if (auto scale = xml.numbers_attribute(mesh, "scale", 3))
     return Vec3((*scale)[0], (*scale)[1], (*scale)[2]);
   return std::nullopt;

@@ -159,28 +159,29 @@ TEST(MjcfDefaults, InertialIsNotAffectedByDefaults) {
   EXPECT_EQ(m.links[0].geometry[0].shape.size, Vec3(2, 2, 2));
 }
 
-std::string invalid_input(const std::string& text) {
+std::string mjcf_invalid_input(const std::string& text) {
   return test::message_of<InvalidInput>([&] { read_robot_model(text, "m.xml"); }, text);
 }
 
 TEST(MjcfDefaults, RefusalsNameTheElementAndTheClass) {
-  expect_has(invalid_input("<mujoco><worldbody><body><geom class=\"nope\"/></body></worldbody></mujoco>"),
-             {"m.xml:1: <geom>", "class=\"nope\"", "no such default class"});
   expect_has(
-      invalid_input("<mujoco><worldbody><body childclass=\"nope\">\n<geom/></body></worldbody></mujoco>"),
-      {"m.xml:2: <geom>", "class=\"nope\"", "no such default class"});
-  expect_has(invalid_input("<mujoco><asset><mesh class=\"x\" file=\"a.stl\"/></asset></mujoco>"),
+      mjcf_invalid_input("<mujoco><worldbody><body><geom class=\"nope\"/></body></worldbody></mujoco>"),
+      {"m.xml:1: <geom>", "class=\"nope\"", "no such default class"});
+  expect_has(mjcf_invalid_input(
+                 "<mujoco><worldbody><body childclass=\"nope\">\n<geom/></body></worldbody></mujoco>"),
+             {"m.xml:2: <geom>", "class=\"nope\"", "no such default class"});
+  expect_has(mjcf_invalid_input("<mujoco><asset><mesh class=\"x\" file=\"a.stl\"/></asset></mujoco>"),
              {"<mesh>", "class=\"x\""});
-  expect_has(invalid_input("<mujoco><default>\n<default><geom/></default></default></mujoco>"),
+  expect_has(mjcf_invalid_input("<mujoco><default>\n<default><geom/></default></default></mujoco>"),
              {"m.xml:2: <default>", "nested <default> without class"});
-  expect_has(
-      invalid_input("<mujoco><default><default class=\"a\"/>\n<default class=\"a\"/></default></mujoco>"),
-      {"m.xml:2: <default>", "class=\"a\"", "defined twice"});
-  expect_has(invalid_input("<mujoco><default><default class=\"main\"/></default></mujoco>"),
+  expect_has(mjcf_invalid_input(
+                 "<mujoco><default><default class=\"a\"/>\n<default class=\"a\"/></default></mujoco>"),
+             {"m.xml:2: <default>", "class=\"a\"", "defined twice"});
+  expect_has(mjcf_invalid_input("<mujoco><default><default class=\"main\"/></default></mujoco>"),
              {"class=\"main\"", "defined twice"});
   // A malformed value given by a class is reported at the class's line.
-  expect_has(invalid_input("<mujoco><default>\n<geom pos=\"a b c\"/></default><worldbody><body><geom "
-                           "type=\"sphere\" size=\"1\"/></body></worldbody></mujoco>"),
+  expect_has(mjcf_invalid_input("<mujoco><default>\n<geom pos=\"a b c\"/></default><worldbody><body><geom "
+                                "type=\"sphere\" size=\"1\"/></body></worldbody></mujoco>"),
              {"m.xml:2: <geom>", "pos=\"a b c\"", "expected 3 finite numbers"});
 }
 
