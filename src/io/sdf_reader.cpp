@@ -109,7 +109,7 @@ bool read_geometry_pose(const XmlSource& xml, const XMLElement& holder, LinkGeom
 }
 
 /// SDF writes a shape's fields as child elements: <box><size/></box>, <mesh><uri/><scale/></mesh>.
-constexpr ShapeSyntax kSdfShapes{child_number, child_vector, mesh_uri, mesh_scale, true};
+constexpr ShapeSyntax kSdfShapes{child_number, child_vector, mesh_uri, sdf_mesh_scale, true};
 
 }  // namespace
 
@@ -134,7 +134,7 @@ void read_sdf(const XmlSource& xml, const std::string& base_dir, RobotModel& mod
   }
   for (const XMLElement* e : links)
     model.links.push_back(
-        read_link_element(xml, *e, base_dir, read_inertial, read_geometry_pose, kSdfShapes));
+        read_link_element(xml, *e, base_dir, read_sdf_inertial, read_geometry_pose, kSdfShapes));
 }
 
 }  // namespace poinsot::io::detail

@@ -87,7 +87,7 @@ std::optional<Vec3> urdf_mesh_scale(const XmlSource& xml, const XMLElement& mesh
 
 /// URDF writes a shape's fields as attributes: <box size/>, <cylinder radius length/>, <mesh filename
 /// scale/>.
-constexpr ShapeSyntax kUrdfShapes{required_number, required_lengths, mesh_filename, mesh_scale, false};
+constexpr ShapeSyntax kUrdfShapes{required_number, required_lengths, mesh_filename, urdf_mesh_scale, false};
 
 }  // namespace
 
@@ -95,7 +95,7 @@ void read_urdf(const XmlSource& xml, const std::string& base_dir, RobotModel& mo
   for (const XMLElement* e = xml.root()->FirstChildElement("link"); e != nullptr;
        e = e->NextSiblingElement("link")) {
     model.links.push_back(
-        read_link_element(xml, *e, base_dir, read_inertial, read_geometry_origin, kUrdfShapes));
+        read_link_element(xml, *e, base_dir, read_urdf_inertial, read_geometry_origin, kUrdfShapes));
   }
 }
 
