@@ -79,11 +79,10 @@ enum class TorqueMode { free, body, space };
 /// both.
 TorqueMode torque_mode(std::span<const Sample> samples);
 
-/// The step loop of a kernel, `Kernel::template steps<Mode>(L, F, n, h, lanes)` (always inlined), compiled
-/// with AVX2 enabled: the loops over the lanes vectorise 4 wide. Called only when the CPU has AVX2.
+/// The kernel's step loop for the lanes' torque mode, inlined into the caller (so compiled with its target).
 template <class Kernel, class KernelLanes>
-__attribute__((target("avx2"))) void steps_avx2(KernelLanes& L, FlipLanes& F, long long n, double h,
-                                                int lanes, TorqueMode mode) {
+inline __attribute__((always_inline)) void steps_in_mode(KernelLanes& L, FlipLanes& F, long long n, double h,
+                                                         int lanes, TorqueMode mode) {
   switch (mode) {
     case TorqueMode::free:
       return Kernel::template steps<TorqueMode::free>(L, F, n, h, lanes);
@@ -94,17 +93,18 @@ __attribute__((target("avx2"))) void steps_avx2(KernelLanes& L, FlipLanes& F, lo
   }
 }
 
+/// The step loop of a kernel, `Kernel::template steps<Mode>(L, F, n, h, lanes)` (always inlined), compiled
+/// with AVX2 enabled: the loops over the lanes vectorise 4 wide. Called only when the CPU has AVX2.
+template <class Kernel, class KernelLanes>
+__attribute__((target("avx2"))) void steps_avx2(KernelLanes& L, FlipLanes& F, long long n, double h,
+                                                int lanes, TorqueMode mode) {
+  steps_in_mode<Kernel>(L, F, n, h, lanes, mode);
+}
+
 /// The same loop for any x86-64 (SSE2) or other CPU.
 template <class Kernel, class KernelLanes>
 void steps_portable(KernelLanes& L, FlipLanes& F, long long n, double h, int lanes, TorqueMode mode) {
-  switch (mode) {
-    case TorqueMode::free:
-      return Kernel::template steps<TorqueMode::free>(L, F, n, h, lanes);
-    case TorqueMode::body:
-      return Kernel::template steps<TorqueMode::body>(L, F, n, h, lanes);
-    case TorqueMode::space:
-      return Kernel::template steps<TorqueMode::space>(L, F, n, h, lanes);
-  }
+  steps_in_mode<Kernel>(L, F, n, h, lanes, mode);
 }
 
 /// Advances the lanes by n steps of h (s) with the AVX2 or the portable compilation of the kernel's loop; the

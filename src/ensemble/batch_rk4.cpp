@@ -23,13 +23,19 @@ struct Rk4Lanes {
   alignas(64) double tmp[7][B];
 };
 
+// q̇ = ½ q ⊗ (0, ω) of lane l, in the scalar rk4's order of operations (euler_rhs.hpp).
+inline __attribute__((always_inline)) void quaternion_rate(const double (*y)[B], double (*d)[B], int l,
+                                                           double w1, double w2, double w3) {
+  d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
+  d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
+  d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
+  d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+}
+
 inline __attribute__((always_inline)) void rhs(const Rk4Lanes& L, const double (*y)[B], double (*d)[B]) {
   for (int l = 0; l < B; ++l) {
     const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
-    d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
-    d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
-    d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
-    d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+    quaternion_rate(y, d, l, w1, w2, w3);
     d[4][l] = L.g[0][l] * w2 * w3 + L.tau[0][l];
     d[5][l] = L.g[1][l] * w3 * w1 + L.tau[1][l];
     d[6][l] = L.g[2][l] * w1 * w2 + L.tau[2][l];
@@ -40,10 +46,7 @@ inline __attribute__((always_inline)) void rhs(const Rk4Lanes& L, const double (
 inline __attribute__((always_inline)) void rhs_free(const Rk4Lanes& L, const double (*y)[B], double (*d)[B]) {
   for (int l = 0; l < B; ++l) {
     const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
-    d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
-    d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
-    d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
-    d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+    quaternion_rate(y, d, l, w1, w2, w3);
     d[4][l] = L.g[0][l] * w2 * w3;
     d[5][l] = L.g[1][l] * w3 * w1;
     d[6][l] = L.g[2][l] * w1 * w2;
@@ -57,10 +60,7 @@ inline __attribute__((always_inline)) void rhs_space(const Rk4Lanes& L, const do
                                                      double (*d)[B]) {
   for (int l = 0; l < B; ++l) {
     const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
-    d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
-    d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
-    d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
-    d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+    quaternion_rate(y, d, l, w1, w2, w3);
     const double norm =
         std::sqrt((y[0][l] * y[0][l] + y[2][l] * y[2][l]) + (y[1][l] * y[1][l] + y[3][l] * y[3][l]));
     const double qw = y[0][l] / norm, qx = y[1][l] / norm, qy = y[2][l] / norm, qz = y[3][l] / norm;
