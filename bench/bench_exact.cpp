@@ -3,13 +3,18 @@
 //   BM_ExactStateAt*: one evaluation at an arbitrary time (the set-up done once); target <= 1 us.
 //   BM_ExactTennisRacketAt100s: set-up + evaluation at t = 100 s (the orientation to ~1e-13 rad, see the
 //   tests).
+//   BM_JacobiElliptic/BM_BoostJacobiElliptic: sn, cn, dn at u spread over [−K, K] (k'² given by the argument
+//   as 10^-arg), ours against Boost.Math's in the same process (the baseline).
 #include <random>
 #include <vector>
 
 #include <benchmark/benchmark.h>
+#include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <cmath>
 
 #include "poinsot/dynamics/exact_free_body.hpp"
 #include "poinsot/dynamics/exact_integrator.hpp"
+#include "poinsot/dynamics/jacobi_elliptic.hpp"
 #include "poinsot/dynamics/top_theory.hpp"
 
 namespace {
@@ -100,6 +105,40 @@ void BM_ExactIntegratorStep(benchmark::State& st) {
   }
 }
 BENCHMARK(BM_ExactIntegratorStep);
+
+// Arguments spread over [−K, K] for k'² = 10^-e (e = st.range(0)).
+std::vector<double> quarter_period_sweep(const poinsot::dynamics::JacobiElliptic& je) {
+  std::vector<double> u = random_times(-1.0, 1.0);
+  for (double& x : u)
+    x *= je.complete();
+  return u;
+}
+
+void BM_JacobiElliptic(benchmark::State& st) {
+  const double kc2 = std::pow(10.0, -static_cast<double>(st.range(0)));
+  const poinsot::dynamics::JacobiElliptic je(1.0 - kc2, kc2);
+  const std::vector<double> u = quarter_period_sweep(je);
+  std::size_t i = 0;
+  double sn = 0.0, cn = 0.0, dn = 0.0;
+  for (auto _ : st) {
+    je.evaluate(u[i++ % kN], sn, cn, dn);
+    benchmark::DoNotOptimize(sn + cn + dn);
+  }
+}
+BENCHMARK(BM_JacobiElliptic)->Arg(0)->Arg(1)->Arg(4)->Arg(10);
+
+void BM_BoostJacobiElliptic(benchmark::State& st) {
+  const double kc2 = std::pow(10.0, -static_cast<double>(st.range(0)));
+  const std::vector<double> u = quarter_period_sweep(poinsot::dynamics::JacobiElliptic(1.0 - kc2, kc2));
+  const double k = std::sqrt(1.0 - kc2);
+  std::size_t i = 0;
+  double cn = 0.0, dn = 0.0;
+  for (auto _ : st) {
+    const double sn = boost::math::jacobi_elliptic(k, u[i++ % kN], &cn, &dn);
+    benchmark::DoNotOptimize(sn + cn + dn);
+  }
+}
+BENCHMARK(BM_BoostJacobiElliptic)->Arg(0)->Arg(1)->Arg(4)->Arg(10);
 
 void BM_TopMotion(benchmark::State& st) {
   poinsot::dynamics::HeavyTop top;

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 #include <boost/math/special_functions/ellint_1.hpp>
 #include <boost/math/special_functions/jacobi_elliptic.hpp>
+#include <boost/multiprecision/cpp_bin_float.hpp>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace poinsot::dynamics {
@@ -37,8 +39,10 @@ TEST(JacobiElliptic, IdentitiesAndDerivatives) {
     for (double u : {-0.99 * K, -0.3 * K, 0.0, 0.5, 0.8 * K, K}) {
       double sn, cn, dn;
       je.evaluate(u, sn, cn, dn);
-      EXPECT_NEAR(sn * sn + cn * cn, 1.0, 4e-16);
-      EXPECT_NEAR(dn * dn, cn * cn + kc2 * sn * sn, 4e-16);
+      // Each function is accurate to a few ulps of itself (they are not the sine and cosine of one angle on
+      // every path), so the identities hold to a few ulps.
+      EXPECT_NEAR(sn * sn + cn * cn, 1.0, 8 * std::numeric_limits<double>::epsilon());
+      EXPECT_NEAR(dn * dn, cn * cn + kc2 * sn * sn, 8 * std::numeric_limits<double>::epsilon());
       // d sn/du = cn dn (central difference, error ~ h² + eps/h ≈ 1e-10 at h = 1e-5).
       const double h = 1e-5;
       double sp, cp, dp, sm, cm, dm;
@@ -57,21 +61,50 @@ TEST(JacobiElliptic, SeparatrixLimit) {
   const double kc = 1e-12;
   const JacobiElliptic je(1.0, kc * kc);
   EXPECT_NEAR(je.complete(), std::log(4.0 / kc), 1e-13);
-  // The Landen recursion's first ratio is (1 − k')/(1 + k'), so its arcsine loses ~eps/√k' far from u = 0:
-  // bounded by ~1e-10 at k' = 1e-12, measured 1e-12 at u = 10.
+  // sn − tanh u and cn − sech u are O(k'² cosh² u) relative (DLMF 22.10(ii)): below 1e-20 here up to u = 10.
   for (double u : {0.5, 3.0, 10.0}) {
     double sn, cn, dn;
     je.evaluate(u, sn, cn, dn);
-    const double tol = u < 5.0 ? 1e-14 : 1e-11;
-    EXPECT_NEAR(sn, std::tanh(u), tol);
-    EXPECT_NEAR(cn, 1.0 / std::cosh(u), tol);
-    EXPECT_NEAR(dn, 1.0 / std::cosh(u), tol);
+    const double sech = 1.0 / std::cosh(u);
+    EXPECT_NEAR(sn, std::tanh(u), 4e-16);
+    EXPECT_NEAR(cn, sech, 4e-16 * sech);
+    EXPECT_NEAR(dn, sech, 4e-16 * sech);
   }
   const JacobiElliptic circle(0.0, 1.0);  // k = 0: sn = sin
   double sn, cn, dn;
   circle.evaluate(1.2, sn, cn, dn);
   EXPECT_DOUBLE_EQ(sn, std::sin(1.2));
   EXPECT_DOUBLE_EQ(circle.complete(), std::numbers::pi / 2);
+}
+
+// Near u = ±K, cn and dn fall to 0 and k': each must keep its own relative precision there, not a few ulps of
+// 1 (the Carlson form of Π in exact_free_body.cpp takes cn² and dn² and is as sensitive to them as log). The
+// oracle is Boost.Math's implementation in 50 digits at the same double u, with k from k'² in 50 digits. The
+// bound is the functions' own conditioning at u: |δcn| ≤ 8ε(|cn| + |u·∂cn/∂u|), ∂cn/∂u = −sn dn, and
+// |δdn| ≤ 8ε(|dn| + |u·∂dn/∂u|), ∂dn/∂u = −k² sn cn (u is exact; K is known to an ulp, whence the u·∂
+// term). A transformation accurate only to ulps of 1 misses it by k'·K/ε-scale factors (10¹⁰ at k'² = 1e-20).
+TEST(JacobiElliptic, RelativePrecisionNearTheQuarterPeriod) {
+  using Real = boost::multiprecision::cpp_bin_float_50;
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  for (double kc2 : {0.9, 0.3, 1e-6, 1e-12, 1e-20}) {
+    const JacobiElliptic je(1.0 - kc2, kc2);
+    const double K = je.complete();
+    const Real k = sqrt(Real(1) - Real(kc2));
+    for (double v : {0.0, 1e-9, 1e-3, 0.2, 1.0}) {
+      for (double sign : {1.0, -1.0}) {
+        const double u = sign * (K - v * K / 2);
+        double sn, cn, dn;
+        je.evaluate(u, sn, cn, dn);
+        Real rcn, rdn;
+        const Real rsn = boost::math::jacobi_elliptic(k, Real(u), &rcn, &rdn);
+        const double s = static_cast<double>(rsn), c = static_cast<double>(rcn), d = static_cast<double>(rdn);
+        const double k2 = 1.0 - kc2;
+        EXPECT_NEAR(sn, s, 8 * eps * (std::abs(s) + std::abs(u * c * d))) << kc2 << " " << u;
+        EXPECT_NEAR(cn, c, 8 * eps * (std::abs(c) + std::abs(u * s * d))) << kc2 << " " << u;
+        EXPECT_NEAR(dn, d, 8 * eps * (std::abs(d) + std::abs(u * k2 * s * c))) << kc2 << " " << u;
+      }
+    }
+  }
 }
 
 }  // namespace
