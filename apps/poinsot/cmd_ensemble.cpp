@@ -144,7 +144,7 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
     }
     fmt::print("written: {}{}/summary.json\n", written, dir);
   }
-  if (c.plot && o.keep_rows) make_plots(dir, c.json);
+  if (c.plot) make_plots(dir, c.json);
   if (r.interrupted) {
     fmt::print(stderr, "poinsot: interrupted: {} complete samples of {} written\n", r.completed, o.samples);
     std::exit(130);
@@ -162,8 +162,10 @@ void register_ensemble(CLI::App& app) {
   cmd->add_option("--threads", opts->threads, "threads (default: all cores)")->check(CLI::PositiveNumber);
   cmd->add_option("--out", opts->out, "output folder");
   cmd->add_flag("--json", opts->json, "print summary.json on stdout");
-  cmd->add_flag("--plot", opts->plot,
-                "also draw histograms.png, cdf.png and scatter.png (Matplotlib; needs per-sample output)");
+  cmd->add_flag(
+      "--plot", opts->plot,
+      "also draw histograms.png, cdf.png and scatter.png (Matplotlib; without per-sample output only "
+      "histograms.png, from summary.json's histograms)");
   cmd->add_option("--sample", opts->sample,
                   "run sample K alone through the single-body run (full trajectory)")
       ->check(CLI::NonNegativeNumber);

@@ -3,6 +3,7 @@
 #include <climits>
 #include <cstdlib>
 #include <cstring>
+#include <span>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -150,6 +151,13 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
     for (const ensemble::QuantileBucket& b : mine.sketches[static_cast<std::size_t>(q)].buckets())
       buckets.push_back({q, b});
   const std::vector<FlatBucket> all_buckets = gather(buckets, s.size());
+  // The histograms: every rank derived the same edges from the same pilot; integer counts, summed.
+  std::vector<std::int64_t> histogram_counts;
+  for (const ensemble::FixedHistogram& h : mine.histograms) {
+    const std::vector<std::int64_t> f = h.flat_counts();
+    if (h.has_edges()) histogram_counts.insert(histogram_counts.end(), f.begin(), f.end());
+  }
+  const std::vector<std::int64_t> all_histogram_counts = gather(histogram_counts, s.size());
   std::vector<FlatRow> flat;
   if (own_rows == nullptr) {
     flat.reserve(mine.rows.size());
@@ -171,6 +179,21 @@ ensemble::EnsembleResult run_ensemble_mpi(const MpiSession& s, const ensemble::S
   ensemble::set_statistics(r, all_nodes, o.samples);  // the tree of one process, bit for bit
   for (const FlatBucket& f : all_buckets)
     r.sketches[static_cast<std::size_t>(f.output)].add_bucket(f.bucket);
+  for (std::size_t q = 0; q < static_cast<std::size_t>(ensemble::kOutputCount); ++q)
+    if (mine.histograms[q].has_edges())
+      r.histograms[q] = ensemble::FixedHistogram(mine.histograms[q].range(), mine.histograms[q].bins());
+  if (all_histogram_counts.size() != histogram_counts.size() * static_cast<std::size_t>(s.size())) {
+    throw InvalidInput("ensemble: the MPI ranks' histograms have different edges; expected the same pilot");
+  }
+  const std::span<const std::int64_t> counts_all(all_histogram_counts);
+  for (std::size_t offset = 0, rank = 0; rank < static_cast<std::size_t>(s.size()); ++rank) {
+    for (ensemble::FixedHistogram& h : r.histograms) {
+      if (!h.has_edges()) continue;
+      const std::size_t length = static_cast<std::size_t>(h.bins()) + 3;  // as flat_counts()
+      h.add_flat_counts(counts_all.subspan(offset, length));
+      offset += length;
+    }
+  }
   r.rows.reserve(all_rows.size());
   for (const FlatRow& f : all_rows)
     r.rows.push_back(unflatten(f));

@@ -8,7 +8,12 @@
 - ``scatter.png``: the attitude error (or the first output with values) against the input that explains it
   best: the one of I1, I2, I3, misalignment, omega0 with the largest absolute Pearson correlation.
 
-Returns the paths written. Raises ValueError when the folder has no samples.csv (per-sample output off).
+Without samples.csv (per-sample output off, or more rows than the CSV holds) only ``histograms.png`` is
+drawn, from the fixed-edge histograms of summary.json (their edges and counts; the samples below and above
+the edges are given in each title, the closed form is not overlaid: it needs the rows).
+
+Returns the paths written. Raises ValueError when the folder has neither samples.csv nor histograms in
+summary.json.
 """
 from __future__ import annotations
 
@@ -62,6 +67,36 @@ def most_influential_input(cols, output):
     return best
 
 
+def plot_summary_histograms(folder):
+    """histograms.png from the fixed-edge histograms of summary.json (no rows needed); the paths written."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    folder = Path(folder)
+    with open(folder / "summary.json", encoding="utf-8") as f:
+        summary = json.load(f)
+    outputs = summary.get("outputs", {})
+    shown = [n for n in OUTPUTS if "histogram" in outputs.get(n, {}) and outputs[n].get("count", 0) > 0]
+    if not shown:
+        raise ValueError(f"plot: {folder} has no samples.csv and summary.json has no histogram with values; "
+                         "expected a folder of `poinsot ensemble`")
+    fig, axes = plt.subplots(1, len(shown), figsize=(4 * len(shown), 3.4), squeeze=False)
+    for ax, name in zip(axes[0], shown):
+        h = outputs[name]["histogram"]
+        edges = np.asarray(h["edges"], dtype=float)
+        ax.stairs(np.asarray(h["counts"], dtype=float), edges, fill=True, color="tab:blue", alpha=0.7)
+        ax.set_xlabel(_label(summary, name))
+        ax.set_title(f"{h['underflow']} below, {h['overflow']} above", fontsize=8)
+    axes[0][0].set_ylabel("samples")
+    fig.suptitle(f"{summary['scenario']}: {summary['completed']} samples, {summary['method']} (fixed edges)")
+    fig.tight_layout()
+    fig.savefig(folder / "histograms.png", dpi=110)
+    plt.close(fig)
+    return [folder / "histograms.png"]
+
+
 def plot_ensemble_run(folder):
     import matplotlib
 
@@ -69,6 +104,8 @@ def plot_ensemble_run(folder):
     import matplotlib.pyplot as plt
 
     folder = Path(folder)
+    if not (folder / "samples.csv").exists():
+        return plot_summary_histograms(folder)
     cols, summary = load_ensemble(folder)
     shown = [n for n in OUTPUTS if n in cols and _finite(cols[n]).size > 0]
     if not shown:

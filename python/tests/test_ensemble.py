@@ -64,3 +64,25 @@ def test_plot_ensemble_writes_the_figures(tmp_path):
     # The oracle of the "most influential input": a column built to be the output itself wins.
     cols["I1"] = cols["attitude_error"].copy()
     assert most_influential_input(cols, "attitude_error") == "I1"
+
+
+def test_plot_without_rows_draws_the_summary_histograms(tmp_path):
+    import json
+    import os
+    import subprocess
+
+    cli = os.environ.get("POINSOT_CLI")
+    if not cli:
+        pytest.skip("POINSOT_CLI is not set")
+    r = subprocess.run([cli, "ensemble", str(RACKET), "--samples", "200", "--no-per-sample", "--out", str(tmp_path)],
+                       capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    from poinsot.plot import plot_run
+
+    assert not (tmp_path / "samples.csv").exists()
+    h = json.loads((tmp_path / "summary.json").read_text())["outputs"]["attitude_error"]["histogram"]
+    assert len(h["edges"]) == len(h["counts"]) + 1
+    assert sum(h["counts"]) + h["underflow"] + h["overflow"] == 200
+    written = plot_run(tmp_path)
+    assert [p.name for p in written] == ["histograms.png"]
+    assert written[0].stat().st_size > 1000

@@ -23,19 +23,23 @@ struct Rk4Lanes {
   alignas(64) double tmp[7][B];
 };
 
-// q̇ = ½ q ⊗ (0, ω) of lane l, in the scalar rk4's order of operations (euler_rhs.hpp).
-inline __attribute__((always_inline)) void quaternion_rate(const double (*y)[B], double (*d)[B], int l,
-                                                           double w1, double w2, double w3) {
-  d[0][l] = -0.5 * (y[1][l] * w1 + y[2][l] * w2 + y[3][l] * w3);
-  d[1][l] = 0.5 * (y[0][l] * w1 + y[2][l] * w3 - y[3][l] * w2);
-  d[2][l] = 0.5 * (y[0][l] * w2 + y[3][l] * w1 - y[1][l] * w3);
-  d[3][l] = 0.5 * (y[0][l] * w3 + y[1][l] * w2 - y[2][l] * w1);
+// The quaternion increment of lane l, q ⊗ (0, v) with v = a ω, as the sums d with q ⊗ (0, v) = (−d₀, d₁, d₂,
+// d₃): the operations of dynamics/rk4.cpp's quaternion_increment.
+inline __attribute__((always_inline)) void quaternion_increment(const double (*y)[B], double (*d)[B], int l,
+                                                                double a, double w1, double w2, double w3) {
+  const double v1 = a * w1, v2 = a * w2, v3 = a * w3;
+  d[0][l] = y[1][l] * v1 + y[2][l] * v2 + y[3][l] * v3;
+  d[1][l] = y[0][l] * v1 + y[2][l] * v3 - y[3][l] * v2;
+  d[2][l] = y[0][l] * v2 + y[3][l] * v1 - y[1][l] * v3;
+  d[3][l] = y[0][l] * v3 + y[1][l] * v2 - y[2][l] * v1;
 }
 
-inline __attribute__((always_inline)) void rhs(const Rk4Lanes& L, const double (*y)[B], double (*d)[B]) {
+// The right-hand sides of a stage: rows 0–3 of d the quaternion increment for the scale a, rows 4–6 ω̇.
+inline __attribute__((always_inline)) void rhs(const Rk4Lanes& L, const double (*y)[B], double (*d)[B],
+                                               double a) {
   for (int l = 0; l < B; ++l) {
     const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
-    quaternion_rate(y, d, l, w1, w2, w3);
+    quaternion_increment(y, d, l, a, w1, w2, w3);
     d[4][l] = L.g[0][l] * w2 * w3 + L.tau[0][l];
     d[5][l] = L.g[1][l] * w3 * w1 + L.tau[1][l];
     d[6][l] = L.g[2][l] * w1 * w2 + L.tau[2][l];
@@ -43,10 +47,11 @@ inline __attribute__((always_inline)) void rhs(const Rk4Lanes& L, const double (
 }
 
 // Torque-free lanes skip the "+ τ" (adding 0 would turn −0 into +0 and the scalar fast path adds nothing).
-inline __attribute__((always_inline)) void rhs_free(const Rk4Lanes& L, const double (*y)[B], double (*d)[B]) {
+inline __attribute__((always_inline)) void rhs_free(const Rk4Lanes& L, const double (*y)[B], double (*d)[B],
+                                                    double a) {
   for (int l = 0; l < B; ++l) {
     const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
-    quaternion_rate(y, d, l, w1, w2, w3);
+    quaternion_increment(y, d, l, a, w1, w2, w3);
     d[4][l] = L.g[0][l] * w2 * w3;
     d[5][l] = L.g[1][l] * w3 * w1;
     d[6][l] = L.g[2][l] * w1 * w2;
@@ -56,11 +61,11 @@ inline __attribute__((always_inline)) void rhs_free(const Rk4Lanes& L, const dou
 // A torque constant in space: ω̇ᵢ = gᵢ ωⱼ ωₖ + (Rᵀ τ_space)ᵢ/Iᵢ with R = R(q/|q|), as dynamics/rk4.cpp
 // evaluates it (euler_rhs.hpp): q divided by √|q|² (|q|² in Eigen's order, as renormalise), R by Eigen's
 // Quaternion::toRotationMatrix, Rᵀ τ summed in increasing k, then multiplied by 1/Iᵢ.
-inline __attribute__((always_inline)) void rhs_space(const Rk4Lanes& L, const double (*y)[B],
-                                                     double (*d)[B]) {
+inline __attribute__((always_inline)) void rhs_space(const Rk4Lanes& L, const double (*y)[B], double (*d)[B],
+                                                     double a) {
   for (int l = 0; l < B; ++l) {
     const double w1 = y[4][l], w2 = y[5][l], w3 = y[6][l];
-    quaternion_rate(y, d, l, w1, w2, w3);
+    quaternion_increment(y, d, l, a, w1, w2, w3);
     const double norm =
         std::sqrt((y[0][l] * y[0][l] + y[2][l] * y[2][l]) + (y[1][l] * y[1][l] + y[3][l] * y[3][l]));
     const double qw = y[0][l] / norm, qx = y[1][l] / norm, qy = y[2][l] / norm, qz = y[3][l] / norm;
@@ -81,34 +86,51 @@ inline __attribute__((always_inline)) void rhs_space(const Rk4Lanes& L, const do
   }
 }
 
+// The stage state y + (quaternion increment, c ω̇) of the stage rates k: q − d₀, q + dᵢ, ω + c ω̇.
+inline __attribute__((always_inline)) void stage_state(Rk4Lanes& L, const double (*k)[B], double c) {
+  for (int l = 0; l < B; ++l)
+    L.tmp[0][l] = L.y[0][l] - k[0][l];
+  for (int i = 1; i < 4; ++i)
+    for (int l = 0; l < B; ++l)
+      L.tmp[i][l] = L.y[i][l] + k[i][l];
+  for (int i = 4; i < 7; ++i)
+    for (int l = 0; l < B; ++l)
+      L.tmp[i][l] = L.y[i][l] + c * k[i][l];
+}
+
+// One step of dynamics/rk4.cpp's rk4_step on every lane, in its order of operations: the quaternion
+// increments of the stages for the scales h/4, h/4, h/2 and h/12, q ← (q ± (d₁ + 2d₂ + d₃)/3) ± d₄; ω ← (ω +
+// h/6 (k₁ + 2(k₂ + k₃))) + h/6 k₄.
 template <TorqueMode Mode>
 inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h, bool renormalise) {
-  const auto f = [&L](const double(*y)[B], double(*d)[B]) {
+  const auto f = [&L](const double(*y)[B], double(*d)[B], double a) {
     if constexpr (Mode == TorqueMode::free) {
-      rhs_free(L, y, d);
+      rhs_free(L, y, d, a);
     } else if constexpr (Mode == TorqueMode::body) {
-      rhs(L, y, d);
+      rhs(L, y, d, a);
     } else {
-      rhs_space(L, y, d);
+      rhs_space(L, y, d, a);
     }
   };
-  f(L.y, L.k[0]);
-  for (int i = 0; i < 7; ++i)
+  const double half = 0.5 * h;
+  const double sixth = h / 6;
+  constexpr double third = 1.0 / 3;
+  f(L.y, L.k[0], 0.5 * half);
+  stage_state(L, L.k[0], half);
+  f(L.tmp, L.k[1], 0.5 * half);
+  stage_state(L, L.k[1], half);
+  f(L.tmp, L.k[2], half);
+  stage_state(L, L.k[2], h);
+  f(L.tmp, L.k[3], 0.5 * sixth);
+  const auto& k = L.k;
+  for (int l = 0; l < B; ++l)
+    L.y[0][l] = (L.y[0][l] - third * ((k[0][0][l] + k[2][0][l]) + 2 * k[1][0][l])) - k[3][0][l];
+  for (int i = 1; i < 4; ++i)
     for (int l = 0; l < B; ++l)
-      L.tmp[i][l] = L.y[i][l] + 0.5 * h * L.k[0][i][l];
-  f(L.tmp, L.k[1]);
-  for (int i = 0; i < 7; ++i)
+      L.y[i][l] = (L.y[i][l] + third * ((k[0][i][l] + k[2][i][l]) + 2 * k[1][i][l])) + k[3][i][l];
+  for (int i = 4; i < 7; ++i)
     for (int l = 0; l < B; ++l)
-      L.tmp[i][l] = L.y[i][l] + 0.5 * h * L.k[1][i][l];
-  f(L.tmp, L.k[2]);
-  for (int i = 0; i < 7; ++i)
-    for (int l = 0; l < B; ++l)
-      L.tmp[i][l] = L.y[i][l] + h * L.k[2][i][l];
-  f(L.tmp, L.k[3]);
-  for (int i = 0; i < 7; ++i)
-    for (int l = 0; l < B; ++l)
-      L.y[i][l] =
-          (L.y[i][l] + h / 6 * (L.k[0][i][l] + 2 * (L.k[1][i][l] + L.k[2][i][l]))) + h / 6 * L.k[3][i][l];
+      L.y[i][l] = (L.y[i][l] + sixth * (k[0][i][l] + 2 * (k[1][i][l] + k[2][i][l]))) + sixth * k[3][i][l];
   // q ← q (3 − |q|²)/2 as in dynamics/rk4.cpp, after every kRk4RenormaliseEvery-th step; |q|² summed in the
   // order of Eigen's SSE2 reduction of a 4-vector there, (q₀² + q₂²) + (q₁² + q₃²).
   if (!renormalise) return;
@@ -125,7 +147,7 @@ inline __attribute__((always_inline)) void step(Rk4Lanes& L, double h, bool reno
 template <TorqueMode Mode>
 inline __attribute__((always_inline)) void flip_rate(Rk4Lanes& L, const FlipLanes& F, double* r) {
   if constexpr (Mode == TorqueMode::space) {
-    rhs_space(L, L.y, L.tmp);  // ω̇ at the new state
+    rhs_space(L, L.y, L.tmp, 1.0);  // ω̇ at the new state (rows 4–6; rows 0–3 unused)
     for (int l = 0; l < B; ++l)
       r[l] = F.e[0][l] * L.tmp[4][l] + F.e[1][l] * L.tmp[5][l] + F.e[2][l] * L.tmp[6][l];
     return;

@@ -154,6 +154,10 @@ void validate(const EnsembleOptions& o) {
   if (o.threads == 0) throw InvalidInput("ensemble: threads = 0; expected at least 1");
   require_positive("ensemble: t_end", o.t_end, "s");
   require_positive("ensemble: dt", o.dt, "s");
+  // The histograms' bins and given ranges (FixedHistogram's checks).
+  FixedHistogram(HistogramRange{0.0, 1.0}, o.histograms.bins);
+  for (const auto& r : o.histograms.ranges)
+    if (r) FixedHistogram(*r, o.histograms.bins);
   // Builds one integrator to validate the method's name (the registry's own message lists the methods).
   if (o.method != "exact") {
     dynamics::make_integrator(o.method, dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3)), nullptr,
@@ -239,6 +243,31 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
   }
   const Context context{sampler, o, path, result.nominal.final_state};
 
+  // The histograms' edges, fixed before any value is counted: given, or from the pilot, samples [0,
+  // pilot_count). The process that runs block 0 takes the pilot's rows from its first round; another runs
+  // the pilot alone (one block), so that every process derives the same edges.
+  const std::uint64_t pilot_count = std::min(o.samples, kBlockSamples);
+  const auto set_histograms = [&](const SampleRow* pilot) {
+    std::vector<double> v(pilot ? pilot_count : 0);
+    for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q) {
+      for (std::size_t i = 0; i < v.size(); ++i)
+        v[i] = pilot[i].out[q];
+      const std::optional<HistogramRange> edges =
+          o.histograms.ranges[q] ? o.histograms.ranges[q] : pilot_range(v);
+      if (edges) result.histograms[q] = FixedHistogram(*edges, o.histograms.bins);
+    }
+  };
+  const bool needs_pilot = std::any_of(o.histograms.ranges.begin(), o.histograms.ranges.end(),
+                                       [](const auto& r) { return !r.has_value(); });
+  bool histograms_set = !needs_pilot || first_block > 0 || range == 0;
+  if (!needs_pilot) {
+    set_histograms(nullptr);
+  } else if (histograms_set) {
+    std::vector<SampleRow> pilot(pilot_count);
+    run_block(context, 0, pilot_count, pilot.data());
+    set_histograms(pilot.data());
+  }
+
   const std::uint64_t blocks = last_block - first_block;
   const std::uint64_t per_round = 4 * static_cast<std::uint64_t>(o.threads);
   std::vector<std::vector<SampleRow>> scratch(o.keep_rows ? 0 : per_round,
@@ -284,13 +313,22 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
     for (auto& t : pool)
       t.join();
     if (error) std::rethrow_exception(error);
+    const auto block_rows = [&](std::uint64_t k) {
+      return o.keep_rows ? result.rows.data() + (b0 + k) * kBlockSamples : scratch[k].data();
+    };
+    if (!histograms_set) {  // block 0 is the pilot, run in this first round
+      set_histograms(block_rows(0));
+      histograms_set = true;
+    }
     for (std::uint64_t k = 0; k < nb; ++k) {  // pushed in block order: independent of the threads
       tree.push(block[k]);
-      if (!o.keep_rows) {
-        const std::uint64_t count = std::min(kBlockSamples, range - (b0 + k) * kBlockSamples);
-        for (std::uint64_t i = 0; i < count; ++i)
-          for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
-            result.sketches[q].add(scratch[k][i].out[q]);
+      const std::uint64_t count = std::min(kBlockSamples, range - (b0 + k) * kBlockSamples);
+      const SampleRow* rows = block_rows(k);
+      for (std::uint64_t i = 0; i < count; ++i) {
+        for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q) {
+          result.histograms[q].add(rows[i].out[q]);
+          if (!o.keep_rows) result.sketches[q].add(rows[i].out[q]);
+        }
       }
     }
     result.completed = std::min(range, (b0 + nb) * kBlockSamples);

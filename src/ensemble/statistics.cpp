@@ -52,15 +52,4 @@ double percentile(std::vector<double> values, double p) {
   return values[lo] + frac * (values[hi] - values[lo]);
 }
 
-std::vector<std::int64_t> histogram(const std::vector<double>& values, double lo, double hi, int bins) {
-  std::vector<std::int64_t> counts(static_cast<std::size_t>(std::max(bins, 1)), 0);
-  const double width = (hi - lo) / static_cast<double>(counts.size());
-  for (double x : values) {
-    if (!std::isfinite(x) || x < lo || x > hi) continue;
-    auto b = width > 0.0 ? static_cast<std::size_t>((x - lo) / width) : 0;
-    counts[std::min(b, counts.size() - 1)] += 1;
-  }
-  return counts;
-}
-
 }  // namespace poinsot::ensemble

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <thread>
@@ -88,13 +89,25 @@ std::string ensemble_summary_json(const EnsembleScenario& sc, const ensemble::En
       for (double pc : ensemble::kPercentiles)
         p[fmt::format("P{}", pc)] = number(ensemble::percentile(v, pc));
       o_j["percentiles"] = p;
-      o_j["histogram"] = {{"lo", s.min}, {"hi", s.max}, {"counts", ensemble::histogram(v, s.min, s.max, 20)}};
     } else if (const ensemble::QuantileSketch& sketch = r.sketches[static_cast<std::size_t>(q)];
                sketch.count() > 0) {
       json p = json::object();
       for (double pc : ensemble::kPercentiles)
         p[fmt::format("P{}", pc)] = number(sketch.percentile(pc));
       o_j["percentiles"] = p;
+    }
+    if (const ensemble::FixedHistogram& h = r.histograms[static_cast<std::size_t>(q)]; h.has_edges()) {
+      json edges = json::array();
+      for (int i = 0; i <= h.bins(); ++i)
+        edges.push_back(h.edge(i));
+      o_j["histogram"] = {{"edges_from", o.histograms.ranges[static_cast<std::size_t>(q)]
+                                             ? "scenario"
+                                             : fmt::format("pilot: samples 0 to {}",
+                                                           std::min(o.samples, ensemble::kBlockSamples) - 1)},
+                          {"edges", edges},
+                          {"counts", h.counts()},
+                          {"underflow", h.underflow()},
+                          {"overflow", h.overflow()}};
     }
     outputs[ensemble::kOutputNames[q]] = o_j;
   }

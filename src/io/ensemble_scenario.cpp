@@ -49,6 +49,27 @@ ensemble::RotationDispersion read_rotation(const Source& src, const Section& e, 
   return d;
 }
 
+ensemble::HistogramSpec read_histograms(const Source& src, const Section& e) {
+  ensemble::HistogramSpec h;
+  const toml::table* t = e.table("histogram");
+  if (!t) return h;
+  using ensemble::kOutputNames;
+  static_assert(ensemble::kOutputCount == 9, "[ensemble.histogram] lists every output");
+  const Section s(src, t, "ensemble.histogram",
+                  {"bins", kOutputNames[0], kOutputNames[1], kOutputNames[2], kOutputNames[3],
+                   kOutputNames[4], kOutputNames[5], kOutputNames[6], kOutputNames[7], kOutputNames[8]},
+                  e.node("histogram"));
+  h.bins = s.integer("bins", 1, ensemble::kMaxHistogramBins).value_or(ensemble::kHistogramBins);
+  for (std::size_t q = 0; q < static_cast<std::size_t>(ensemble::kOutputCount); ++q) {
+    const auto r = s.numbers(kOutputNames[q], 2);
+    if (!r) continue;
+    const ensemble::HistogramRange range{(*r)[0], (*r)[1]};
+    detail::located(s, kOutputNames[q], [&] { return ensemble::FixedHistogram(range, h.bins); });
+    h.ranges[q] = range;
+  }
+  return h;
+}
+
 std::uint64_t read_count(const Section& e, std::string_view key, std::uint64_t fallback,
                          std::uint64_t least) {
   const auto x = e.number(key);
@@ -80,11 +101,12 @@ EnsembleScenario parse_ensemble_scenario(std::string_view text, std::string_view
                       .dispersions = {},
                       .samples = 1000,
                       .seed = 0,
-                      .per_sample = true};
+                      .per_sample = true,
+                      .histograms = {}};
 
   const Section e(src, &ensemble_table, "ensemble",
                   {"samples", "seed", "policy", "max_tries", "per_sample", "moments", "axes", "mass",
-                   "center_of_mass", "omega", "attitude", "torque"},
+                   "center_of_mass", "omega", "attitude", "torque", "histogram"},
                   root.get("ensemble"));
   sc.samples = read_count(e, "samples", 1000, 1);
   sc.seed = read_count(e, "seed", 0, 0);
@@ -103,6 +125,7 @@ EnsembleScenario parse_ensemble_scenario(std::string_view text, std::string_view
   d.omega = read_scalar(src, e, "omega");
   d.attitude = read_rotation(src, e, "attitude");
   d.torque = read_scalar(src, e, "torque");
+  sc.histograms = read_histograms(src, e);
 
   ensemble::TorqueKind kind = ensemble::TorqueKind::none;
   Vec3 value = Vec3::Zero();
@@ -139,6 +162,7 @@ ensemble::EnsembleOptions ensemble_options(const EnsembleScenario& sc) {
   o.rtol = sc.base.integrator.rtol;
   o.atol = sc.base.integrator.atol;
   o.keep_rows = sc.per_sample;
+  o.histograms = sc.histograms;
   return o;
 }
 

@@ -64,6 +64,9 @@ def test_two_ranks_without_rows_give_the_percentiles_of_one_process(cli, tmp_pat
     b = json.loads((tmp_path / "two/summary.json").read_text())
     assert "sketch" in a["percentile_method"]
     assert set(a["outputs"]["attitude_error"]["percentiles"]) == {"P1", "P5", "P50", "P95", "P99", "P99.9"}
+    # The fixed-edge histograms too: rank 1 runs the pilot (block 0) itself to find the same edges.
+    hist = a["outputs"]["attitude_error"]["histogram"]
+    assert sum(hist["counts"]) + hist["underflow"] + hist["overflow"] == 2500
     assert a["outputs"] == b["outputs"]
     assert not (tmp_path / "two/samples.csv").exists()
 

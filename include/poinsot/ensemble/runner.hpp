@@ -21,16 +21,20 @@
 /// the results are bit-identical for any number of threads, MPI ranks and with or without SIMD. Without
 /// stored rows the outputs are also counted in quantile sketches (integer counts: the same for any threads or
 /// ranks), for percentiles. Memory: the stored rows (when kept) plus O(threads · kBlockSamples), O(log
-/// blocks) subtrees of block statistics and the sketches' buckets (bounded by the range of the values),
-/// independent of the number of samples otherwise.
+/// blocks) subtrees of block statistics, the sketches' buckets (bounded by the range of the values) and the
+/// histograms' bins, independent of the number of samples otherwise. Every output is also counted in a
+/// histogram with edges fixed before the counting starts (given, or from a pilot of the first samples: the
+/// same on every thread and rank), integer counts merged exactly.
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "poinsot/ensemble/batch.hpp"
 #include "poinsot/ensemble/block_merge.hpp"
+#include "poinsot/ensemble/fixed_histogram.hpp"
 #include "poinsot/ensemble/quantile_sketch.hpp"
 #include "poinsot/ensemble/sampler.hpp"
 #include "poinsot/ensemble/statistics.hpp"
@@ -71,6 +75,13 @@ struct SampleRow {
   dynamics::State final_state;
 };
 
+/// The fixed-edge histograms of the outputs (fixed_histogram.hpp): the number of bins, and per output its
+/// range, or none for the range of the pilot: the first min(samples, kBlockSamples) samples (pilot_range).
+struct HistogramSpec {
+  int bins = kHistogramBins;
+  std::array<std::optional<HistogramRange>, kOutputCount> ranges{};
+};
+
 struct EnsembleOptions {
   std::uint64_t samples = 1000;
   std::string method = "rk4";
@@ -84,6 +95,7 @@ struct EnsembleOptions {
   std::function<bool()> stop_requested;
   /// Called after each round with the samples completed.
   std::function<void(std::uint64_t done)> on_progress;
+  HistogramSpec histograms;
   /// Refuse keep_rows when the rows would exceed this many bytes (0: half the physical memory).
   std::uint64_t max_row_bytes = 0;
 };
@@ -93,6 +105,9 @@ struct EnsembleResult {
   std::array<RunningStats, kOutputCount> stats;
   /// Percentiles without the rows (keep_rows off; empty sketches otherwise): quantile_sketch.hpp.
   std::array<QuantileSketch, kOutputCount> sketches;
+  /// Every output's values over the fixed edges of options.histograms, rows kept or not (no edges: the
+  /// output had no finite value in the pilot and no range was given).
+  std::array<FixedHistogram, kOutputCount> histograms;
   std::uint64_t completed = 0;  ///< samples done (all, unless interrupted)
   bool interrupted = false;
   std::int64_t rejected = 0;  ///< redraws of the reject policy, all samples

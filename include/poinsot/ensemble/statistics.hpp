@@ -36,8 +36,4 @@ inline constexpr double kPercentiles[] = {1.0, 5.0, 50.0, 95.0, 99.0, 99.9};
 /// The p-th percentile (0 ≤ p ≤ 100) of the finite values (definition 7); NaN when there are none.
 double percentile(std::vector<double> values, double p);
 
-/// Counts of the finite values in `bins` equal bins over [lo, hi] (the last bin closed); values outside are
-/// not counted.
-std::vector<std::int64_t> histogram(const std::vector<double>& values, double lo, double hi, int bins);
-
 }  // namespace poinsot::ensemble

@@ -19,6 +19,9 @@ struct EnsembleScenario {
   std::uint64_t samples = 1000;
   std::uint64_t seed = 0;
   bool per_sample = true;  ///< keep every sample's row (samples.csv, exact percentiles)
+  /// [ensemble.histogram]: `bins` and per output `NAME = [lo, hi]` (the output's unit); the other outputs'
+  /// edges come from the pilot (runner.hpp).
+  ensemble::HistogramSpec histograms;
 };
 
 /// Reads a scenario file with an `[ensemble]` section. Throws InvalidInput (one line, `FILE:LINE:COLUMN:`,
@@ -43,8 +46,8 @@ std::string ensemble_csv(const ensemble::EnsembleResult& result);
 
 /// summary.json ("kind": "ensemble"): the run (scenario, method, path, samples, seed, threads, wall time,
 /// body-steps/s), the validity counts, and per output its count, NaN count, mean, standard deviation, min,
-/// max and, when rows were kept, the percentiles P1, P5, P50, P95, P99, P99.9 and a 20-bin histogram over
-/// [min, max].
+/// max, the percentiles P1, P5, P50, P95, P99, P99.9 (exact from the rows, else from the quantile sketch) and
+/// the fixed-edge histogram (edges, counts, underflow, overflow, where the edges come from).
 std::string ensemble_summary_json(const EnsembleScenario& scenario, const ensemble::EnsembleOptions& options,
                                   const ensemble::EnsembleResult& result);
 
