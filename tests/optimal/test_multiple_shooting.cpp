@@ -135,6 +135,41 @@ TEST(MultipleShooting, JacobianMatchesCentralDifferences) {
   }
 }
 
+// Where multiple shooting is needed: the racket spinning at 1 rad/s about its unstable intermediate axis
+// for T = 30 s (λT = 26.6, so a costate error grows by e^{26.6} ≈ 4e11 over the horizon) and ending 0.5 rad
+// ahead of the free spin, at minimum energy. From the same direct solution (which follows the spin: it meets
+// the closed-form cost 12 J_y²Δ²/T³ to its mesh error, 7e-6 measured) single shooting fails — its first
+// shot misses by a scaled residual of 118 and Newton stalls after 2 iterations at 17 — while eight
+// segments (growth e^{3.3} each) converge in 2 iterations to the closed form to 1e-10 (measured 3e-12: the
+// Newton tolerance 1e-12 and RKF78 at 1e-13) and pass every check, the dop853 re-simulation included.
+TEST(MultipleShooting, UnstableSpinNeedsNodes) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "0.8 s in release, tens of seconds under ASan; the sphere and Jacobian tests run there";
+#endif
+  const double w = 1.0, T = 30.0, delta = 0.5, J_y = 0.01638;
+  const auto p = testing::racket_spin_phase_problem(w, T, delta);
+  const double closed_form = 12.0 * J_y * J_y * delta * delta / (T * T * T);
+  CollocationOptions opt;
+  opt.initial_intervals = 80;
+  opt.mesh_tolerance = 1e-6;
+  const DirectSolution d = solve_direct(p, opt);
+  ASSERT_TRUE(d.converged) << d.status;
+  // The mesh error 1e-6 bounds the cost's relative error to about 1e-5 (measured 7e-6).
+  EXPECT_NEAR(d.cost / closed_form, 1.0, 5e-5);
+  const IndirectSolution single = solve_indirect(p, d);
+  EXPECT_FALSE(single.converged) << "single shooting was expected to fail over λT = 26.6";
+  EXPECT_FALSE(verify(p, d, single).passed);
+  ShootingOptions o;
+  o.shooting_nodes = 8;
+  const IndirectSolution multiple = solve_indirect(p, d, o);
+  ASSERT_TRUE(multiple.converged) << multiple.status;
+  EXPECT_NEAR(multiple.cost / closed_form, 1.0, 1e-10);
+  EXPECT_NEAR(multiple.cost / d.cost, 1.0, 5e-5);
+  const VerificationReport v = verify(p, d, multiple);
+  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+  EXPECT_LT(v.resimulated_attitude_error, 1e-6);
+}
+
 TEST(MultipleShooting, RefusesABadNodeCount) {
   const auto p = testing::sphere_energy_problem(1.0, 1.0, Vec3::UnitZ(), 2.0);
   CollocationOptions opt;
