@@ -69,14 +69,13 @@ void run_phased(OptimalRun& r) {
     r.phased_status = "not applicable: the direct method did not converge";
     return;
   }
-  optimal::SwitchingStructure structure;
   try {
-    structure = optimal::read_switching_structure(p, r.direct);
+    const optimal::SwitchingStructure structure = optimal::read_switching_structure(p, r.direct);
+    r.phased = optimal::solve_direct_phased(p, r.direct, structure, r.scenario.phased_options);
   } catch (const InvalidInput& e) {
     r.phased_status = fmt::format("not applicable: {}", e.what());
     return;
   }
-  r.phased = optimal::solve_direct_phased(p, r.direct, structure, r.scenario.phased_options);
   r.phased_applied = true;
   r.phased_status = r.phased.status;
 }
@@ -127,12 +126,10 @@ std::string optimal_report(const OptimalRun& r) {
       r.direct.mesh_iterations, format_number(r.direct.max_mesh_error, 3), r.direct.nlp_iterations,
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));
   if (r.phased_applied) {
-    o << fmt::format(
-        "direct, one phase per arc ({} intervals per arc, Ipopt): {}; {} Ipopt iterations\n  final time {} "
-        "s, "
-        "cost {}\n",
-        r.scenario.phased_options.intervals_per_arc, r.phased.status, r.phased.nlp_iterations,
-        format_number(r.phased.solution.final_time, 14), format_number(r.phased.solution.cost, 14));
+    o << fmt::format("direct, one phase per arc ({} intervals per arc, Ipopt): {}; {} Ipopt iterations\n",
+                     r.scenario.phased_options.intervals_per_arc, r.phased.status, r.phased.nlp_iterations)
+      << fmt::format("  final time {} s, cost {}\n", format_number(r.phased.solution.final_time, 14),
+                     format_number(r.phased.solution.cost, 14));
     for (const double t : r.phased.switch_times)
       o << fmt::format("  phase boundary at t = {} s\n", format_number(t, 12));
   } else {
