@@ -78,6 +78,11 @@ class OptimalSolution:
     values and arrays); ``summary`` (the dict of summary.json), ``report`` (the text ``poinsot optimize``
     prints), ``out_dir`` (where the files went, or None), ``figures`` (paths of the PNGs drawn), ``kind``
     ("rigid_body"), ``problem`` (the poinsot.optimal.ReorientationProblem solved).
+    ``phased`` (dict, summary.json's "phased"): the phase-per-arc re-solve of a minimum-time bang-bang direct
+    solution (``enabled``, ``applied``, ``status``, ``converged``, and when applied ``intervals_per_arc``,
+    ``final_time`` s, ``cost``, ``switch_times`` s, ``nlp_iterations``); ``direct_optimum_from`` ("phased" or
+    "mesh_refinement"): which phase of the direct method gave the direct optimum that the checks compare
+    with (``direct`` is always the mesh-refined solution, which seeds the indirect method).
     """
 
     kind: str
@@ -107,6 +112,8 @@ class OptimalSolution:
     summary: dict
     report: str
     problem: Any
+    phased: dict
+    direct_optimum_from: str
     out_dir: str | None = None
     figures: list = field(default_factory=list)
 
@@ -172,6 +179,7 @@ def _solve_single_body(scenario: Any, out_dir: str) -> OptimalSolution:
         switching_function=sigma, hamiltonian=hamiltonian, switch_times=ind["switch_times"],
         switch_axes=list(ind["switch_axes"]), checks=summary["checks"], interpretation=interpretation,
         direct=direct, indirect=ind, summary=summary, report=raw["report"], problem=problem,
+        phased=dict(summary["phased"]), direct_optimum_from=summary["direct"]["optimum_from"],
         out_dir=out_dir or None)
 
 

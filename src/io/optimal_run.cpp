@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/io/summary.hpp"
 
@@ -39,14 +40,57 @@ nlohmann::ordered_json ordered_array(const Vec3& v) {
 
 }  // namespace
 
+const optimal::DirectSolution& direct_optimum(const OptimalRun& r) {
+  return r.phased_applied && r.phased.converged ? r.phased.solution : r.direct;
+}
+
+const char* direct_optimum_source(const OptimalRun& r) {
+  return r.phased_applied && r.phased.converged ? "phased" : "mesh_refinement";
+}
+
+namespace {
+
+/// The phase-per-arc re-solve where it applies: minimum time (not the regularised problem, whose control is
+/// smooth), a converged direct solution, and a switching structure that read_switching_structure accepts
+/// (bang arcs per axis, or norm-bound arcs along one body axis); otherwise the reason in phased_status.
+void run_phased(OptimalRun& r) {
+  const auto& p = r.scenario.problem;
+  if (!r.scenario.phased) {
+    r.phased_status = "off";
+    return;
+  }
+  if (p.objective != optimal::Objective::minimum_time) {
+    r.phased_status = "not applicable: the objective is " +
+                      std::string(optimal::objective_name(p.objective)) +
+                      " (the re-solve takes bang arcs of a minimum-time control)";
+    return;
+  }
+  if (!r.direct.converged) {
+    r.phased_status = "not applicable: the direct method did not converge";
+    return;
+  }
+  try {
+    const optimal::SwitchingStructure structure = optimal::read_switching_structure(p, r.direct);
+    r.phased = optimal::solve_direct_phased(p, r.direct, structure, r.scenario.phased_options);
+  } catch (const InvalidInput& e) {
+    r.phased_status = fmt::format("not applicable: {}", e.what());
+    return;
+  }
+  r.phased_applied = true;
+  r.phased_status = r.phased.status;
+}
+
+}  // namespace
+
 OptimalRun run_optimal(const OptimalScenario& sc) {
   OptimalRun r;
   r.scenario = sc;
   r.direct = optimal::solve_direct(sc.problem, sc.collocation);
+  run_phased(r);
   if (r.direct.costate_time.size() >= 2)
     r.indirect = optimal::solve_indirect(sc.problem, r.direct, sc.shooting);
   if (!r.indirect.time.empty()) {
-    r.verification = optimal::verify(sc.problem, r.direct, r.indirect);
+    r.verification = optimal::verify(sc.problem, direct_optimum(r), r.indirect);
     r.interpretation = optimal::interpret(sc.problem, r.indirect);
     r.has_interpretation = true;
   } else {
@@ -81,6 +125,20 @@ std::string optimal_report(const OptimalRun& r) {
       r.direct.status, r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1,
       r.direct.mesh_iterations, format_number(r.direct.max_mesh_error, 3), r.direct.nlp_iterations,
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));
+  if (r.phased_applied) {
+    o << fmt::format("direct, one phase per arc ({} intervals per arc, Ipopt): {}; {} Ipopt iterations\n",
+                     r.scenario.phased_options.intervals_per_arc, r.phased.status, r.phased.nlp_iterations)
+      << fmt::format("  final time {} s, cost {}\n", format_number(r.phased.solution.final_time, 14),
+                     format_number(r.phased.solution.cost, 14));
+    for (const double t : r.phased.switch_times)
+      o << fmt::format("  phase boundary at t = {} s\n", format_number(t, 12));
+  } else {
+    o << "direct, one phase per arc: " << r.phased_status << "\n";
+  }
+  o << "direct optimum from: "
+    << (direct_optimum_source(r) == std::string_view("phased") ? "the phase-per-arc re-solve"
+                                                               : "mesh refinement")
+    << "\n";
   const int segments = r.scenario.shooting.shooting_nodes;
   o << fmt::format("indirect (minimum principle in (R, ω), {}): {}; {} Newton iterations, residual {}\n",
                    segments > 1 ? fmt::format("multiple shooting over {} segments", segments) : "shooting",
@@ -146,7 +204,20 @@ std::string optimal_summary_json(const OptimalRun& r) {
                  {"cost", r.direct.cost},
                  {"intervals", r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1},
                  {"mesh_error", r.direct.max_mesh_error},
-                 {"nlp_iterations", r.direct.nlp_iterations}};
+                 {"nlp_iterations", r.direct.nlp_iterations},
+                 {"optimum_from", direct_optimum_source(r)}};
+  nlohmann::ordered_json phased = {{"enabled", r.scenario.phased},
+                                   {"applied", r.phased_applied},
+                                   {"status", r.phased_status},
+                                   {"converged", r.phased_applied && r.phased.converged}};
+  if (r.phased_applied) {
+    phased["intervals_per_arc"] = r.scenario.phased_options.intervals_per_arc;
+    phased["final_time"] = r.phased.solution.final_time;
+    phased["cost"] = r.phased.solution.cost;
+    phased["switch_times"] = r.phased.switch_times;
+    phased["nlp_iterations"] = r.phased.nlp_iterations;
+  }
+  j["phased"] = phased;
   nlohmann::ordered_json ind = {
       {"converged", r.indirect.converged},
       {"status", r.indirect.status},
@@ -215,8 +286,8 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
       for (std::size_t k = 0; k < s.time.size(); ++k)
         control += csv_row(s.time[k], {s.torque_body[k]});
     }
-  } else {  // the best iterate: the direct solution
-    const auto& d = r.direct;
+  } else {  // the best iterate: the direct optimum
+    const auto& d = direct_optimum(r);
     for (std::size_t k = 0; k < d.time.size(); ++k) {
       const Quat& q = d.attitude[k];
       traj += trajectory_row(d.time[k], q, d.omega_body[k], d.torque_body[k],

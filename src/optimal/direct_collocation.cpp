@@ -26,12 +26,45 @@ using detail::Vec11;
 using detail::Vec4;
 using detail::Vec7;
 
+/// The torque-free motion from the problem's initial state at the collocation points of `nlp` over [0, T]:
+/// 16 midpoint sub-steps between points, R advanced by exact exponentials.
+void torque_free_motion(const CollocationNlp& nlp, double T, std::vector<Mat3>& R, std::vector<Vec3>& omega) {
+  const auto& p = nlp.problem();
+  const Mat3 J_inv = p.inertia_body.inverse();
+  const auto wdot = [&](const Vec3& v) { return Vec3(-J_inv * v.cross(p.inertia_body * v)); };
+  Mat3 Rk = p.attitude_initial.toRotationMatrix();
+  Vec3 wk = p.omega_initial;
+  double tau_prev = 0.0;
+  for (int pt = 0; pt < nlp.points(); ++pt) {
+    const int k = pt / 2;
+    const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
+    for (int i = 0; i < 16; ++i) {
+      const double h = (tau - tau_prev) * T / 16.0;
+      const Vec3 w_mid = wk + 0.5 * h * wdot(wk);
+      Rk = Rk * so3::exp(h * w_mid);
+      wk += h * wdot(w_mid);
+    }
+    tau_prev = tau;
+    R.push_back(Rk);
+    omega.push_back(wk);
+  }
+}
+
 /// The eigenaxis guess: q(t) = q_0 ⊗ exp(s Θ n / 2), ω = Θ n / T (body frame) plus a transverse bump,
-/// u = 0, ν = 0.
+/// u = 0, ν = 0. From a spinning start (ω_0 ≠ 0, fixed final attitude) the same about the torque-free
+/// motion R_free(t), ω_free(t): R = R_free exp(s r), r = log(R_free(T)ᵀ R_f), ω = ω_free + s(ω_f − ω_free(T))
+/// + r/T — the guess follows the spin over every turn instead of taking the shortest rotation to R_f.
 std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
   const auto& p = nlp.problem();
   const Mat3 R0 = p.attitude_initial.toRotationMatrix(), Rf = p.attitude_final.toRotationMatrix();
-  const Vec3 rotvec = p.free_final_attitude ? Vec3::Zero() : so3::log(R0.transpose() * Rf);
+  std::vector<Mat3> spin_R;
+  std::vector<Vec3> spin_omega;
+  const bool spinning = !p.free_final_attitude && !p.omega_initial.isZero(0.0);
+  if (spinning) torque_free_motion(nlp, T, spin_R, spin_omega);
+  const Vec3 rotvec = p.free_final_attitude ? Vec3::Zero()
+                      : spinning            ? so3::log(spin_R.back().transpose() * Rf)
+                                            : so3::log(R0.transpose() * Rf);
+  const Vec3 spin_omega_end = spinning ? spin_omega.back() : Vec3::Zero();
   // A transverse rate bump breaks the symmetry of rotations about a principal axis, whose eigenaxis
   // manoeuvre is a stationary point of the NLP but not the optimum (Bilimoria & Wie 1993).
   Vec3 transverse = Vec3(0.36, 0.48, 0.8);
@@ -51,11 +84,13 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
   Mat3 R_free = R0;
   Vec3 w_free = p.omega_initial;
   double tau_prev = 0.0;
+  Quat q_prev = p.attitude_initial;
   for (int pt = 0; pt < nlp.points(); ++pt) {
     const int k = pt / 2;
     const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
-    Vec3 w = (1.0 - tau) * p.omega_initial + tau * p.omega_final + rotvec / T +
-             std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
+    Vec3 w = (spinning ? Vec3(spin_omega[pt] + tau * (p.omega_final - spin_omega_end))
+                       : Vec3((1.0 - tau) * p.omega_initial + tau * p.omega_final)) +
+             rotvec / T + std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
     for (int i = 0; i < 16 && p.free_final_attitude; ++i) {
       const double h = (tau - tau_prev) * T / 16.0;
       const auto wdot = [&](const Vec3& v) {
@@ -73,10 +108,15 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
       for (int i = 0; i < 3; ++i)
         z[kP * pt + 7 + i] = u[i];
     }
-    const Quat q(p.free_final_attitude ? R_free : Mat3(R0 * so3::exp(tau * rotvec)));
-    const Quat qs = q.w() * p.attitude_initial.w() + q.vec().dot(p.attitude_initial.vec()) < 0
-                        ? Quat(-q.w(), -q.x(), -q.y(), -q.z())
-                        : q;
+    const Quat q(p.free_final_attitude ? R_free
+                 : spinning            ? Mat3(spin_R[pt] * so3::exp(tau * rotvec))
+                                       : Mat3(R0 * so3::exp(tau * rotvec)));
+    // The sign of q: that of q_0 (continuous along the eigenaxis path, which turns by at most π); along a
+    // spin over several turns, that of the previous point, so that the guess is continuous.
+    const Quat& q_ref = spinning && pt > 0 ? q_prev : p.attitude_initial;
+    const Quat qs =
+        q.w() * q_ref.w() + q.vec().dot(q_ref.vec()) < 0 ? Quat(-q.w(), -q.x(), -q.y(), -q.z()) : q;
+    q_prev = qs;
     z[kP * pt] = qs.w();
     z[kP * pt + 1] = qs.x();
     z[kP * pt + 2] = qs.y();

@@ -40,6 +40,34 @@ Vec3 direct_costate_omega_at(const DirectSolution& d, double t) {
   return (1.0 - w) * d.costate_omega[j - 1] + w * d.costate_omega[j];
 }
 
+/// The interior nodes as fractions of T for M segments: m/M, each moved by at most 7/16 of a segment so that
+/// it lies at least a quarter of a segment from every knot of the guess (`knots`, fractions of T), or as far
+/// from them as those moves allow. A knot's condition is evaluated on the segment that contains it: at a
+/// node it would be evaluated from the previous segment's integrated end on one side and from the node's
+/// unknowns on the other, and a norm-bound reversal there (σ ≈ 0 at the node) makes the control's direction
+/// at the start of the segment depend on the node's p_ω components across σ's line, where −σ/‖σ‖ is not
+/// smooth: Newton stalls at 1e-9 … 1e-7 (docs/optimal_control.md, section 3).
+std::vector<double> node_fractions(int M, const std::vector<double>& knots) {
+  std::vector<double> out;
+  const double segment = 1.0 / M;
+  const auto gap = [&](double tau) {
+    double g = 1.0;
+    for (const double k : knots)
+      g = std::min(g, std::abs(tau - k));
+    return g;
+  };
+  for (int m = 1; m < M; ++m) {
+    double best = m * segment;
+    for (int i = 0; i <= 7 && gap(best) < 0.25 * segment; ++i)
+      for (const double sign : {1.0, -1.0}) {
+        const double tau = (m + sign * i / 16.0) * segment;
+        if (gap(tau) > gap(best)) best = tau;
+      }
+    out.push_back(best);
+  }
+  return out;
+}
+
 }  // namespace
 
 Vec3 minimising_control(const ReorientationProblem& p, const Vec3& costate_omega) {
@@ -103,15 +131,21 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   }
   pi_space /= static_cast<double>(d.costate_time.size());
   const int M = o.shooting_nodes;
+  std::vector<double> knot_fraction;
+  for (const double t : sw.times)
+    knot_fraction.push_back(t / d.final_time);
+  for (const double t : sw.reversals)
+    knot_fraction.push_back(t / d.final_time);
+  const std::vector<double> tau = node_fractions(M, knot_fraction);
   std::vector<Mat3> node_R(static_cast<std::size_t>(M - 1));
   std::vector<Vec3> node_omega(node_R.size());
   double omega_scale = std::max(p.omega_initial.norm(), p.omega_final.norm());
   for (int m = 1; m < M; ++m) {
-    direct_state_at(d, d.final_time * m / M, node_R[m - 1], node_omega[m - 1]);
+    direct_state_at(d, d.final_time * tau[m - 1], node_R[m - 1], node_omega[m - 1]);
     omega_scale = std::max(omega_scale, node_omega[m - 1].norm());
   }
   if (!(omega_scale > 0.0)) omega_scale = 1.0;
-  Shooter shooter(p, o, sw, out.bang_bang, node_R, omega_scale);
+  Shooter shooter(p, o, sw, out.bang_bang, node_R, omega_scale, tau);
   Eigen::VectorXd x(shooter.size());
   x.segment<3>(0) = p.attitude_initial.toRotationMatrix().transpose() * pi_space;
   x.segment<3>(3) = direct_costate_omega_at(d, 0.0);
@@ -123,7 +157,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   for (int m = 1; m < M; ++m) {
     const Mat3& R = node_R[m - 1];
     shooter.set_node(x, m, R, node_omega[m - 1], R.transpose() * pi_space,
-                     direct_costate_omega_at(d, d.final_time * m / M));
+                     direct_costate_omega_at(d, d.final_time * tau[m - 1]));
   }
 
   Eigen::VectorXd F;
@@ -140,7 +174,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
     ShootingOptions tight = o;
     tight.integration_tolerance = o.integration_tolerance / 10.0;
-    const Shooter polish(p, tight, sw, out.bang_bang, node_R, omega_scale);
+    const Shooter polish(p, tight, sw, out.bang_bang, node_R, omega_scale, tau);
     if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
       F = Fp;
       norm = Fp.cwiseAbs().maxCoeff();
@@ -151,7 +185,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // Still stalled within 10× the tolerance with the tighter integration: the residual's round-off floor.
   const bool floor = norm > o.tolerance && stalled && used.integration_tolerance < o.integration_tolerance &&
                      norm <= 10.0 * o.tolerance;
-  const Shooter result_shooter(p, used, sw, out.bang_bang, node_R, omega_scale);
+  const Shooter result_shooter(p, used, sw, out.bang_bang, node_R, omega_scale, tau);
   out.iterations = it;
   out.residual = norm;
   out.converged = norm <= o.tolerance || floor;

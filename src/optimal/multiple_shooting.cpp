@@ -18,7 +18,8 @@ namespace poinsot::optimal::detail {
 namespace odeint = boost::numeric::odeint;
 
 Shooter::Shooter(const ReorientationProblem& p, const ShootingOptions& o, const SwitchGuess& s,
-                 bool bang_bang, std::vector<Mat3> node_attitude, double omega_scale)
+                 bool bang_bang, std::vector<Mat3> node_attitude, double omega_scale,
+                 std::vector<double> node_fraction)
     : p_(p),
       options_(o),
       s_(s),
@@ -26,9 +27,14 @@ Shooter::Shooter(const ReorientationProblem& p, const ShootingOptions& o, const 
       rev_(!bang_bang && !s.reversals.empty()),
       ref_(std::move(node_attitude)),
       omega_scale_(omega_scale),
+      fraction_(std::move(node_fraction)),
       J_inv_(p.inertia_body.inverse()),
       R0_(p.attitude_initial.toRotationMatrix()),
-      Rf_(p.attitude_final.toRotationMatrix()) {}
+      Rf_(p.attitude_final.toRotationMatrix()) {
+  if (fraction_.empty())
+    for (int m = 1; m < nodes(); ++m)
+      fraction_.push_back(static_cast<double>(m) / nodes());
+}
 
 Vec3 Shooter::arc_torque(const Eigen::VectorXd& x, double t_mid) const {
   Vec3 u;

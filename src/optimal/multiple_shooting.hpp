@@ -1,10 +1,10 @@
 #pragma once
 /// @file multiple_shooting.hpp (internal)
 /// The shooting residual of the minimum principle in (R, ω, P, p_ω) (indirect_shooting.hpp) over M segments
-/// of equal length T/M, and Newton's method on it. M = 1 is single shooting.
+/// (nodes at fixed fractions τ_m of T, by default m/M), and Newton's method on it. M = 1 is single shooting.
 ///
 /// Unknowns x = (p_θ(0), p_ω(0), T if free, the knot times (switches or reversals), then for each interior
-/// node m = 1 … M−1 at t_m = mT/M: δ_m, ω_m, p_θ,m, p_ω,m), 12 per node. The node attitude is
+/// node m = 1 … M−1 at t_m = τ_m T: δ_m, ω_m, p_θ,m, p_ω,m), 12 per node. The node attitude is
 /// R_m = R̄_m exp(j(δ_m)) around a fixed reference R̄_m (the guess): three coordinates on SO(3), so RᵀR = I
 /// holds at every node by construction and needs neither a row nor a multiplier. The attitude costate at a
 /// node is the body vector p_θ,m with P_m = ½ R_m j(p_θ,m): the gauge P → P + R S (S symmetric, the
@@ -30,9 +30,10 @@ namespace poinsot::optimal::detail {
 class Shooter {
  public:
   /// `node_attitude` holds the reference attitudes R̄_1 … R̄_{M−1} (empty: single shooting); `omega_scale`
-  /// is s_ω of the costate rows (rad/s).
+  /// is s_ω of the costate rows (rad/s); `node_fraction` the interior nodes' times as fractions τ_m of T,
+  /// strictly ascending in (0, 1) (t_m = τ_m T; empty: τ_m = m/M).
   Shooter(const ReorientationProblem& p, const ShootingOptions& o, const SwitchGuess& s, bool bang_bang,
-          std::vector<Mat3> node_attitude, double omega_scale);
+          std::vector<Mat3> node_attitude, double omega_scale, std::vector<double> node_fraction = {});
 
   int size() const { return node_base(1) + 12 * (nodes() - 1); }
   int nodes() const { return static_cast<int>(ref_.size()) + 1; }
@@ -44,7 +45,9 @@ class Shooter {
     return x[knot_base() + static_cast<int>(k)];
   }
   double final_time(const Eigen::VectorXd& x) const { return p_.free_final_time() ? x[6] : p_.final_time; }
-  double node_time(const Eigen::VectorXd& x, int m) const { return final_time(x) * m / nodes(); }
+  double node_time(const Eigen::VectorXd& x, int m) const {
+    return m == 0 ? 0.0 : final_time(x) * fraction_[static_cast<std::size_t>(m - 1)];
+  }
   /// The constant torque of a bang-bang arc containing t_mid.
   Vec3 arc_torque(const Eigen::VectorXd& x, double t_mid) const;
   /// The state (R, ω, P, p_ω, cost 0) at node m (m = 0: the initial state and costates).
@@ -103,6 +106,7 @@ class Shooter {
   bool bang_, rev_;
   std::vector<Mat3> ref_;
   double omega_scale_;
+  std::vector<double> fraction_;
   Mat3 J_inv_, R0_, Rf_;
 };
 

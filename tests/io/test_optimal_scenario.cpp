@@ -38,6 +38,14 @@ TEST(OptimalScenario, ReadsTheProblem) {
   const OptimalScenario multiple = parse_optimal_scenario(
       std::string(t).replace(t.find("rate_max = 0.5"), 14, "shooting_nodes = 8"), "betts.toml", ".");
   EXPECT_EQ(multiple.shooting.shooting_nodes, 8);
+  // The phase-per-arc re-solve is on, at 64 intervals per arc, unless the file says otherwise.
+  EXPECT_TRUE(sc.phased);
+  EXPECT_EQ(sc.phased_options.intervals_per_arc, 64);
+  const OptimalScenario off = parse_optimal_scenario(
+      std::string(t).replace(t.find("rate_max = 0.5"), 14, "phased = false\nphased_intervals_per_arc = 16"),
+      "betts.toml", ".");
+  EXPECT_FALSE(off.phased);
+  EXPECT_EQ(off.phased_options.intervals_per_arc, 16);
 }
 
 // Each message is one line that locates the key and says what was expected.
@@ -60,6 +68,9 @@ TEST(OptimalScenario, LocatedErrors) {
                "initial_intervals");
   expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "shooting_nodes = 0"),
                "shooting_nodes");
+  expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "phased = 1"), "phased");
+  expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "phased_intervals_per_arc = 2001"),
+               "phased_intervals_per_arc");
   expect_error("[body]\nprincipal_moments = [1.0, 1.0, 1.0]\n", "optimal_control");
 }
 

@@ -33,4 +33,21 @@ inline ReorientationProblem sphere_energy_problem(double j, double theta, const 
   return p;
 }
 
+/// Brody's tennis racket (J = diag(0.00121, 0.01638, 0.01748) kg·m², examples/tennis_racket.toml) spinning at
+/// w about its intermediate axis y, at the start and at T, and ending Δ ahead of the free spin: R_f =
+/// exp(j((wT + Δ) e_y)), minimum energy at fixed T (torque bound 1 N·m, far above the optimum's). The spin
+/// about y is an equilibrium of the torque-free motion and a torque along y keeps ω on y, so the phase
+/// advance is the sphere's problem about y: u_y = 6 J_y Δ/T² (1 − 2t/T), cost 12 J_y² Δ²/T³. Transverse
+/// perturbations grow like e^{λt}, λ = w √((J_y − J_x)(J_z − J_y)/(J_x J_z)) = 0.888 w.
+inline ReorientationProblem racket_spin_phase_problem(double w, double T, double delta) {
+  ReorientationProblem p;
+  p.inertia_body = Vec3(0.00121, 0.01638, 0.01748).asDiagonal();
+  p.torque_max = Vec3::Constant(1.0);
+  p.omega_initial = p.omega_final = Vec3(0.0, w, 0.0);
+  p.attitude_final = Quat(Eigen::AngleAxisd(w * T + delta, Vec3::UnitY()));
+  p.objective = Objective::minimum_energy;
+  p.final_time = T;
+  return p;
+}
+
 }  // namespace poinsot::optimal::testing

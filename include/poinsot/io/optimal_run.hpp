@@ -1,7 +1,8 @@
 #pragma once
 /// @file optimal_run.hpp
-/// `poinsot optimize`: the direct method, the indirect method from its costates, the verification and the
-/// interpretation of an OptimalScenario, and the files and texts that report them (docs/optimal_control.md):
+/// `poinsot optimize`: the direct method (mesh refinement, then the phase-per-arc re-solve of a minimum-time
+/// bang-bang solution), the indirect method from its costates, the verification and the interpretation of an
+/// OptimalScenario, and the files and texts that report them (docs/optimal_control.md):
 ///   report.txt      the human-readable report (also printed)
 ///   trajectory.csv  t, q (w, x, y, z), ω body (rad/s), u body (N·m), L space (kg·m²/s)
 ///   control.csv     t, u body (N·m): piecewise linear in t, with two rows at each switch (left and right
@@ -22,7 +23,14 @@ namespace poinsot::io {
 
 struct OptimalRun {
   OptimalScenario scenario;
-  optimal::DirectSolution direct;
+  optimal::DirectSolution direct;  ///< the mesh-refined direct solution (it seeds the indirect method)
+  /// The phase-per-arc re-solve (phased_collocation.hpp): applied when the scenario allows it, the objective
+  /// is minimum time, the direct solution converged and its switching structure is one the re-solve takes
+  /// (read_switching_structure does not refuse it); `phased_status` says "converged", Ipopt's failure,
+  /// "not applicable: <why>" or "off".
+  bool phased_applied = false;
+  optimal::PhasedSolution phased;
+  std::string phased_status;
   optimal::IndirectSolution indirect;
   optimal::VerificationReport verification;
   bool has_interpretation = false;
@@ -30,6 +38,12 @@ struct OptimalRun {
   bool optimal = false;  ///< both methods converged and every check passed
   std::string status;    ///< "optimal (verified)" or "not converged: <what failed>"
 };
+
+/// The direct optimum the checks compare with: the phased re-solve's when it converged, else the mesh-refined
+/// one.
+const optimal::DirectSolution& direct_optimum(const OptimalRun& run);
+/// "phased" or "mesh_refinement": which phase of the direct method produced direct_optimum(run).
+const char* direct_optimum_source(const OptimalRun& run);
 
 /// Solves and checks; never throws for a solver failure (the status says it).
 OptimalRun run_optimal(const OptimalScenario& scenario);

@@ -16,6 +16,9 @@
 ///     initial_intervals = 10         # direct method, optional (2 … 4000)
 ///     max_mesh_iterations = 10       # direct method, optional (1 … 100)
 ///     shooting_nodes = 1             # indirect method, optional (1 … 1000): segments of multiple shooting
+///     phased = true                  # optional: the phase-per-arc re-solve of a minimum-time direct
+///                                    # solution where it applies (phased_collocation.hpp); false: off
+///     phased_intervals_per_arc = 64  # optional (1 … 2000): its uniform intervals on every arc
 ///     [optimal_control.initial]      # orientation = { ... } as in [initial]; omega_body (rad/s)
 ///     [optimal_control.final]        # the same, or free_attitude = true (detumbling)
 ///     [output]
@@ -31,6 +34,7 @@
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/optimal/direct_collocation.hpp"
 #include "poinsot/optimal/indirect_shooting.hpp"
+#include "poinsot/optimal/phased_collocation.hpp"
 #include "poinsot/optimal/problem.hpp"
 
 namespace poinsot::io {
@@ -43,7 +47,12 @@ struct OptimalScenario {
   optimal::ReorientationProblem problem;    ///< the validated problem of [optimal_control]
   optimal::CollocationOptions collocation;  ///< the direct method's options
   optimal::ShootingOptions shooting;        ///< the indirect method's options (shooting_nodes from the file)
-  std::string out_dir;                      ///< [output] dir; empty: the default
+  /// The phase-per-arc re-solve after the mesh refinement (minimum time, where the switching structure
+  /// allows it): on unless the file says `phased = false`; 64 intervals per arc unless it says otherwise
+  /// (Betts' t* then meets the indirect one to 1e-11, docs/optimal_control.md section 2b).
+  bool phased = true;
+  optimal::PhasedOptions phased_options{.intervals_per_arc = 64};
+  std::string out_dir;  ///< [output] dir; empty: the default
   /// For drawing (view.html): the body's mass (kg) when the file gives one, and its surface about the centre
   /// of mass (body axes, m) when it gives a shape or a mesh, else null.
   std::optional<double> body_mass;

@@ -20,7 +20,7 @@
 /// Bang-bang controls (per-axis bounds, minimum time): the switching structure (the initial sign of each u_i
 /// and the order of its sign changes) is read from the direct solution's torques, and the switching times
 /// are unknowns of the Newton iteration with the conditions σ_i(t_s) = 0, so the switches are exact.
-/// Shooting: over M segments of equal length T/M (ShootingOptions::shooting_nodes; M = 1 is single
+/// Shooting: over M segments (ShootingOptions::shooting_nodes; M = 1 is single
 /// shooting), each split at the switches inside it and integrated by Runge–Kutta–Fehlberg 7(8) at
 /// rtol = atol = integration_tolerance; at an interior node the attitude is three coordinates on SO(3) about
 /// the guess, R = R̄ exp(j(δ)), and the attitude costate the body vector p_θ (gauge P = ½ R j(p_θ)), so that
@@ -51,7 +51,8 @@ struct ShootingOptions {
   int max_iterations = 40;
   double integration_tolerance = 1e-13;  ///< RKF78 rtol and atol
   int samples_per_arc = 64;              ///< output samples on each arc (ends included)
-  /// M, the number of shooting segments of equal length T/M (1 … 1000): 1 is single shooting; with M > 1 the
+  /// M, the number of shooting segments (1 … 1000; nodes at mT/M, each moved by less than half a segment to
+  /// keep a quarter segment from the guessed switches and reversals): 1 is single shooting; with M > 1 the
   /// state and costates at the M − 1 interior nodes are unknowns too, started from the direct solution, and
   /// the continuity of (R, ω, p_θ, p_ω) at each node is a Newton equation (multiple shooting).
   int shooting_nodes = 1;
