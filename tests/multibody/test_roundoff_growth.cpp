@@ -41,20 +41,31 @@ struct Growth {
   std::vector<double> energy, L_space, L_norm, orthogonality;
 };
 
-// J = diag(1, 2, 3) kg·m², ω0 = (0.01, 2, 0.01) rad/s + δ, |δᵢ| ≤ 1e-3 rad/s, R0 = exp(j(ε)), |εᵢ| ≤ 1e-3
-// rad, drawn by SplitMixDraws (the generator and seed of bench/brouwer_growth.cpp).
-Growth measure(const MultibodyMethodInfo& info, const std::vector<long>& checkpoints) {
+// The ensemble's body, J = diag(1, 2, 3) kg·m², 1 kg.
+System free_body() {
   System system;
   system.add_body_from_inertia("body", 1.0, Vec3(1.0, 2.0, 3.0).asDiagonal());
+  return system;
+}
+
+// The next member's initial state: ω0 = (0.01, 2, 0.01) rad/s + δ, |δᵢ| ≤ 1e-3 rad/s, R0 = exp(j(ε)),
+// |εᵢ| ≤ 1e-3 rad, drawn by SplitMixDraws (the generator and seed of bench/brouwer_growth.cpp).
+State next_member(poinsot::test::SplitMixDraws& draws) {
+  State s;
+  s.bodies.resize(1);
+  s.bodies[0].R_space_body = so3::exp(draws.vec(1e-3));
+  s.bodies[0].omega_body = Vec3(0.01, 2.0, 0.01) + draws.vec(1e-3);
+  return s;
+}
+
+Growth measure(const MultibodyMethodInfo& info, const std::vector<long>& checkpoints) {
+  const System system = free_body();
   const std::size_t n = checkpoints.size();
   Growth g{checkpoints, std::vector<double>(n), std::vector<double>(n), std::vector<double>(n),
            std::vector<double>(n)};
   poinsot::test::SplitMixDraws draws;
   for (int m = 0; m < kMembers; ++m) {
-    State s;
-    s.bodies.resize(1);
-    s.bodies[0].R_space_body = so3::exp(draws.vec(1e-3));
-    s.bodies[0].omega_body = Vec3(0.01, 2.0, 0.01) + draws.vec(1e-3);
+    State s = next_member(draws);
     const auto integrator = info.make(system, kDt, info.order);
     const double T0 = kinetic_energy(system, s);
     const Vec3 L0 = angular_momentum(system, s);
@@ -135,16 +146,12 @@ struct SignedMeans {
 };
 
 SignedMeans rattle_signed_means(int members, long steps, double dt) {
-  System system;
-  system.add_body_from_inertia("body", 1.0, Vec3(1.0, 2.0, 3.0).asDiagonal());
+  const System system = free_body();
   const MultibodyMethodInfo& info = multibody_method_info(MultibodyMethod::rattle);
   poinsot::test::SplitMixDraws draws;
   std::vector<double> dE, dL;
   for (int m = 0; m < members; ++m) {
-    State s;
-    s.bodies.resize(1);
-    s.bodies[0].R_space_body = so3::exp(draws.vec(1e-3));
-    s.bodies[0].omega_body = Vec3(0.01, 2.0, 0.01) + draws.vec(1e-3);
+    State s = next_member(draws);
     const auto integrator = info.make(system, dt, info.order);
     const double T0 = kinetic_energy(system, s);
     const double L0 = angular_momentum(system, s).norm();
@@ -170,7 +177,7 @@ SignedMeans rattle_signed_means(int members, long steps, double dt) {
 
 TEST(MultibodyRoundoffGrowth, RattleEnergyAndMomentumRoundingHasNoBias) {
 #ifndef NDEBUG
-  GTEST_SKIP() << "10^6 steps: release builds only (0.3 s there)";
+  GTEST_SKIP() << "10^6 steps: release builds only (about 1 s there)";
 #endif
   // A bias of the rounding far below what bends the RMS over a short run still shows in the signed mean over
   // many members: a random walk leaves a mean that is zero within its standard error (1/√members of the
