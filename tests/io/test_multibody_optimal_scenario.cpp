@@ -89,7 +89,7 @@ TEST(MultibodyOptimalScenario, BadInputIsOneLocatedLine) {
   expect_bad(sphere("actuators = [{ body = \"ball\", torque_max = 0 }]\n" + target),
              "[optimal_control.actuators[0]] torque_max: got 0 N·m");
   expect_bad(sphere("actuators = [{ joint = \"elbow\", torque_max = 1 }]\n" + target),
-             "joint: got \"elbow\", expected the name of a hinge joint");
+             "joint: got \"elbow\", expected the name of a hinge or ball joint");
   expect_bad(sphere("actuators = [{ joint = \"a\", body = \"ball\", torque_max = 1 }]\n" + target), "joint");
   expect_bad(sphere(act), "[optimal_control] final: missing");
   expect_bad(sphere(act + "[[optimal_control.final]]\nbody = \"ball\"\n"),
@@ -98,7 +98,7 @@ TEST(MultibodyOptimalScenario, BadInputIsOneLocatedLine) {
   expect_bad(sphere("intervals = 1.5\n" + act + target),
              "intervals: got 1.5, expected an integer from 2 to 2000");
   expect_bad(sphere("objective = \"minimum_time\"\n" + act + target),
-             "objective: got \"minimum_time\", expected \"minimum_energy\"");
+             "[optimal_control] final_time_bounds: missing");
   expect_bad(sphere("coordinates = \"joint\"\n" + act + target), "coordinates: got \"joint\"");
   expect_bad(sphere("speed = 1\n" + act + target), "unknown key \"speed\"");
   expect_bad("[[bodies]]\nname = \"ball\"\nmass = 2.0\nprincipal_moments = [1, 1, 1]\n",

@@ -13,9 +13,10 @@
 ///   recursive Newton–Euler algorithm as the path equation RNEA(θ, θ̇, θ̈) = τ (no mass matrix is inverted),
 ///   derivatives exact by forward automatic differentiation of second order.
 ///
-/// Both minimise ∫ Σ u_i² dt at fixed T, from the full initial state to the final state, on N equal
-/// intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point but
-/// the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
+/// Both minimise ∫ Σ u_i² dt at fixed T, or T + ε ∫ Σ u_i² dt with T free (the problem's objective;
+/// hermite_simpson_dae.hpp scales time as t = T τ), from the full initial state to the final state, on N
+/// equal intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point
+/// but the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
 /// ones). The naive initial guess is used unless MultibodyOptions::warm_start is given: every state
 /// coordinate linearly interpolated between the two boundary states, every other variable zero. A result is
 /// `converged` only when Ipopt reports success and no body turns by more than π/2 between neighbouring
@@ -55,7 +56,8 @@ struct MultibodyOptimum {
   bool converged = false;  ///< Ipopt solved the NLP
   std::string status;      ///< "converged", or Ipopt's status in words
   int nlp_iterations = 0;
-  double cost = 0.0;                      ///< ∫ Σ u_i² dt, N²·m²·s
+  /// The objective: ∫ Σ u_i² dt (N²·m²·s), or T + ε ∫ Σ u_i² dt (s) for minimum_time (T = time.back()).
+  double cost = 0.0;
   double wall_seconds = 0.0;              ///< building and solving the NLP
   std::vector<double> time;               ///< s, every collocation point (nodes and midpoints)
   std::vector<multibody::State> states;   ///< at every point
