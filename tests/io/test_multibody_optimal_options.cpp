@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <string>
+#include <utility>
 
 #include <Eigen/Geometry>
 
@@ -30,7 +32,7 @@ std::string ball_rod(const std::string& options) {
          options +
          "\n[[optimal_control.final]]\nbody = \"rod\"\nrotation = { axis = [0, 0, 1], angle = 1.2 }\n";
 }
-const std::string kOptions =
+const std::string kBallRodOptions =
     "stabilisation_step = 0.3\nwarm_start = [4]\n"
     "no_twist = [{ joint = \"shoulder\", axis_a = [1, 0, 0], rotation = { axis = [0, 0, 1], angle = 0 } }]";
 
@@ -52,7 +54,8 @@ optimal::MultibodyProblem ball_rod_in_code(int intervals) {
 }
 
 TEST(MultibodyOptimalOptions, FileWithTheKeysGivesTheOptimumOfTheCppCall) {
-  const MultibodyOptimalScenario sc = parse_multibody_optimal_scenario(ball_rod(kOptions), "<string>", "");
+  const MultibodyOptimalScenario sc =
+      parse_multibody_optimal_scenario(ball_rod(kBallRodOptions), "<string>", "");
   EXPECT_EQ(sc.options.stabilisation_step, 0.3);
   ASSERT_EQ(sc.mesh_sequence, std::vector<int>{4});
   ASSERT_EQ(sc.problem.no_twist.size(), 1u);
@@ -121,7 +124,31 @@ TEST(MultibodyOptimalOptions, MinimumTimeFileMeetsTheBangBangTime) {
   EXPECT_NE(multibody_optimal_summary_json(run).find("\"objective\": \"minimum_time\""), std::string::npos);
 }
 
-void expect_bad(const std::string& text, const std::string& fragment) {
+TEST(MultibodyOptimalOptions, FallingCatExampleIsTheCatOfTheTests) {
+  // examples/optimal/falling_cat.toml (solved by `poinsot optimize` in minutes, so not here): the cat of the
+  // optimal/ tests, its three motors in the waist, the bound c and the mesh sequence.
+  const MultibodyOptimalScenario sc =
+      load_multibody_optimal_scenario(std::string(POINSOT_SOURCE_DIR) + "/examples/optimal/falling_cat.toml");
+  const optimal::MultibodyProblem cat = optimal::testing::falling_cat(0.5, std::numbers::pi, 1.0, 12);
+  for (const auto& [file, code] : {std::pair{&sc.problem.initial_state, &cat.initial_state},
+                                   std::pair{&sc.problem.final_state, &cat.final_state}}) {
+    for (std::size_t i = 0; i < 2; ++i) {
+      // The file gives the rotations and positions to 17 digits: round-off.
+      EXPECT_LT((file->bodies[i].R_space_body - code->bodies[i].R_space_body).norm(), 1e-15) << i;
+      EXPECT_LT((file->bodies[i].x_space - code->bodies[i].x_space).norm(), 1e-15) << i;
+    }
+  }
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_LT((sc.problem.system.bodies()[i].inertia - cat.system.bodies()[i].inertia).norm(), 1e-15);
+  }
+  ASSERT_EQ(sc.problem.actuators.size(), 1u);
+  EXPECT_EQ(sc.problem.actuators[0].kind, optimal::ActuatorKind::ball_torque);
+  EXPECT_EQ(sc.problem.intervals, 12);
+  EXPECT_EQ(sc.mesh_sequence, std::vector<int>{6});
+  EXPECT_EQ(sc.options.stabilisation_step, optimal::testing::kCatStabilisationStep);
+}
+
+void expect_bad_option(const std::string& text, const std::string& fragment) {
   try {
     parse_multibody_optimal_scenario(text, "s.toml", "");
     ADD_FAILURE() << "expected InvalidInput containing " << fragment;
@@ -134,39 +161,43 @@ void expect_bad(const std::string& text, const std::string& fragment) {
 }
 
 TEST(MultibodyOptimalOptions, BadValuesAreOneLocatedLine) {
-  expect_bad(ball_rod("stabilisation_step = 0.7"),
-             "stabilisation_step: got 0.7; expected a number from 0 to 0.6");
-  expect_bad(ball_rod("stabilisation_step = -0.1"), "stabilisation_step: got -0.1");
-  expect_bad(hinge_rod("stabilisation_step = 0.1"), "stabilisation_step: got 0.1 with minimal coordinates");
-  expect_bad(ball_rod("warm_start = [8]"),
-             "warm_start: got [8]; expected increasing whole numbers of intervals "
-             "from 2 to intervals − 1 = 7");
-  expect_bad(ball_rod("warm_start = [4, 3]"), "warm_start: got [4, 3]");
-  expect_bad(ball_rod("warm_start = \"coarse\""),
-             "[optimal_control] warm_start: got \"coarse\", expected an array of whole numbers");
-  expect_bad(ball_rod("warm_start = [2.5]"), "warm_start: got [2.5], expected an array of whole numbers");
-  expect_bad(
+  expect_bad_option(ball_rod("stabilisation_step = 0.7"),
+                    "stabilisation_step: got 0.7; expected a number from 0 to 0.6");
+  expect_bad_option(ball_rod("stabilisation_step = -0.1"), "stabilisation_step: got -0.1");
+  expect_bad_option(hinge_rod("stabilisation_step = 0.1"),
+                    "stabilisation_step: got 0.1 with minimal coordinates");
+  expect_bad_option(ball_rod("warm_start = [8]"),
+                    "warm_start: got [8]; expected increasing whole numbers of intervals "
+                    "from 2 to intervals − 1 = 7");
+  expect_bad_option(ball_rod("warm_start = [4, 3]"), "warm_start: got [4, 3]");
+  expect_bad_option(ball_rod("warm_start = \"coarse\""),
+                    "[optimal_control] warm_start: got \"coarse\", expected an array of whole numbers");
+  expect_bad_option(ball_rod("warm_start = [2.5]"),
+                    "warm_start: got [2.5], expected an array of whole numbers");
+  expect_bad_option(
       ball_rod("no_twist = [{ joint = \"elbow\", axis_a = [1, 0, 0] }]"),
       "[optimal_control.no_twist[0]] joint: got \"elbow\", expected the name of a ball joint (\"shoulder\")");
-  expect_bad(ball_rod("no_twist = [{ joint = \"shoulder\" }]"),
-             "[optimal_control.no_twist[0]] axis_a: missing");
-  expect_bad(ball_rod("no_twist = [{ joint = \"shoulder\", axis_a = [1, 1, 0] }]"),
-             "no_twist[0]: axis_a: got norm 1.41");
-  expect_bad(ball_rod("no_twist = [{ joint = \"shoulder\", axis_a = [0, 0, 1] }]"),
-             "no_twist[0]: the final state has the twist");
-  expect_bad(ball_rod("no_twist = [{ joint = \"shoulder\", axis_a = [1, 0, 0], spin = 1 }]"),
-             "unknown key \"spin\"");
-  expect_bad(hinge_rod("objective = \"minimum_time\""), "[optimal_control] final_time_bounds: missing");
-  expect_bad(hinge_rod("objective = \"minimum_time\"\nfinal_time_bounds = [3, 5]"),
-             "final_time: got the bounds [3, 5] s and the guess 2 s");
-  expect_bad(hinge_rod("objective = \"minimum_time\"\nfinal_time_bounds = [0.5]"),
-             "final_time_bounds: got [0.5], expected an array of 2 numbers");
-  expect_bad(hinge_rod("objective = \"minimum_time\"\nfinal_time_bounds = [0.5, 5]\nenergy_weight = 1"),
-             "energy_weight: given with objective = \"minimum_time\"");
-  expect_bad(hinge_rod("objective = \"minimum_time_regularised\"\nfinal_time_bounds = [0.5, 5]"),
-             "energy_weight: missing");
-  expect_bad(hinge_rod("final_time_bounds = [0.5, 5]"),
-             "final_time_bounds: given with objective = \"minimum_energy\"");
+  expect_bad_option(ball_rod("no_twist = [{ joint = \"shoulder\" }]"),
+                    "[optimal_control.no_twist[0]] axis_a: missing");
+  expect_bad_option(ball_rod("no_twist = [{ joint = \"shoulder\", axis_a = [1, 1, 0] }]"),
+                    "no_twist[0]: axis_a: got norm 1.41");
+  expect_bad_option(ball_rod("no_twist = [{ joint = \"shoulder\", axis_a = [0, 0, 1] }]"),
+                    "no_twist[0]: the final state has the twist");
+  expect_bad_option(ball_rod("no_twist = [{ joint = \"shoulder\", axis_a = [1, 0, 0], spin = 1 }]"),
+                    "unknown key \"spin\"");
+  expect_bad_option(hinge_rod("objective = \"minimum_time\""),
+                    "[optimal_control] final_time_bounds: missing");
+  expect_bad_option(hinge_rod("objective = \"minimum_time\"\nfinal_time_bounds = [3, 5]"),
+                    "final_time: got the bounds [3, 5] s and the guess 2 s");
+  expect_bad_option(hinge_rod("objective = \"minimum_time\"\nfinal_time_bounds = [0.5]"),
+                    "final_time_bounds: got [0.5], expected an array of 2 numbers");
+  expect_bad_option(
+      hinge_rod("objective = \"minimum_time\"\nfinal_time_bounds = [0.5, 5]\nenergy_weight = 1"),
+      "energy_weight: given with objective = \"minimum_time\"");
+  expect_bad_option(hinge_rod("objective = \"minimum_time_regularised\"\nfinal_time_bounds = [0.5, 5]"),
+                    "energy_weight: missing");
+  expect_bad_option(hinge_rod("final_time_bounds = [0.5, 5]"),
+                    "final_time_bounds: given with objective = \"minimum_energy\"");
 }
 
 }  // namespace

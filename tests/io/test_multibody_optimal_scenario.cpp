@@ -127,7 +127,7 @@ TEST(MultibodyOptimalScenario, ArmFileVariants) {
              "[optimal_control.rate_bounds[0]] rate_max: got 0 rad/s, expected a number > 0");
   expect_bad(std::regex_replace(std::regex_replace(with_rates, std::regex("rate_max = R"), "rate_max = 1"),
                                 std::regex("joint = \"elbow\""), "joint = \"wrist\""),
-             "joint: got \"wrist\", expected the name of a hinge joint (\"shoulder\", \"elbow\")");
+             "joint: got \"wrist\", expected the name of a hinge or ball joint (\"shoulder\", \"elbow\")");
   const MultibodyOptimalScenario sc = parse_multibody_optimal_scenario(
       std::regex_replace(with_rates, std::regex("rate_max = R"), "rate_max = 2.5"), "s.toml", "");
   ASSERT_EQ(sc.problem.rate_bounds.size(), 1u);

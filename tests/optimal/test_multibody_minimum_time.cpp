@@ -16,12 +16,12 @@
 namespace poinsot::optimal {
 namespace {
 
-constexpr double kTheta = 1.0;   // rad
-constexpr double kTorque = 1.0;  // N·m
+constexpr double kTurnAngle = 1.0;    // rad
+constexpr double kTorqueBound = 1.0;  // N·m
 
 MultibodyProblem fastest_turn(int intervals, double energy_weight = 0.0) {
-  MultibodyProblem p = testing::single_hinge(kTheta, 1.0, intervals);
-  p.actuators[0].torque_max = kTorque;
+  MultibodyProblem p = testing::single_hinge(kTurnAngle, 1.0, intervals);
+  p.actuators[0].torque_max = kTorqueBound;
   p.objective = MultibodyObjective::minimum_time;
   p.final_time_min = 0.1;
   p.final_time_max = 10.0;
@@ -30,7 +30,7 @@ MultibodyProblem fastest_turn(int intervals, double energy_weight = 0.0) {
 }
 
 double bang_bang_time() {
-  return 2.0 * std::sqrt(kTheta * testing::single_hinge_inertia() / kTorque);
+  return 2.0 * std::sqrt(kTurnAngle * testing::single_hinge_inertia() / kTorqueBound);
 }
 
 TEST(MultibodyMinimumTime, AnOddMeshBlursTheSwitchByOrderHSquared) {
@@ -48,8 +48,8 @@ TEST(MultibodyMinimumTime, AnOddMeshBlursTheSwitchByOrderHSquared) {
     EXPECT_GT(T - T_star, 0.1 / (n * n)) << "N = " << n;
     EXPECT_LT(T - T_star, 0.3 / (n * n)) << "N = " << n;
     // Saturated away from the switch: u = ū at the first midpoint, −ū at the last.
-    EXPECT_NEAR(r.controls[1](0), kTorque, 1e-6);
-    EXPECT_NEAR(r.controls[r.controls.size() - 2](0), -kTorque, 1e-6);
+    EXPECT_NEAR(r.controls[1](0), kTorqueBound, 1e-6);
+    EXPECT_NEAR(r.controls[r.controls.size() - 2](0), -kTorqueBound, 1e-6);
     // The re-simulated control reaches the target: the blur is in the transcription's own control, which
     // the replay follows (measured attitude errors 3.4e-6, 7.3e-7, 1.8e-7 rad).
     EXPECT_LT(replay_controls(p, r, 64).attitude_error, 1e-5) << "N = " << n;
@@ -92,10 +92,10 @@ TEST(MultibodyMinimumTime, EnergyRegularisationTradesTimeForEffort) {
   EXPECT_GT(T, pure.time.back());
   const double effort = soft.cost - T;  // ε = 1
   EXPECT_GT(effort, 0.0);
-  EXPECT_LT(effort, kTorque * kTorque * T);
+  EXPECT_LT(effort, kTorqueBound * kTorqueBound * T);
 }
 
-void expect_refused(const MultibodyProblem& p, const std::string& message) {
+void expect_time_refused(const MultibodyProblem& p, const std::string& message) {
   try {
     validate(p);
     ADD_FAILURE() << "accepted; expected: " << message;
@@ -107,16 +107,16 @@ void expect_refused(const MultibodyProblem& p, const std::string& message) {
 TEST(MultibodyMinimumTime, RefusesInconsistentTimeBoundsAndUnboundedTorques) {
   MultibodyProblem p = fastest_turn(8);
   p.final_time_max = 0.05;
-  expect_refused(p, "final_time: got the bounds [0.1, 0.05] s");
+  expect_time_refused(p, "final_time: got the bounds [0.1, 0.05] s");
   p = fastest_turn(8);
   p.final_time = 20.0;
-  expect_refused(p, "expected 0 < final_time_min ≤ final_time ≤ final_time_max");
+  expect_time_refused(p, "expected 0 < final_time_min ≤ final_time ≤ final_time_max");
   p = fastest_turn(8);
   p.energy_weight = -1.0;
-  expect_refused(p, "energy_weight: got -1");
+  expect_time_refused(p, "energy_weight: got -1");
   p = fastest_turn(8);
   p.actuators[0].torque_max = std::numeric_limits<double>::infinity();
-  expect_refused(p, "torque_max: got inf N·m; expected a finite bound");
+  expect_time_refused(p, "torque_max: got inf N·m; expected a finite bound");
 }
 
 }  // namespace

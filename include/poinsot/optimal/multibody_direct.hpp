@@ -43,7 +43,8 @@ struct MultibodyOptions {
   int print_level = 0;
   /// The initial guess: null for the naive one (below), or an optimum of the same problem on any mesh (not
   /// owned; e.g. a coarser mesh's): its states linearly interpolated between its collocation points, its
-  /// controls by control_at, every other variable zero.
+  /// controls by control_at, every other variable zero. With a free final time (minimum_time) it is read at
+  /// the same fraction t/T of its own final time, which is also the guess of T.
   const MultibodyOptimum* warm_start = nullptr;
   /// Rotation-matrix coordinates: c > 0 bounds the stabilising variables S and μ of the stabilised index-2
   /// form by c/h at every point (h = T/N; for c < 0.6 no body can then cross a half-turn inside one interval
