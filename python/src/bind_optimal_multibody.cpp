@@ -218,7 +218,8 @@ void bind_optimal_multibody(py::module_& parent) {
            py::arg("no_twist") = py::list(), py::arg("stabilisation_step") = 0.0,
            py::arg("warm_start") = std::vector<int>{}, py::arg("objective") = "minimum_energy",
            py::arg("final_time_bounds") = py::none(), py::arg("energy_weight") = 0.0,
-           "A minimum-energy problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from the "
+           "An optimal-control problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from "
+           "the "
            "consistent initial_state to the consistent final_state (poinsot.multibody.State) in final_time "
            "(s), with actuators a list of {\"joint\": HINGE, \"torque_max\": N·m} (a hinge motor) or "
            "{\"body\": BODY, \"torque_max\": N·m} (three body-frame torques), on `intervals` Hermite–Simpson "

@@ -115,6 +115,7 @@ def test_bad_values_raise_value_error():
     with pytest.raises(ValueError, match="objective: got \"fastest\""):
         ball_problem(objective="fastest")
     with pytest.raises(ValueError, match="stabilisation_step: an option of multibody problems"):
-        poinsot.optimize(poinsot.optimal.ReorientationProblem(), stabilisation_step=0.1)
+        poinsot.optimize(poinsot.optimal.ReorientationProblem(inertia=np.eye(3), torque_max=[1, 1, 1]),
+                         stabilisation_step=0.1)
     with pytest.raises(ValueError, match="stabilisation_step: got 0.9"):
         poinsot.optimize(ball_problem(), stabilisation_step=0.9)
