@@ -37,7 +37,7 @@ TEST(MultibodyMinimumTime, AnOddMeshBlursTheSwitchByOrderHSquared) {
   // With N odd the switch at T/2 falls on the midpoint of the middle interval, where the control is a
   // quadratic through the node values ±ū: the mesh cannot jump, and the transcription's T exceeds T* by
   // about 0.19/N² s (measured 3.95e-3, 8.57e-4, 2.00e-4 s at N = 7, 15, 31: the ratios 4.6 and 4.3 of an
-  // order-2 blur; T* = 1.155785 s). The bounds 0.1/N² and 0.3/N² check the order and the constant.
+  // order-2 blur; T* = 1.155783 s). The bounds 0.1/N² and 0.3/N² check the order and the constant.
   const double T_star = bang_bang_time();
   for (const int n : {7, 15, 31}) {
     const MultibodyProblem p = fastest_turn(n);

@@ -101,9 +101,10 @@ struct MultibodyReplay {
 
 /// A free final hinge's body_a (multibody_problem.hpp) is compared up to its turn about the hinge: the axis's
 /// direction, the joint point, the angular velocity in space and the velocity.
-/// Integrates the initial state over [0, T] with `steps_per_interval` projected-RK4 steps per collocation
-/// interval, the controls held at their value at each step's midpoint (a second-order approximation of the
-/// continuous control: the replay's error falls by 4 when the steps are halved).
+/// Integrates the initial state over [0, T] (T the optimum's final time, optimum.time.back()) with
+/// `steps_per_interval` projected-RK4 steps per collocation interval, the controls held at their value at
+/// each step's midpoint (a second-order approximation of the continuous control: the replay's error falls by
+/// 4 when the steps are halved).
 MultibodyReplay replay_controls(const MultibodyProblem& problem, const MultibodyOptimum& optimum,
                                 int steps_per_interval = 64);
 

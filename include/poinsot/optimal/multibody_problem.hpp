@@ -1,9 +1,10 @@
 #pragma once
 /// @file multibody_problem.hpp
 /// Optimal motions of a multibody system (multibody/model.hpp): drive a system of coupled rigid bodies from
-/// one consistent state to another in a fixed time T with actuated joints or body torques, minimising the
-/// control effort ∫ Σ u_i² dt (N²·m²·s). Solved by the direct transcriptions of multibody_direct.hpp, in
-/// rotation-matrix coordinates (the multibody layer's own equations) or in minimal coordinates.
+/// one consistent state to another with actuated joints or body torques, minimising the control effort
+/// ∫ Σ u_i² dt (N²·m²·s) in a fixed time T, or the time T itself (MultibodyObjective). Solved by the direct
+/// transcriptions of multibody_direct.hpp, in rotation-matrix coordinates (the multibody layer's own
+/// equations) or in minimal coordinates.
 ///
 /// Controls (`Actuator`), each with a bound |u_i| ≤ u_max (N·m) per component:
 /// - `hinge_torque`: a motor in a hinge joint: the torque u about the hinge axis on body a, and −u on body b
