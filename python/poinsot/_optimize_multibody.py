@@ -28,8 +28,9 @@ class MultibodyOptimalSolution:
     ``omega_body`` (n, B, 3) rad/s; ``controls`` (n, m) N·m in the columns ``control_names`` (``HINGE.u``,
     ``BODY.ux``, ``BALL.ux``, ...); per joint the reaction on body a ``joint_force_space`` (n, J, 3) N and
     ``joint_torque_space`` (n, J, 3) N·m; per body ``Lambda_body`` (n, B, 3, 3) J. ``cost`` ∫ Σ u² dt
-    (N²·m²·s; for minimum time T + ε ∫ Σ u² dt, s), ``final_time`` s (the optimum's, free under minimum time), ``nlp_iterations``, ``replay`` (dict: the re-simulation's attitude, position
-    and velocity errors, joint gap, ‖RᵀR − I‖, tolerance, ``target_reached``), ``summary`` (the dict of
+    (N²·m²·s; for minimum time T + ε ∫ Σ u² dt, s), ``final_time`` s (the optimum's, free under minimum
+    time), ``nlp_iterations``, ``replay`` (dict: the re-simulation's attitude, position and velocity errors,
+    joint gap, ‖RᵀR − I‖, tolerance, ``target_reached``), ``summary`` (the dict of
     summary.json), ``report`` (the text ``poinsot optimize`` prints), ``out_dir``, ``kind`` ("multibody"),
     ``problem`` (the poinsot.optimal.MultibodyProblem solved).
     """
