@@ -4,20 +4,28 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace poinsot::optimal::detail {
 
 HermiteSimpsonDae::HermiteSimpsonDae(const CollocationModel& model, int intervals, double final_time,
                                      Eigen::VectorXd y0, Eigen::MatrixXd final_rows,
-                                     Eigen::VectorXd final_values, const FreeFinalTime* free_time)
+                                     Eigen::VectorXd final_values, const FreeFinalTime* free_time,
+                                     std::vector<double> fractions)
     : model_(model),
-      intervals_(intervals),
+      intervals_(fractions.empty() ? intervals : static_cast<int>(fractions.size())),
+      dtau_(fractions.empty() ? std::vector<double>(static_cast<std::size_t>(intervals), 1.0 / intervals)
+                              : std::move(fractions)),
       final_time_(final_time),
       y0_(std::move(y0)),
       final_rows_(std::move(final_rows)),
       final_values_(std::move(final_values)),
       free_(free_time != nullptr),
       free_time_(free_time != nullptr ? *free_time : FreeFinalTime{}) {
+  tau_.assign(1, 0.0);
+  for (const double d : dtau_)
+    tau_.push_back(tau_.back() + d);
+  tau_.back() = 1.0;  // the last node at T exactly
   const int ny = model_.state_size();
   const int nw = model_.point_size();
   const auto add_jac = [&](int row, int col) {
@@ -124,9 +132,9 @@ void HermiteSimpsonDae::bounds(std::vector<double>& xl, std::vector<double>& xu,
 }
 
 double HermiteSimpsonDae::unit_weight(int p) const {
-  const double h = 1.0 / intervals_;
-  if (p % 2 == 1) return 4.0 * h / 6.0;
-  return (p == 0 || p == 2 * intervals_) ? h / 6.0 : 2.0 * h / 6.0;
+  const auto k = static_cast<std::size_t>(p / 2);
+  if (p % 2 == 1) return 4.0 * dtau_[k] / 6.0;
+  return ((p > 0 ? dtau_[k - 1] : 0.0) + (p < 2 * intervals_ ? dtau_[k] : 0.0)) / 6.0;
 }
 
 double HermiteSimpsonDae::objective(const double* x) const {
@@ -160,7 +168,7 @@ void HermiteSimpsonDae::objective_gradient(const double* x, double* g) const {
 void HermiteSimpsonDae::constraints(const double* x, double* g) const {
   const int ny = model_.state_size();
   const int nw = model_.point_size();
-  const double h = final_time(x) / intervals_;
+  const double T = final_time(x);
   std::vector<Eigen::VectorXd> f(static_cast<std::size_t>(points()), Eigen::VectorXd(ny));
   for (int p = 0; p < points(); ++p)
     model_.rhs().values(x + nw * p, f[static_cast<std::size_t>(p)].data());
@@ -168,6 +176,7 @@ void HermiteSimpsonDae::constraints(const double* x, double* g) const {
     const auto y = [&](int p) { return Eigen::Map<const Eigen::VectorXd>(x + nw * p, ny); };
     const auto F = [&](int p) -> const Eigen::VectorXd& { return f[static_cast<std::size_t>(p)]; };
     const int p0 = 2 * k, pm = p0 + 1, p1 = p0 + 2;
+    const double h = T * dtau_[static_cast<std::size_t>(k)];
     Eigen::Map<Eigen::VectorXd>(g + 2 * ny * k, ny) = y(p1) - y(p0) - h / 6.0 * (F(p0) + 4.0 * F(pm) + F(p1));
     Eigen::Map<Eigen::VectorXd>(g + 2 * ny * k + ny, ny) =
         y(pm) - 0.5 * (y(p0) + y(p1)) - h / 8.0 * (F(p0) - F(p1));
@@ -186,7 +195,7 @@ void HermiteSimpsonDae::jacobian_structure(int* rows, int* cols) const {
 void HermiteSimpsonDae::jacobian_values(const double* x, double* values) const {
   const int ny = model_.state_size();
   const int nw = model_.point_size();
-  const double h = final_time(x) / intervals_;
+  const double T = final_time(x);
   const auto nf = model_.rhs().jacobian_pattern().size();
   std::vector<double> df(nf * static_cast<std::size_t>(points()));
   for (int p = 0; p < points(); ++p)
@@ -201,6 +210,7 @@ void HermiteSimpsonDae::jacobian_values(const double* x, double* values) const {
       *out++ = -0.5;
     }
     const int p0 = 2 * k;
+    const double h = T * dtau_[static_cast<std::size_t>(k)];
     const double dw[3] = {-h / 6.0, -4.0 * h / 6.0, -h / 6.0};
     for (int s = 0; s < 3; ++s) {
       const double* d = df.data() + nf * static_cast<std::size_t>(p0 + s);
@@ -228,8 +238,9 @@ void HermiteSimpsonDae::jacobian_values(const double* x, double* values) const {
       model_.rhs().values(x + nw * 2 * k, f0.data());
       model_.rhs().values(x + nw * (2 * k + 1), fm.data());
       model_.rhs().values(x + nw * (2 * k + 2), f1.data());
-      Eigen::Map<Eigen::VectorXd>(out, ny) = -(f0 + 4.0 * fm + f1) / (6.0 * intervals_);
-      Eigen::Map<Eigen::VectorXd>(out + ny, ny) = -(f0 - f1) / (8.0 * intervals_);
+      const double d = dtau_[static_cast<std::size_t>(k)];
+      Eigen::Map<Eigen::VectorXd>(out, ny) = -d / 6.0 * (f0 + 4.0 * fm + f1);
+      Eigen::Map<Eigen::VectorXd>(out + ny, ny) = -d / 8.0 * (f0 - f1);
       out += 2 * ny;
     }
   }
@@ -244,7 +255,8 @@ void HermiteSimpsonDae::hessian_values(const double* x, double sigma, const doub
   std::fill(values, values + hessian_nonzeros(), 0.0);
   const int ny = model_.state_size();
   const int nw = model_.point_size();
-  const double T = final_time(x), h = T / intervals_, eps = energy_weight();
+  const double T = final_time(x), eps = energy_weight();
+  const auto h = [&](int k) { return T * dtau_[static_cast<std::size_t>(k)]; };
   const auto nf = model_.rhs().jacobian_pattern().size();
   std::vector<double> df(free_ ? nf : 0);
   Eigen::VectorXd weights(ny);
@@ -256,11 +268,11 @@ void HermiteSimpsonDae::hessian_values(const double* x, double sigma, const doub
     const auto D = [&](int k) { return Eigen::Map<const Eigen::VectorXd>(y + 2 * ny * k, ny); };
     const auto M = [&](int k) { return Eigen::Map<const Eigen::VectorXd>(y + 2 * ny * k + ny, ny); };
     if (p % 2 == 1) {
-      weights = -4.0 * h / 6.0 * D(p / 2);
+      weights = -4.0 * h(p / 2) / 6.0 * D(p / 2);
     } else {
       const int k = p / 2;
-      if (k < intervals_) weights += -h / 6.0 * D(k) - h / 8.0 * M(k);
-      if (k > 0) weights += -h / 6.0 * D(k - 1) + h / 8.0 * M(k - 1);
+      if (k < intervals_) weights += -h(k) / 6.0 * D(k) - h(k) / 8.0 * M(k);
+      if (k > 0) weights += -h(k - 1) / 6.0 * D(k - 1) + h(k - 1) / 8.0 * M(k - 1);
     }
     const auto& rp = hess_rhs_[pu];
     local.resize(rp.size());

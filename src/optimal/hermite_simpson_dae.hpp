@@ -12,8 +12,9 @@
 /// fixed w, and their derivatives with respect to T (the Jacobian column of T, the Hessian row of T) are
 /// the defects' f-terms and the quadrature divided by T.
 ///
-/// Mesh: N equal intervals of h = T/N. Points p = 0 … 2N: even p = node p/2, odd p = midpoint. Variables:
-/// w_p for every point (the point model's layout). Constraints, in this order:
+/// Mesh: N intervals of h_k = T Δτ_k (equal, Δτ_k = 1/N, unless fractions Δτ_k > 0 summing to 1 are given).
+/// Points p = 0 … 2N: even p = node p/2, odd p = midpoint. Variables: w_p for every point (the point model's
+/// layout). Constraints, in this order:
 ///   D_k = y_{k+1} − y_k − h/6 (f_k + 4 f_m + f_{k+1}),   M_k = y_m − ½(y_k + y_{k+1}) − h/8 (f_k − f_{k+1})
 ///   (n_y rows each, interleaved per interval); then c at every point (the model's `first_path` at node 0,
 ///   `path` elsewhere); then A y_{2N} − b. With Ipopt's Lagrangian σJ + yᵀg, the multipliers of D_k estimate
@@ -49,9 +50,11 @@ struct FreeFinalTime {
 class HermiteSimpsonDae final : public SparseNlp {
  public:
   /// `final_time` is T when `free_time` is null, else the initial guess of T (not used by the NLP).
+  /// `fractions`: the intervals' Δτ_k (their number replaces `intervals`; positive, summing to 1, not checked
+  /// here), or empty for `intervals` equal ones.
   HermiteSimpsonDae(const CollocationModel& model, int intervals, double final_time, Eigen::VectorXd y0,
                     Eigen::MatrixXd final_rows, Eigen::VectorXd final_values,
-                    const FreeFinalTime* free_time = nullptr);
+                    const FreeFinalTime* free_time = nullptr, std::vector<double> fractions = {});
 
   int intervals() const { return intervals_; }
   int points() const { return 2 * intervals_ + 1; }
@@ -61,7 +64,10 @@ class HermiteSimpsonDae final : public SparseNlp {
   /// T (s) at the variables x: x[time_index()] when free, else the fixed final time.
   double final_time(const double* x) const { return free_ ? x[time_index()] : final_time_; }
   /// Time of point p (s) for the final time T.
-  double point_time(int p, double T) const { return 0.5 * T / intervals_ * p; }
+  double point_time(int p, double T) const {
+    const auto k = static_cast<std::size_t>(p / 2);
+    return T * (p % 2 == 0 ? tau_[k] : tau_[k] + 0.5 * dtau_[k]);
+  }
   int path_row(int p) const;  ///< first row of point p's path constraints
 
   int num_variables() const override { return time_index() + (free_ ? 1 : 0); }
@@ -86,6 +92,8 @@ class HermiteSimpsonDae final : public SparseNlp {
 
   const CollocationModel& model_;
   int intervals_;
+  std::vector<double> dtau_;  // Δτ_k per interval
+  std::vector<double> tau_;   // τ of every node (N + 1)
   double final_time_;
   Eigen::VectorXd y0_;
   Eigen::MatrixXd final_rows_;

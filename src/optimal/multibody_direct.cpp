@@ -40,7 +40,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   const detail::FreeFinalTime time_bounds{problem.final_time_min, problem.final_time_max,
                                           problem.energy_weight};
   const HermiteSimpsonDae base(model, problem.intervals, problem.final_time, y0, final_rows, final_rows * yf,
-                               free_time ? &time_bounds : nullptr);
+                               free_time ? &time_bounds : nullptr, problem.mesh);
   std::vector<double> rate_max;
   for (const RateBound& b : problem.rate_bounds)
     rate_max.push_back(b.rate_max);
@@ -234,12 +234,18 @@ Eigen::VectorXd control_at(const MultibodyOptimum& optimum, double t) {
                     "expected a solution of solve_multibody (at least 3 points, one control each)",
                     optimum.time.size(), optimum.controls.size()));
   }
-  const int points = static_cast<int>(optimum.time.size());
-  const int intervals = (points - 1) / 2;
-  const double T = optimum.time.back();
-  const double h = T / intervals;
-  const int k = std::clamp(static_cast<int>(std::floor(t / h)), 0, intervals - 1);
-  const double s = t / h - k;
+  // The interval [t_2k, t_2k+2] that holds t (the first or last beyond the ends), on any mesh.
+  const int intervals = (static_cast<int>(optimum.time.size()) - 1) / 2;
+  int k = 0, last = intervals - 1;  // the largest k ≤ intervals − 1 with t_2k ≤ t (bisection)
+  while (k < last) {
+    const int mid = (k + last + 1) / 2;
+    if (optimum.time[static_cast<std::size_t>(2 * mid)] <= t)
+      k = mid;
+    else
+      last = mid - 1;
+  }
+  const double t0 = optimum.time[static_cast<std::size_t>(2 * k)];
+  const double s = (t - t0) / (optimum.time[static_cast<std::size_t>(2 * k + 2)] - t0);
   const auto u = [&](int p) -> const Eigen::VectorXd& {
     return optimum.controls[static_cast<std::size_t>(p)];
   };

@@ -83,6 +83,20 @@ void validate(const MultibodyProblem& p) {
     throw InvalidInput(
         fmt::format("optimal control: intervals: got {}; expected an integer from 2 to 2000", p.intervals));
   }
+  if (!p.mesh.empty()) {
+    double sum = 0.0, smallest = 1.0;
+    for (const double d : p.mesh) {
+      sum += d;
+      smallest = std::min(smallest, d);
+    }
+    if (p.mesh.size() != static_cast<std::size_t>(p.intervals) || !(smallest > 0.0) ||
+        !(std::abs(sum - 1.0) <= 1e-12)) {
+      throw InvalidInput(fmt::format(
+          "optimal control: mesh: got {} fractions, the smallest {}, summing to {}; expected intervals = {} "
+          "fractions > 0 summing to 1",
+          p.mesh.size(), smallest, sum, p.intervals));
+    }
+  }
   if (!p.system.springs().empty()) {
     throw InvalidInput(
         fmt::format("optimal control: spring '{}': springs are not supported by the optimal "

@@ -129,5 +129,21 @@ TEST(HermiteSimpsonDae, FreeFinalTimeDerivativesAreExact) {
   check_derivatives(nlp_m, 17);
 }
 
+TEST(HermiteSimpsonDae, UnequalMeshDerivativesAreExact) {
+  // Intervals of T Δτ_k with unequal Δτ_k, at fixed and at free final time.
+  const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 3);
+  const MultibodyMinimalModel minimal(p);
+  const std::vector<double> fractions{0.2, 0.5, 0.3};
+  const HermiteSimpsonDae fixed(minimal, 3, 1.5, minimal.state_vector(p.initial_state),
+                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), nullptr,
+                                fractions);
+  EXPECT_DOUBLE_EQ(fixed.point_time(3, 1.5), 1.5 * 0.45);  // the second interval's midpoint
+  check_derivatives(fixed, 19);
+  const FreeFinalTime free{0.5, 3.0, 0.3};
+  const HermiteSimpsonDae timed(minimal, 3, 1.5, minimal.state_vector(p.initial_state),
+                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), &free, fractions);
+  check_derivatives(timed, 23);
+}
+
 }  // namespace
 }  // namespace poinsot::optimal::detail

@@ -75,7 +75,10 @@ struct MultibodyProblem {
   double final_time_max = 0.0;  ///< minimum_time: the upper bound on T (s)
   double energy_weight = 0.0;   ///< minimum_time: ε, s/(N²·m²·s)
   std::vector<Actuator> actuators;
-  int intervals = 20;                  ///< Hermite–Simpson intervals (equal)
+  int intervals = 20;  ///< Hermite–Simpson intervals
+  /// The intervals' lengths as fractions of T (`intervals` of them, each > 0, summing to 1), or empty for
+  /// equal intervals (refine_multibody splits them).
+  std::vector<double> mesh;
   std::vector<RateBound> rate_bounds;  ///< path constraints on hinge rates (none by default)
   /// Hinges (joint indices) whose angle at T is left free; each one's body_a must be in no other joint.
   std::vector<int> free_final_hinges;
@@ -102,7 +105,8 @@ double twist_residual(const multibody::System& system, const multibody::State& s
 /// Total number of scalar controls.
 int control_count(const MultibodyProblem& problem);
 
-/// Throws InvalidInput, one line naming the field, unless: T > 0 and finite; for minimum_time, 0 <
+/// Throws InvalidInput, one line naming the field, unless: T > 0 and finite; the mesh is empty or has
+/// `intervals` fractions > 0 summing to 1 (to 1e-12); for minimum_time, 0 <
 /// final_time_min ≤ final_time ≤ final_time_max < ∞, ε ≥ 0 finite, every torque_max finite (else T → 0),
 /// and a free-floating system at zero linear momentum (its conserved M x_com − t P would depend on T); 2 ≤
 /// intervals ≤ 2000; the system has no springs and no prismatic joints (their loads or rows are not written
