@@ -162,15 +162,15 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
     out << fmt::format("\nstabilising variables bounded by c/h, c = {}",
                        report_number(sc.options.stabilisation_step));
   }
+  const char* cost_unit = p.objective == optimal::MultibodyObjective::minimum_energy ? "N²·m²·s" : "s";
   for (const MultibodyMeshStage& m : r.mesh_stages) {
-    out << fmt::format("\nwarm start: {} intervals, {}; {} Ipopt iterations, cost {} N²·m²·s", m.intervals,
-                       m.status, m.nlp_iterations, report_number(m.cost, 12));
+    out << fmt::format("\nwarm start: {} intervals, {}; {} Ipopt iterations, cost {} {}", m.intervals,
+                       m.status, m.nlp_iterations, report_number(m.cost, 12), cost_unit);
   }
   out << "\nstatus: " << r.status << "\n\n";
   out << fmt::format(
       "solution: {}; {} Ipopt iterations, cost {} {}, final time {} s, largest constraint row {}\n", o.status,
-      o.nlp_iterations, report_number(o.cost, 12),
-      p.objective == optimal::MultibodyObjective::minimum_energy ? "N²·m²·s" : "s",
+      o.nlp_iterations, report_number(o.cost, 12), cost_unit,
       report_number(o.time.empty() ? p.final_time : o.time.back(), 12),
       report_number(o.max_constraint_error, 3));
   const std::vector<std::string> columns = control_columns(p);
