@@ -14,6 +14,7 @@ HermiteSimpsonDae::HermiteSimpsonDae(const CollocationModel& model, int interval
                                      std::vector<double> fractions)
     : model_(model),
       intervals_(fractions.empty() ? intervals : static_cast<int>(fractions.size())),
+      equal_(fractions.empty()),
       dtau_(fractions.empty() ? std::vector<double>(static_cast<std::size_t>(intervals), 1.0 / intervals)
                               : std::move(fractions)),
       final_time_(final_time),
@@ -176,7 +177,7 @@ void HermiteSimpsonDae::constraints(const double* x, double* g) const {
     const auto y = [&](int p) { return Eigen::Map<const Eigen::VectorXd>(x + nw * p, ny); };
     const auto F = [&](int p) -> const Eigen::VectorXd& { return f[static_cast<std::size_t>(p)]; };
     const int p0 = 2 * k, pm = p0 + 1, p1 = p0 + 2;
-    const double h = T * dtau_[static_cast<std::size_t>(k)];
+    const double h = interval_step(k, T);
     Eigen::Map<Eigen::VectorXd>(g + 2 * ny * k, ny) = y(p1) - y(p0) - h / 6.0 * (F(p0) + 4.0 * F(pm) + F(p1));
     Eigen::Map<Eigen::VectorXd>(g + 2 * ny * k + ny, ny) =
         y(pm) - 0.5 * (y(p0) + y(p1)) - h / 8.0 * (F(p0) - F(p1));
@@ -210,7 +211,7 @@ void HermiteSimpsonDae::jacobian_values(const double* x, double* values) const {
       *out++ = -0.5;
     }
     const int p0 = 2 * k;
-    const double h = T * dtau_[static_cast<std::size_t>(k)];
+    const double h = interval_step(k, T);
     const double dw[3] = {-h / 6.0, -4.0 * h / 6.0, -h / 6.0};
     for (int s = 0; s < 3; ++s) {
       const double* d = df.data() + nf * static_cast<std::size_t>(p0 + s);
@@ -238,9 +239,14 @@ void HermiteSimpsonDae::jacobian_values(const double* x, double* values) const {
       model_.rhs().values(x + nw * 2 * k, f0.data());
       model_.rhs().values(x + nw * (2 * k + 1), fm.data());
       model_.rhs().values(x + nw * (2 * k + 2), f1.data());
-      const double d = dtau_[static_cast<std::size_t>(k)];
-      Eigen::Map<Eigen::VectorXd>(out, ny) = -d / 6.0 * (f0 + 4.0 * fm + f1);
-      Eigen::Map<Eigen::VectorXd>(out + ny, ny) = -d / 8.0 * (f0 - f1);
+      if (equal_) {
+        Eigen::Map<Eigen::VectorXd>(out, ny) = -(f0 + 4.0 * fm + f1) / (6.0 * intervals_);
+        Eigen::Map<Eigen::VectorXd>(out + ny, ny) = -(f0 - f1) / (8.0 * intervals_);
+      } else {
+        const double d = dtau_[static_cast<std::size_t>(k)];
+        Eigen::Map<Eigen::VectorXd>(out, ny) = -d / 6.0 * (f0 + 4.0 * fm + f1);
+        Eigen::Map<Eigen::VectorXd>(out + ny, ny) = -d / 8.0 * (f0 - f1);
+      }
       out += 2 * ny;
     }
   }
@@ -256,7 +262,7 @@ void HermiteSimpsonDae::hessian_values(const double* x, double sigma, const doub
   const int ny = model_.state_size();
   const int nw = model_.point_size();
   const double T = final_time(x), eps = energy_weight();
-  const auto h = [&](int k) { return T * dtau_[static_cast<std::size_t>(k)]; };
+  const auto h = [&](int k) { return interval_step(k, T); };
   const auto nf = model_.rhs().jacobian_pattern().size();
   std::vector<double> df(free_ ? nf : 0);
   Eigen::VectorXd weights(ny);

@@ -65,6 +65,7 @@ class HermiteSimpsonDae final : public SparseNlp {
   double final_time(const double* x) const { return free_ ? x[time_index()] : final_time_; }
   /// Time of point p (s) for the final time T.
   double point_time(int p, double T) const {
+    if (equal_) return 0.5 * T / intervals_ * p;
     const auto k = static_cast<std::size_t>(p / 2);
     return T * (p % 2 == 0 ? tau_[k] : tau_[k] + 0.5 * dtau_[k]);
   }
@@ -87,11 +88,16 @@ class HermiteSimpsonDae final : public SparseNlp {
  private:
   /// Simpson weight of point p divided by T (dimensionless: the weight is T times it).
   double unit_weight(int p) const;
+  /// h_k (s) of interval k for the final time T.
+  double interval_step(int k, double T) const {
+    return equal_ ? T / intervals_ : T * dtau_[static_cast<std::size_t>(k)];
+  }
   double energy_weight() const { return free_ ? free_time_.energy_weight : 1.0; }
   const PointFunctions& path_of(int p) const { return p == 0 ? model_.first_path() : model_.path(); }
 
   const CollocationModel& model_;
   int intervals_;
+  bool equal_;                // equal intervals: h = T/N exactly as written (no round-off of T·(1/N))
   std::vector<double> dtau_;  // Δτ_k per interval
   std::vector<double> tau_;   // τ of every node (N + 1)
   double final_time_;
