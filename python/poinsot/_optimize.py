@@ -20,6 +20,7 @@ import numpy as np
 
 from . import _core
 from ._optimize_multibody import MultibodyOptimalSolution, multibody_input, solve_multibody
+from ._optimize_multibody import _Prepared as MultibodyPrepared
 from ._simulate import scenario_toml
 
 
@@ -192,7 +193,9 @@ _SOLVERS: list[tuple[Callable[[Any], Any], Callable[[Any, str], Any]]] = [
 
 def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tolerance: float | None = None,
              initial_intervals: int | None = None, max_mesh_iterations: int | None = None,
-             plot: bool = False, warn: bool = True) -> OptimalSolution | MultibodyOptimalSolution:
+             plot: bool = False, warn: bool = True, stabilisation_step: float | None = None,
+             warm_start: list[int] | None = None,
+             no_twist: list[dict] | None = None) -> OptimalSolution | MultibodyOptimalSolution:
     """Solves an optimal reorientation as ``poinsot optimize`` does and returns the solution as NumPy arrays.
 
     ``problem``: the path of a scenario file with an ``[optimal_control]`` section (docs/optimal_control.md), a
@@ -203,7 +206,9 @@ def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tol
     ``[[bodies]]`` array and an ``[optimal_control]`` section, docs/optimal_control.md) or a
     ``poinsot.optimal.MultibodyProblem`` built around a ``poinsot.multibody.System``: the result is then a
     ``MultibodyOptimalSolution`` (``initial_intervals`` sets its equal intervals; the mesh options and
-    ``plot`` are refused). With ``out_dir`` the files of ``poinsot optimize`` (report.txt,
+    ``plot`` are refused; ``stabilisation_step``, ``warm_start`` and ``no_twist`` replace the problem's, as
+    the keys of the same names in the file's ``[optimal_control]`` do: docs/optimal_control.md; they are
+    refused for single-body problems). With ``out_dir`` the files of ``poinsot optimize`` (report.txt,
     trajectory.csv, control.csv, costates.csv, summary.json) are written there, and with ``plot=True`` also
     the figures of ``poinsot optimize --plot`` (``poinsot.plot_optimal``; listed in ``figures``).
 
@@ -227,6 +232,12 @@ def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tol
         raise ValueError("plot: the figures are drawn from the solution's files; expected an out_dir")
     options = dict(mesh_tolerance=mesh_tolerance, initial_intervals=initial_intervals,
                    max_mesh_iterations=max_mesh_iterations)
+    multibody = dict(stabilisation_step=stabilisation_step, warm_start=warm_start, no_twist=no_twist)
+    for name, value in multibody.items():
+        if value is not None and not isinstance(prepared, MultibodyPrepared):
+            raise ValueError(f"{name}: an option of multibody problems; expected None for a single-body problem")
+        if value is not None:
+            options[name] = value
     if any(v is not None for v in options.values()):
         prepared = prepared.with_options(**options)
     result = solve(prepared, folder)

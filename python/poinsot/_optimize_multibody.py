@@ -26,10 +26,11 @@ class MultibodyOptimalSolution:
     Samples at every collocation point (nodes and midpoints), NumPy float64: ``t`` (n,) s; per body (system
     order) ``x_space`` (n, B, 3) m (centre of mass), ``R_space_body`` (n, B, 3, 3), ``v_space`` (n, B, 3) m/s,
     ``omega_body`` (n, B, 3) rad/s; ``controls`` (n, m) N·m in the columns ``control_names`` (``HINGE.u``,
-    ``BODY.ux``, ...); per joint the reaction on body a ``joint_force_space`` (n, J, 3) N and
+    ``BODY.ux``, ``BALL.ux``, ...); per joint the reaction on body a ``joint_force_space`` (n, J, 3) N and
     ``joint_torque_space`` (n, J, 3) N·m; per body ``Lambda_body`` (n, B, 3, 3) J. ``cost`` ∫ Σ u² dt
-    (N²·m²·s), ``final_time`` s, ``nlp_iterations``, ``replay`` (dict: the re-simulation's attitude, position
-    and velocity errors, joint gap, ‖RᵀR − I‖, tolerance, ``target_reached``), ``summary`` (the dict of
+    (N²·m²·s; for minimum time T + ε ∫ Σ u² dt, s), ``final_time`` s (the optimum's, free under minimum
+    time), ``nlp_iterations``, ``replay`` (dict: the re-simulation's attitude, position and velocity errors,
+    joint gap, ‖RᵀR − I‖, tolerance, ``target_reached``), ``summary`` (the dict of
     summary.json), ``report`` (the text ``poinsot optimize`` prints), ``out_dir``, ``kind`` ("multibody"),
     ``problem`` (the poinsot.optimal.MultibodyProblem solved).
     """
@@ -68,17 +69,22 @@ class MultibodyOptimalSolution:
 @dataclass(frozen=True)
 class _Prepared:
     """A MultibodyProblem with the option names of ``poinsot.optimize``: ``initial_intervals`` sets the
-    (equal) intervals; the mesh refinement's options are refused (multibody meshes are not refined)."""
+    (equal) intervals, ``stabilisation_step``, ``warm_start`` (the mesh sequence) and ``no_twist`` replace the
+    problem's (MultibodyProblem.with_options); the mesh refinement's options are refused (multibody meshes are
+    not refined)."""
 
     scenario: Any
     plots: bool = False
 
-    def with_options(self, mesh_tolerance=None, initial_intervals=None, max_mesh_iterations=None) -> "_Prepared":
+    def with_options(self, mesh_tolerance=None, initial_intervals=None, max_mesh_iterations=None,
+                     stabilisation_step=None, warm_start=None, no_twist=None) -> "_Prepared":
         for name, value in (("mesh_tolerance", mesh_tolerance), ("max_mesh_iterations", max_mesh_iterations)):
             if value is not None:
                 raise ValueError(f"{name}: multibody problems are solved on equal intervals without mesh "
                                  "refinement; expected None (set initial_intervals, or intervals in the file)")
-        return _Prepared(self.scenario.with_options(intervals=initial_intervals))
+        return _Prepared(self.scenario.with_options(intervals=initial_intervals,
+                                                    stabilisation_step=stabilisation_step,
+                                                    warm_start=warm_start, no_twist=no_twist))
 
 
 def multibody_input(obj: Any) -> _Prepared | None:
@@ -101,7 +107,7 @@ def solve_multibody(prepared: _Prepared, out_dir: str) -> MultibodyOptimalSoluti
         names += [a["name"] + ".u"] if a["kind"] == "hinge_torque" else [a["name"] + c for c in (".ux", ".uy", ".uz")]
     return MultibodyOptimalSolution(
         kind="multibody", optimal=raw["optimal"], status=raw["status"], objective=summary["objective"],
-        coordinates=scenario.coordinates, final_time=scenario.final_time, cost=raw["cost"],
+        coordinates=scenario.coordinates, final_time=summary["solution"]["final_time"], cost=raw["cost"],
         nlp_iterations=raw["nlp_iterations"], t=raw["t"], x_space=raw["x_space"], R_space_body=raw["R_space_body"],
         v_space=raw["v_space"], omega_body=raw["omega_body"], controls=raw["controls"], control_names=names,
         joint_force_space=raw["joint_force_space"], joint_torque_space=raw["joint_torque_space"],

@@ -10,8 +10,8 @@ from poinsot._core import *  # noqa: F403 (the classes used in signatures)
 
 class MultibodyProblem:
     """Multibody scenario files with an `[optimal_control]` section, for `poinsot optimize` (docs/optimal_control.md, "Multibody scenario files"): the system and its initial state exactly as `poinsot run` reads them (multibody_scenario.hpp: [simulation] gravity, [[bodies]], [[joints]], [[forces]], [[torques]]; the integration keys dt, duration, output_every, method and order are read but not used), and the problem:"""
-    def __init__(self, *, system: _core.multibody.System, initial_state: _core.multibody.State, final_state: _core.multibody.State, final_time: float, actuators: list, intervals: int = ..., coordinates: str = ..., rate_bounds: list = ...) -> None:
-        """A minimum-energy problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from the consistent initial_state to the consistent final_state (poinsot.multibody.State) in final_time (s), with actuators a list of {"joint": HINGE, "torque_max": N·m} (a hinge motor) or {"body": BODY, "torque_max": N·m} (three body-frame torques), on `intervals` Hermite–Simpson intervals in "rotation_matrix" or "minimal" coordinates; rate_bounds a list of {"joint": HINGE, "rate_max": rad/s} (|q̇| ≤ rate_max at every collocation point but the first)."""
+    def __init__(self, *, system: _core.multibody.System, initial_state: _core.multibody.State, final_state: _core.multibody.State, final_time: float, actuators: list, intervals: int = ..., coordinates: str = ..., rate_bounds: list = ..., no_twist: list = ..., stabilisation_step: float = ..., warm_start: List[int] = ..., objective: str = ..., final_time_bounds: object = ..., energy_weight: float = ...) -> None:
+        """An optimal-control problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from the consistent initial_state to the consistent final_state (poinsot.multibody.State) in final_time (s), with actuators a list of {"joint": HINGE, "torque_max": N·m} (a hinge motor) or {"body": BODY, "torque_max": N·m} (three body-frame torques), on `intervals` Hermite–Simpson intervals in "rotation_matrix" or "minimal" coordinates; rate_bounds a list of {"joint": HINGE, "rate_max": rad/s} (|q̇| ≤ rate_max at every collocation point but the first)."""
     def __repr__(self) -> str:
         ...
     @property
@@ -27,19 +27,25 @@ class MultibodyProblem:
     @property
     def name(self) -> str: ...
     @property
+    def no_twist(self) -> list: ...
+    @property
     def out_dir(self) -> str: ...
     @property
     def replay_steps(self) -> int: ...
     @property
     def source(self) -> str: ...
     @property
+    def stabilisation_step(self) -> float: ...
+    @property
     def system(self) -> _core.multibody.System: ...
     @property
     def target_tolerance(self) -> float: ...
     @property
     def title(self) -> str: ...
-    def with_options(self, *, intervals: object = ..., coordinates: object = ..., out_dir: object = ...) -> MultibodyProblem:
-        """A copy with the number of intervals, the coordinates or the output folder replaced (None: kept)."""
+    @property
+    def warm_start(self) -> List[int]: ...
+    def with_options(self, *, intervals: object = ..., coordinates: object = ..., out_dir: object = ..., no_twist: object = ..., stabilisation_step: object = ..., warm_start: object = ...) -> MultibodyProblem:
+        """A copy with the number of intervals, the coordinates, the output folder, the no-twist conditions, the stabilisation step or the mesh sequence replaced (None: kept)."""
 
 class OptimalScenario:
     """Scenario files for `poinsot optimize` (docs/optimal_control.md, "Scenario files"): the body in `[body]` (any form of docs/scenario.md: principal_moments, inertia, poinsot, shape, mesh, composite; J about the centre of mass) and the problem in `[optimal_control]`:"""

@@ -54,7 +54,11 @@ std::vector<opt::Actuator> to_actuators(const mb::System& system, const py::list
     opt::Actuator a;
     a.torque_max = d["torque_max"].cast<double>();
     if (d.contains("joint")) {
-      a.index = hinge(system, d["joint"], what);
+      try {
+        a = opt::joint_motor(system, d["joint"].cast<std::string>(), a.torque_max);
+      } catch (const InvalidInput& e) {
+        throw InvalidInput(what + ": joint: " + e.what());
+      }
     } else {
       a.kind = opt::ActuatorKind::body_torque;
       a.index = system.body_index(d["body"].cast<std::string>());
@@ -79,10 +83,41 @@ std::vector<opt::RateBound> to_rate_bounds(const mb::System& system, const py::l
   return out;
 }
 
+/// No-twist conditions from a list of dicts {"joint": BALL, "axis_a": [x, y, z], "straight": 3×3 rotation}.
+std::vector<opt::NoTwist> to_no_twist(const mb::System& system, const py::list& list) {
+  std::vector<opt::NoTwist> out;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string what = "optimal control: no_twist[" + std::to_string(i) + "]";
+    const bool ok = py::isinstance<py::dict>(list[i]) && list[i].cast<py::dict>().size() == 3 &&
+                    list[i].cast<py::dict>().contains("joint") &&
+                    list[i].cast<py::dict>().contains("axis_a") &&
+                    list[i].cast<py::dict>().contains("straight");
+    if (!ok) {
+      throw InvalidInput(what +
+                         ": expected a dict {\"joint\": a ball joint's name, \"axis_a\": body a's symmetry "
+                         "axis [x, y, z], \"straight\": the straight relative rotation (3×3)}");
+    }
+    const py::dict d = list[i].cast<py::dict>();
+    opt::NoTwist c;
+    try {
+      c.joint = opt::ball_index(system, d["joint"].cast<std::string>());
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(what + ": joint: " + e.what());
+    }
+    c.axis_a = to_vec3(d["axis_a"], (what + ": axis_a").c_str());
+    c.straight = to_mat3(d["straight"], (what + ": straight").c_str());
+    out.push_back(c);
+  }
+  return out;
+}
+
 io::MultibodyOptimalScenario make_scenario(const mb::System& system, const mb::State& initial_state,
                                            const mb::State& final_state, double final_time,
                                            const py::list& actuators, int intervals,
-                                           const std::string& coordinates, const py::list& rate_bounds) {
+                                           const std::string& coordinates, const py::list& rate_bounds,
+                                           const py::list& no_twist, double stabilisation_step,
+                                           const std::vector<int>& warm_start, const std::string& objective,
+                                           const py::object& final_time_bounds, double energy_weight) {
   opt::MultibodyProblem p;
   p.system = system;
   p.initial_state = initial_state;
@@ -91,9 +126,33 @@ io::MultibodyOptimalScenario make_scenario(const mb::System& system, const mb::S
   p.intervals = intervals;
   p.actuators = to_actuators(system, actuators);
   p.rate_bounds = to_rate_bounds(system, rate_bounds);
+  p.no_twist = to_no_twist(system, no_twist);
+  if (objective == "minimum_time") {
+    p.objective = opt::MultibodyObjective::minimum_time;
+    if (final_time_bounds.is_none()) {
+      throw InvalidInput(
+          "optimal control: final_time_bounds: got None; expected [T_min, T_max] in seconds (minimum_time)");
+    }
+    const auto bounds = final_time_bounds.cast<std::vector<double>>();
+    if (bounds.size() != 2) {
+      throw InvalidInput("optimal control: final_time_bounds: got " + std::to_string(bounds.size()) +
+                         " numbers; expected [T_min, T_max] in seconds");
+    }
+    p.final_time_min = bounds[0];
+    p.final_time_max = bounds[1];
+    p.energy_weight = energy_weight;
+  } else if (objective != "minimum_energy") {
+    throw InvalidInput("optimal control: objective: got \"" + objective +
+                       "\"; expected \"minimum_energy\" or \"minimum_time\"");
+  } else if (!final_time_bounds.is_none() || energy_weight != 0.0) {
+    throw InvalidInput(
+        "optimal control: final_time_bounds, energy_weight: given with objective \"minimum_energy\"; "
+        "expected them only with \"minimum_time\"");
+  }
   opt::MultibodyOptions o;
   o.coordinates = to_coordinates(coordinates);
-  return io::multibody_optimal_scenario_of(p, o);
+  o.stabilisation_step = stabilisation_step;
+  return io::multibody_optimal_scenario_of(p, o, warm_start);
 }
 
 /// Per point, per item: an (n, k, 3) or (n, k, 3, 3) array.
@@ -156,15 +215,24 @@ void bind_optimal_multibody(py::module_& parent) {
       .def(py::init(&make_scenario), py::kw_only(), py::arg("system"), py::arg("initial_state"),
            py::arg("final_state"), py::arg("final_time"), py::arg("actuators"), py::arg("intervals") = 20,
            py::arg("coordinates") = "rotation_matrix", py::arg("rate_bounds") = py::list(),
-           "A minimum-energy problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from the "
+           py::arg("no_twist") = py::list(), py::arg("stabilisation_step") = 0.0,
+           py::arg("warm_start") = std::vector<int>{}, py::arg("objective") = "minimum_energy",
+           py::arg("final_time_bounds") = py::none(), py::arg("energy_weight") = 0.0,
+           "An optimal-control problem on a poinsot.multibody.System (optimal/multibody_problem.hpp): from "
+           "the "
            "consistent initial_state to the consistent final_state (poinsot.multibody.State) in final_time "
            "(s), with actuators a list of {\"joint\": HINGE, \"torque_max\": N·m} (a hinge motor) or "
            "{\"body\": BODY, \"torque_max\": N·m} (three body-frame torques), on `intervals` Hermite–Simpson "
            "intervals in \"rotation_matrix\" or \"minimal\" coordinates; rate_bounds a list of {\"joint\": "
-           "HINGE, "
-           "\"rate_max\": rad/s} (|q̇| ≤ rate_max at every collocation point but the first). Raises "
-           "ValueError for an invalid "
-           "problem (one line naming the field).")
+           "HINGE, \"rate_max\": rad/s} (|q̇| ≤ rate_max at every collocation point but the first). A "
+           "\"joint\" actuator on a ball joint is three motors (space-frame torques). no_twist: a list of "
+           "{\"joint\": BALL, \"axis_a\": [x, y, z], \"straight\": 3×3 rotation} (Kane and Scher's "
+           "condition, rotation_matrix only); stabilisation_step: c ∈ [0, 0.6), the bound c/h on the "
+           "stabilising variables (0: unbounded; rotation_matrix only); warm_start: the mesh sequence, "
+           "increasing numbers of intervals below `intervals` solved first, each from the previous optimum. "
+           "objective=\"minimum_time\" frees T in final_time_bounds = [T_min, T_max] (s; final_time is then "
+           "the guess) and minimises T + energy_weight ∫ Σ u² dt. Raises ValueError for an invalid problem "
+           "(one line naming the field).")
       .def_readonly("name", &io::MultibodyOptimalScenario::name,
                     POINSOT_DOC(io_MultibodyOptimalScenario_name))
       .def_readonly("source", &io::MultibodyOptimalScenario::source,
@@ -197,22 +265,53 @@ void bind_optimal_multibody(py::module_& parent) {
             return std::string(io::coordinates_name(s.options.coordinates));
           },
           "\"rotation_matrix\" or \"minimal\": the transcription (optimal/multibody_direct.hpp).")
+      .def_property_readonly(
+          "stabilisation_step",
+          [](const io::MultibodyOptimalScenario& s) { return s.options.stabilisation_step; },
+          "c, the bound c/h on the stabilising variables of the rotation-matrix transcription (0: "
+          "unbounded; optimal/multibody_direct.hpp).")
+      .def_readonly("warm_start", &io::MultibodyOptimalScenario::mesh_sequence,
+                    POINSOT_DOC(io_MultibodyOptimalScenario_mesh_sequence))
+      .def_property_readonly(
+          "no_twist",
+          [](const io::MultibodyOptimalScenario& s) {
+            py::list out;
+            for (const opt::NoTwist& c : s.problem.no_twist) {
+              py::dict d;
+              d["joint"] = s.problem.system.joints()[static_cast<std::size_t>(c.joint)].name;
+              d["axis_a"] = from_vec3(c.axis_a);
+              d["straight"] = from_mat3(c.straight);
+              out.append(d);
+            }
+            return out;
+          },
+          "The no-twist conditions, as the constructor takes them.")
       .def(
           "with_options",
           [](const io::MultibodyOptimalScenario& s, const py::object& intervals,
-             const py::object& coordinates, const py::object& out_dir) {
+             const py::object& coordinates, const py::object& out_dir, const py::object& no_twist,
+             const py::object& stabilisation_step, const py::object& warm_start) {
             io::MultibodyOptimalScenario copy = s;
             if (!intervals.is_none()) copy.problem.intervals = intervals.cast<int>();
             if (!coordinates.is_none())
               copy.options.coordinates = to_coordinates(coordinates.cast<std::string>());
             if (!out_dir.is_none()) copy.out_dir = out_dir.cast<std::string>();
+            if (!no_twist.is_none())
+              copy.problem.no_twist = to_no_twist(copy.problem.system, no_twist.cast<py::list>());
+            if (!stabilisation_step.is_none())
+              copy.options.stabilisation_step = stabilisation_step.cast<double>();
+            if (!warm_start.is_none()) copy.mesh_sequence = warm_start.cast<std::vector<int>>();
             opt::validate(copy.problem);
+            io::check_multibody_options(copy);
             return copy;
           },
           py::kw_only(), py::arg("intervals") = py::none(), py::arg("coordinates") = py::none(),
-          py::arg("out_dir") = py::none(),
-          "A copy with the number of intervals, the coordinates or the output folder replaced (None: kept). "
-          "Raises ValueError for intervals outside 2 … 2000 or unknown coordinates.")
+          py::arg("out_dir") = py::none(), py::arg("no_twist") = py::none(),
+          py::arg("stabilisation_step") = py::none(), py::arg("warm_start") = py::none(),
+          "A copy with the number of intervals, the coordinates, the output folder, the no-twist conditions, "
+          "the stabilisation step or the mesh sequence replaced (None: kept). Raises ValueError for "
+          "intervals "
+          "outside 2 … 2000, unknown coordinates or invalid options (one line naming the field).")
       .def("__repr__", [](const io::MultibodyOptimalScenario& s) {
         return "MultibodyProblem(source=" + s.source +
                ", bodies=" + std::to_string(s.problem.system.body_count()) +

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 
 #include "multibody_csv.hpp"
@@ -67,6 +68,12 @@ std::vector<std::string> control_columns(const optimal::MultibodyProblem& p) {
   return out;
 }
 
+/// The objective as the files name it (optimal::objective_name's spelling).
+std::string objective_key(const optimal::MultibodyProblem& p) {
+  if (p.objective == optimal::MultibodyObjective::minimum_energy) return "minimum_energy";
+  return p.energy_weight > 0.0 ? "minimum_time_regularised" : "minimum_time";
+}
+
 /// The velocity bound of the target check (multibody_optimal_scenario.hpp): tolerance · max(1 m, L) / T.
 double velocity_bound(const MultibodyOptimalScenario& sc) {
   return sc.target_tolerance * std::max(1.0, sc.problem.system.length_scale()) / sc.problem.final_time;
@@ -85,7 +92,17 @@ double peak_rate(const MultibodyOptimalRun& r, int joint) {
 MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& sc) {
   MultibodyOptimalRun r;
   r.scenario = sc;
-  r.optimum = optimal::solve_multibody(sc.problem, sc.options);
+  optimal::MultibodyOptions options = sc.options;
+  optimal::MultibodyOptimum previous;
+  options.warm_start = nullptr;
+  for (const int n : sc.mesh_sequence) {
+    optimal::MultibodyProblem coarse = sc.problem;
+    coarse.intervals = n;
+    previous = optimal::solve_multibody(coarse, options);
+    r.mesh_stages.push_back({n, previous.status, previous.nlp_iterations, previous.cost});
+    options.warm_start = &previous;
+  }
+  r.optimum = optimal::solve_multibody(sc.problem, options);
   std::string failure = r.optimum.converged ? "" : r.optimum.status.substr(r.optimum.status.find(':') + 2);
   try {
     r.replay = optimal::replay_controls(sc.problem, r.optimum, sc.replay_steps);
@@ -117,10 +134,17 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
   if (!sc.title.empty()) out << "  " << sc.title << "\n";
   out << fmt::format("system: {} bodies, {} joints, gravity {} m/s²\n", p.system.body_count(),
                      p.system.joint_count(), format_vector(p.system.gravity()));
-  out << fmt::format(
-      "objective: minimum_energy (∫ Σ u² dt) at T = {} s; {} coordinates, Hermite–Simpson on {} "
-      "intervals, Ipopt\n",
-      report_number(p.final_time, 12), coordinates_name(sc.options.coordinates), p.intervals);
+  if (p.objective == optimal::MultibodyObjective::minimum_energy) {
+    out << fmt::format("objective: minimum_energy (∫ Σ u² dt) at T = {} s", report_number(p.final_time, 12));
+  } else {
+    out << fmt::format("objective: {} (T{}), T free in [{}, {}] s from the guess {} s", objective_key(p),
+                       p.energy_weight > 0.0 ? fmt::format(" + {} ∫ Σ u² dt", report_number(p.energy_weight))
+                                             : std::string(),
+                       report_number(p.final_time_min), report_number(p.final_time_max),
+                       report_number(p.final_time));
+  }
+  out << fmt::format("; {} coordinates, Hermite–Simpson on {} intervals, Ipopt\n",
+                     coordinates_name(sc.options.coordinates), p.intervals);
   out << "actuators:";
   for (const optimal::Actuator& a : p.actuators) {
     out << fmt::format("{} {} ({}, |u| ≤ {} N·m)", &a == &p.actuators.front() ? "" : ",", actuator_name(p, a),
@@ -130,10 +154,25 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
     out << fmt::format("\nrate bound: |q̇ {}| ≤ {} rad/s",
                        p.system.joints()[static_cast<std::size_t>(b.joint)].name, report_number(b.rate_max));
   }
+  for (const optimal::NoTwist& c : p.no_twist) {
+    out << fmt::format("\nno twist: ball joint {} about axis_a {} of its body a",
+                       p.system.joints()[static_cast<std::size_t>(c.joint)].name, format_vector(c.axis_a));
+  }
+  if (sc.options.stabilisation_step > 0.0) {
+    out << fmt::format("\nstabilising variables bounded by c/h, c = {}",
+                       report_number(sc.options.stabilisation_step));
+  }
+  const char* cost_unit = p.objective == optimal::MultibodyObjective::minimum_energy ? "N²·m²·s" : "s";
+  for (const MultibodyMeshStage& m : r.mesh_stages) {
+    out << fmt::format("\nwarm start: {} intervals, {}; {} Ipopt iterations, cost {} {}", m.intervals,
+                       m.status, m.nlp_iterations, report_number(m.cost, 12), cost_unit);
+  }
   out << "\nstatus: " << r.status << "\n\n";
-  out << fmt::format("solution: {}; {} Ipopt iterations, cost {} N²·m²·s, largest constraint row {}\n",
-                     o.status, o.nlp_iterations, report_number(o.cost, 12),
-                     report_number(o.max_constraint_error, 3));
+  out << fmt::format(
+      "solution: {}; {} Ipopt iterations, cost {} {}, final time {} s, largest constraint row {}\n", o.status,
+      o.nlp_iterations, report_number(o.cost, 12), cost_unit,
+      report_number(o.time.empty() ? p.final_time : o.time.back(), 12),
+      report_number(o.max_constraint_error, 3));
   const std::vector<std::string> columns = control_columns(p);
   for (std::size_t c = 0; c < columns.size(); ++c) {
     double peak = 0.0;
@@ -178,7 +217,7 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
   j["scenario"] = sc.source;
   j["status"] = r.status;
   j["optimal"] = r.optimal;
-  j["objective"] = "minimum_energy";
+  j["objective"] = objective_key(p);
   nlohmann::ordered_json actuators = nlohmann::ordered_json::array();
   for (const optimal::Actuator& a : p.actuators) {
     actuators.push_back(
@@ -190,18 +229,38 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
     rates.push_back({{"joint", name}, {"rate_max", b.rate_max}});
     peaks.push_back({{"joint", name}, {"peak_rate", peak_rate(r, b.joint)}});
   }
+  nlohmann::ordered_json no_twist = nlohmann::ordered_json::array(), meshes = nlohmann::ordered_json::array();
+  for (const optimal::NoTwist& c : p.no_twist) {
+    const Eigen::Quaterniond q(c.straight);
+    no_twist.push_back({{"joint", p.system.joints()[static_cast<std::size_t>(c.joint)].name},
+                        {"axis_a", {c.axis_a.x(), c.axis_a.y(), c.axis_a.z()}},
+                        {"quaternion", {q.w(), q.x(), q.y(), q.z()}}});
+  }
+  for (const MultibodyMeshStage& m : r.mesh_stages) {
+    meshes.push_back({{"intervals", m.intervals},
+                      {"status", m.status},
+                      {"nlp_iterations", m.nlp_iterations},
+                      {"cost", m.cost}});
+  }
   j["problem"] = {{"final_time", p.final_time},
                   {"coordinates", std::string(coordinates_name(sc.options.coordinates))},
                   {"intervals", p.intervals},
                   {"bodies", p.system.body_count()},
                   {"joints", p.system.joint_count()},
                   {"actuators", actuators},
-                  {"rate_bounds", rates}};
+                  {"rate_bounds", rates},
+                  {"no_twist", no_twist},
+                  {"stabilisation_step", sc.options.stabilisation_step},
+                  {"final_time_bounds", {p.final_time_min, p.final_time_max}},
+                  {"energy_weight", p.energy_weight},
+                  {"mesh_sequence", meshes}};
   j["solution"] = {{"converged", o.converged},
+                   {"final_time", o.time.empty() ? p.final_time : o.time.back()},
                    {"status", o.status},
                    {"cost", o.cost},
                    {"nlp_iterations", o.nlp_iterations},
                    {"max_constraint_error", o.max_constraint_error},
+                   {"stabilisation_step", o.stabilisation_step},
                    {"points", o.time.size()},
                    {"peak_rates", peaks}};
   const auto& rp = r.replay;

@@ -2,10 +2,12 @@
 #include "poinsot/io/multibody_optimal_scenario.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
@@ -41,14 +43,13 @@ std::vector<optimal::Actuator> read_actuators(const Source& src, const Section& 
   for (std::size_t i = 0; i < list->size(); ++i) {
     const Section a(src, (*list)[i].as_table(), fmt::format("optimal_control.actuators[{}]", i),
                     {"joint", "body", "torque_max"}, &(*list)[i]);
-    const std::string_view which = a.exactly_one({"joint", "body"}, "the actuated hinge or body");
+    const std::string_view which = a.exactly_one({"joint", "body"}, "the actuated hinge, ball joint or body");
     a.require("torque_max", "the bound |u| ≤ torque_max (N·m), a number > 0");
     optimal::Actuator act;
     act.torque_max = *a.number("torque_max");
     const std::string name = *a.string(which);
     if (which == "joint") {
-      act.kind = optimal::ActuatorKind::hinge_torque;
-      act.index = detail::located(a, "joint", [&] { return optimal::hinge_index(system, name); });
+      act = detail::located(a, "joint", [&] { return optimal::joint_motor(system, name, act.torque_max); });
     } else {
       act.kind = optimal::ActuatorKind::body_torque;
       act.index = detail::located(a, "body", [&] { return system.body_index(name); });
@@ -103,6 +104,46 @@ std::vector<optimal::RateBound> read_rate_bounds(const Source& src, const Sectio
     if (!(bound.rate_max > 0.0))
       b.fail("rate_max", fmt::format("got {} rad/s, expected a number > 0", format_number(bound.rate_max)));
     out.push_back(bound);
+  }
+  return out;
+}
+
+std::vector<optimal::NoTwist> read_no_twist(const Source& src, const Section& oc,
+                                            const multibody::System& system) {
+  std::vector<optimal::NoTwist> out;
+  const toml::array* list = detail::table_array(oc, "no_twist");
+  if (list == nullptr) return out;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const Section c(src, (*list)[i].as_table(), fmt::format("optimal_control.no_twist[{}]", i),
+                    {"joint", "axis_a", "rotation", "quaternion"}, &(*list)[i]);
+    c.require("joint", "the name of a ball joint");
+    c.require("axis_a", "the symmetry axis s of body a (body a's frame), a unit vector [x, y, z]");
+    const std::string name = *c.string("joint");
+    optimal::NoTwist condition;
+    condition.joint = detail::located(c, "joint", [&] { return optimal::ball_index(system, name); });
+    condition.axis_a = *c.vec3("axis_a");
+    condition.straight = detail::read_rotation(src, c);
+    out.push_back(condition);
+  }
+  return out;
+}
+
+/// The mesh sequence `warm_start = [N1, N2, ...]` as written (check_multibody_options checks its order).
+std::vector<int> read_mesh_sequence(const Section& oc) {
+  std::vector<int> out;
+  const toml::node* n = oc.node("warm_start");
+  if (n == nullptr) return out;
+  const auto* a = n->as_array();
+  const auto refuse = [&] {
+    oc.fail("warm_start", fmt::format("got {}, expected an array of whole numbers of intervals (the meshes "
+                                      "solved before the last, each from the previous one's optimum)",
+                                      detail::describe(*n)));
+  };
+  if (a == nullptr) refuse();
+  for (const auto& e : *a) {
+    const auto v = e.value<std::int64_t>();
+    if (!e.is_integer() || !v || *v < 2 || *v > 2000) refuse();
+    out.push_back(static_cast<int>(*v));
   }
   return out;
 }
@@ -170,7 +211,8 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
   const Section oc(
       src, root["optimal_control"].as_table(), "optimal_control",
       {"objective", "final_time", "coordinates", "intervals", "nlp_tolerance", "max_nlp_iterations",
-       "replay_steps", "target_tolerance", "actuators", "rate_bounds", "final"},
+       "replay_steps", "target_tolerance", "actuators", "rate_bounds", "final", "stabilisation_step",
+       "no_twist", "warm_start", "final_time_bounds", "energy_weight"},
       root.get("optimal_control"));
   if (!oc.present()) {
     throw InvalidInput(detail::location(src, nullptr) +
@@ -186,15 +228,34 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
                 oc, "objective",
                 [&] { return optimal::parse_objective(*oc.string("objective"), oc.label("objective")); })
           : optimal::Objective::minimum_energy;
-  if (objective != optimal::Objective::minimum_energy) {
-    oc.fail("objective", fmt::format("got \"{}\", expected \"minimum_energy\" (the objective solved for "
-                                     "multibody systems)",
-                                     optimal::objective_name(objective)));
-  }
-  oc.require("final_time", "the fixed final time in seconds (minimum_energy)");
+  oc.require("final_time", "the final time in seconds (fixed for minimum_energy, else the guess of T)");
   p.final_time = *oc.number("final_time");
   if (!(p.final_time > 0.0))
     oc.fail("final_time", fmt::format("got {} s, expected a number > 0", format_number(p.final_time)));
+  const bool regularised = objective == optimal::Objective::minimum_time_regularised;
+  if (objective == optimal::Objective::minimum_energy) {
+    for (const char* key : {"final_time_bounds", "energy_weight"})
+      if (oc.has(key))
+        oc.fail(key, "given with objective = \"minimum_energy\", expected only for minimum_time");
+  } else {
+    p.objective = optimal::MultibodyObjective::minimum_time;
+    oc.require("final_time_bounds", "[T_min, T_max] in seconds, the bounds on the free final time");
+    const std::vector<double> bounds = *oc.numbers("final_time_bounds", 2);
+    p.final_time_min = bounds[0];
+    p.final_time_max = bounds[1];
+    if (regularised) {
+      oc.require("energy_weight", "ε > 0 in T + ε ∫ Σ u² dt (s/(N²·m²·s))");
+      p.energy_weight = *oc.number("energy_weight");
+      if (!(p.energy_weight > 0.0)) {
+        oc.fail("energy_weight",
+                fmt::format("got {}, expected a number > 0", format_number(p.energy_weight)));
+      }
+    } else if (oc.has("energy_weight")) {
+      oc.fail("energy_weight",
+              "given with objective = \"minimum_time\", expected it only with "
+              "\"minimum_time_regularised\"");
+    }
+  }
   const std::string coordinates = oc.string("coordinates").value_or("rotation_matrix");
   if (coordinates == "minimal") {
     sc.options.coordinates = optimal::MultibodyCoordinates::minimal;
@@ -216,17 +277,54 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
       oc.fail("target_tolerance", fmt::format("got {}, expected a number > 0", format_number(*t)));
     sc.target_tolerance = *t;
   }
+  sc.options.stabilisation_step = oc.number("stabilisation_step").value_or(0.0);
+  sc.mesh_sequence = read_mesh_sequence(oc);
   p.actuators = read_actuators(src, oc, p.system);
   p.final_state = read_target(src, oc, p.system);
   p.rate_bounds = read_rate_bounds(src, oc, p.system);
-  detail::located(src, root.get("optimal_control"), [&] { optimal::validate(p); });
+  p.no_twist = read_no_twist(src, oc, p.system);
+  detail::located(src, root.get("optimal_control"), [&] {
+    optimal::validate(p);
+    check_multibody_options(sc);
+  });
   const Section out(src, root["output"].as_table(), "output", {"dir"});
   sc.out_dir = out.string("dir").value_or("");
   return sc;
 }
 
+void check_multibody_options(const MultibodyOptimalScenario& sc) {
+  const double c = sc.options.stabilisation_step;
+  if (!(c >= 0.0 && c < 0.6)) {
+    throw InvalidInput(fmt::format(
+        "optimal control: stabilisation_step: got {}; expected a number from 0 to 0.6 (0: unbounded)",
+        format_number(c)));
+  }
+  const bool minimal = sc.options.coordinates == optimal::MultibodyCoordinates::minimal;
+  if (minimal && c != 0.0) {
+    throw InvalidInput(
+        fmt::format("optimal control: stabilisation_step: got {} with minimal coordinates; "
+                    "expected 0 (it bounds the rotation-matrix transcription's variables)",
+                    format_number(c)));
+  }
+  if (minimal && !sc.problem.no_twist.empty()) {
+    throw InvalidInput(
+        "optimal control: no_twist: given with minimal coordinates; expected none (a path constraint of the "
+        "rotation-matrix transcription)");
+  }
+  for (std::size_t i = 0; i < sc.mesh_sequence.size(); ++i) {
+    const int n = sc.mesh_sequence[i];
+    if (n < 2 || n >= sc.problem.intervals || (i > 0 && n <= sc.mesh_sequence[i - 1])) {
+      throw InvalidInput(
+          fmt::format("optimal control: warm_start: got [{}]; expected increasing whole numbers of intervals "
+                      "from 2 to intervals − 1 = {}",
+                      fmt::join(sc.mesh_sequence, ", "), sc.problem.intervals - 1));
+    }
+  }
+}
+
 MultibodyOptimalScenario multibody_optimal_scenario_of(const optimal::MultibodyProblem& problem,
-                                                       const optimal::MultibodyOptions& options) {
+                                                       const optimal::MultibodyOptions& options,
+                                                       std::vector<int> mesh_sequence) {
   optimal::validate(problem);
   MultibodyOptimalScenario sc;
   sc.name = "multibody";
@@ -235,6 +333,9 @@ MultibodyOptimalScenario multibody_optimal_scenario_of(const optimal::MultibodyP
   sc.model.initial = problem.initial_state;
   sc.problem = problem;
   sc.options = options;
+  sc.options.warm_start = nullptr;  // the mesh sequence gives the warm starts
+  sc.mesh_sequence = std::move(mesh_sequence);
+  check_multibody_options(sc);
   return sc;
 }
 

@@ -36,7 +36,11 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
                              const Eigen::MatrixXd& final_rows, const PointFunctions& rates,
                              const MultibodyOptions& options, Decode decode, Encode state_vector,
                              std::chrono::steady_clock::time_point start) {
-  const HermiteSimpsonDae base(model, problem.intervals, problem.final_time, y0, final_rows, final_rows * yf);
+  const bool free_time = problem.objective == MultibodyObjective::minimum_time;
+  const detail::FreeFinalTime time_bounds{problem.final_time_min, problem.final_time_max,
+                                          problem.energy_weight};
+  const HermiteSimpsonDae base(model, problem.intervals, problem.final_time, y0, final_rows, final_rows * yf,
+                               free_time ? &time_bounds : nullptr, problem.mesh);
   std::vector<double> rate_max;
   for (const RateBound& b : problem.rate_bounds)
     rate_max.push_back(b.rate_max);
@@ -49,6 +53,11 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   const int nw = model.point_size();
   const int ny = model.state_size();
   std::vector<double> guess(static_cast<std::size_t>(nlp.num_variables()), 0.0);
+  // With a free final time the warm start is read at the same fraction τ = t/T of its own final time, which
+  // is also the guess of T.
+  const double T_guess =
+      free_time && options.warm_start != nullptr ? options.warm_start->time.back() : problem.final_time;
+  if (free_time) guess[static_cast<std::size_t>(base.time_index())] = T_guess;
   for (int p = 0; p < base.points(); ++p) {
     const double s = static_cast<double>(p) / (base.points() - 1);
     Eigen::Map<Eigen::VectorXd> y(guess.data() + nw * p, ny);
@@ -57,7 +66,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
       continue;
     }
     const MultibodyOptimum& warm = *options.warm_start;
-    const double t = base.point_time(p);
+    const double t = base.point_time(p, T_guess);
     const auto after = std::upper_bound(warm.time.begin(), warm.time.end(), t);
     const std::size_t j =
         std::min(static_cast<std::size_t>(std::max(after - warm.time.begin(), std::ptrdiff_t{1})),
@@ -78,6 +87,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   out.status = sol.solved ? "converged" : "not converged: " + sol.status;
   out.nlp_iterations = sol.iterations;
   out.cost = sol.objective;
+  const double T = base.final_time(sol.x.data());
   std::vector<double> g(static_cast<std::size_t>(nlp.num_constraints()));
   nlp.constraints(sol.x.data(), g.data());
   std::vector<double> lo, up, glo, gup;
@@ -86,8 +96,8 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
     out.max_constraint_error = std::max({out.max_constraint_error, glo[r] - g[r], g[r] - gup[r]});
   for (int p = 0; p < base.points(); ++p) {
     const double* w = sol.x.data() + nw * p;
-    out.time.push_back(base.point_time(p));
-    out.states.push_back(decode(w, base.point_time(p)));
+    out.time.push_back(base.point_time(p, T));
+    out.states.push_back(decode(w, base.point_time(p, T)));
     Eigen::VectorXd u(static_cast<Eigen::Index>(model.control_indices().size()));
     for (std::size_t k = 0; k < model.control_indices().size(); ++k)
       u(static_cast<Eigen::Index>(k)) = w[model.control_indices()[k]];
@@ -99,10 +109,13 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
 
 /// Throws InvalidInput unless `warm` is a solution of `problem` on some mesh (multibody_direct.hpp).
 void check_warm_start(const MultibodyProblem& problem, const MultibodyOptimum& warm) {
-  const double T = problem.final_time;
+  // With a free final time any T within the bounds will do (the warm start is read at the same τ = t/T).
+  const bool free_time = problem.objective == MultibodyObjective::minimum_time;
+  const double T = free_time && !warm.time.empty() ? warm.time.back() : problem.final_time;
   const bool spans = warm.time.size() >= 3 && warm.states.size() == warm.time.size() &&
                      warm.controls.size() == warm.time.size() && warm.time.front() == 0.0 &&
-                     std::abs(warm.time.back() - T) <= 1e-12 * T;
+                     std::abs(warm.time.back() - T) <= 1e-12 * T &&
+                     (!free_time || (T >= problem.final_time_min && T <= problem.final_time_max));
   if (!spans || warm.states.front().bodies.size() != static_cast<std::size_t>(problem.system.body_count()) ||
       warm.controls.front().size() != control_count(problem)) {
     throw InvalidInput(fmt::format(
@@ -221,12 +234,18 @@ Eigen::VectorXd control_at(const MultibodyOptimum& optimum, double t) {
                     "expected a solution of solve_multibody (at least 3 points, one control each)",
                     optimum.time.size(), optimum.controls.size()));
   }
-  const int points = static_cast<int>(optimum.time.size());
-  const int intervals = (points - 1) / 2;
-  const double T = optimum.time.back();
-  const double h = T / intervals;
-  const int k = std::clamp(static_cast<int>(std::floor(t / h)), 0, intervals - 1);
-  const double s = t / h - k;
+  // The interval [t_2k, t_2k+2] that holds t (the first or last beyond the ends), on any mesh.
+  const int intervals = (static_cast<int>(optimum.time.size()) - 1) / 2;
+  int k = 0, last = intervals - 1;  // the largest k ≤ intervals − 1 with t_2k ≤ t (bisection)
+  while (k < last) {
+    const int mid = (k + last + 1) / 2;
+    if (optimum.time[static_cast<std::size_t>(2 * mid)] <= t)
+      k = mid;
+    else
+      last = mid - 1;
+  }
+  const double t0 = optimum.time[static_cast<std::size_t>(2 * k)];
+  const double s = (t - t0) / (optimum.time[static_cast<std::size_t>(2 * k + 2)] - t0);
   const auto u = [&](int p) -> const Eigen::VectorXd& {
     return optimum.controls[static_cast<std::size_t>(p)];
   };

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <string_view>
 #include <utility>
 
 #include <fmt/format.h>
@@ -63,9 +65,37 @@ void validate(const MultibodyProblem& p) {
     throw InvalidInput(
         fmt::format("optimal control: final_time: got {} s; expected a finite number > 0", p.final_time));
   }
+  if (p.objective == MultibodyObjective::minimum_time) {
+    if (!(p.final_time_min > 0.0 && p.final_time_min <= p.final_time && p.final_time <= p.final_time_max &&
+          std::isfinite(p.final_time_max))) {
+      throw InvalidInput(fmt::format(
+          "optimal control: final_time: got the bounds [{}, {}] s and the guess {} s; expected 0 < "
+          "final_time_min ≤ final_time ≤ final_time_max < ∞ (minimum_time)",
+          p.final_time_min, p.final_time_max, p.final_time));
+    }
+    if (!(p.energy_weight >= 0.0) || !std::isfinite(p.energy_weight)) {
+      throw InvalidInput(
+          fmt::format("optimal control: energy_weight: got {}; expected a finite number ≥ 0 (minimum_time)",
+                      p.energy_weight));
+    }
+  }
   if (p.intervals < 2 || p.intervals > 2000) {
     throw InvalidInput(
         fmt::format("optimal control: intervals: got {}; expected an integer from 2 to 2000", p.intervals));
+  }
+  if (!p.mesh.empty()) {
+    double sum = 0.0, smallest = 1.0;
+    for (const double d : p.mesh) {
+      sum += d;
+      smallest = std::min(smallest, d);
+    }
+    if (p.mesh.size() != static_cast<std::size_t>(p.intervals) || !(smallest > 0.0) ||
+        !(std::abs(sum - 1.0) <= 1e-12)) {
+      throw InvalidInput(fmt::format(
+          "optimal control: mesh: got {} fractions, the smallest {}, summing to {}; expected intervals = {} "
+          "fractions > 0 summing to 1",
+          p.mesh.size(), smallest, sum, p.intervals));
+    }
   }
   if (!p.system.springs().empty()) {
     throw InvalidInput(
@@ -92,6 +122,12 @@ void validate(const MultibodyProblem& p) {
     if (!(a.torque_max > 0.0)) {
       throw InvalidInput(
           fmt::format("{}: torque_max: got {} N·m; expected a number > 0", what, a.torque_max));
+    }
+    if (p.objective == MultibodyObjective::minimum_time && !std::isfinite(a.torque_max)) {
+      throw InvalidInput(fmt::format(
+          "{}: torque_max: got {} N·m; expected a finite bound (minimum_time: unbounded torques reach the "
+          "target in no time)",
+          what, a.torque_max));
     }
     if (a.kind == ActuatorKind::hinge_torque || a.kind == ActuatorKind::ball_torque) {
       const bool hinge = a.kind == ActuatorKind::hinge_torque;
@@ -171,6 +207,18 @@ void validate(const MultibodyProblem& p) {
       }
     }
   }
+  if (detail::conserves_momenta(p) && p.objective == MultibodyObjective::minimum_time) {
+    const double P = multibody::linear_momentum(p.system, p.initial_state).norm();
+    double scale = 0.0;
+    for (const multibody::Body& b : p.system.bodies())
+      scale += b.mass * p.system.length_scale() / p.final_time;
+    if (P > 1e-9 * scale) {
+      throw InvalidInput(fmt::format(
+          "optimal control: initial state: a free-floating system with linear momentum {:.3g} kg·m/s; "
+          "expected 0 for minimum_time (its centre of mass at T would depend on T)",
+          P));
+    }
+  }
   if (detail::conserves_momenta(p)) {
     // Free floating with internal torques only: P, H and M x_com − t P cannot change.
     const Eigen::VectorXd q0 = detail::conserved_quantities(p.system, p.initial_state, 0.0);
@@ -200,16 +248,38 @@ double twist_residual(const multibody::System& system, const multibody::State& s
   return condition.axis_a.dot(Vec3(W(2, 1), W(0, 2), W(1, 0)));
 }
 
-int hinge_index(const multibody::System& system, const std::string& name) {
-  std::string hinges;
+namespace {
+
+/// The index of the joint named `name` whose type is one of `types` (called `kind` in the message;
+/// multibody_problem.hpp).
+int named_joint_index(const multibody::System& system, const std::string& name,
+                      std::initializer_list<multibody::JointType> types, std::string_view kind) {
+  std::string names;
   for (std::size_t j = 0; j < system.joints().size(); ++j) {
     const multibody::Joint& joint = system.joints()[j];
-    if (joint.type != multibody::JointType::hinge) continue;
+    if (std::find(types.begin(), types.end(), joint.type) == types.end()) continue;
     if (joint.name == name) return static_cast<int>(j);
-    hinges += (hinges.empty() ? "\"" : ", \"") + joint.name + "\"";
+    names += (names.empty() ? "\"" : ", \"") + joint.name + "\"";
   }
-  throw InvalidInput(fmt::format("got \"{}\", expected the name of a hinge joint ({})", name,
-                                 hinges.empty() ? "the system has none" : hinges));
+  throw InvalidInput(fmt::format("got \"{}\", expected the name of a {} joint ({})", name, kind,
+                                 names.empty() ? "the system has none" : names));
+}
+
+}  // namespace
+
+int hinge_index(const multibody::System& system, const std::string& name) {
+  return named_joint_index(system, name, {multibody::JointType::hinge}, "hinge");
+}
+
+int ball_index(const multibody::System& system, const std::string& name) {
+  return named_joint_index(system, name, {multibody::JointType::ball}, "ball");
+}
+
+Actuator joint_motor(const multibody::System& system, const std::string& name, double torque_max) {
+  const int j = named_joint_index(system, name, {multibody::JointType::hinge, multibody::JointType::ball},
+                                  "hinge or ball");
+  const bool hinge = system.joints()[static_cast<std::size_t>(j)].type == multibody::JointType::hinge;
+  return {hinge ? ActuatorKind::hinge_torque : ActuatorKind::ball_torque, j, torque_max};
 }
 
 double hinge_rate(const multibody::System& system, const multibody::State& state, int joint) {

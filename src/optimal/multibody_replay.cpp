@@ -43,7 +43,7 @@ MultibodyReplay replay_controls(const MultibodyProblem& problem, const Multibody
     throw InvalidInput("optimal control replay: steps_per_interval: expected an integer >= 1");
   }
   const int steps = problem.intervals * steps_per_interval;
-  const double dt = problem.final_time / steps;
+  const double dt = optimum.time.back() / steps;  // the optimum's T (free under minimum_time)
   MultibodyReplay out;
   multibody::State state = problem.initial_state;
   state.time = 0.0;

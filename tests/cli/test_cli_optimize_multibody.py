@@ -136,7 +136,7 @@ def test_rate_bound_meets_the_closed_form(cli, tmp_path):
 
 @pytest.mark.parametrize("extra, fragment", [
     ("target_tolerance = 0", "[optimal_control] target_tolerance: got 0, expected a number > 0"),
-    ("objective = \"minimum_time\"", "objective: got \"minimum_time\", expected \"minimum_energy\""),
+    ("objective = \"minimum_time\"", "[optimal_control] final_time_bounds: missing"),
     ("intervals_typo = 3", "unknown key \"intervals_typo\""),
     ('rate_bounds = [{ joint = "motor", rate_max = -2 }]', "rate_max: got -2 rad/s, expected a number > 0"),
 ])

@@ -110,5 +110,40 @@ TEST(HermiteSimpsonDae, MinimalModelDerivativesAreExact) {
   check_derivatives(nlp, 11);
 }
 
+TEST(HermiteSimpsonDae, FreeFinalTimeDerivativesAreExact) {
+  // T is the last variable: its Jacobian column (the defects' f-terms / T) and its Hessian row (the f-terms'
+  // second derivatives / T, the objective's 2εŵu) against the same central differences.
+  const FreeFinalTime free{0.5, 3.0, 0.3};
+  MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 2);
+  p.actuators.push_back({ActuatorKind::body_torque, 1, 5.0});
+  const MultibodyRotationModel rotation(p);
+  const HermiteSimpsonDae nlp_r(rotation, 1, 1.5, rotation.state_vector(p.initial_state),
+                                Eigen::MatrixXd::Identity(3, rotation.state_size()), Eigen::VectorXd::Zero(3),
+                                &free);
+  ASSERT_EQ(nlp_r.num_variables(), nlp_r.time_index() + 1);
+  check_derivatives(nlp_r, 13);
+  const MultibodyProblem q = testing::two_link_arm(1.0, 0.5, 1.5, 2);
+  const MultibodyMinimalModel minimal(q);
+  const HermiteSimpsonDae nlp_m(minimal, 2, 1.5, minimal.state_vector(q.initial_state),
+                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), &free);
+  check_derivatives(nlp_m, 17);
+}
+
+TEST(HermiteSimpsonDae, UnequalMeshDerivativesAreExact) {
+  // Intervals of T Δτ_k with unequal Δτ_k, at fixed and at free final time.
+  const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 3);
+  const MultibodyMinimalModel minimal(p);
+  const std::vector<double> fractions{0.2, 0.5, 0.3};
+  const HermiteSimpsonDae fixed(minimal, 3, 1.5, minimal.state_vector(p.initial_state),
+                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), nullptr,
+                                fractions);
+  EXPECT_DOUBLE_EQ(fixed.point_time(3, 1.5), 1.5 * 0.45);  // the second interval's midpoint
+  check_derivatives(fixed, 19);
+  const FreeFinalTime free{0.5, 3.0, 0.3};
+  const HermiteSimpsonDae timed(minimal, 3, 1.5, minimal.state_vector(p.initial_state),
+                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), &free, fractions);
+  check_derivatives(timed, 23);
+}
+
 }  // namespace
 }  // namespace poinsot::optimal::detail

@@ -7,17 +7,24 @@
 /// not used), and the problem:
 ///
 ///     [optimal_control]
-///     objective = "minimum_energy"       # ∫ Σ u_i² dt at fixed final_time
-///     final_time = 1.5                   # s
+///     objective = "minimum_energy"       # ∫ Σ u_i² dt at fixed final_time; or "minimum_time" (T), or
+///                                        # "minimum_time_regularised" (T + energy_weight ∫ Σ u_i² dt)
+///     final_time = 1.5                   # s: fixed (minimum_energy) or the guess of T (minimum_time)
+///     final_time_bounds = [0.1, 10]      # s, minimum_time only: T_min ≤ T ≤ T_max
+///     energy_weight = 1e-3               # ε > 0, s/(N²·m²·s), minimum_time_regularised only
 ///     coordinates = "rotation_matrix"    # or "minimal" (a tree of hinges rooted at the world)
 ///     intervals = 20                     # Hermite–Simpson intervals, 2 … 2000
 ///     nlp_tolerance = 1e-10              # optional: Ipopt's tol
 ///     max_nlp_iterations = 500           # optional, 1 … 100000
-///     replay_steps = 64                  # projected-RK4 steps per interval re-simulating the control, 1 …
-///     10000 target_tolerance = 1e-3            # how close the re-simulation must come to the target (see
-///     below) actuators = [ { joint = "shoulder", torque_max = 50 },   # a motor in a hinge (N·m)
+///     replay_steps = 64                  # RK4 steps per interval re-simulating the control, 1 … 10000
+///     target_tolerance = 1e-3            # how close the re-simulation must come to the target (below)
+///     actuators = [ { joint = "shoulder", torque_max = 50 },   # a hinge motor, or three ball motors (N·m)
 ///                   { body = "upper", torque_max = 5 } ]       # three body-frame torques on a body (N·m)
 ///     rate_bounds = [ { joint = "shoulder", rate_max = 2.0 } ]   # optional: |q̇| ≤ rate_max (rad/s)
+///     stabilisation_step = 0.05          # optional, rotation_matrix: c of MultibodyOptions, 0 ≤ c < 0.6
+///     warm_start = [6, 12]               # optional: meshes solved first, each from the previous optimum
+///     no_twist = [ { joint = "waist", axis_a = [1, 0, 0],         # optional, rotation_matrix: NoTwist of
+///                    rotation = { axis = [0, 0, 1], angle = 3.141592653589793 } } ]   # a ball joint (C)
 ///     [[optimal_control.final]]          # one per body: the target state at t = final_time
 ///     body = "upper"
 ///     rotation = { axis = [0, 0, 1], angle = 1.0 }   # or quaternion = [w, x, y, z], or a 3×3 matrix
@@ -55,7 +62,11 @@ struct MultibodyOptimalScenario {
   optimal::MultibodyOptions options;  ///< coordinates and Ipopt's settings
   int replay_steps = 64;              ///< projected-RK4 steps per interval in the re-simulation
   double target_tolerance = 1e-3;     ///< see the file comment
-  std::string out_dir;                ///< [output] dir; empty: the default
+  /// The mesh sequence (`warm_start`): the numbers of intervals solved before problem.intervals, increasing,
+  /// the first from the naive guess and each later one (the last included) from the previous optimum
+  /// (optimal::MultibodyOptions::warm_start). Empty: the naive guess on problem.intervals alone.
+  std::vector<int> mesh_sequence;
+  std::string out_dir;  ///< [output] dir; empty: the default
 };
 
 /// Parses scenario text; `source` names it in messages, `base_dir` resolves relative mesh paths. Throws
@@ -66,10 +77,17 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
 MultibodyOptimalScenario load_multibody_optimal_scenario(const std::string& path);
 
 /// A scenario around a problem built in code (Python's poinsot.optimal.MultibodyProblem): named "multibody",
-/// source "<problem>", the default replay and target tolerance, no output folder. Throws InvalidInput when
-/// the problem is invalid (optimal::validate).
+/// source "<problem>", the default replay and target tolerance, no output folder. options.warm_start is
+/// ignored (the mesh sequence gives the warm starts). Throws InvalidInput when the problem is invalid
+/// (optimal::validate) or the options are (check_multibody_options).
 MultibodyOptimalScenario multibody_optimal_scenario_of(const optimal::MultibodyProblem& problem,
-                                                       const optimal::MultibodyOptions& options = {});
+                                                       const optimal::MultibodyOptions& options = {},
+                                                       std::vector<int> mesh_sequence = {});
+
+/// Throws InvalidInput `optimal control: KEY: got ...; expected ...` unless the stabilisation step is in
+/// [0, 0.6) and 0 in minimal coordinates, there is no no-twist condition in minimal coordinates, and the mesh
+/// sequence increases from 2 to below problem.intervals.
+void check_multibody_options(const MultibodyOptimalScenario& scenario);
 
 /// The name of a coordinates value as the files spell it ("rotation_matrix", "minimal").
 std::string_view coordinates_name(optimal::MultibodyCoordinates coordinates);

@@ -13,9 +13,10 @@
 ///   recursive Newton–Euler algorithm as the path equation RNEA(θ, θ̇, θ̈) = τ (no mass matrix is inverted),
 ///   derivatives exact by forward automatic differentiation of second order.
 ///
-/// Both minimise ∫ Σ u_i² dt at fixed T, from the full initial state to the final state, on N equal
-/// intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point but
-/// the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
+/// Both minimise ∫ Σ u_i² dt at fixed T, or T + ε ∫ Σ u_i² dt with T free (the problem's objective;
+/// hermite_simpson_dae.hpp scales time as t = T τ), from the full initial state to the final state, on N
+/// equal intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point
+/// but the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
 /// ones). The naive initial guess is used unless MultibodyOptions::warm_start is given: every state
 /// coordinate linearly interpolated between the two boundary states, every other variable zero. A result is
 /// `converged` only when Ipopt reports success and no body turns by more than π/2 between neighbouring
@@ -42,7 +43,8 @@ struct MultibodyOptions {
   int print_level = 0;
   /// The initial guess: null for the naive one (below), or an optimum of the same problem on any mesh (not
   /// owned; e.g. a coarser mesh's): its states linearly interpolated between its collocation points, its
-  /// controls by control_at, every other variable zero.
+  /// controls by control_at, every other variable zero. With a free final time (minimum_time) it is read at
+  /// the same fraction t/T of its own final time, which is also the guess of T.
   const MultibodyOptimum* warm_start = nullptr;
   /// Rotation-matrix coordinates: c > 0 bounds the stabilising variables S and μ of the stabilised index-2
   /// form by c/h at every point (h = T/N; for c < 0.6 no body can then cross a half-turn inside one interval
@@ -55,7 +57,8 @@ struct MultibodyOptimum {
   bool converged = false;  ///< Ipopt solved the NLP
   std::string status;      ///< "converged", or Ipopt's status in words
   int nlp_iterations = 0;
-  double cost = 0.0;                      ///< ∫ Σ u_i² dt, N²·m²·s
+  /// The objective: ∫ Σ u_i² dt (N²·m²·s), or T + ε ∫ Σ u_i² dt (s) for minimum_time (T = time.back()).
+  double cost = 0.0;
   double wall_seconds = 0.0;              ///< building and solving the NLP
   std::vector<double> time;               ///< s, every collocation point (nodes and midpoints)
   std::vector<multibody::State> states;   ///< at every point
@@ -98,9 +101,10 @@ struct MultibodyReplay {
 
 /// A free final hinge's body_a (multibody_problem.hpp) is compared up to its turn about the hinge: the axis's
 /// direction, the joint point, the angular velocity in space and the velocity.
-/// Integrates the initial state over [0, T] with `steps_per_interval` projected-RK4 steps per collocation
-/// interval, the controls held at their value at each step's midpoint (a second-order approximation of the
-/// continuous control: the replay's error falls by 4 when the steps are halved).
+/// Integrates the initial state over [0, T] (T the optimum's final time, optimum.time.back()) with
+/// `steps_per_interval` projected-RK4 steps per collocation interval, the controls held at their value at
+/// each step's midpoint (a second-order approximation of the continuous control: the replay's error falls by
+/// 4 when the steps are halved).
 MultibodyReplay replay_controls(const MultibodyProblem& problem, const MultibodyOptimum& optimum,
                                 int steps_per_interval = 64);
 
