@@ -92,9 +92,9 @@ TEST(MultibodyOptimalOptions, FileWithTheKeysGivesTheOptimumOfTheCppCall) {
   EXPECT_NE(report.find("no twist: ball joint shoulder"), std::string::npos) << report;
   EXPECT_NE(report.find("stabilising variables bounded by c/h, c = 0.3"), std::string::npos) << report;
   EXPECT_NE(report.find("warm start: 4 intervals, converged"), std::string::npos) << report;
-  const std::string json = multibody_optimal_summary_json(run);
+  const std::string summary = multibody_optimal_summary_json(run);
   for (const char* key : {"\"no_twist\"", "\"stabilisation_step\": 0.3", "\"mesh_sequence\""})
-    EXPECT_NE(json.find(key), std::string::npos) << key;
+    EXPECT_NE(summary.find(key), std::string::npos) << key;
 }
 
 // The rod on a hinge with |u| ≤ 1 N·m, turned through 1 rad in minimum time: T* = 2 √(Θ I / ū).
