@@ -42,7 +42,8 @@ TEST(MultibodyRefinement, UnequalMeshIsExactForTheCubicMotion) {
 
 TEST(MultibodyRefinement, ArmIntervalsAreSplitUntilTheLocalErrorMeetsTheTolerance) {
 #if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "3.6 s in release, 142 s under ASan; the unequal-mesh test runs the same transcription there";
+  GTEST_SKIP()
+      << "3.6 s in release, 142 s under ASan; the unequal-mesh test runs the same transcription there";
 #endif
   // The arm (minimal coordinates) from 8 equal intervals, tolerance 1e-3 rad on each interval's local error.
   // Measured: N = 8, 16, 20, 22 with largest local errors 1.4e-1, 2.8e-2, 1.7e-2, 6.7e-4 rad; on 22 equal
