@@ -38,35 +38,13 @@ namespace {
 using namespace poinsot;
 using namespace poinsot::optimal;
 
-multibody::State arm_state(double th1, double th2) {
-  multibody::State s;
-  s.bodies.resize(2);
-  const Mat3 R1 = Eigen::AngleAxisd(th1, Vec3::UnitZ()).toRotationMatrix();
-  const Mat3 R2 = Eigen::AngleAxisd(th1 + th2, Vec3::UnitZ()).toRotationMatrix();
-  s.bodies[0].R_space_body = R1;
-  s.bodies[0].x_space = R1 * Vec3(0.5, 0.0, 0.0);
-  s.bodies[1].R_space_body = R2;
-  s.bodies[1].x_space = R1 * Vec3(1.0, 0.0, 0.0) + R2 * Vec3(0.5, 0.0, 0.0);
-  return s;
-}
-
-// The two-link arm of tests/optimal/multibody_test_problems.hpp: rods of 1 kg, 1 m, radius 5 cm on hinges
-// about z, gravity −9.81 m/s² along y, both hinges driven with |u| ≤ 50 N·m.
+// The two-link arm of tests/optimal/multibody_test_problems.hpp (rods of 1 kg, 1 m, radius 5 cm on hinges
+// about z, gravity −9.81 m/s² along y, both hinges driven with |u| ≤ 50 N·m), rest at the angles (a1, a2) to
+// rest at (b1, b2) rad in T.
 MultibodyProblem arm(double a1, double a2, double b1, double b2, double T, int intervals) {
-  MultibodyProblem p;
-  auto& sys = p.system;
-  const int l1 = sys.add_body_from_inertia("upper", 1.0, testing::rod_inertia(1.0, 1.0, 0.05));
-  const int l2 = sys.add_body_from_inertia("fore", 1.0, testing::rod_inertia(1.0, 1.0, 0.05));
-  const int shoulder = sys.add_hinge("shoulder", l1, Vec3(-0.5, 0, 0), Vec3::UnitZ(), multibody::kWorld,
-                                     Vec3::Zero(), Vec3::UnitZ());
-  const int elbow =
-      sys.add_hinge("elbow", l2, Vec3(-0.5, 0, 0), Vec3::UnitZ(), l1, Vec3(0.5, 0, 0), Vec3::UnitZ());
-  sys.set_gravity(Vec3(0.0, -9.81, 0.0));
-  p.initial_state = arm_state(a1, a2);
-  p.final_state = arm_state(b1, b2);
-  p.final_time = T;
-  p.intervals = intervals;
-  p.actuators = {{ActuatorKind::hinge_torque, shoulder, 50.0}, {ActuatorKind::hinge_torque, elbow, 50.0}};
+  MultibodyProblem p = testing::two_link_arm(0.0, 0.0, T, intervals);
+  p.initial_state = testing::two_link_state(a1, a2);
+  p.final_state = testing::two_link_state(b1, b2);
   return p;
 }
 

@@ -1,7 +1,6 @@
 """`poinsot optimize`: the report, the files, --json, bad input (exit 2, nothing written) and a solution that is
 not verified optimal (exit 1, files marked "not converged")."""
 import json
-import os
 from pathlib import Path
 
 import pytest
@@ -143,13 +142,11 @@ def test_plot_draws_the_figures(cli, tmp_path):
 
 BETTS_PUBLISHED = 28.6304077  # s (Betts, Practical Methods for Optimal Control, ex. 6.12; PSOPT)
 
-# `ctest --preset sanitize` (the CI's sanitizer run) sets ASAN_OPTIONS. Betts' whole solve takes about 1 s in
-# release and 45 s of wall time in the sanitizer build; the C++ tests of the same code run there.
-slow_under_sanitizers = pytest.mark.skipif("ASAN_OPTIONS" in os.environ,
-                                           reason="seconds in release, far longer under the sanitizers")
+# Betts' whole solve takes about 1 s in release and 45 s of wall time in the sanitizer build; the C++ tests of
+# the same code run there.
 
 
-@slow_under_sanitizers
+@pytest.mark.slow_under_sanitizers
 def test_betts_phased_resolve_gives_the_direct_optimum(cli, tmp_path, source_dir):
     """Betts' problem (examples/optimal/betts.toml; about 1 s): the phase-per-arc re-solve (64 intervals per
     arc, the default) runs after the mesh refinement and gives the direct optimum. Its t* meets the verified
@@ -205,7 +202,7 @@ def test_phased_keys_bad_input(cli, tmp_path, line, needle):
     assert not out.exists()
 
 
-@slow_under_sanitizers
+@pytest.mark.slow_under_sanitizers
 def test_racket_spin_example_needs_multiple_shooting(cli, tmp_path, source_dir):
     """examples/optimal/racket_spin_phase.toml (about 1 s per run): the racket's unstable spin about its
     intermediate axis over λT = 26.6. With the file's eight segments the optimum is the closed form
