@@ -23,25 +23,25 @@
 namespace poinsot::optimal {
 namespace {
 
-constexpr double kTorqueBound = 0.01;  // N·m
+constexpr double kRacketTorqueBound = 0.01;  // N·m
 
 ReorientationProblem tumbling_racket() {
   ReorientationProblem p;
   p.inertia_body = Vec3(0.00121, 0.01638, 0.01748).asDiagonal();
   p.bound = TorqueBound::norm;
-  p.torque_max = Vec3::Constant(kTorqueBound);
+  p.torque_max = Vec3::Constant(kRacketTorqueBound);
   p.omega_initial = Vec3(0.05, 6.2832, 0.05);
   p.free_final_attitude = true;
   return p;
 }
 
 double momentum_bound_time(const ReorientationProblem& p) {
-  return (p.inertia_body * p.omega_initial).norm() / kTorqueBound;
+  return (p.inertia_body * p.omega_initial).norm() / kRacketTorqueBound;
 }
 
 Vec3 extremal_costate_omega(const ReorientationProblem& p, const Vec3& omega) {
   const Vec3 L = p.inertia_body * omega;
-  return p.inertia_body * L / (kTorqueBound * L.norm());
+  return p.inertia_body * L / (kRacketTorqueBound * L.norm());
 }
 
 // The extremal at n + 1 equal steps of [0, T*], as a direct solution would give it (samples and costates at
@@ -56,7 +56,7 @@ DirectSolution perturbed_extremal(const ReorientationProblem& p, int n, double e
     const Vec3 w = Eigen::Map<const Vec3>(y.data() + 9);
     const Vec3 L = J * w;
     Eigen::Map<Mat3>(dy.data()) = R * so3::hat(w);
-    Eigen::Map<Vec3>(dy.data() + 9) = J_inv * (-kTorqueBound * L.normalized() - w.cross(L));
+    Eigen::Map<Vec3>(dy.data() + 9) = J_inv * (-kRacketTorqueBound * L.normalized() - w.cross(L));
   };
   State y{};
   Eigen::Map<Mat3>(y.data()) = Mat3::Identity();
@@ -74,7 +74,7 @@ DirectSolution perturbed_extremal(const ReorientationProblem& p, int n, double e
     d.time.push_back(T * (1.0 + e) * k / n);
     d.attitude.emplace_back(Mat3(Eigen::Map<const Mat3>(y.data())));
     d.omega_body.push_back(w);
-    d.torque_body.push_back(-kTorqueBound * (p.inertia_body * w).normalized());
+    d.torque_body.push_back(-kRacketTorqueBound * (p.inertia_body * w).normalized());
     d.costate_time.push_back(d.time.back());
     d.costate_attitude_body.push_back(Vec3::Zero());
     d.costate_omega.push_back(p_omega + e * p_omega.norm() * Vec3(0.3, -0.2, 0.5));
@@ -171,7 +171,7 @@ TEST(RacketDetumbling, FlipPhasesAreTheNearNullDirectionsOfTheShooting) {
     const Vec3 w = x.segment<3>(b + 3), sigma = J_inv * x.segment<3>(b + 9);
     const Vec3 L = J * w;
     Eigen::Matrix<double, 6, 1> flow;
-    flow << J_inv * (-kTorqueBound * sigma.normalized() - w.cross(L)),
+    flow << J_inv * (-kRacketTorqueBound * sigma.normalized() - w.cross(L)),
         (so3::hat(w) * J - so3::hat(L)).transpose() * sigma;
     const double cosine = std::abs(best.dot(flow)) / (best.norm() * flow.norm());
     EXPECT_GT(cosine, 0.98) << "node " << node;
