@@ -6,6 +6,7 @@
 #pragma GCC diagnostic ignored "-Wrestrict"
 
 #include <Eigen/Dense>
+#include <Eigen/SVD>
 #include <Eigen/SparseLU>
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
@@ -228,6 +229,27 @@ bool Shooter::jacobian(const Eigen::VectorXd& x, const std::vector<SegmentEnd>& 
   return true;
 }
 
+namespace {
+
+/// The backtracking line search along `step` on the residual's max norm: accepts the first of
+/// x + step, x + step/2, … (30 halvings) that decreases it; false when none does.
+bool shooting_line_search(const Shooter& shooter, const Eigen::VectorXd& step, Eigen::VectorXd& x,
+                          Eigen::VectorXd& F, double& norm) {
+  double alpha = 1.0;
+  for (int ls = 0; ls < 30 && step.allFinite(); ++ls, alpha *= 0.5) {
+    Eigen::VectorXd xn = x + alpha * step, Fn;
+    if (shooter.residual(xn, Fn) && Fn.cwiseAbs().maxCoeff() < (1.0 - 1e-4 * alpha) * norm) {
+      x = xn;
+      F = Fn;
+      norm = Fn.cwiseAbs().maxCoeff();
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
 int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x, Eigen::VectorXd& F,
            double& norm, bool& stalled) {
   int it = 0;
@@ -242,22 +264,40 @@ int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x,
     const Eigen::VectorXd step = lu.info() == Eigen::Success
                                      ? Eigen::VectorXd(lu.solve(-F))
                                      : Eigen::VectorXd(Eigen::MatrixXd(jac).colPivHouseholderQr().solve(-F));
-    double alpha = 1.0;
-    bool accepted = false;
-    for (int ls = 0; ls < 30 && step.allFinite(); ++ls, alpha *= 0.5) {
-      Eigen::VectorXd xn = x + alpha * step, Fn;
-      if (shooter.residual(xn, Fn) && Fn.cwiseAbs().maxCoeff() < (1.0 - 1e-4 * alpha) * norm) {
-        x = xn;
-        F = Fn;
-        norm = Fn.cwiseAbs().maxCoeff();
-        accepted = true;
-        break;
-      }
+    Eigen::VectorXd x_lu = x, F_lu = F;
+    double norm_lu = norm;
+    const bool lu_ok = shooting_line_search(shooter, step, x_lu, F_lu, norm_lu);
+    if (lu_ok && norm_lu < 0.5 * norm) {
+      x = x_lu;
+      F = F_lu;
+      norm = norm_lu;
+      continue;
     }
-    if (!accepted) {
-      stalled = true;
-      break;
+    // The Newton step does not halve the residual: try the rank-revealing step as well, which leaves out
+    // the directions whose singular values are below 1e-12 of the largest, and keep the better of the two.
+    // Such near-null directions are those of a family of extremals that the boundary conditions pin only
+    // through an exponentially small sensitivity (stopping the tumbling racket: the phase of each flip,
+    // docs/optimal_control.md section 3); the central-difference Jacobian (relative error ~1e-8) cannot
+    // resolve them, and the full step along them is noise that throws the iterate out of the linear range.
+    Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(jac), Eigen::ComputeThinU | Eigen::ComputeThinV);
+    svd.setThreshold(1e-12);
+    Eigen::VectorXd x_svd = x, F_svd = F;
+    double norm_svd = norm;
+    const bool svd_ok = shooting_line_search(shooter, Eigen::VectorXd(svd.solve(-F)), x_svd, F_svd, norm_svd);
+    if (svd_ok && (!lu_ok || norm_svd < norm_lu)) {
+      x = x_svd;
+      F = F_svd;
+      norm = norm_svd;
+      continue;
     }
+    if (lu_ok) {
+      x = x_lu;
+      F = F_lu;
+      norm = norm_lu;
+      continue;
+    }
+    stalled = true;
+    break;
   }
   return it;
 }

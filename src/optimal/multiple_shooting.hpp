@@ -110,7 +110,9 @@ class Shooter {
   Mat3 J_inv_, R0_, Rf_;
 };
 
-/// Newton's method with a backtracking line search on the shooting residual, from x (F = its residual);
+/// Newton's method with a backtracking line search on the shooting residual, from x (F = its residual); where
+/// the Newton step does not halve the residual, the rank-revealing step (dense SVD, singular values below
+/// 1e-12 of the largest left out) is tried too and the better of the two is kept;
 /// stops at norm ≤ o.tolerance, after o.max_iterations, or when no step decreases the residual. Returns the
 /// iterations taken; x, F and norm are the last accepted iterate; `stalled` tells whether it stopped because
 /// no step decreased the residual.

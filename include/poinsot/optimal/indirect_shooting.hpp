@@ -26,17 +26,18 @@
 /// the guess, R = R̄ exp(j(δ)), and the attitude costate the body vector p_θ (gauge P = ½ R j(p_θ)), so that
 /// RᵀR = I holds by construction; continuity of (R, ω, p_θ, p_ω) is imposed at each node. The Jacobian is by
 /// central differences, block sparse (a node's columns re-integrate its own segment only), factorised by
-/// Eigen's SparseLU; the Newton step is damped by a backtracking line search on the residual's max norm. When
-/// Newton stalls within 100× the tolerance it is resumed with a tenfold tighter integration; a residual that
-/// then still stalls within 10× the tolerance is the round-off floor of the residual and is accepted as
-/// converged (the status says so). Norm bound, minimum time: where the direct solution's torque turns by more
-/// than 90° between consecutive saturated samples, σ passes through 0 and u = −ū σ/‖σ‖ reverses (the
-/// eigenaxis slew of a sphere at T/2). Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0,
-/// ŝ the direction of σ at the start of the arc ending there; on each arc the control is continued through σ
-/// = 0 without flipping, so the conditions are smooth. This assumes σ turns by less than 90° along an arc
-/// (exact for a sphere). Not handled: active rate bounds (state constraints; the solver reports them and does
-/// not claim optimality), singular arcs (|u_i| strictly inside its bound over an interval of the direct
-/// solution).
+/// Eigen's SparseLU; the Newton step is damped by a backtracking line search on the residual's max norm
+/// (where it does not halve the residual, a rank-revealing step, singular values below 1e-12 of the largest
+/// left out, is tried beside it and the better one kept). When Newton stalls within 100× the tolerance it is
+/// resumed with a tenfold tighter integration; a residual that then still stalls within 10× the tolerance is
+/// the round-off floor of the residual and is accepted as converged (the status says so). Norm bound, minimum
+/// time: where the direct solution's torque turns by more than 90° between consecutive saturated samples, σ
+/// passes through 0 and u = −ū σ/‖σ‖ reverses (the eigenaxis slew of a sphere at T/2). Each such reversal
+/// time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of σ at the start of the arc ending
+/// there; on each arc the control is continued through σ = 0 without flipping, so the conditions are smooth.
+/// This assumes σ turns by less than 90° along an arc (exact for a sphere). Not handled: active rate bounds
+/// (state constraints; the solver reports them and does not claim optimality), singular arcs (|u_i| strictly
+/// inside its bound over an interval of the direct solution).
 #include <string>
 #include <vector>
 

@@ -17,10 +17,11 @@ namespace poinsot::optimal {
 struct VerificationTolerances {
   double hamiltonian = 1e-8;  ///< max |H − H̄| (and |H̄| for free T): shooting converged to 1e-12, RKF78 1e-13
   double control = 1e-9;  ///< H(u) − min H over the admissible set, relative to max ‖σ‖‖u*‖ (solution)
-  double costate = 1e-9;                      ///< drift of the space attitude costate R p_θ, relative
-  double orthogonality = 1e-10;               ///< ‖RᵀR − I‖_F along the indirect solution
-  double resimulated_attitude = 1e-9;         ///< rad, bang-bang controls (exact switch times)
-  double resimulated_attitude_smooth = 1e-6;  ///< rad, smooth controls replayed piecewise-linearly
+  double costate = 1e-9;               ///< drift of the space attitude costate R p_θ, relative
+  double orthogonality = 1e-10;        ///< ‖RᵀR − I‖_F along the indirect solution
+  double resimulated_attitude = 1e-9;  ///< rad, bang-bang controls (exact switch times)
+  double resimulated_attitude_smooth =
+      1e-6;  ///< rad, smooth controls replayed from their samples (local cubic)
   /// Relative difference of the costs: the direct mesh blurs the switches (6.5e-5 for Betts at a mesh error
   /// of 1e-5), while another extremal (the eigenaxis manoeuvre: 20 % for Betts) is far above it.
   double direct_indirect = 1e-3;
