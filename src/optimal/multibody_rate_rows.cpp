@@ -3,12 +3,12 @@
 
 namespace poinsot::optimal::detail {
 
-QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem) {
+QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem, const MultibodyMinimalModel& model) {
   QuadraticFunctions out;
-  const int n = problem.system.body_count();
   for (const RateBound& b : problem.rate_bounds) {
     const int row = out.add_row();
-    out.add_linear(row, n + problem.system.joints()[static_cast<std::size_t>(b.joint)].body_a, 1.0);
+    out.add_linear(
+        row, model.layout().rate(problem.system.joints()[static_cast<std::size_t>(b.joint)].body_a), 1.0);
   }
   out.finish();
   return out;

@@ -10,14 +10,15 @@
 ///
 /// In rotation-matrix coordinates the rows of the problem's no-twist conditions (NoTwist: s·vee(M − Mᵀ),
 /// M = Cᵀ R_aᵀ R_b, bilinear in R_a and R_b) follow the rate rows, one per condition, held at 0.
+#include "multibody_minimal_model.hpp"
 #include "multibody_rotation_model.hpp"
 #include "poinsot/optimal/multibody_problem.hpp"
 #include "point_functions.hpp"
 
 namespace poinsot::optimal::detail {
 
-/// Minimal coordinates: w = (θ, θ̇, θ̈, u) with one angle per body (multibody_minimal_model.hpp).
-QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem);
+/// Minimal coordinates: θ̇_i where the model's layout puts it (multibody_minimal_model.hpp).
+QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem, const MultibodyMinimalModel& model);
 QuadraticFunctions rotation_rate_rows(const MultibodyProblem& problem, const MultibodyRotationModel& model);
 
 }  // namespace poinsot::optimal::detail
