@@ -110,6 +110,17 @@ TEST(HermiteSimpsonDae, MinimalModelDerivativesAreExact) {
   check_derivatives(nlp, 11);
 }
 
+TEST(HermiteSimpsonDae, FloatingBaseMinimalModelDerivativesAreExact) {
+  // The base's quaternion (of any norm: R(e/|e|)), its angular velocity and the centre of mass eliminated.
+  const MultibodyProblem p = testing::offset_reaction_wheel();
+  const MultibodyMinimalModel model(p);
+  ASSERT_TRUE(model.layout().floating);
+  const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
+  const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
+  const HermiteSimpsonDae nlp(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(3));
+  check_derivatives(nlp, 29);
+}
+
 TEST(HermiteSimpsonDae, FreeFinalTimeDerivativesAreExact) {
   // T is the last variable: its Jacobian column (the defects' f-terms / T) and its Hessian row (the f-terms'
   // second derivatives / T, the objective's 2εŵu) against the same central differences.
