@@ -3,7 +3,7 @@
 /// The hinge rates q̇ of a problem's rate bounds (multibody_problem.hpp, RateBound) as functions of one
 /// collocation point's variables, one row per bound, for PathInequalityNlp:
 ///
-/// - minimal coordinates: q̇ = θ̇_i, the rate of the link i hung from the hinge (linear);
+/// - minimal coordinates: q̇ = ±θ̇_i, the rate of the link i hung from the hinge (linear);
 /// - rotation-matrix coordinates: q̇ = n_a·ω_a − n_b·ω_b with ω = vee(½(M − Mᵀ)), M = RᵀV (= j(ω) where the
 ///   point's rows hold RᵀR = I and RᵀV + VᵀR = 0), and n_a, n_b the hinge axis in each body's frame (R_a n_a
 ///   = R_b n_b on the joint): bilinear in R and V, so the rows keep the transcription's degree ≤ 2.
@@ -17,7 +17,7 @@
 
 namespace poinsot::optimal::detail {
 
-/// Minimal coordinates: θ̇_i where the model's layout puts it (multibody_minimal_model.hpp).
+/// Minimal coordinates: ±θ̇ of the joint's higher-indexed body (multibody_minimal_model.hpp).
 QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem, const MultibodyMinimalModel& model);
 QuadraticFunctions rotation_rate_rows(const MultibodyProblem& problem, const MultibodyRotationModel& model);
 

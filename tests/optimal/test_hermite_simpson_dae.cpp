@@ -114,7 +114,7 @@ TEST(HermiteSimpsonDae, FloatingBaseMinimalModelDerivativesAreExact) {
   // The base's quaternion (of any norm: R(e/|e|)), its angular velocity and the centre of mass eliminated.
   const MultibodyProblem p = testing::offset_reaction_wheel();
   const MultibodyMinimalModel model(p);
-  ASSERT_TRUE(model.layout().floating);
+  ASSERT_TRUE(model.tree().floating);
   const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
   const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
   const HermiteSimpsonDae nlp(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(3));

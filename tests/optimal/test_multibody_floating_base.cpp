@@ -27,9 +27,10 @@ MultibodyProblem tumbling_offset_wheel() {
   const detail::MultibodyMinimalModel model(p);
   Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
   w.head<4>() = Eigen::Vector4d(0.9, 0.2, -0.3, 0.25).normalized();
-  w(model.layout().angle(1)) = 0.7;
-  w.segment<3>(model.layout().omega()) = Vec3(0.3, -0.2, 0.5);
-  w(model.layout().rate(1)) = 2.0;
+  const detail::MinimalTree& tree = model.tree();
+  w(tree.links[1].q) = 0.7;
+  w.segment<3>(tree.positions) = Vec3(0.3, -0.2, 0.5);  // ω₀
+  w(tree.links[1].v) = 2.0;
   p.initial_state = model.state_of(w.data(), 0.0);
   return p;
 }
