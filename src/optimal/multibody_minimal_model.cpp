@@ -109,7 +109,7 @@ void minimal_inverse_dynamics_rows(const MinimalTree& tree, const S* w, S* out) 
       f[p] += f[iu];
       couple[p] += couple[iu] + (R[p] * L.B.cast<S>()).cross(f[iu]);
     }
-    if (L.ball) {
+    if (L.ball) {  // body i's frame: the generalised force dual to ν_i
       V3 c = couple[iu];
       if (L.motor >= 0) c -= vec3(L.motor) * S(L.motor_sign);
       const V3 body = R[iu].transpose() * c;
@@ -143,6 +143,12 @@ class MinimalInverseDynamicsRows final : public PointFunctions {
     for (int i = 0; i < dense; ++i)
       for (int j = 0; j <= i; ++j)
         hess_.push_back({i, j});
+    // A ball's row R_iᵀ τ is bilinear in its motor's torque and the positions.
+    for (const MinimalTree::Link& L : tree_.links)
+      if (L.ball && L.motor >= 0)
+        for (int k = 0; k < 3; ++k)
+          for (int j = 0; j < tree_.positions; ++j)
+            hess_.push_back({L.motor + k, j});
   }
   int rows() const override { return tree_.rows; }
   void values(const double* w, double* out) const override {

@@ -31,7 +31,7 @@
 ///     f_i = m_i (a_i − g) + Σ_c f_c,   n_i = R_i (J_i ω̇_i + ω_i × J_i ω_i) − (R_i A_i) × f_i + Σ_c (n_c +
 ///     (R_i B_c) × f_c),
 ///     hinge: (R_i n_i)·n_i − s u_i = 0,   ball: R_iᵀ(n_i − s τ_i) = 0   (s = ±1: body i is the joint's
-///     body_a or body_b),
+///     body_a or body_b; the rows are the generalised forces dual to ν, so M is symmetric),
 ///
 /// with u_i the hinge's motor torque and τ_i the ball's (space frame; 0 when unactuated). A floating base
 /// adds three rows first, R₀ᵀ n₀ = 0: the rate of change of the total angular momentum (the accelerations
