@@ -63,7 +63,8 @@ TEST(MultibodyFloatingBase, MassMatrixIsTheKineticEnergys) {
 
 /// The final state of the model's forward dynamics integrated by RK4 with `steps` steps over the optimum's
 /// time span, the controls held at their value at each step's midpoint (as replay_controls holds them).
-multibody::State integrate_minimal(const MultibodyProblem& p, const MultibodyOptimum& controls, int steps) {
+multibody::State integrate_floating_base(const MultibodyProblem& p, const MultibodyOptimum& controls,
+                                         int steps) {
   const detail::MultibodyMinimalModel model(p);
   Eigen::VectorXd y = model.state_vector(p.initial_state);
   const double dt = controls.time.back() / steps;
@@ -80,7 +81,7 @@ multibody::State integrate_minimal(const MultibodyProblem& p, const MultibodyOpt
   return model.state_of(w.data(), controls.time.back());
 }
 
-double state_distance(const multibody::State& a, const multibody::State& b) {
+double floating_base_state_distance(const multibody::State& a, const multibody::State& b) {
   double d = 0.0;
   for (std::size_t i = 0; i < a.bodies.size(); ++i) {
     d = std::max({d, so3::angle_between(a.bodies[i].R_space_body, b.bodies[i].R_space_body),
@@ -108,14 +109,14 @@ TEST(MultibodyFloatingBase, ForwardDynamicsIsTheProjectedRk4s) {
   double previous = 0.0;
   for (const int per_interval : {20, 40}) {
     const MultibodyReplay replay = replay_controls(p, controls, per_interval);
-    const multibody::State mine = integrate_minimal(p, controls, p.intervals * per_interval);
-    const double d = state_distance(replay.final_state, mine);
+    const multibody::State mine = integrate_floating_base(p, controls, p.intervals * per_interval);
+    const double d = floating_base_state_distance(replay.final_state, mine);
     if (previous > 0.0) {
       EXPECT_GT(previous / d, 12.0);
     }
     previous = d;
     EXPECT_LT(d, 1e-5);
-    EXPECT_GT(state_distance(p.initial_state, mine), 1.0);  // the motion is no small one
+    EXPECT_GT(floating_base_state_distance(p.initial_state, mine), 1.0);  // the motion is no small one
     // The minimal model's motion keeps the joint and P by construction; H is conserved by its dynamics.
     EXPECT_LT(
         (multibody::angular_momentum(p.system, mine) - multibody::angular_momentum(p.system, p.initial_state))
@@ -144,6 +145,9 @@ TEST(MultibodyFloatingBase, ReactionWheelUnboundedIsTheSingleAxisClosedForm) {
 }
 
 TEST(MultibodyFloatingBase, BoundedReactionWheelConvergesToTheSingleBody) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "1.9 s in release; the unbounded slew above solves the same model under the sanitizers";
+#endif
   // |u| ≤ 0.1 N·m (active: the unbounded peak is 0.12 N·m) from the naive guess (the interpolated
   // quaternions are not unit: the projection R(e/|e|) makes them attitudes). The single body of the
   // effective inertia J_bus + diag(0.5, 0.5, 0) (direct_collocation.hpp, mesh refined to 1e-9; docs/
