@@ -62,8 +62,8 @@ struct MinimalTree {
     int v = 0;       ///< first velocity index in w (θ̇, or ν's 3; its acceleration at v + velocities)
     int row = 0;     ///< first path row (1 for a hinge, 3 for a ball)
     int motor = -1;  ///< first control index in w, or −1
-    double motor_sign =
-        1.0;  ///< +1 when body i is the joint's body_a (the motor's torque acts +u on it), else −1
+    /// +1 when body i is the joint's body_a (the motor's torque acts +u on it), else −1.
+    double motor_sign = 1.0;
   };
   std::vector<Link> links;  ///< one per body, in body order (links[0] the base when floating)
   Vec3 gravity = Vec3::Zero();
