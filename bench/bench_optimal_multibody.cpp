@@ -11,12 +11,16 @@
 //   take many minutes);
 // - BM_ReactionWheel: the spacecraft with a reaction wheel of tests/optimal/multibody_test_problems.hpp, the
 //   bus turned by 1 rad in 10 s with |u| ≤ 0.1 N·m (the unbounded optimum's peak is 0.12 N·m: the bound is
-//   active), in rotation-matrix coordinates on N = 8, 16 and 32, against the single-body optimum of the same
-//   effective inertia (direct_collocation.hpp, mesh refined to 1e-9), each re-simulated.
+//   active), in both coordinates on N = 8, 16 and 32, against the single-body optimum of the same effective
+//   inertia (direct_collocation.hpp, mesh refined to 1e-9, solved once outside the timed loop), each from the
+//   naive guess and re-simulated.
 // - BM_FallingCat: the falling cat of the tests turned over (by π about its spine in 1 s), with and without
 //   the no-twist condition, on N = 6 and 12, each from the naive guess (at most 500 Ipopt iterations), the
 //   last iterate re-simulated with 256 steps per interval (the refined, verified optima: the example
 //   example_falling_cat).
+// - BM_FallingCatMinimal: the same half turn in minimal coordinates (the front half a floating base, the
+//   waist a relative quaternion), from the naive guess or from the cat turned rigidly about its spine
+//   (falling_cat_rigid_turn), N = 6, 12, 24, at most 500 Ipopt iterations, re-simulated.
 // Run: build/release/bench/bench_optimal_multibody --benchmark_counters_tabular=true
 //   [--benchmark_filter='Random|Fine.*N:32|Wheel|Cat']
 #include <benchmark/benchmark.h>
@@ -124,13 +128,9 @@ BENCHMARK(BM_ArmFineMesh)
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 
-void BM_ReactionWheel(benchmark::State& state) {
-  const int intervals = static_cast<int>(state.range(0));
-  const MultibodyProblem p = testing::reaction_wheel(1.0, 10.0, 0.1, intervals);
-  MultibodyOptimum o;
-  DirectSolution single;
-  for (auto _ : state) {
-    o = solve_multibody(p, MultibodyOptions{});
+/// The single-body optimum of the wheel's effective inertia (solved once, outside the timed loops).
+const DirectSolution& reaction_wheel_single_body() {
+  static const DirectSolution single = [] {
     ReorientationProblem q;
     q.inertia_body = testing::reaction_wheel_effective_inertia();
     q.torque_max = Vec3::Constant(0.1);
@@ -139,8 +139,20 @@ void BM_ReactionWheel(benchmark::State& state) {
     q.final_time = 10.0;
     CollocationOptions options;
     options.mesh_tolerance = 1e-9;
-    single = solve_direct(q, options);
-  }
+    return solve_direct(q, options);
+  }();
+  return single;
+}
+
+void BM_ReactionWheel(benchmark::State& state) {
+  const int intervals = static_cast<int>(state.range(1));
+  const MultibodyProblem p = testing::reaction_wheel(1.0, 10.0, 0.1, intervals);
+  MultibodyOptions options;
+  options.coordinates = coordinates(state);
+  MultibodyOptimum o;
+  for (auto _ : state)
+    o = solve_multibody(p, options);
+  const DirectSolution& single = reaction_wheel_single_body();
   if (!o.converged || !single.converged) {
     state.SkipWithError(o.converged ? single.status.c_str() : o.status.c_str());
     return;
@@ -150,13 +162,19 @@ void BM_ReactionWheel(benchmark::State& state) {
   state.counters["wall_s"] = o.wall_seconds;
   state.counters["relative_to_single_body"] = o.cost / single.cost - 1.0;
   std::printf(
-      "reaction wheel N = %d: cost %.12g (%d iterations, %.1f s), single body %.12g (%zu nodes), relative "
-      "%.3g; replay: attitude %.3g rad, rates %.3g rad/s, joint gap %.3g m, momentum change %.3g\n",
-      intervals, o.cost, o.nlp_iterations, o.wall_seconds, single.cost, single.node_time.size(),
-      o.cost / single.cost - 1.0, replay.attitude_error, replay.velocity_error, replay.max_joint_gap,
-      replay.max_momentum_change);
+      "reaction wheel, coordinates %s, N = %d: cost %.12g (%d iterations, %.2f s wall), single body %.12g "
+      "(%zu "
+      "nodes), relative %.3g; replay: attitude %.3g rad, rates %.3g rad/s, joint gap %.3g m, momentum change "
+      "%.3g\n",
+      state.range(0) == 0 ? "rotation_matrix" : "minimal", intervals, o.cost, o.nlp_iterations,
+      o.wall_seconds, single.cost, single.node_time.size(), o.cost / single.cost - 1.0, replay.attitude_error,
+      replay.velocity_error, replay.max_joint_gap, replay.max_momentum_change);
 }
-BENCHMARK(BM_ReactionWheel)->Arg(8)->Arg(16)->Arg(32)->ArgName("N")->Iterations(1)->Unit(benchmark::kSecond);
+BENCHMARK(BM_ReactionWheel)
+    ->ArgsProduct({{0, 1}, {8, 16, 32}})
+    ->ArgNames({"minimal", "N"})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
 
 void BM_FallingCat(benchmark::State& state) {
   const bool no_twist = state.range(0) == 1;
@@ -184,6 +202,35 @@ void BM_FallingCat(benchmark::State& state) {
 BENCHMARK(BM_FallingCat)
     ->ArgsProduct({{0, 1}, {6, 12}})
     ->ArgNames({"no_twist", "N"})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+void BM_FallingCatMinimal(benchmark::State& state) {
+  const bool rigid = state.range(0) == 1;
+  const int intervals = static_cast<int>(state.range(1));
+  const MultibodyProblem p = testing::falling_cat(0.5, std::numbers::pi, 1.0, intervals);
+  const MultibodyOptimum guess = testing::falling_cat_rigid_turn(0.5, std::numbers::pi, 1.0, intervals);
+  MultibodyOptions options;
+  options.coordinates = MultibodyCoordinates::minimal;
+  options.max_nlp_iterations = 500;
+  if (rigid) options.warm_start = &guess;
+  MultibodyOptimum o;
+  for (auto _ : state)
+    o = solve_multibody(p, options);
+  const MultibodyReplay replay = replay_controls(p, o, 128);
+  state.counters["converged"] = o.converged ? 1.0 : 0.0;
+  state.counters["iterations"] = o.nlp_iterations;
+  state.counters["wall_s"] = o.wall_seconds;
+  std::printf(
+      "falling cat half turn, minimal coordinates, N = %d, from the %s: %s, cost %.10g (%d iterations, %.1f "
+      "s); "
+      "replay: attitude %.3g rad, joint gap %.3g m, momentum change %.3g\n",
+      intervals, rigid ? "rigid turn" : "naive guess", o.status.c_str(), o.cost, o.nlp_iterations,
+      o.wall_seconds, replay.attitude_error, replay.max_joint_gap, replay.max_momentum_change);
+}
+BENCHMARK(BM_FallingCatMinimal)
+    ->ArgsProduct({{0, 1}, {6, 12, 24}})
+    ->ArgNames({"rigid_turn", "N"})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
 

@@ -173,12 +173,18 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     const detail::MultibodyMinimalModel model(problem);
     const Eigen::VectorXd y0 = model.state_vector(problem.initial_state);
     const Eigen::VectorXd yf = model.state_vector(problem.final_state);
-    const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
+    // The local coordinates at the target: the identity, but a floating base's quaternion has three.
+    const Eigen::MatrixXd F = model.local_coordinates(yf);
     const Eigen::MatrixXd rows = detail::model_final_rows(
-        problem, I, I, [&](const Eigen::VectorXd& y) { return model.state_of(y.data(), 0.0); },
+        problem, F, F.transpose(),
+        [&](const Eigen::VectorXd& y) {
+          Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
+          w.head(y.size()) = y;
+          return model.state_of(w.data(), 0.0);
+        },
         [&](const multibody::State& s) { return model.state_vector(s); });
     MultibodyOptimum out = solve_model(
-        problem, model, y0, yf, rows, detail::minimal_rate_rows(problem), options,
+        problem, model, y0, yf, rows, detail::minimal_rate_rows(problem, model), options,
         [&](const double* w, double t) { return model.state_of(w, t); },
         [&](const multibody::State& s) { return model.state_vector(s); }, start);
     // No multiplier is a variable here: the reactions and Λ of the continuous equations at each point's

@@ -1,14 +1,18 @@
 // The hinge rates of the rate bounds as point functions (multibody_rate_rows.hpp).
 #include "multibody_rate_rows.hpp"
 
+#include <algorithm>
+
 namespace poinsot::optimal::detail {
 
-QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem) {
+QuadraticFunctions minimal_rate_rows(const MultibodyProblem& problem, const MultibodyMinimalModel& model) {
   QuadraticFunctions out;
-  const int n = problem.system.body_count();
   for (const RateBound& b : problem.rate_bounds) {
-    const int row = out.add_row();
-    out.add_linear(row, n + problem.system.joints()[static_cast<std::size_t>(b.joint)].body_a, 1.0);
+    // θ̇ of the joint's higher-indexed body, which is −q̇ when that is body_b.
+    const multibody::Joint& j = problem.system.joints()[static_cast<std::size_t>(b.joint)];
+    const MinimalTree::Link& child =
+        model.tree().links[static_cast<std::size_t>(std::max(j.body_a, j.body_b))];
+    out.add_linear(out.add_row(), child.v, child.motor_sign);
   }
   out.finish();
   return out;

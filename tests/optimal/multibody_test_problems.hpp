@@ -115,6 +115,27 @@ inline Mat3 reaction_wheel_effective_inertia() {
   return Vec3(3.5, 4.5, 2.0).asDiagonal();
 }
 
+/// The bus and the wheel of reaction_wheel on a tilted hinge off both centres of mass: the wheel's axis
+/// (0.6, 0, 0.8) passes through the bus point (0.4, 0.2, 0.1) and 0.15 m from the wheel's centre, so the
+/// centres move as the bodies turn (the translation's elimination matters). At rest with R = I, free
+/// floating, no gravity; one hinge motor, |u| ≤ 1 N·m; T = 4 s on 10 intervals.
+inline MultibodyProblem offset_reaction_wheel() {
+  MultibodyProblem p;
+  auto& sys = p.system;
+  const int bus = sys.add_body_from_inertia("bus", 10.0, Vec3(3.0, 4.0, 2.0).asDiagonal());
+  const int wheel = sys.add_body_from_inertia("wheel", 5.0, Vec3(0.5, 0.5, 0.9).asDiagonal());
+  const Vec3 axis(0.6, 0.0, 0.8);
+  const Vec3 A = 0.15 * axis, B(0.4, 0.2, 0.1);
+  const int hinge = sys.add_hinge("axle", wheel, A, axis, bus, B, axis);
+  p.initial_state.bodies.resize(2);
+  p.initial_state.bodies[1].x_space = B - A;
+  p.final_state = p.initial_state;
+  p.final_time = 4.0;
+  p.intervals = 10;
+  p.actuators = {{ActuatorKind::hinge_torque, hinge, 1.0}};
+  return p;
+}
+
 /// The falling cat (Kane & Scher 1969): two identical axisymmetric halves (cylinders of 1 kg, 1 m, radius
 /// 0.2 m along body x) joined at their +x ends by a ball joint with three motors (space-frame torques, |τ_i|
 /// ≤ 100 N·m), free floating, no gravity, at rest with zero angular momentum. Bent into a V in the x–z plane,

@@ -110,6 +110,28 @@ TEST(HermiteSimpsonDae, MinimalModelDerivativesAreExact) {
   check_derivatives(nlp, 11);
 }
 
+TEST(HermiteSimpsonDae, FloatingBaseMinimalModelDerivativesAreExact) {
+  // The base's quaternion (of any norm: R(e/|e|)), its angular velocity and the centre of mass eliminated.
+  const MultibodyProblem p = testing::offset_reaction_wheel();
+  const MultibodyMinimalModel model(p);
+  ASSERT_TRUE(model.tree().floating);
+  const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
+  const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
+  const HermiteSimpsonDae nlp(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(3));
+  check_derivatives(nlp, 29);
+}
+
+TEST(HermiteSimpsonDae, BallJointMinimalModelDerivativesAreExact) {
+  // The falling cat: a floating base and a ball joint (a relative quaternion) with three motors.
+  const MultibodyProblem p = testing::falling_cat(0.5, 3.0, 1.0, 2);
+  const MultibodyMinimalModel model(p);
+  ASSERT_TRUE(model.tree().links[1].ball);
+  const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
+  const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
+  const HermiteSimpsonDae nlp(model, 2, 1.0, y0, rows, Eigen::VectorXd::Zero(3));
+  check_derivatives(nlp, 31);
+}
+
 TEST(HermiteSimpsonDae, FreeFinalTimeDerivativesAreExact) {
   // T is the last variable: its Jacobian column (the defects' f-terms / T) and its Hessian row (the f-terms'
   // second derivatives / T, the objective's 2εŵu) against the same central differences.

@@ -27,7 +27,7 @@ TEST(MultibodyRateBounds, RowsAreTheHingeRatesInBothCoordinates) {
 
   const detail::MultibodyMinimalModel minimal(p);
   const detail::MultibodyRotationModel rotation(p);
-  const detail::QuadraticFunctions qm = detail::minimal_rate_rows(p);
+  const detail::QuadraticFunctions qm = detail::minimal_rate_rows(p, minimal);
   const detail::QuadraticFunctions qr = detail::rotation_rate_rows(p, rotation);
   Eigen::VectorXd wm = Eigen::VectorXd::Zero(minimal.point_size());
   wm.head(minimal.state_size()) = minimal.state_vector(s);

@@ -12,7 +12,7 @@
 ///     final_time = 1.5                   # s: fixed (minimum_energy) or the guess of T (minimum_time)
 ///     final_time_bounds = [0.1, 10]      # s, minimum_time only: T_min ≤ T ≤ T_max
 ///     energy_weight = 1e-3               # ε > 0, s/(N²·m²·s), minimum_time_regularised only
-///     coordinates = "rotation_matrix"    # or "minimal" (a tree of hinges rooted at the world)
+///     coordinates = "rotation_matrix"    # or "minimal" (hinges and balls, fixed or floating base)
 ///     intervals = 20                     # Hermite–Simpson intervals, 2 … 2000
 ///     nlp_tolerance = 1e-10              # optional: Ipopt's tol
 ///     max_nlp_iterations = 500           # optional, 1 … 100000

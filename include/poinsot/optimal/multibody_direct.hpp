@@ -9,9 +9,11 @@
 ///   projection multipliers of the stabilised index-2 form as NLP variables. Every equation is a polynomial
 ///   of degree ≤ 2 (linear in the accelerations and the multipliers, quadratic constraints), so the
 ///   derivatives are exact by construction (docs/optimal_control.md, "Multibody systems").
-/// - `minimal`: joint angles θ of a tree of hinges rooted at the world, with the inverse dynamics of the
-///   recursive Newton–Euler algorithm as the path equation RNEA(θ, θ̇, θ̈) = τ (no mass matrix is inverted),
-///   derivatives exact by forward automatic differentiation of second order.
+/// - `minimal`: hinge angles θ and ball-joint quaternions of a tree rooted at the world or at a floating base
+///   (its attitude quaternion and angular velocity, the translation eliminated by the centre of mass at
+///   rest), with the inverse dynamics of the recursive Newton–Euler algorithm as the path equation M(q) ν̇ +
+///   c(q, ν) = B u (no mass matrix is inverted), derivatives exact by forward automatic differentiation of
+///   second order.
 ///
 /// Both minimise ∫ Σ u_i² dt at fixed T, or T + ε ∫ Σ u_i² dt with T free (the problem's objective;
 /// hermite_simpson_dae.hpp scales time as t = T τ), from the full initial state to the final state, on N
@@ -77,8 +79,10 @@ struct MultibodyOptimum {
 
 /// Throws InvalidInput for an invalid problem (validate), for a warm start whose points do not span [0, T]
 /// or whose states have another number of bodies, and for `minimal` coordinates unless the system is
-/// a tree of hinges rooted at the world (each body the body_a of exactly one hinge, its body_b the world or
-/// a body of lower index) with only hinge-motor actuators and no constant loads besides gravity.
+/// a tree of hinges and ball joints (each body the higher-indexed body of exactly one joint, its other body
+/// the world or a body of lower index, or body 0 a floating base in no joint to the world, then with no
+/// gravity and zero initial linear momentum) with only hinge and ball motors, no constant loads besides
+/// gravity and no no-twist condition.
 MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options = {});
 
 /// The control at time t (s): the quadratic through the node, midpoint and node values of its interval.
