@@ -51,6 +51,12 @@ struct MultibodyOptions {
   /// without angular velocity, which the unbounded form allows at no cost), and a result whose
   /// stabilisation_step exceeds c/2 is reported as not converged (the bounds would shape it). 0: unbounded.
   double stabilisation_step = 0.0;
+  /// MUMPS' scaling of Ipopt's KKT matrix (Ipopt's option mumps_scaling): 0, none beyond Ipopt's own NLP
+  /// scaling; 77, Ipopt's default, lets MUMPS choose, which on the rotation-matrix transcription of the
+  /// two-link arm triples the Ipopt iterations and doubles the factorisations per iteration
+  /// (docs/optimal_control.md, "The cost of the R-coordinate transcription"). Kept as an option for that
+  /// comparison.
+  int mumps_scaling = 0;
 };
 
 struct MultibodyOptimum {
