@@ -7,8 +7,13 @@
 //   interpolation of every state coordinate, all else zero), at most 200 Ipopt iterations: the fraction
 //   solved, the mean and median Ipopt iterations of the solved ones, the mean wall time per problem;
 // - BM_ArmFineMesh: the arm of the tests, (Δ1, Δ2) = (1, 0.5) rad, on N = 8 to 128 (minimal coordinates to
-//   256): the costs, printed in full, for the measured convergence order (the rotation-matrix runs at N ≥ 64
-//   take many minutes);
+//   256), each from the naive guess: the costs, printed in full (the rotation-matrix runs at N ≥ 64 take
+//   minutes);
+// - BM_ArmKktScaling: the arm in R-coordinates on N = 8, 16, 32 with MUMPS' automatic scaling (Ipopt's
+//   default) and without (MultibodyOptions::mumps_scaling = 0, the default): iterations, CPU time;
+// - BM_ArmFormulationsAgree: the arm in both coordinates on N = 16, 32, …, up to 64 or 512, each mesh
+//   warm-started from the previous one: the costs and the difference of the two formulations' costs and
+//   trajectories (N = 512: minutes of CPU);
 // - BM_ReactionWheel: the spacecraft with a reaction wheel of tests/optimal/multibody_test_problems.hpp, the
 //   bus turned by 1 rad in 10 s with |u| ≤ 0.1 N·m (the unbounded optimum's peak is 0.12 N·m: the bound is
 //   active), in rotation-matrix coordinates on N = 8, 16 and 32, against the single-body optimum of the same
@@ -18,7 +23,7 @@
 //   last iterate re-simulated with 256 steps per interval (the refined, verified optima: the example
 //   example_falling_cat).
 // Run: build/release/bench/bench_optimal_multibody --benchmark_counters_tabular=true
-//   [--benchmark_filter='Random|Fine.*N:32|Wheel|Cat']
+//   [--benchmark_filter='Random|Fine.*N:32|KktScaling|FormulationsAgree/N:512|Wheel|Cat']
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
