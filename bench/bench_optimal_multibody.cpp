@@ -101,6 +101,11 @@ void BM_ArmRandomBoundaryConditions(benchmark::State& state) {
         ++solved;
         iterations.push_back(o.nlp_iterations);
         cost_sum += o.cost;
+      } else {
+        std::printf(
+            "arm random boundary conditions: problem %d (%.3f, %.3f) -> (%.3f, %.3f) rad: %s after %d "
+            "iterations\n",
+            k, a1, a2, b1, b2, o.status.c_str(), o.nlp_iterations);
       }
     }
   }
