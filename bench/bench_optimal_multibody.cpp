@@ -10,10 +10,10 @@
 //   256), each from the naive guess: the costs, printed in full (the rotation-matrix runs at N ≥ 64 take
 //   minutes);
 // - BM_ArmKktScaling: the arm in R-coordinates on N = 8, 16, 32 with MUMPS' automatic scaling (Ipopt's
-//   default) and without (MultibodyOptions::mumps_scaling = 0, the default): iterations, CPU time;
+//   default) and without (MultibodyOptions::mumps_scaling = 0): iterations, CPU time;
 // - BM_ArmFormulationsAgree: the arm in both coordinates on N = 16, 32, …, up to 64 or 512, each mesh
-//   warm-started from the previous one: the costs and the difference of the two formulations' costs and
-//   trajectories (N = 512: minutes of CPU);
+//   warm-started from the previous one, without MUMPS' scaling: the costs and the difference of the two
+//   formulations' costs and trajectories (N = 512: minutes of CPU);
 // - BM_ReactionWheel: the spacecraft with a reaction wheel of tests/optimal/multibody_test_problems.hpp, the
 //   bus turned by 1 rad in 10 s with |u| ≤ 0.1 N·m (the unbounded optimum's peak is 0.12 N·m: the bound is
 //   active), in rotation-matrix coordinates on N = 8, 16 and 32, against the single-body optimum of the same
@@ -159,10 +159,9 @@ BENCHMARK(BM_ArmFineMesh)
     ->Unit(benchmark::kSecond);
 
 // The arm of the tests in R-coordinates from the naive guess, with MUMPS' scaling of the KKT matrix as
-// Ipopt chooses it by default (range(0) = 77) and as the multibody transcriptions use it (0,
-// MultibodyOptions::mumps_scaling), on N = range(1) intervals: Ipopt iterations and the process CPU time per
-// iteration. Their ratio is the figure of docs/optimal_control.md ("The cost of the R-coordinate
-// transcription").
+// Ipopt chooses it by default (range(0) = 77, MultibodyOptions' default) and without it (0), on N = range(1)
+// intervals: Ipopt iterations and the process CPU time per iteration. Their ratio is the figure of
+// docs/optimal_control.md ("The cost of the R-coordinate transcription").
 void BM_ArmKktScaling(benchmark::State& state) {
   MultibodyOptions options;
   options.mumps_scaling = static_cast<int>(state.range(0));
@@ -206,6 +205,7 @@ void BM_ArmFormulationsAgree(benchmark::State& state) {
       for (int c = 0; c < 2; ++c) {
         MultibodyOptions options;
         options.coordinates = c == 0 ? MultibodyCoordinates::rotation_matrix : MultibodyCoordinates::minimal;
+        options.mumps_scaling = 0;  // 25 iterations instead of 61 at N = 32 (BM_ArmKktScaling)
         options.warm_start = n == 16 ? nullptr : &previous[c];
         const std::clock_t c0 = std::clock();
         o[c] = solve_multibody(arm(down, 0.0, down + 1.0, 0.5, 1.5, n), options);

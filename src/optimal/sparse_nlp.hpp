@@ -36,8 +36,7 @@ struct IpoptSettings {
   /// bound_relax_factor = 0: the bounds are met exactly instead of Ipopt's default relaxation by 1e-8.
   bool exact_bounds = false;
   /// MUMPS' scaling of the KKT matrix (Ipopt's mumps_scaling): 77, Ipopt's default, lets MUMPS choose; 0
-  /// none beyond Ipopt's own NLP scaling (MultibodyOptions::mumps_scaling says why the multibody
-  /// transcriptions use it).
+  /// none beyond Ipopt's own NLP scaling (MultibodyOptions::mumps_scaling).
   int mumps_scaling = 77;
 };
 
