@@ -193,7 +193,8 @@ BENCHMARK(BM_ArmKktScaling)
 // warm_start), up to N = range(0): per mesh and coordinates the cost (printed in full), Ipopt iterations and
 // the process CPU time; then the relative difference of the two costs and of the two trajectories at the
 // common collocation points: the largest angle between the two attitudes of a link (rad) and the largest
-// control difference relative to the peak control. docs/optimal_control.md, "The arm's formulations at 1e-8".
+// control difference relative to the peak control (docs/optimal_control.md, "Convergence on the arm and the
+// formulations at 1e-8").
 void BM_ArmFormulationsAgree(benchmark::State& state) {
   const int finest = static_cast<int>(state.range(0));
   const double down = -0.5 * std::numbers::pi;
