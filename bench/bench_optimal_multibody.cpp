@@ -7,8 +7,13 @@
 //   interpolation of every state coordinate, all else zero), at most 200 Ipopt iterations: the fraction
 //   solved, the mean and median Ipopt iterations of the solved ones, the mean wall time per problem;
 // - BM_ArmFineMesh: the arm of the tests, (Δ1, Δ2) = (1, 0.5) rad, on N = 8 to 128 (minimal coordinates to
-//   256): the costs, printed in full, for the measured convergence order (the rotation-matrix runs at N ≥ 64
-//   take many minutes);
+//   256), each from the naive guess: the costs, printed in full (the rotation-matrix runs at N ≥ 64 take
+//   minutes);
+// - BM_ArmKktScaling: the arm in R-coordinates on N = 8, 16, 32 with MUMPS' automatic scaling (Ipopt's
+//   default) and without (MultibodyOptions::mumps_scaling = 0): iterations, CPU time;
+// - BM_ArmFormulationsAgree: the arm in both coordinates on N = 16, 32, …, up to 64 or 512, each mesh
+//   warm-started from the previous one, without MUMPS' scaling: the costs and the difference of the two
+//   formulations' costs and trajectories (N = 512: minutes of CPU);
 // - BM_ReactionWheel: the spacecraft with a reaction wheel of tests/optimal/multibody_test_problems.hpp, the
 //   bus turned by 1 rad in 10 s with |u| ≤ 0.1 N·m (the unbounded optimum's peak is 0.12 N·m: the bound is
 //   active), in both coordinates on N = 8, 16 and 32, against the single-body optimum of the same effective
@@ -22,11 +27,13 @@
 //   waist a relative quaternion), from the naive guess or from the cat turned rigidly about its spine
 //   (falling_cat_rigid_turn), N = 6, 12, 24, at most 500 Ipopt iterations, re-simulated.
 // Run: build/release/bench/bench_optimal_multibody --benchmark_counters_tabular=true
-//   [--benchmark_filter='Random|Fine.*N:32|Wheel|Cat']
+//   [--benchmark_filter='Random|Fine.*N:32|KktScaling|FormulationsAgree/N:512|Wheel|Cat']
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <ctime>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -76,6 +83,11 @@ void BM_ArmRandomBoundaryConditions(benchmark::State& state) {
         ++solved;
         iterations.push_back(o.nlp_iterations);
         cost_sum += o.cost;
+      } else {
+        std::printf(
+            "arm random boundary conditions: problem %d (%.3f, %.3f) -> (%.3f, %.3f) rad: %s after %d "
+            "iterations\n",
+            k, a1, a2, b1, b2, o.status.c_str(), o.nlp_iterations);
       }
     }
   }
@@ -127,6 +139,91 @@ BENCHMARK(BM_ArmFineMesh)
     ->ArgNames({"minimal", "N"})
     ->Iterations(1)
     ->Unit(benchmark::kSecond);
+
+// The arm of the tests in R-coordinates from the naive guess, with MUMPS' scaling of the KKT matrix as
+// Ipopt chooses it by default (range(0) = 77, MultibodyOptions' default) and without it (0), on N = range(1)
+// intervals: Ipopt iterations and the process CPU time per iteration. Their ratio is the figure of
+// docs/optimal_control.md ("The cost of the R-coordinate transcription").
+void BM_ArmKktScaling(benchmark::State& state) {
+  MultibodyOptions options;
+  options.mumps_scaling = static_cast<int>(state.range(0));
+  const int intervals = static_cast<int>(state.range(1));
+  const double down = -0.5 * std::numbers::pi;
+  MultibodyOptimum o;
+  double cpu = 0.0;
+  for (auto _ : state) {
+    const std::clock_t c0 = std::clock();
+    o = solve_multibody(arm(down, 0.0, down + 1.0, 0.5, 1.5, intervals), options);
+    cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+  }
+  state.counters["iterations"] = o.nlp_iterations;
+  state.counters["cpu_s"] = cpu;
+  state.counters["cpu_s_per_iteration"] = cpu / std::max(o.nlp_iterations, 1);
+  if (!o.converged) state.SkipWithError(o.status.c_str());
+  std::printf("arm KKT scaling %d N = %d: %s, cost %.14g, %d iterations, %.2f s CPU (%.3f s per iteration)\n",
+              options.mumps_scaling, intervals, o.status.c_str(), o.cost, o.nlp_iterations, cpu,
+              cpu / std::max(o.nlp_iterations, 1));
+}
+BENCHMARK(BM_ArmKktScaling)
+    ->ArgsProduct({{77, 0}, {8, 16, 32}})
+    ->ArgNames({"mumps_scaling", "N"})
+    ->Iterations(1)
+    ->Unit(benchmark::kSecond);
+
+// The arm of the tests in both coordinates on a sequence of equal meshes, N = 16 from the naive guess and
+// every later mesh (2N) warm-started from the previous optimum of the same coordinates (MultibodyOptions::
+// warm_start), up to N = range(0): per mesh and coordinates the cost (printed in full), Ipopt iterations and
+// the process CPU time; then the relative difference of the two costs and of the two trajectories at the
+// common collocation points: the largest angle between the two attitudes of a link (rad) and the largest
+// control difference relative to the peak control (docs/optimal_control.md, "Convergence on the arm and the
+// formulations at 1e-8").
+void BM_ArmFormulationsAgree(benchmark::State& state) {
+  const int finest = static_cast<int>(state.range(0));
+  const double down = -0.5 * std::numbers::pi;
+  double cost_difference = 0.0;
+  for (auto _ : state) {
+    MultibodyOptimum previous[2];
+    for (int n = 16; n <= finest; n *= 2) {
+      MultibodyOptimum o[2];
+      for (int c = 0; c < 2; ++c) {
+        MultibodyOptions options;
+        options.coordinates = c == 0 ? MultibodyCoordinates::rotation_matrix : MultibodyCoordinates::minimal;
+        options.mumps_scaling = 0;  // 25 iterations instead of 61 at N = 32 (BM_ArmKktScaling)
+        options.warm_start = n == 16 ? nullptr : &previous[c];
+        const std::clock_t c0 = std::clock();
+        o[c] = solve_multibody(arm(down, 0.0, down + 1.0, 0.5, 1.5, n), options);
+        const double cpu = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+        std::printf("arm N = %d, coordinates %s: %s, cost %.14g, %d iterations, %.2f s CPU\n", n,
+                    c == 0 ? "rotation_matrix" : "minimal", o[c].status.c_str(), o[c].cost,
+                    o[c].nlp_iterations, cpu);
+        if (!o[c].converged) {
+          state.SkipWithError(o[c].status.c_str());
+          return;
+        }
+      }
+      double angle = 0.0, control = 0.0, peak = 0.0;
+      for (std::size_t p = 0; p < o[0].time.size(); ++p) {
+        for (std::size_t i = 0; i < 2; ++i) {
+          const Mat3 d =
+              o[0].states[p].bodies[i].R_space_body.transpose() * o[1].states[p].bodies[i].R_space_body;
+          angle = std::max(angle, std::acos(std::clamp(0.5 * (d.trace() - 1.0), -1.0, 1.0)));
+        }
+        control = std::max(control, (o[0].controls[p] - o[1].controls[p]).cwiseAbs().maxCoeff());
+        peak = std::max(peak, o[1].controls[p].cwiseAbs().maxCoeff());
+      }
+      cost_difference = o[0].cost / o[1].cost - 1.0;
+      std::printf(
+          "arm N = %d: R-coordinates relative to minimal: cost %.3g; trajectories: attitude %.3g rad, "
+          "control %.3g of the peak %.4g N·m\n",
+          n, cost_difference, angle, control / peak, peak);
+      std::fflush(stdout);
+      previous[0] = o[0];
+      previous[1] = o[1];
+    }
+  }
+  state.counters["relative_cost_difference"] = cost_difference;
+}
+BENCHMARK(BM_ArmFormulationsAgree)->Arg(64)->Arg(512)->ArgName("N")->Iterations(1)->Unit(benchmark::kSecond);
 
 /// The single-body optimum of the wheel's effective inertia (solved once, outside the timed loops).
 const DirectSolution& reaction_wheel_single_body() {

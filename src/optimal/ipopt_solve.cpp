@@ -132,6 +132,7 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
   app->Options()->SetStringValue("hessian_approximation", "exact");
   app->Options()->SetStringValue("mu_strategy", "adaptive");
   if (settings.exact_bounds) app->Options()->SetNumericValue("bound_relax_factor", 0.0);
+  app->Options()->SetIntegerValue("mumps_scaling", settings.mumps_scaling);
   if (app->Initialize() != Ipopt::Solve_Succeeded) throw ComputationFailed("ipopt: initialisation failed");
   Ipopt::SmartPtr<SparseNlpAdapter> adapter = new SparseNlpAdapter(nlp, start);
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 #include <fmt/format.h>
@@ -81,6 +82,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   settings.tolerance = options.nlp_tolerance;
   settings.max_iterations = options.max_nlp_iterations;
   settings.print_level = options.print_level;
+  settings.mumps_scaling = options.mumps_scaling;
   const detail::NlpSolution sol = detail::solve_with_ipopt(nlp, guess, settings);
   MultibodyOptimum out;
   out.converged = sol.solved;
@@ -168,6 +170,13 @@ void check_stabilisation(const MultibodyOptions& options, MultibodyOptimum& out)
 MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const MultibodyOptions& options) {
   validate(problem);
   if (options.warm_start != nullptr) check_warm_start(problem, *options.warm_start);
+  constexpr int kScalings[] = {-2, -1, 0, 1, 3, 4, 7, 8, 77};  // Ipopt's mumps_scaling values
+  if (std::find(std::begin(kScalings), std::end(kScalings), options.mumps_scaling) == std::end(kScalings)) {
+    throw InvalidInput(
+        fmt::format("optimal control: mumps_scaling: got {}; expected one of MUMPS' scalings -2, -1, 0, 1, "
+                    "3, 4, 7, 8 or 77",
+                    options.mumps_scaling));
+  }
   const auto start = std::chrono::steady_clock::now();
   if (options.coordinates == MultibodyCoordinates::minimal) {
     const detail::MultibodyMinimalModel model(problem);

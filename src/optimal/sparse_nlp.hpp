@@ -35,6 +35,9 @@ struct IpoptSettings {
   int print_level = 0;  ///< Ipopt's print_level (0 = silent)
   /// bound_relax_factor = 0: the bounds are met exactly instead of Ipopt's default relaxation by 1e-8.
   bool exact_bounds = false;
+  /// MUMPS' scaling of the KKT matrix (Ipopt's mumps_scaling): 77, Ipopt's default, lets MUMPS choose; 0
+  /// none beyond Ipopt's own NLP scaling (MultibodyOptions::mumps_scaling).
+  int mumps_scaling = 77;
 };
 
 struct NlpSolution {

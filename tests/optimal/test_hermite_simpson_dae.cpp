@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <map>
 #include <random>
+#include <utility>
 
 #include "../../src/optimal/multibody_minimal_model.hpp"
 #include "../../src/optimal/multibody_rotation_model.hpp"
@@ -165,6 +168,54 @@ TEST(HermiteSimpsonDae, UnequalMeshDerivativesAreExact) {
   const HermiteSimpsonDae timed(minimal, 3, 1.5, minimal.state_vector(p.initial_state),
                                 Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), &free, fractions);
   check_derivatives(timed, 23);
+}
+
+// The largest number of structural non-zeros in one column and in one row of the triplets (rows, cols).
+std::pair<int, int> densest_line(const std::vector<int>& rows, const std::vector<int>& cols) {
+  std::map<int, int> per_row, per_col;
+  for (std::size_t e = 0; e < rows.size(); ++e) {
+    ++per_row[rows[e]];
+    ++per_col[cols[e]];
+  }
+  const auto largest = [](const std::map<int, int>& m) {
+    int n = 0;
+    for (const auto& [line, count] : m)
+      n = std::max(n, count);
+    return n;
+  };
+  return {largest(per_col), largest(per_row)};
+}
+
+TEST(HermiteSimpsonDae, RotationMatrixSparsityGrowsByAFixedBlockPerInterval) {
+  // The KKT matrix Ipopt factorises is banded only if no variable or row couples all intervals: at fixed T
+  // the Jacobian's and the Hessian's non-zeros must grow by the same count per interval, and their densest
+  // column and row must not grow with N (a dense line makes the sparse factorisation fill in). Counted on
+  // the arm for N = 4, 8 and 16, exactly (structural counts, no tolerance).
+  const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 4);
+  const MultibodyRotationModel model(p);
+  const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
+  const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(model.state_size(), model.state_size());
+  std::vector<int> jacobian, hessian;
+  std::vector<std::pair<int, int>> jacobian_lines, hessian_lines;
+  for (const int n : {4, 8, 16}) {
+    const HermiteSimpsonDae nlp(model, n, 1.5, y0, rows, y0);
+    std::vector<int> r(static_cast<std::size_t>(nlp.jacobian_nonzeros())), c(r.size());
+    nlp.jacobian_structure(r.data(), c.data());
+    jacobian.push_back(nlp.jacobian_nonzeros());
+    jacobian_lines.push_back(densest_line(r, c));
+    r.resize(static_cast<std::size_t>(nlp.hessian_nonzeros()));
+    c.resize(r.size());
+    nlp.hessian_structure(r.data(), c.data());
+    hessian.push_back(nlp.hessian_nonzeros());
+    hessian_lines.push_back(densest_line(r, c));
+  }
+  EXPECT_EQ(jacobian[2] - jacobian[1], 2 * (jacobian[1] - jacobian[0]));
+  EXPECT_EQ(hessian[2] - hessian[1], 2 * (hessian[1] - hessian[0]));
+  EXPECT_EQ(jacobian_lines[2], jacobian_lines[0]);
+  EXPECT_EQ(hessian_lines[2], hessian_lines[0]);
+  // Per interval (a midpoint and a node): 2 × 48 defect rows and the point rows of two points; a few
+  // thousand entries, not the 10⁴ of one dense interval block (118 variables × 116 rows per point).
+  EXPECT_LT((jacobian[1] - jacobian[0]) / 4, 2 * 118 * 116 / 4);
 }
 
 }  // namespace

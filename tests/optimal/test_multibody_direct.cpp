@@ -173,6 +173,14 @@ TEST(MultibodyDirect, BadInputIsOneLine) {
   EXPECT_THROW(control_at(MultibodyOptimum{}, 0.0), InvalidInput);
   q.actuators.push_back({ActuatorKind::body_torque, 0, 1.0});
   expect_invalid(q, "coordinates = \"minimal\": a body torque is given", MultibodyCoordinates::minimal);
+  MultibodyOptions o;
+  o.mumps_scaling = 5;  // not one of MUMPS' scalings
+  try {
+    solve_multibody(p, o);
+    ADD_FAILURE() << "expected InvalidInput";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("mumps_scaling: got 5"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

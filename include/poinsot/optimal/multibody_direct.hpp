@@ -53,6 +53,14 @@ struct MultibodyOptions {
   /// without angular velocity, which the unbounded form allows at no cost), and a result whose
   /// stabilisation_step exceeds c/2 is reported as not converged (the bounds would shape it). 0: unbounded.
   double stabilisation_step = 0.0;
+  /// MUMPS' scaling of Ipopt's KKT matrix (Ipopt's option mumps_scaling): 77, Ipopt's default, lets MUMPS
+  /// choose; 0, none beyond Ipopt's own NLP scaling. Neither is better everywhere (docs/optimal_control.md,
+  /// "The cost of the R-coordinate transcription"): in R-coordinates 0 takes the two-link arm at N = 32 and
+  /// 64 in 25 Ipopt iterations instead of 61 and 292 and the reaction wheel in 15 to 17 instead of 32 to 119,
+  /// but the unbounded falling cat 7.7 times the CPU time, and from the naive guess at N = 6 it ends 11 of
+  /// the benchmark's 100 random arm problems on a spurious jump (none with 77). Any of Ipopt's values -2, -1,
+  /// 0, 1, 3, 4, 7, 8, 77.
+  int mumps_scaling = 77;
 };
 
 struct MultibodyOptimum {
