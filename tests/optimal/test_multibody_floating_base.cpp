@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "../../src/optimal/multibody_minimal_model.hpp"
+#include "minimal_model_rk4.hpp"
 #include "multibody_test_problems.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/observables.hpp"
@@ -61,37 +62,6 @@ TEST(MultibodyFloatingBase, MassMatrixIsTheKineticEnergys) {
   }
 }
 
-/// The final state of the model's forward dynamics integrated by RK4 with `steps` steps over the optimum's
-/// time span, the controls held at their value at each step's midpoint (as replay_controls holds them).
-multibody::State integrate_floating_base(const MultibodyProblem& p, const MultibodyOptimum& controls,
-                                         int steps) {
-  const detail::MultibodyMinimalModel model(p);
-  Eigen::VectorXd y = model.state_vector(p.initial_state);
-  const double dt = controls.time.back() / steps;
-  for (int k = 0; k < steps; ++k) {
-    const Eigen::VectorXd u = control_at(controls, (k + 0.5) * dt);
-    const Eigen::VectorXd k1 = model.state_derivative(y, u);
-    const Eigen::VectorXd k2 = model.state_derivative(y + 0.5 * dt * k1, u);
-    const Eigen::VectorXd k3 = model.state_derivative(y + 0.5 * dt * k2, u);
-    const Eigen::VectorXd k4 = model.state_derivative(y + dt * k3, u);
-    y += dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-  }
-  Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
-  w.head(y.size()) = y;
-  return model.state_of(w.data(), controls.time.back());
-}
-
-double floating_base_state_distance(const multibody::State& a, const multibody::State& b) {
-  double d = 0.0;
-  for (std::size_t i = 0; i < a.bodies.size(); ++i) {
-    d = std::max({d, so3::angle_between(a.bodies[i].R_space_body, b.bodies[i].R_space_body),
-                  (a.bodies[i].omega_body - b.bodies[i].omega_body).norm(),
-                  (a.bodies[i].x_space - b.bodies[i].x_space).norm(),
-                  (a.bodies[i].v_space - b.bodies[i].v_space).norm()});
-  }
-  return d;
-}
-
 TEST(MultibodyFloatingBase, ForwardDynamicsIsTheProjectedRk4s) {
   // The tumbling offset wheel driven by u(t) = 0.8 sin(1.3 t) N·m for 4 s: the model's forward dynamics
   // (ν̇ = −M⁻¹(c − Bu)) integrated by RK4 in (e, θ, ω₀, θ̇), against the multibody layer's projected RK4 in
@@ -109,14 +79,14 @@ TEST(MultibodyFloatingBase, ForwardDynamicsIsTheProjectedRk4s) {
   double previous = 0.0;
   for (const int per_interval : {20, 40}) {
     const MultibodyReplay replay = replay_controls(p, controls, per_interval);
-    const multibody::State mine = integrate_floating_base(p, controls, p.intervals * per_interval);
-    const double d = floating_base_state_distance(replay.final_state, mine);
+    const multibody::State mine = testing::integrate_minimal_model(p, controls, p.intervals * per_interval);
+    const double d = testing::largest_state_difference(replay.final_state, mine);
     if (previous > 0.0) {
       EXPECT_GT(previous / d, 12.0);
     }
     previous = d;
     EXPECT_LT(d, 1e-5);
-    EXPECT_GT(floating_base_state_distance(p.initial_state, mine), 1.0);  // the motion is no small one
+    EXPECT_GT(testing::largest_state_difference(p.initial_state, mine), 1.0);  // the motion is no small one
     // The minimal model's motion keeps the joint and P by construction; H is conserved by its dynamics.
     EXPECT_LT(
         (multibody::angular_momentum(p.system, mine) - multibody::angular_momentum(p.system, p.initial_state))

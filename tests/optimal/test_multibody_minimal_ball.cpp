@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "../../src/optimal/multibody_minimal_model.hpp"
+#include "minimal_model_rk4.hpp"
 #include "multibody_test_problems.hpp"
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
@@ -66,7 +67,6 @@ TEST(MultibodyMinimalBall, ForwardDynamicsIsTheProjectedRk4s) {
   // controls (see test_multibody_floating_base.cpp): the difference falls by about 16 when the step is
   // halved.
   const MultibodyProblem p = tumbling_cat();
-  const detail::MultibodyMinimalModel model(p);
   MultibodyOptimum controls;
   for (int k = 0; k <= 2 * p.intervals; ++k) {
     const double t = p.final_time * k / (2.0 * p.intervals);
@@ -78,27 +78,12 @@ TEST(MultibodyMinimalBall, ForwardDynamicsIsTheProjectedRk4s) {
   for (const int per_interval : {10, 20}) {
     const int steps = p.intervals * per_interval;
     const MultibodyReplay replay = replay_controls(p, controls, per_interval);
-    Eigen::VectorXd y = model.state_vector(p.initial_state);
-    const double dt = p.final_time / steps;
-    for (int k = 0; k < steps; ++k) {
-      const Eigen::VectorXd u = control_at(controls, (k + 0.5) * dt);
-      const Eigen::VectorXd k1 = model.state_derivative(y, u);
-      const Eigen::VectorXd k2 = model.state_derivative(y + 0.5 * dt * k1, u);
-      const Eigen::VectorXd k3 = model.state_derivative(y + 0.5 * dt * k2, u);
-      const Eigen::VectorXd k4 = model.state_derivative(y + dt * k3, u);
-      y += dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
-    }
-    Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
-    w.head(y.size()) = y;
-    const multibody::State mine = model.state_of(w.data(), p.final_time);
-    double d = 0.0, moved = 0.0;
-    for (std::size_t i = 0; i < 2; ++i) {
-      const multibody::BodyState &a = replay.final_state.bodies[i], &b = mine.bodies[i];
-      d = std::max({d, so3::angle_between(a.R_space_body, b.R_space_body),
-                    (a.omega_body - b.omega_body).norm(), (a.x_space - b.x_space).norm(),
-                    (a.v_space - b.v_space).norm()});
-      moved = std::max(moved, so3::angle_between(p.initial_state.bodies[i].R_space_body, b.R_space_body));
-    }
+    const multibody::State mine = testing::integrate_minimal_model(p, controls, steps);
+    const double d = testing::largest_state_difference(replay.final_state, mine);
+    double moved = 0.0;
+    for (std::size_t i = 0; i < 2; ++i)
+      moved = std::max(
+          moved, so3::angle_between(p.initial_state.bodies[i].R_space_body, mine.bodies[i].R_space_body));
     if (previous > 0.0) {
       EXPECT_GT(previous / d, 12.0);
     }
