@@ -185,12 +185,7 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     // The local coordinates at the target: the identity, but a floating base's quaternion has three.
     const Eigen::MatrixXd F = model.local_coordinates(yf);
     const Eigen::MatrixXd rows = detail::model_final_rows(
-        problem, F, F.transpose(),
-        [&](const Eigen::VectorXd& y) {
-          Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
-          w.head(y.size()) = y;
-          return model.state_of(w.data(), 0.0);
-        },
+        problem, F, F.transpose(), [&](const Eigen::VectorXd& y) { return model.state_of(y.data(), 0.0); },
         [&](const multibody::State& s) { return model.state_vector(s); });
     MultibodyOptimum out = solve_model(
         problem, model, y0, yf, rows, detail::minimal_rate_rows(problem, model), options,
@@ -218,12 +213,7 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
   // position and velocity rows' Jacobian, β = N δy and δy = Nᵀβ.
   const Eigen::MatrixXd N = detail::null_space(model.invariant_jacobian(problem.final_state)).transpose();
   const Eigen::MatrixXd rows = detail::model_final_rows(
-      problem, N, N.transpose(),
-      [&](const Eigen::VectorXd& y) {
-        Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
-        w.head(y.size()) = y;
-        return model.state_of(w.data(), 0.0);
-      },
+      problem, N, N.transpose(), [&](const Eigen::VectorXd& y) { return model.state_of(y.data(), 0.0); },
       [&](const multibody::State& s) { return model.state_vector(s); });
   std::vector<multibody::Multipliers> multipliers;
   double stabilisation = 0.0;

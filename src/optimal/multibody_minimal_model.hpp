@@ -97,8 +97,9 @@ class MultibodyMinimalModel final : public CollocationModel {
   /// y = (q, ν) of a consistent state (θ in (−π, π]; each quaternion of the sign nearest its initial value,
   /// so that attitudes within a half-turn of it are encoded continuously).
   Eigen::VectorXd state_vector(const multibody::State& state) const;
-  /// The multibody state of the point variables w (forward kinematics; with a floating base the centre of
-  /// mass at its initial place, at rest).
+  /// The multibody state of the point variables w, or of a state vector y, which is their head: only the
+  /// state's entries are read (forward kinematics; with a floating base the centre of mass at its initial
+  /// place, at rest).
   multibody::State state_of(const double* w, double time) const;
   /// The Lagrangian's mass matrix M(q) (kg·m², symmetric positive definite) and c(q, ν) − B u (N·m) at the
   /// state y and controls u (actuator order): the path rows at ν̇ = 0 and their change with each ν̇_j.

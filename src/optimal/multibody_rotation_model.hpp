@@ -67,7 +67,8 @@ class MultibodyRotationModel final : public CollocationModel {
 
   /// The state y of `state` (bodies' x, R, v, V = R j(ω)).
   Eigen::VectorXd state_vector(const multibody::State& state) const;
-  /// The multibody state of the point variables w (ω = vee(RᵀV), R as stored).
+  /// The multibody state of the point variables w, or of a state vector y, which is their head: only the
+  /// state's entries are read (ω = vee(RᵀV), R as stored).
   multibody::State state_of(const double* w, double time) const;
   /// The joint reactions and each body's Λ at the point variables w.
   multibody::Multipliers multipliers_of(const double* w) const;

@@ -29,9 +29,7 @@ inline multibody::State integrate_minimal_model(const MultibodyProblem& p, const
     const Eigen::VectorXd k4 = model.state_derivative(y + dt * k3, u);
     y += dt / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
   }
-  Eigen::VectorXd w = Eigen::VectorXd::Zero(model.point_size());
-  w.head(y.size()) = y;
-  return model.state_of(w.data(), controls.time.back());
+  return model.state_of(y.data(), controls.time.back());
 }
 
 /// The largest difference between two states of the same system over its bodies: the attitude angle (rad),
