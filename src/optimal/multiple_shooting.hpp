@@ -55,6 +55,15 @@ class Shooter {
   /// Writes the unknowns of node m ≥ 1 for the state (R, ω, p_θ, p_ω) into x (δ relative to R̄_m).
   void set_node(Eigen::VectorXd& x, int m, const Mat3& R, const Vec3& omega, const Vec3& p_theta,
                 const Vec3& p_omega) const;
+  /// The reference attitudes R̄_1 … R̄_{M−1}.
+  const std::vector<Mat3>& node_references() const { return ref_; }
+  /// Re-seeds the interior nodes forward from the initial state: for m = 1 … M−1 in turn, segment m−1 is
+  /// integrated from node m−1 (node 0: the exact initial state with x's initial costates), and node m takes
+  /// the integrated R, ω and p_θ (R p_θ is constant along the flow: the space-frame attitude costate is
+  /// carried through) with the switching vector σ_m = R_mᵀ λ_m, i.e. p_ω,m = J R_mᵀ λ_m, from the given
+  /// space-frame switching vectors λ_m = R σ (`switching_space[m − 1]`); R̄_m becomes that R (δ_m = 0).
+  /// The knots and T are those of x. False when x is outside the domain (the nodes are then unchanged).
+  bool seed_nodes_forward(Eigen::VectorXd& x, const std::vector<Vec3>& switching_space);
 
   /// The end of one segment: its final state, the control there, and σ at the knots inside it.
   struct SegmentEnd {
