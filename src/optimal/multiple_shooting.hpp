@@ -9,6 +9,7 @@
 /// holds at every node by construction and needs neither a row nor a multiplier. The attitude costate at a
 /// node is the body vector p_θ,m with P_m = ½ R_m j(p_θ,m): the gauge P → P + R S (S symmetric, the
 /// orthogonality multiplier's freedom) is fixed at zero at every node, and the flow keeps it zero.
+/// With a free final attitude the p_θ unknowns are held at 0 (identity Jacobian columns; p_θ ≡ 0 exactly).
 /// Rows: the final conditions of indirect_shooting.hpp (6, + H(T) for a free T), one per knot
 /// (σ_i(t_s) = 0, or σ·ŝ = 0 at a reversal), and 12 continuity defects per interior node:
 /// ½vee(R_mᵀR⁻ − R⁻ᵀR_m) (rad), T(ω⁻ − ω_m) (rad), s_ω(p_θ⁻ − p_θ,m) and ū J⁻¹(p_ω⁻ − p_ω,m) (both in the
@@ -120,8 +121,8 @@ class Shooter {
 };
 
 /// Newton's method with a backtracking line search on the shooting residual, from x (F = its residual); where
-/// the Newton step does not halve the residual, the rank-revealing step (dense SVD, singular values below
-/// 1e-12 of the largest left out) is tried too and the better of the two is kept;
+/// the Newton step does not halve the residual, the rank-revealing steps (dense SVD, singular values below
+/// 1e-8, 1e-10 and 1e-12 of the largest left out) are tried too and the best step is kept;
 /// stops at norm ≤ o.tolerance, after o.max_iterations, or when no step decreases the residual. Returns the
 /// iterations taken; x, F and norm are the last accepted iterate; `stalled` tells whether it stopped because
 /// no step decreased the residual.
