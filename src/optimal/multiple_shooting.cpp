@@ -64,6 +64,23 @@ void Shooter::set_node(Eigen::VectorXd& x, int m, const Mat3& R, const Vec3& ome
   x.segment<3>(b + 9) = p_omega;
 }
 
+bool Shooter::seed_nodes_forward(Eigen::VectorXd& x, const std::vector<Vec3>& switching_space) {
+  std::vector<Knot> knots;
+  if (!sorted_knots(x, knots)) return false;
+  for (int m = 1; m < nodes(); ++m) {
+    SegmentEnd end;
+    integrate_segment(x, m - 1, knots, 2, end, nullptr);
+    const PmpView v = unpack(end.y);
+    ref_[static_cast<std::size_t>(m - 1)] = v.R;
+    set_node(
+        x, m, v.R, v.omega, attitude_costate_body(v.R, v.P),
+        switching_space.empty()
+            ? v.p_omega
+            : Vec3(p_.inertia_body * (v.R.transpose() * switching_space[static_cast<std::size_t>(m - 1)])));
+  }
+  return true;
+}
+
 bool Shooter::sorted_knots(const Eigen::VectorXd& x, std::vector<Knot>& knots) const {
   const double T = final_time(x);
   if (!(T > 0.0)) return false;
@@ -186,6 +203,15 @@ bool Shooter::jacobian(const Eigen::VectorXd& x, const std::vector<SegmentEnd>& 
     // units, and each is at least the other's size, so that a vanishing p_θ (a free final attitude) still
     // gets a step.
     const int node = j >= first_node ? 1 + (j - first_node) / 12 : j < 6 ? 0 : -1;
+    // A free final attitude: p_θ ≡ 0 exactly (R p_θ is constant and p_θ(T) = 0), so the p_θ unknowns stay at
+    // their value 0 (identity columns; their rows, p_θ(0) and the p_θ defects, are then exactly zero).
+    // Left free they add a weakly determined direction (on the tumbling racket a singular value of 1e-10 of
+    // the largest, along which the residual's p_θ(0) row stays at 1e-8).
+    const bool attitude_costate = node == 0 ? j < 3 : node > 0 && (j - node_base(node)) / 3 == 2;
+    if (attitude_costate && p_.free_final_attitude) {
+      entries.emplace_back(j, j, 1.0);
+      continue;
+    }
     double scale = std::abs(x[j]);
     if (node >= 0) {
       const int base = node == 0 ? -6 : node_base(node);  // node 0: p_θ at 0, p_ω at 3
@@ -273,18 +299,32 @@ int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x,
       norm = norm_lu;
       continue;
     }
-    // The Newton step does not halve the residual: try the rank-revealing step as well, which leaves out
-    // the directions whose singular values are below 1e-12 of the largest, and keep the better of the two.
+    // The Newton step does not halve the residual: try the rank-revealing steps as well, which leave out
+    // the directions whose singular values are below 1e-8, 1e-10 or 1e-12 of the largest, and keep the best.
     // Such near-null directions are those of a family of extremals that the boundary conditions pin only
     // through an exponentially small sensitivity (stopping the tumbling racket: the phase of each flip,
     // docs/optimal_control.md section 3); the central-difference Jacobian (relative error ~1e-8) cannot
     // resolve them, and the full step along them is noise that throws the iterate out of the linear range.
+    // 1e-8 leaves out what that error cannot resolve; the smaller levels keep the directions that are
+    // weakly determined but computed well enough (on the tumbling racket a single level of 1e-12 stalls at
+    // a residual of 7e-6 where 1e-8 goes on to 1e-8).
     Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(jac), Eigen::ComputeThinU | Eigen::ComputeThinV);
-    svd.setThreshold(1e-12);
     Eigen::VectorXd x_svd = x, F_svd = F;
-    double norm_svd = norm;
-    const bool svd_ok = shooting_line_search(shooter, Eigen::VectorXd(svd.solve(-F)), x_svd, F_svd, norm_svd);
-    if (svd_ok && (!lu_ok || norm_svd < norm_lu)) {
+    double norm_svd = lu_ok ? norm_lu : norm;
+    bool svd_ok = false;
+    for (const double threshold : {1e-8, 1e-10, 1e-12}) {
+      svd.setThreshold(threshold);
+      Eigen::VectorXd x_t = x, F_t = F;
+      double norm_t = norm;
+      if (shooting_line_search(shooter, Eigen::VectorXd(svd.solve(-F)), x_t, F_t, norm_t) &&
+          norm_t < norm_svd) {
+        x_svd = x_t;
+        F_svd = F_t;
+        norm_svd = norm_t;
+        svd_ok = true;
+      }
+    }
+    if (svd_ok) {
       x = x_svd;
       F = F_svd;
       norm = norm_svd;

@@ -9,6 +9,7 @@
 /// holds at every node by construction and needs neither a row nor a multiplier. The attitude costate at a
 /// node is the body vector p_θ,m with P_m = ½ R_m j(p_θ,m): the gauge P → P + R S (S symmetric, the
 /// orthogonality multiplier's freedom) is fixed at zero at every node, and the flow keeps it zero.
+/// With a free final attitude the p_θ unknowns are held at 0 (identity Jacobian columns; p_θ ≡ 0 exactly).
 /// Rows: the final conditions of indirect_shooting.hpp (6, + H(T) for a free T), one per knot
 /// (σ_i(t_s) = 0, or σ·ŝ = 0 at a reversal), and 12 continuity defects per interior node:
 /// ½vee(R_mᵀR⁻ − R⁻ᵀR_m) (rad), T(ω⁻ − ω_m) (rad), s_ω(p_θ⁻ − p_θ,m) and ū J⁻¹(p_ω⁻ − p_ω,m) (both in the
@@ -55,6 +56,15 @@ class Shooter {
   /// Writes the unknowns of node m ≥ 1 for the state (R, ω, p_θ, p_ω) into x (δ relative to R̄_m).
   void set_node(Eigen::VectorXd& x, int m, const Mat3& R, const Vec3& omega, const Vec3& p_theta,
                 const Vec3& p_omega) const;
+  /// The reference attitudes R̄_1 … R̄_{M−1}.
+  const std::vector<Mat3>& node_references() const { return ref_; }
+  /// Re-seeds the interior nodes forward from the initial state: for m = 1 … M−1 in turn, segment m−1 is
+  /// integrated from node m−1 (node 0: the exact initial state with x's initial costates), and node m takes
+  /// the integrated R, ω and p_θ (R p_θ is constant along the flow: the space-frame attitude costate is
+  /// carried through) with the switching vector σ_m = R_mᵀ λ_m, i.e. p_ω,m = J R_mᵀ λ_m, from the given
+  /// space-frame switching vectors λ_m = R σ (`switching_space[m − 1]`); R̄_m becomes that R (δ_m = 0).
+  /// The knots and T are those of x. False when x is outside the domain (the nodes are then unchanged).
+  bool seed_nodes_forward(Eigen::VectorXd& x, const std::vector<Vec3>& switching_space);
 
   /// The end of one segment: its final state, the control there, and σ at the knots inside it.
   struct SegmentEnd {
@@ -111,8 +121,8 @@ class Shooter {
 };
 
 /// Newton's method with a backtracking line search on the shooting residual, from x (F = its residual); where
-/// the Newton step does not halve the residual, the rank-revealing step (dense SVD, singular values below
-/// 1e-12 of the largest left out) is tried too and the better of the two is kept;
+/// the Newton step does not halve the residual, the rank-revealing steps (dense SVD, singular values below
+/// 1e-8, 1e-10 and 1e-12 of the largest left out) are tried too and the best step is kept;
 /// stops at norm ≤ o.tolerance, after o.max_iterations, or when no step decreases the residual. Returns the
 /// iterations taken; x, F and norm are the last accepted iterate; `stalled` tells whether it stopped because
 /// no step decreased the residual.

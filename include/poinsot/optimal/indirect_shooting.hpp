@@ -20,6 +20,7 @@
 /// Bang-bang controls (per-axis bounds, minimum time): the switching structure (the initial sign of each u_i
 /// and the order of its sign changes) is read from the direct solution's torques, and the switching times
 /// are unknowns of the Newton iteration with the conditions σ_i(t_s) = 0, so the switches are exact.
+/// With a free final attitude p_θ ≡ 0 (R p_θ constant, p_θ(T) = 0) is imposed, not solved for.
 /// Shooting: over M segments (ShootingOptions::shooting_nodes; M = 1 is single
 /// shooting), each split at the switches inside it and integrated by Runge–Kutta–Fehlberg 7(8) at
 /// rtol = atol = integration_tolerance; at an interior node the attitude is three coordinates on SO(3) about
@@ -27,17 +28,17 @@
 /// RᵀR = I holds by construction; continuity of (R, ω, p_θ, p_ω) is imposed at each node. The Jacobian is by
 /// central differences, block sparse (a node's columns re-integrate its own segment only), factorised by
 /// Eigen's SparseLU; the Newton step is damped by a backtracking line search on the residual's max norm
-/// (where it does not halve the residual, a rank-revealing step, singular values below 1e-12 of the largest
-/// left out, is tried beside it and the better one kept). When Newton stalls within 100× the tolerance it is
-/// resumed with a tenfold tighter integration; a residual that then still stalls within 10× the tolerance is
-/// the round-off floor of the residual and is accepted as converged (the status says so). Norm bound, minimum
-/// time: where the direct solution's torque turns by more than 90° between consecutive saturated samples, σ
-/// passes through 0 and u = −ū σ/‖σ‖ reverses (the eigenaxis slew of a sphere at T/2). Each such reversal
-/// time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of σ at the start of the arc ending
-/// there; on each arc the control is continued through σ = 0 without flipping, so the conditions are smooth.
-/// This assumes σ turns by less than 90° along an arc (exact for a sphere). Not handled: active rate bounds
-/// (state constraints; the solver reports them and does not claim optimality), singular arcs (|u_i| strictly
-/// inside its bound over an interval of the direct solution).
+/// (where it does not halve the residual, rank-revealing steps, singular values below 1e-8, 1e-10 and 1e-12
+/// of the largest left out, are tried beside it and the best one kept). When Newton stalls within 100× the
+/// tolerance it is resumed with a tenfold tighter integration; a residual that then still stalls within 10×
+/// the tolerance is the round-off floor of the residual and is accepted as converged (the status says so).
+/// Norm bound, minimum time: where the direct solution's torque turns by more than 90° between consecutive
+/// saturated samples, σ passes through 0 and u = −ū σ/‖σ‖ reverses (the eigenaxis slew of a sphere at T/2).
+/// Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of σ at the start
+/// of the arc ending there; on each arc the control is continued through σ = 0 without flipping, so the
+/// conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a sphere). Not
+/// handled: active rate bounds (state constraints; the solver reports them and does not claim optimality),
+/// singular arcs (|u_i| strictly inside its bound over an interval of the direct solution).
 #include <string>
 #include <vector>
 
@@ -91,7 +92,11 @@ struct IndirectSolution {
   std::vector<double> hamiltonian;          ///< H (0 on a free-time extremal)
 };
 
-/// Shoots from the direct solution's costates (and, for M > 1, its states at the nodes). Throws InvalidInput
+/// Shoots from the direct solution's costates (and, for M > 1, its states at the nodes, or the forward
+/// re-seeding where its residual is smaller: the nodes integrated from the exact initial state with the
+/// switching vector carried through the space frame, λ = R σ fitted to the direct estimates; when Newton has
+/// not converged after 10 iterations, re-seeded that way from the iterate's own nodes every 3 iterations,
+/// the best iterate kept; docs/optimal_control.md, section 3). Throws InvalidInput
 /// for an invalid problem, a direct solution without costates, or shooting_nodes outside 1 … 1000; failures
 /// are reported in converged/status with the last iterate.
 IndirectSolution solve_indirect(const ReorientationProblem& problem, const DirectSolution& direct,
