@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <boost/numeric/odeint.hpp>
+#include <exception>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -133,10 +135,15 @@ double replay_amplification(const ReorientationProblem& p, const IndirectSolutio
   t.insert(t.end(), s.node_time.begin(), s.node_time.end());
   t.push_back(s.final_time);
   Eigen::Matrix<double, 6, 6> phi = Eigen::Matrix<double, 6, 6>::Identity();
-  for (std::size_t m = 0; m + 1 < t.size(); ++m) {
-    const Vec3 omega = m == 0 ? p.omega_initial : s.node_omega_body[m - 1];
-    phi = segment_transition(p, torque, omega, t[m], t[m + 1]) * phi;
+  try {
+    for (std::size_t m = 0; m + 1 < t.size(); ++m) {
+      const Vec3 omega = m == 0 ? p.omega_initial : s.node_omega_body[m - 1];
+      phi = segment_transition(p, torque, omega, t[m], t[m + 1]) * phi;
+    }
+  } catch (const std::exception&) {  // Odeint's step control gave up (a motion that left every scale)
+    return std::numeric_limits<double>::quiet_NaN();
   }
+  if (!phi.allFinite()) return std::numeric_limits<double>::quiet_NaN();
   // Scaled coordinates (δθ, T δω): Φ_s = S Φ S⁻¹, S = diag(I, T I).
   const double T = s.final_time;
   phi.topRightCorner<3, 3>() /= T;

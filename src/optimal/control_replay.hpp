@@ -29,7 +29,7 @@ dynamics::State replay_control(const ReorientationProblem& p, const IndirectSolu
 /// Runge–Kutta–Fehlberg 7(8) at rtol = atol = 1e-10, segment by segment from each node's ω (the indirect
 /// solution's; t = 0: ω_0), and Φ(T, 0) is the product of the segments' matrices, so the figure belongs to
 /// the optimal motion, not to the replay that has drifted away from it. An error δ committed near t = 0
-/// reaches the target as ‖Φ‖ δ at most (to first order).
+/// reaches the target as ‖Φ‖ δ at most (to first order). NaN when the integration fails or Φ is not finite.
 double replay_amplification(const ReorientationProblem& p, const IndirectSolution& s);
 
 }  // namespace poinsot::optimal::detail

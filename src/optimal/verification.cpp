@@ -131,16 +131,16 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
   // M > 1, the verdict rests on the replay split at the nodes, whose segments amplify by about ‖Φ‖^(1/M);
   // the open-loop miss is still reported beside the amplification. With one segment, or where the split
   // replay fails itself, the open-loop replay is checked; where it meets the threshold it passes whatever the
-  // amplification.
+  // amplification. Every comparison fails on a NaN (a replay or an amplification that could not be formed).
   const double replay_local_error =
       std::max({r.split_replay_attitude_error, r.split_replay_rate_error, detail::replay_tolerance});
   const bool split_passes = r.split_replay_attitude_error <= att_tol && r.split_replay_rate_error <= att_tol;
   r.open_loop_replay_checked =
-      s.node_time.empty() || !split_passes || r.replay_amplification * replay_local_error <= att_tol;
-  if (r.open_loop_replay_checked && r.resimulated_attitude_error > att_tol)
+      s.node_time.empty() || !split_passes || !(r.replay_amplification * replay_local_error > att_tol);
+  if (r.open_loop_replay_checked && !(r.resimulated_attitude_error <= att_tol))
     fail("re-simulation misses the target attitude by " + format_number(r.resimulated_attitude_error, 3) +
          " rad (amplification " + format_number(r.replay_amplification, 3) + ")");
-  if (r.open_loop_replay_checked && r.resimulated_rate_error > att_tol)
+  if (r.open_loop_replay_checked && !(r.resimulated_rate_error <= att_tol))
     fail("re-simulation misses the target rate by " + format_number(r.resimulated_rate_error, 3) +
          " rad/s (amplification " + format_number(r.replay_amplification, 3) + ")");
   if (!s.node_time.empty() && !split_passes)

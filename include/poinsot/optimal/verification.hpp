@@ -4,6 +4,16 @@
 /// indirect solution, the agreement of the direct and indirect optima, and an independent re-simulation of
 /// the control history through the dynamics layer's DOP853 (quaternion + Euler, rtol = atol = 1e-13).
 /// A solution is reported as optimal only when every check passes; otherwise `failures` says which failed.
+///
+/// The re-simulation is done twice: open loop from t = 0 to T, and, with M > 1 shooting segments, split at
+/// the nodes (each segment from its node's state to the next node's, the last to the target). Beside them the
+/// open loop's amplification A = ‖Φ(T, 0)‖ (the state-transition matrix of the motion under the fixed
+/// torque) says how much its early errors grow by T. With M = 1 the open-loop replay is checked. With M > 1
+/// the split replay is checked, and the open-loop one too unless the split one passes and A times the split
+/// replay's largest error (its local errors, at least the replay's tolerance 1e-13) exceeds the threshold:
+/// then no replay with those errors could reach the target to the threshold open loop, whatever the
+/// solution (an unstable motion: the racket's intermediate-axis spin over λT = 26.6 has A = 5.8e11), and
+/// its errors are reported, not checked. Stable optima (A of order 1 to 1e3) keep the open-loop check.
 #include <string>
 #include <vector>
 
