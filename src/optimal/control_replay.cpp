@@ -14,6 +14,7 @@
 #include <memory>
 #include <vector>
 
+#include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/dop853.hpp"
 #include "poinsot/dynamics/tabulated_torque.hpp"
 #include "poinsot/so3/hat.hpp"
@@ -118,13 +119,19 @@ dynamics::State replay_control(const ReorientationProblem& p, const IndirectSolu
   dynamics::Dop853Integrator integrator(body, torque.model(), opt);
   dynamics::State state = start;
   double dt = opt.dt;
-  for (const double cut : torque.cuts(start.time, t_end)) {
-    torque.enter(state.time, cut);
-    while (cut - state.time > 1e-14 * s.final_time) {
-      const auto r = integrator.step(state, std::min(dt, cut - state.time));
-      dt = std::max(r.dt_next, 1e-12);
+  try {
+    for (const double cut : torque.cuts(start.time, t_end)) {
+      torque.enter(state.time, cut);
+      while (cut - state.time > 1e-14 * s.final_time) {
+        const auto r = integrator.step(state, std::min(dt, cut - state.time));
+        dt = std::max(r.dt_next, 1e-12);
+      }
+      state.time = cut;
     }
-    state.time = cut;
+  } catch (const ComputationFailed&) {  // DOP853 gave up (a non-finite start or motion): no state to compare
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    state.R_space_body.setConstant(nan);
+    state.omega_body.setConstant(nan);
   }
   return state;
 }

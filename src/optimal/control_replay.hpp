@@ -17,7 +17,9 @@ namespace poinsot::optimal::detail {
 inline constexpr double replay_tolerance = 1e-13;
 
 /// Replays the torque of `s` from `start` (at start.time, s) to t_end (s) through DOP853 with the body's
-/// torque-free dynamics plus the replayed torque; returns the state at t_end.
+/// torque-free dynamics plus the replayed torque; returns the state at t_end, with NaN attitude and rate
+/// where DOP853 gives up (ComputationFailed: a non-finite start or motion), so that every comparison with it
+/// fails.
 dynamics::State replay_control(const ReorientationProblem& p, const IndirectSolution& s,
                                dynamics::State start, double t_end);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "control_replay.hpp"
 #include "pmp_system.hpp"
@@ -16,6 +17,12 @@ namespace {
 /// The control-dependent part of H: L(u) + σᵀu.
 double control_hamiltonian(const ReorientationProblem& p, const Vec3& sigma, const Vec3& u) {
   return detail::running_cost(p, u) + sigma.dot(u);
+}
+
+/// The angle (rad) between a replay's attitude and its reference; NaN for a replay that gave up (NaN state).
+double replay_attitude_error(const Mat3& replayed, const Mat3& reference) {
+  return replayed.allFinite() ? so3::angle_between(replayed, reference)
+                              : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace
@@ -82,7 +89,7 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
   start.R_space_body = p.attitude_initial.toRotationMatrix();
   start.omega_body = p.omega_initial;
   const dynamics::State end = detail::replay_control(p, s, start, s.final_time);
-  r.resimulated_attitude_error = so3::angle_between(end.R_space_body, R_target);
+  r.resimulated_attitude_error = replay_attitude_error(end.R_space_body, R_target);
   r.resimulated_rate_error = (end.omega_body - p.omega_final).norm();
   r.replay_amplification = detail::replay_amplification(p, s);
   r.replay_segments = static_cast<int>(s.node_time.size()) + 1;
@@ -98,13 +105,16 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
       }
       const bool last = m == s.node_time.size();
       const dynamics::State e = detail::replay_control(p, s, start, last ? s.final_time : s.node_time[m]);
-      const double attitude = so3::angle_between(e.R_space_body, last ? R_target : s.node_attitude[m]);
+      const double attitude = replay_attitude_error(e.R_space_body, last ? R_target : s.node_attitude[m]);
       const double rate = (e.omega_body - (last ? p.omega_final : s.node_omega_body[m])).norm();
-      if (attitude > r.split_replay_attitude_error) {
+      // The largest errors, a NaN (a segment whose replay gave up) sticking once met.
+      if (!std::isnan(r.split_replay_attitude_error) &&
+          (std::isnan(attitude) || attitude > r.split_replay_attitude_error)) {
         r.split_replay_attitude_error = attitude;
         r.split_replay_worst_segment = static_cast<int>(m) + 1;
       }
-      r.split_replay_rate_error = std::max(r.split_replay_rate_error, rate);
+      if (!std::isnan(r.split_replay_rate_error) && !(rate <= r.split_replay_rate_error))
+        r.split_replay_rate_error = rate;
     }
   }
   r.direct_indirect_difference = std::abs(d.cost - s.cost) / std::max(std::abs(s.cost), 1e-300);
