@@ -7,6 +7,7 @@
 #include "control_replay.hpp"
 #include "pmp_system.hpp"
 #include "poinsot/analysis/multipliers.hpp"
+#include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/so3/distance.hpp"
 
@@ -88,34 +89,43 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
   dynamics::State start;
   start.R_space_body = p.attitude_initial.toRotationMatrix();
   start.omega_body = p.omega_initial;
-  const dynamics::State end = detail::replay_control(p, s, start, s.final_time);
-  r.resimulated_attitude_error = replay_attitude_error(end.R_space_body, R_target);
-  r.resimulated_rate_error = (end.omega_body - p.omega_final).norm();
-  r.replay_amplification = detail::replay_amplification(p, s);
-  r.replay_segments = static_cast<int>(s.node_time.size()) + 1;
-  r.split_replay_attitude_error = r.resimulated_attitude_error;
-  r.split_replay_rate_error = r.resimulated_rate_error;
-  if (!s.node_time.empty()) {
-    r.split_replay_attitude_error = r.split_replay_rate_error = 0.0;
-    for (std::size_t m = 0; m <= s.node_time.size(); ++m) {
-      if (m > 0) {
-        start.time = s.node_time[m - 1];
-        start.R_space_body = s.node_attitude[m - 1];
-        start.omega_body = s.node_omega_body[m - 1];
+  // The replayed table's constructor refuses samples it cannot interpolate (e.g. three at one time): the
+  // replay is then reported as failed, with NaN errors.
+  try {
+    const dynamics::State end = detail::replay_control(p, s, start, s.final_time);
+    r.resimulated_attitude_error = replay_attitude_error(end.R_space_body, R_target);
+    r.resimulated_rate_error = (end.omega_body - p.omega_final).norm();
+    r.replay_amplification = detail::replay_amplification(p, s);
+    r.replay_segments = static_cast<int>(s.node_time.size()) + 1;
+    r.split_replay_attitude_error = r.resimulated_attitude_error;
+    r.split_replay_rate_error = r.resimulated_rate_error;
+    if (!s.node_time.empty()) {
+      r.split_replay_attitude_error = r.split_replay_rate_error = 0.0;
+      for (std::size_t m = 0; m <= s.node_time.size(); ++m) {
+        if (m > 0) {
+          start.time = s.node_time[m - 1];
+          start.R_space_body = s.node_attitude[m - 1];
+          start.omega_body = s.node_omega_body[m - 1];
+        }
+        const bool last = m == s.node_time.size();
+        const dynamics::State e = detail::replay_control(p, s, start, last ? s.final_time : s.node_time[m]);
+        const double attitude = replay_attitude_error(e.R_space_body, last ? R_target : s.node_attitude[m]);
+        const double rate = (e.omega_body - (last ? p.omega_final : s.node_omega_body[m])).norm();
+        // The largest errors, a NaN (a segment whose replay gave up) sticking once met.
+        if (!std::isnan(r.split_replay_attitude_error) &&
+            (std::isnan(attitude) || attitude > r.split_replay_attitude_error)) {
+          r.split_replay_attitude_error = attitude;
+          r.split_replay_worst_segment = static_cast<int>(m) + 1;
+        }
+        if (!std::isnan(r.split_replay_rate_error) && !(rate <= r.split_replay_rate_error))
+          r.split_replay_rate_error = rate;
       }
-      const bool last = m == s.node_time.size();
-      const dynamics::State e = detail::replay_control(p, s, start, last ? s.final_time : s.node_time[m]);
-      const double attitude = replay_attitude_error(e.R_space_body, last ? R_target : s.node_attitude[m]);
-      const double rate = (e.omega_body - (last ? p.omega_final : s.node_omega_body[m])).norm();
-      // The largest errors, a NaN (a segment whose replay gave up) sticking once met.
-      if (!std::isnan(r.split_replay_attitude_error) &&
-          (std::isnan(attitude) || attitude > r.split_replay_attitude_error)) {
-        r.split_replay_attitude_error = attitude;
-        r.split_replay_worst_segment = static_cast<int>(m) + 1;
-      }
-      if (!std::isnan(r.split_replay_rate_error) && !(rate <= r.split_replay_rate_error))
-        r.split_replay_rate_error = rate;
     }
+  } catch (const InvalidInput& e) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    r.resimulated_attitude_error = r.resimulated_rate_error = r.replay_amplification = nan;
+    r.split_replay_attitude_error = r.split_replay_rate_error = nan;
+    fail(std::string("re-simulation could not run: ") + e.what());
   }
   r.direct_indirect_difference = std::abs(d.cost - s.cost) / std::max(std::abs(s.cost), 1e-300);
 

@@ -98,7 +98,7 @@ TEST_F(TiltedPhaseAdvance, SplitReplayFailsWhenANodeIsOffTheMotion) {
 // sphere turning about a fixed axis is the golden ratio: along the axis the scaled transition matrix is
 // [[1, 1], [0, 1]] (δθ(T) = δθ + T δω, δω constant: J = jI has no gyroscopic coupling), and across it
 // the attitude part is a rotation, whose blocks are no larger; RKF78 at 1e-10 gives it to about 1e-9.
-// A node that is not finite fails the split replay.
+// A node that is not finite fails the split replay, and samples the replay cannot interpolate fail it too.
 TEST(SplitReplay, StableProblemsKeepTheOpenLoopCheck) {
   const auto p = testing::sphere_energy_problem(2.5, 2.0, Vec3(1.0, -2.0, 0.5), 3.0);
   CollocationOptions opt;
@@ -133,6 +133,13 @@ TEST(SplitReplay, StableProblemsKeepTheOpenLoopCheck) {
   EXPECT_TRUE(std::isnan(nan.replay_amplification));
   EXPECT_TRUE(nan.open_loop_replay_checked);
   EXPECT_TRUE(mentions(nan, "split at the 4 nodes"));
+
+  // Samples that the torque table refuses (three at one time): the replay is reported as failed, not thrown.
+  s = solve_indirect(p, d, o);
+  s.time[4] = s.time[3] = s.time[2];
+  const VerificationReport refused = verify(p, d, s);
+  EXPECT_FALSE(refused.passed);
+  EXPECT_TRUE(mentions(refused, "re-simulation could not run"));
 }
 
 }  // namespace
