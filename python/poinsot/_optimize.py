@@ -72,8 +72,10 @@ class OptimalSolution:
 
     ``final_time`` s and ``cost`` (s, N²·m²·s or s per objective) of that solution; ``checks`` (dict: the
     Hamiltonian's mean and deviation, the control gap, switching-sign violations, the costate drift, ‖RᵀR − I‖,
-    vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, the direct–indirect cost difference,
-    ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress, the eigenaxis
+    vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, its amplification
+    ``replay_amplification`` and ``open_loop_replay_checked``, the re-simulation split at the shooting nodes
+    ``split_replay_attitude_error`` rad and ``split_replay_rate_error`` rad/s over ``replay_segments``
+    segments, the direct–indirect cost difference, ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress, the eigenaxis
     manoeuvre's cost and the saving, and the arrays ``lambda_body`` (n, 3, 3) J, ``stress_space`` (n, 3, 3)
     N·m, ``momentum_space`` (n, 3)); ``direct`` (DirectSolution) and ``indirect`` (dict of the shooting's
     values and arrays); ``summary`` (the dict of summary.json), ``report`` (the text ``poinsot optimize``

@@ -44,9 +44,26 @@ TabulatedTorque::TabulatedTorque(std::vector<double> time, std::vector<Vec3> tor
 }
 
 Vec3 TabulatedTorque::on_piece(std::size_t p, double t) const {
-  const double a = time_[p], b = time_[p + 1];
-  const double w = std::clamp((t - a) / (b - a), 0.0, 1.0);
-  return (1.0 - w) * torque_[p] + w * torque_[p + 1];
+  // The stencil: rows p, p + 1 and one neighbour on each side on the same arc (an arc ends at a repeated
+  // time); at an arc's end, two on the side that has them (one-sided, still O(Δt⁴)).
+  const auto left = [&](std::size_t i) { return i > 0 && time_[i - 1] < time_[i]; };
+  const auto right = [&](std::size_t i) { return i + 1 < time_.size() && time_[i + 1] > time_[i]; };
+  std::size_t lo = p, hi = p + 1;
+  if (left(lo)) --lo;
+  if (right(hi)) ++hi;
+  if (lo == p && right(hi))
+    ++hi;
+  else if (hi == p + 1 && left(lo))
+    --lo;
+  const double x = std::clamp(t, time_[p], time_[p + 1]);
+  Vec3 out = Vec3::Zero();
+  for (std::size_t i = lo; i <= hi; ++i) {
+    double w = 1.0;
+    for (std::size_t k = lo; k <= hi; ++k)
+      if (k != i) w *= (x - time_[k]) / (time_[i] - time_[k]);
+    out += w * torque_[i];
+  }
+  return out;
 }
 
 Vec3 TabulatedTorque::torque_body(double t, const Mat3&, const Vec3&) const {

@@ -160,9 +160,18 @@ std::string optimal_report(const OptimalRun& r) {
       << fmt::format("  space attitude costate drift {}; ‖RᵀR − I‖ {}; vee(Λ − Λᵀ) − u {}\n",
                      format_number(v.costate_drift, 3), format_number(v.orthogonality, 3),
                      format_number(v.lambda_torque_error, 3))
-      << fmt::format("  DOP853 re-simulation: attitude error {} rad, rate error {} rad/s\n",
-                     format_number(v.resimulated_attitude_error, 3),
-                     format_number(v.resimulated_rate_error, 3))
+      << fmt::format(
+             "  DOP853 re-simulation: attitude error {} rad, rate error {} rad/s (amplification {}{})\n",
+             format_number(v.resimulated_attitude_error, 3), format_number(v.resimulated_rate_error, 3),
+             format_number(v.replay_amplification, 3),
+             v.open_loop_replay_checked ? ""
+                                        : "; not required: its errors, so amplified, exceed the tolerance")
+      << (v.replay_segments > 1
+              ? fmt::format("  DOP853 re-simulation split at the {} nodes: largest attitude error {} rad "
+                            "(segment {}), rate error {} rad/s\n",
+                            v.replay_segments - 1, format_number(v.split_replay_attitude_error, 3),
+                            v.split_replay_worst_segment, format_number(v.split_replay_rate_error, 3))
+              : std::string())
       << fmt::format("  direct vs indirect cost: {} (relative)\n",
                      format_number(v.direct_indirect_difference, 3));
     for (const auto& f : v.failures)
@@ -246,6 +255,11 @@ std::string optimal_summary_json(const OptimalRun& r) {
                  {"lambda_torque_error", v.lambda_torque_error},
                  {"resimulated_attitude_error", v.resimulated_attitude_error},
                  {"resimulated_rate_error", v.resimulated_rate_error},
+                 {"replay_amplification", v.replay_amplification},
+                 {"open_loop_replay_checked", v.open_loop_replay_checked},
+                 {"replay_segments", v.replay_segments},
+                 {"split_replay_attitude_error", v.split_replay_attitude_error},
+                 {"split_replay_rate_error", v.split_replay_rate_error},
                  {"direct_indirect_difference", v.direct_indirect_difference}};
   if (r.has_interpretation) {
     const auto& m = r.interpretation;

@@ -358,6 +358,12 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     out.hamiltonian.push_back(detail::hamiltonian(p, J_inv, v, u));
     out.cost = v.cost;
   });
+  for (int m = 1; m < result_shooter.nodes(); ++m) {
+    const detail::PmpView v = detail::unpack(result_shooter.node_state(x, m));
+    out.node_time.push_back(result_shooter.node_time(x, m));
+    out.node_attitude.push_back(v.R);
+    out.node_omega_body.push_back(v.omega);
+  }
   if (out.bang_bang) {
     std::vector<double> knots{0.0};
     knots.insert(knots.end(), out.switch_times.begin(), out.switch_times.end());

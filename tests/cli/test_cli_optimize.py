@@ -214,6 +214,12 @@ def test_racket_spin_example_needs_multiple_shooting(cli, tmp_path, source_dir):
     summary = json.loads(r.stdout)
     assert summary["optimal"] is True
     assert abs(summary["indirect"]["cost"] / (12 * 0.01638**2 * 0.5**2 / 30.0**3) - 1) < 1e-10
+    # The replay split at the seven nodes is checked; the open-loop one is reported with its amplification
+    # ‖Φ(T, 0)‖ ≈ e^{λT} = 3.7e11 (measured 5.8e11), too large for the open loop to be checked.
+    checks = summary["checks"]
+    assert checks["replay_segments"] == 8 and checks["split_replay_attitude_error"] < 1e-6
+    assert checks["replay_amplification"] > 1e10 and checks["open_loop_replay_checked"] is False
+    assert "split at the 7 nodes" in (tmp_path / "m8" / "report.txt").read_text()
     single = tmp_path / "single.toml"
     single.write_text(example.read_text().replace("shooting_nodes = 8", "shooting_nodes = 1"))
     r = cli("optimize", single, "--out", tmp_path / "m1", "--json")

@@ -1,6 +1,7 @@
-// The tabulated torque: its interpolation (linear pieces, jumps at repeated times, zero outside), the piece
-// announced by the driver at a breakpoint, its errors, and replays through the simulation driver against the
-// closed form of a sphere (J = j I: ω̇ = τ/j about a fixed axis, so the angle is the double integral of τ/j).
+// The tabulated torque: its interpolation (local cubics on each arc, jumps at repeated times, zero outside),
+// the piece announced by the driver at a breakpoint, its errors, and replays through the simulation driver
+// against the closed form of a sphere (J = j I: ω̇ = τ/j about a fixed axis, so the angle is the double
+// integral of τ/j).
 #include "poinsot/dynamics/tabulated_torque.hpp"
 
 #include <limits>
@@ -34,6 +35,7 @@ Vec3 at(const TabulatedTorque& tau, double t) {
   return tau.torque_body(t, Mat3::Identity(), Vec3::Zero());
 }
 
+// Arcs of two rows: the interpolant is the line through them.
 TEST(TabulatedTorque, InterpolatesLinearlyJumpsAtRepeatedTimesAndIsZeroOutside) {
   const TabulatedTorque tau({1.0, 2.0, 2.0, 4.0},
                             {Vec3(1, 0, 0), Vec3(3, 0, 0), Vec3(0, 2, 0), Vec3(0, 4, 0)}, "t");
@@ -57,6 +59,53 @@ TEST(TabulatedTorque, InterpolatesLinearlyJumpsAtRepeatedTimesAndIsZeroOutside) 
   tau.enter_interval(4.0);
   EXPECT_EQ(at(tau, 4.0), Vec3::Zero());
   EXPECT_NE(tau.describe().find("4 rows"), std::string::npos) << tau.describe();
+}
+
+// On an arc of at least four rows the interpolant is the cubic through the four rows nearest to the piece:
+// a cubic τ(t) sampled at unequal times is reproduced between the rows to round-off, on each side of a jump,
+// whose two values stay exact. A smooth τ is reproduced to O(h⁴): halving the spacing divides the largest
+// error between the rows by 16 (the cubic's remainder τ⁽⁴⁾(ξ) ∏(t − t_k)/4!, its factor h⁴ exact at the
+// piece's centre; the measured ratio is within 10 % of it).
+TEST(TabulatedTorque, InterpolatesByLocalCubicsOnEachArc) {
+  const auto left = [](double t) { return Vec3(1 - 2 * t + 0.5 * t * t * t, t * t, 3.0); };
+  const auto right = [](double t) { return Vec3(-t * t * t, 2.0 + t, -1.0); };
+  const std::vector<double> tl{0.0, 0.3, 0.7, 1.2, 1.5, 2.0}, tr{2.0, 2.4, 3.1, 3.3, 4.0};
+  std::vector<double> t;
+  std::vector<Vec3> u;
+  for (const double x : tl) {
+    t.push_back(x);
+    u.push_back(left(x));
+  }
+  for (const double x : tr) {
+    t.push_back(x);
+    u.push_back(right(x));
+  }
+  const TabulatedTorque tau(t, u, "cubic");
+  for (double x = 0.05; x < 2.0; x += 0.1)
+    EXPECT_LT((at(tau, x) - left(x)).norm(), 1e-13) << x;
+  for (double x = 2.05; x < 4.0; x += 0.1)
+    EXPECT_LT((at(tau, x) - right(x)).norm(), 1e-13) << x;
+  tau.enter_interval(1.7);
+  EXPECT_EQ(at(tau, 2.0), left(2.0));
+  tau.enter_interval(2.0);
+  EXPECT_EQ(at(tau, 2.0), right(2.0));
+
+  const auto largest_error = [](int n) {
+    std::vector<double> ts;
+    std::vector<Vec3> us;
+    for (int i = 0; i <= n; ++i) {
+      ts.push_back(2.0 * i / n);
+      us.push_back(Vec3(std::sin(3 * ts.back()), 0, 0));
+    }
+    const TabulatedTorque s(ts, us, "sine");
+    double e = 0.0;
+    for (int i = 1; i + 2 < n; ++i) {  // interior pieces: full four-row stencils
+      const double x = 0.5 * (ts[i] + ts[i + 1]);
+      e = std::max(e, std::abs(at(s, x).x() - std::sin(3 * x)));
+    }
+    return e;
+  };
+  EXPECT_NEAR(largest_error(40) / largest_error(80), 16.0, 1.6);
 }
 
 TEST(TabulatedTorque, RejectsMalformedTables) {

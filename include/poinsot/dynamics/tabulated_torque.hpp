@@ -3,17 +3,22 @@
 /// A body torque given by a table of rows (t_i, τ_i), a function of time only (N·m, body frame): the replay
 /// of a control history, e.g. the control.csv that `poinsot optimize` writes.
 ///
-/// Interpolation:
-///  - between two rows with t_i < t_{i+1}, τ is linear in t (a piece);
-///  - two rows with the same time are a jump: the first holds the left limit, the second the right one, so a
-///    bang-bang control written with two rows per switch is a zero-order hold with the exact switch times,
-///    and a smooth control sampled densely is its piecewise-linear interpolant (error O(Δt²) between rows);
+/// Interpolation (the one used wherever a sampled control is replayed, the optimal layer's verification too):
+///  - two rows with the same time are a jump: the first holds the left limit, the second the right one; the
+///    rows between two jumps (or the table's ends) form an arc;
+///  - between two rows with t_i < t_{i+1} (a piece), τ is the cubic through four rows of its arc, i − 1 … i +
+///  2
+///    (at the arc's ends i … i + 3 or i − 2 … i + 1; the quadratic or the line through three or two rows
+///    where the arc has no more): a local Lagrange interpolant, continuous, exact at the rows, error O(Δt⁴
+///    τ⁽⁴⁾) between them instead of the O(Δt² τ̈) of linear interpolation. A bang-bang control written with
+///    two rows per switch is a zero-order hold with the exact switch times; a smooth control sampled densely
+///    is replayed to O(Δt⁴) (docs/optimal_control.md, "Replaying a control", measures both);
 ///  - before the first row and after the last one τ = 0 (the control history is over: the body moves
 ///    torque-free).
 /// At a time where pieces meet, torque_body returns the right-hand piece's value, except when the simulation
 /// driver has announced (enter_interval) a step lying in the piece that ends there: then every stage of that
-/// step, including those at its end (to within 1e-12 relative, the rounding of stage times), sees one linear
-/// piece. The driver ends a step at each
+/// step, including those at its end (to within 1e-12 relative, the rounding of stage times), sees one
+/// piece (the cubic changes at every row, so τ has a kink there). The driver ends a step at each
 /// breakpoint, so an integrator of any order keeps its order across the jumps.
 #include <cstddef>
 #include <string>
@@ -42,7 +47,7 @@ class TabulatedTorque final : public TorqueModel {
   const std::vector<Vec3>& torque_rows() const { return torque_; }
 
  private:
-  /// Linear interpolation on piece p (rows p, p + 1), t clamped to its closed interval.
+  /// The local cubic of piece p (rows p, p + 1 and their neighbours on its arc), t clamped to the piece.
   Vec3 on_piece(std::size_t p, double t) const;
 
   std::vector<double> time_;

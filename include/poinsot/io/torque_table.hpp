@@ -2,8 +2,8 @@
 /// @file torque_table.hpp
 /// Torque tables: the `[torque] type = "table"` of scenario files, e.g. the control.csv of `poinsot
 /// optimize`, so that `poinsot run` replays an optimal control with any integrator
-/// (dynamics/tabulated_torque.hpp defines the interpolation: linear between rows, a jump at two rows with one
-/// time, 0 outside the table).
+/// (dynamics/tabulated_torque.hpp defines the interpolation: local cubics between rows, a jump at two rows
+/// with one time, 0 outside the table).
 ///
 /// Format: UTF-8 text; blank lines and lines starting with `#` (such as control.csv's `# status: ...`) are
 /// skipped; the first other line is the header, whose first four columns are `t,ux,uy,uz` (s, N·m, body

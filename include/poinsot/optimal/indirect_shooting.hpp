@@ -90,6 +90,13 @@ struct IndirectSolution {
   std::vector<Vec3> costate_omega;          ///< p_ω
   std::vector<Vec3> switching_function;     ///< σ = J⁻¹ p_ω
   std::vector<double> hamiltonian;          ///< H (0 on a free-time extremal)
+
+  // Multiple shooting: the interior nodes t_1 … t_{M−1} and the state there, the Newton unknowns that start
+  // the segments after the first (empty for single shooting). At convergence the end of segment m − 1 meets
+  // node m to the shooting's tolerance; the verification replays each segment from its node.
+  std::vector<double> node_time;      ///< s, ascending in (0, T)
+  std::vector<Mat3> node_attitude;    ///< R at each node (body → space)
+  std::vector<Vec3> node_omega_body;  ///< rad/s
 };
 
 /// Shoots from the direct solution's costates (and, for M > 1, its states at the nodes, or the forward
