@@ -11,8 +11,16 @@
 
 namespace poinsot::dynamics {
 
-TabulatedTorque::TabulatedTorque(std::vector<double> time, std::vector<Vec3> torque_body, std::string source)
-    : time_(std::move(time)), torque_(std::move(torque_body)), source_(std::move(source)) {
+const char* table_interpolation_name(TableInterpolation interpolation) {
+  return interpolation == TableInterpolation::cubic ? "cubic" : "linear";
+}
+
+TabulatedTorque::TabulatedTorque(std::vector<double> time, std::vector<Vec3> torque_body, std::string source,
+                                 TableInterpolation interpolation)
+    : time_(std::move(time)),
+      torque_(std::move(torque_body)),
+      source_(std::move(source)),
+      interpolation_(interpolation) {
   if (time_.size() != torque_.size())
     throw InvalidInput(fmt::format("{}: {} times for {} torques; expected one torque per time", source_,
                                    time_.size(), torque_.size()));
@@ -44,6 +52,11 @@ TabulatedTorque::TabulatedTorque(std::vector<double> time, std::vector<Vec3> tor
 }
 
 Vec3 TabulatedTorque::on_piece(std::size_t p, double t) const {
+  if (interpolation_ == TableInterpolation::linear) {
+    const double a = time_[p], b = time_[p + 1];
+    const double w = std::clamp((t - a) / (b - a), 0.0, 1.0);
+    return (1.0 - w) * torque_[p] + w * torque_[p + 1];
+  }
   // The stencil: rows p, p + 1 and one neighbour on each side on the same arc (an arc ends at a repeated
   // time); at an arc's end, two on the side that has them (one-sided, still O(Δt⁴)).
   const auto left = [&](std::size_t i) { return i > 0 && time_[i - 1] < time_[i]; };
@@ -100,8 +113,9 @@ void TabulatedTorque::enter_interval(double t_begin) const {
 }
 
 std::string TabulatedTorque::describe() const {
-  return fmt::format("table {} ({} rows, t {} … {} s; 0 outside)", source_, time_.size(),
-                     format_number(time_.front()), format_number(time_.back()));
+  return fmt::format("table {} ({} rows, t {} … {} s, {}; 0 outside)", source_, time_.size(),
+                     format_number(time_.front()), format_number(time_.back()),
+                     table_interpolation_name(interpolation_));
 }
 
 }  // namespace poinsot::dynamics

@@ -135,10 +135,11 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
               .body_surface = body.surface};
 
   // [torque]
-  const Section t(src, root["torque"].as_table(), "torque", {"type", "g", "value", "file"});
+  const Section t(src, root["torque"].as_table(), "torque", {"type", "g", "value", "file", "interpolation"});
   sc.torque_type = t.string("type").value_or("none");
-  if (t.has("file") && sc.torque_type != "table")
-    t.fail("file", fmt::format("given with type = \"{}\"; only type = \"table\" takes file", sc.torque_type));
+  for (const char* k : {"file", "interpolation"})
+    if (t.has(k) && sc.torque_type != "table")
+      t.fail(k, fmt::format("given with type = \"{}\"; only type = \"table\" takes {}", sc.torque_type, k));
   if (sc.torque_type == "none") {
     for (const char* k : {"g", "value"})
       if (t.has(k))
@@ -161,11 +162,19 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
                                          : dynamics::TorqueModel::constant_space(v);
   } else if (sc.torque_type == "table") {
     for (const char* k : {"g", "value"})
-      if (t.has(k)) t.fail(k, "given with type = \"table\"; expected file (a t,ux,uy,uz table) only");
+      if (t.has(k))
+        t.fail(k, "given with type = \"table\"; expected file (a t,ux,uy,uz table) and interpolation only");
     t.require("file", "the path of a t,ux,uy,uz table (N·m, body frame), e.g. a control.csv");
+    const std::string interpolation = t.string("interpolation").value_or("linear");
+    if (interpolation != "linear" && interpolation != "cubic")
+      t.fail("interpolation", fmt::format("got \"{}\"; expected \"linear\" or \"cubic\"", interpolation));
     std::filesystem::path file(*t.string("file"));
     if (file.is_relative() && !base_dir.empty()) file = std::filesystem::path(base_dir) / file;
-    sc.torque = located(t, "file", [&] { return read_torque_table(file.string()); });
+    sc.torque = located(t, "file", [&] {
+      return read_torque_table(file.string(), interpolation == "cubic"
+                                                  ? dynamics::TableInterpolation::cubic
+                                                  : dynamics::TableInterpolation::linear);
+    });
   } else {
     t.fail("type",
            fmt::format("got \"{}\", expected one of none, gravity, body, space, table", sc.torque_type));

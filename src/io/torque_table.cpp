@@ -33,8 +33,8 @@ std::vector<std::string_view> split(std::string_view line) {
 
 }  // namespace
 
-std::shared_ptr<const dynamics::TabulatedTorque> parse_torque_table(std::string_view text,
-                                                                    std::string_view source) {
+std::shared_ptr<const dynamics::TabulatedTorque> parse_torque_table(
+    std::string_view text, std::string_view source, dynamics::TableInterpolation interpolation) {
   static constexpr const char* kColumns[] = {"t", "ux", "uy", "uz"};
   std::vector<double> time;
   std::vector<Vec3> torque;
@@ -73,11 +73,12 @@ std::shared_ptr<const dynamics::TabulatedTorque> parse_torque_table(std::string_
     throw InvalidInput(
         fmt::format("{}: no header line; expected a table with the columns t,ux,uy,uz", source));
   return std::make_shared<const dynamics::TabulatedTorque>(std::move(time), std::move(torque),
-                                                           std::string(source));
+                                                           std::string(source), interpolation);
 }
 
-std::shared_ptr<const dynamics::TabulatedTorque> read_torque_table(const std::string& path) {
-  return parse_torque_table(detail::read_text_file(path), path);
+std::shared_ptr<const dynamics::TabulatedTorque> read_torque_table(
+    const std::string& path, dynamics::TableInterpolation interpolation) {
+  return parse_torque_table(detail::read_text_file(path), path, interpolation);
 }
 
 }  // namespace poinsot::io

@@ -35,7 +35,8 @@ class ReplayedTorque {
       model_ = dynamics::TorqueModel::callback([arc](double, const Mat3&, const Vec3&) { return *arc; },
                                                false, "optimal bang-bang torque");
     } else {
-      table_ = std::make_shared<dynamics::TabulatedTorque>(s.time, s.torque_body, "optimal tabulated torque");
+      table_ = std::make_shared<dynamics::TabulatedTorque>(s.time, s.torque_body, "optimal tabulated torque",
+                                                           dynamics::TableInterpolation::cubic);
       model_ = table_;
     }
   }

@@ -4,6 +4,7 @@
 // integral of τ/j).
 #include "poinsot/dynamics/tabulated_torque.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -22,6 +23,7 @@
 namespace poinsot::test {
 namespace {
 
+using dynamics::TableInterpolation;
 using dynamics::TabulatedTorque;
 
 const Vec3 kAxis = Vec3(1.0, 2.0, 2.0) / 3.0;
@@ -61,6 +63,22 @@ TEST(TabulatedTorque, InterpolatesLinearlyJumpsAtRepeatedTimesAndIsZeroOutside) 
   EXPECT_NE(tau.describe().find("4 rows"), std::string::npos) << tau.describe();
 }
 
+// A trapezoid (0, 0), (1, 1), (2, 1), (3, 0) on one arc: linear (the default) keeps the plateau at 1 and is
+// exact for the profile; the cubic through the four rows overshoots it, to the Lagrange value at t = 1.5 by
+// hand: weights (−1/16, 9/16, 9/16, −1/16), so 9/8.
+TEST(TabulatedTorque, LinearIsTheDefaultAndKeepsAPiecewiseLinearProfile) {
+  const std::vector<double> t{0.0, 1.0, 2.0, 3.0};
+  const std::vector<Vec3> u{Vec3::Zero(), Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3::Zero()};
+  const TabulatedTorque linear(t, u, "trapezoid");
+  EXPECT_EQ(linear.interpolation(), TableInterpolation::linear);
+  for (const double x : {0.25, 0.5, 1.5, 2.5})
+    EXPECT_NEAR(at(linear, x).x(), std::min({x, 1.0, 3.0 - x}), 1e-15) << x;
+  EXPECT_NE(linear.describe().find("linear"), std::string::npos) << linear.describe();
+  const TabulatedTorque cubic(t, u, "trapezoid", TableInterpolation::cubic);
+  EXPECT_NEAR(at(cubic, 1.5).x(), 9.0 / 8.0, 1e-15);
+  EXPECT_NE(cubic.describe().find("cubic"), std::string::npos) << cubic.describe();
+}
+
 // On an arc of at least four rows the interpolant is the cubic through the four rows nearest to the piece:
 // a cubic τ(t) sampled at unequal times is reproduced between the rows to round-off, on each side of a jump,
 // whose two values stay exact. A smooth τ is reproduced to O(h⁴): halving the spacing divides the largest
@@ -80,7 +98,7 @@ TEST(TabulatedTorque, InterpolatesByLocalCubicsOnEachArc) {
     t.push_back(x);
     u.push_back(right(x));
   }
-  const TabulatedTorque tau(t, u, "cubic");
+  const TabulatedTorque tau(t, u, "cubic", TableInterpolation::cubic);
   for (double x = 0.05; x < 2.0; x += 0.1)
     EXPECT_LT((at(tau, x) - left(x)).norm(), 1e-13) << x;
   for (double x = 2.05; x < 4.0; x += 0.1)
@@ -97,7 +115,7 @@ TEST(TabulatedTorque, InterpolatesByLocalCubicsOnEachArc) {
       ts.push_back(2.0 * i / n);
       us.push_back(Vec3(std::sin(3 * ts.back()), 0, 0));
     }
-    const TabulatedTorque s(ts, us, "sine");
+    const TabulatedTorque s(ts, us, "sine", TableInterpolation::cubic);
     double e = 0.0;
     for (int i = 1; i + 2 < n; ++i) {  // interior pieces: full four-row stencils
       const double x = 0.5 * (ts[i] + ts[i + 1]);

@@ -4,6 +4,7 @@
 #include "poinsot/io/torque_table.hpp"
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -54,7 +55,7 @@ TEST(TorqueTable, RejectsMalformedTablesInOneLine) {
   EXPECT_THROW(read_torque_table("/nonexistent/control.csv"), InvalidInput);
 }
 
-TEST(TorqueTable, ScenarioTypeTableNeedsFileAndOnlyFile) {
+TEST(TorqueTable, ScenarioTypeTableNeedsFileAndTakesInterpolation) {
   const std::string body =
       "[body]\nprincipal_moments = [1, 2, 3]\n[initial]\nomega_body = [0, 0, 0]\n"
       "[output]\nt_end = 1.0\n";
@@ -67,6 +68,29 @@ TEST(TorqueTable, ScenarioTypeTableNeedsFileAndOnlyFile) {
     ADD_FAILURE();
   } catch (const InvalidInput& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/missing.csv"), std::string::npos) << e.what();
+  }
+  // interpolation: "linear" (default) or "cubic", with type = "table" only; one line naming the key.
+  const auto dir = ::poinsot::test::temp_path("poinsot_test_torque_table_interpolation");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "c.csv") << "t,ux,uy,uz\n0,0,0,0\n1,1,0,0\n2,1,0,0\n3,0,0,0\n";
+  const std::string table = body + "[torque]\ntype = \"table\"\nfile = \"c.csv\"\n";
+  EXPECT_NE(parse_scenario(table, "s.toml", dir.string()).torque->describe().find("linear"),
+            std::string::npos);
+  EXPECT_NE(parse_scenario(table + "interpolation = \"cubic\"\n", "s.toml", dir.string())
+                .torque->describe()
+                .find("cubic"),
+            std::string::npos);
+  for (const std::string& bad :
+       {table + "interpolation = \"spline\"\n",
+        body + "[torque]\ntype = \"body\"\nvalue = [0, 0, 1]\ninterpolation = \"cubic\"\n"}) {
+    try {
+      parse_scenario(bad, "s.toml", dir.string());
+      ADD_FAILURE() << bad;
+    } catch (const InvalidInput& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("interpolation"), std::string::npos) << m;
+      EXPECT_EQ(m.find('\n'), std::string::npos) << m;
+    }
   }
 }
 
