@@ -46,50 +46,12 @@ Vec3 extremal_costate_omega(const ReorientationProblem& p, const Vec3& omega) {
   return p.inertia_body * L / (p.torque_max[0] * L.norm());
 }
 
-// The extremal at n + 1 equal steps of [0, T*], as a direct solution would give it (samples and costates at
-// the same times), with the time axis stretched by 1 + e and p_ω tilted by e ‖p_ω‖ (0.3, −0.2, 0.5).
-DirectSolution perturbed_extremal(const ReorientationProblem& p, int n, double e) {
-  using State = std::array<double, 12>;
-  namespace odeint = boost::numeric::odeint;
-  const Mat3 J = p.inertia_body, J_inv = J.inverse();
-  const double T = momentum_bound_time(p);
-  auto rhs = [&](const State& y, State& dy, double) {
-    const Mat3 R = Eigen::Map<const Mat3>(y.data());
-    const Vec3 w = Eigen::Map<const Vec3>(y.data() + 9);
-    const Vec3 L = J * w;
-    Eigen::Map<Mat3>(dy.data()) = R * so3::hat(w);
-    Eigen::Map<Vec3>(dy.data() + 9) = J_inv * (-kRacketTorqueBound * L.normalized() - w.cross(L));
-  };
-  State y{};
-  Eigen::Map<Mat3>(y.data()) = Mat3::Identity();
-  Eigen::Map<Vec3>(y.data() + 9) = p.omega_initial;
-  DirectSolution d;
-  d.converged = true;
-  d.status = "converged";
-  d.final_time = d.cost = T * (1.0 + e);
-  for (int k = 0; k <= n; ++k) {
-    if (k > 0)  // the last step stops short of T*, where L = 0 and L/‖L‖ is undefined
-      odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_fehlberg78<State>>(1e-13, 1e-13),
-                                 rhs, y, T * (k - 1) / n, k < n ? T * k / n : T * (1.0 - 1e-9), T / n / 4);
-    const Vec3 w = Eigen::Map<const Vec3>(y.data() + 9);
-    const Vec3 p_omega = extremal_costate_omega(p, w);
-    d.time.push_back(T * (1.0 + e) * k / n);
-    d.attitude.emplace_back(Mat3(Eigen::Map<const Mat3>(y.data())));
-    d.omega_body.push_back(w);
-    d.torque_body.push_back(-kRacketTorqueBound * (p.inertia_body * w).normalized());
-    d.costate_time.push_back(d.time.back());
-    d.costate_attitude_body.push_back(Vec3::Zero());
-    d.costate_omega.push_back(p_omega + e * p_omega.norm() * Vec3(0.3, -0.2, 0.5));
-  }
-  return d;
-}
-
-// The extremal as a direct solution gives it: sampled at n + 1 equal steps of [0, T*(1 + e)] (its T short by
-// e), at the phases of a tumble running off the exact one by up to `phase` seconds mid-horizon (the state at
-// t_k is the extremal's at T*k/n + phase·sin(πk/n)), and with p_ω scattered by `scatter` of its size (a
-// deterministic pattern standing in for the scatter of the multipliers' costate estimates).
-DirectSolution phase_shifted_extremal(const ReorientationProblem& p, int n, double e, double phase,
-                                      double scatter) {
+// The extremal as a direct solution gives it: sampled at n + 1 equal steps of [0, T*(1 + e)] (its T off by
+// e), the state at t_k the extremal's at T*k/n + phase·sin(πk/n) (a tumble running off the exact one by up
+// to `phase` seconds mid-horizon), and p_ω at t_k given by costate_of(k, the extremal's p_ω).
+template <class CostateOf>
+DirectSolution sampled_extremal(const ReorientationProblem& p, int n, double e, double phase,
+                                const CostateOf& costate_of) {
   using State = std::array<double, 12>;
   namespace odeint = boost::numeric::odeint;
   const Mat3 J = p.inertia_body, J_inv = J.inverse();
@@ -123,10 +85,29 @@ DirectSolution phase_shifted_extremal(const ReorientationProblem& p, int n, doub
     d.torque_body.push_back(-p.torque_max[0] * (p.inertia_body * w).normalized());
     d.costate_time.push_back(d.time.back());
     d.costate_attitude_body.push_back(Vec3::Zero());
-    d.costate_omega.push_back(p_omega + scatter * p_omega.norm() *
-                                            Vec3(std::cos(7.0 * k), std::sin(5.0 * k), std::cos(3.0 * k)));
+    d.costate_omega.push_back(costate_of(k, p_omega));
   }
   return d;
+}
+
+// The extremal at n + 1 equal steps of [0, T*], as a direct solution would give it (samples and costates at
+// the same times), with the time axis stretched by 1 + e and p_ω tilted by e ‖p_ω‖ (0.3, −0.2, 0.5).
+DirectSolution perturbed_extremal(const ReorientationProblem& p, int n, double e) {
+  return sampled_extremal(p, n, e, 0.0, [e](int, const Vec3& p_omega) {
+    return Vec3(p_omega + e * p_omega.norm() * Vec3(0.3, -0.2, 0.5));
+  });
+}
+
+// The extremal as a direct solution gives it: sampled at n + 1 equal steps of [0, T*(1 + e)] (its T short by
+// e), at the phases of a tumble running off the exact one by up to `phase` seconds mid-horizon (the state at
+// t_k is the extremal's at T*k/n + phase·sin(πk/n)), and with p_ω scattered by `scatter` of its size (a
+// deterministic pattern standing in for the scatter of the multipliers' costate estimates).
+DirectSolution phase_shifted_extremal(const ReorientationProblem& p, int n, double e, double phase,
+                                      double scatter) {
+  return sampled_extremal(p, n, e, phase, [&](int k, const Vec3& p_omega) {
+    return Vec3(p_omega +
+                scatter * p_omega.norm() * Vec3(std::cos(7.0 * k), std::sin(5.0 * k), std::cos(3.0 * k)));
+  });
 }
 
 // From the extremal perturbed by 1e-4 (in T and in the direction of p_ω), multiple shooting over 64 segments
