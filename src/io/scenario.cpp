@@ -165,16 +165,18 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
       if (t.has(k))
         t.fail(k, "given with type = \"table\"; expected file (a t,ux,uy,uz table) and interpolation only");
     t.require("file", "the path of a t,ux,uy,uz table (N·m, body frame), e.g. a control.csv");
-    const std::string interpolation = t.string("interpolation").value_or("linear");
-    if (interpolation != "linear" && interpolation != "cubic")
-      t.fail("interpolation", fmt::format("got \"{}\"; expected \"linear\" or \"cubic\"", interpolation));
+    // The spellings are the dynamics layer's (table_interpolation_name), the default linear.
+    const std::string name =
+        t.string("interpolation")
+            .value_or(dynamics::table_interpolation_name(dynamics::TableInterpolation::linear));
+    dynamics::TableInterpolation interpolation = dynamics::TableInterpolation::linear;
+    if (name == dynamics::table_interpolation_name(dynamics::TableInterpolation::cubic))
+      interpolation = dynamics::TableInterpolation::cubic;
+    else if (name != dynamics::table_interpolation_name(dynamics::TableInterpolation::linear))
+      t.fail("interpolation", fmt::format("got \"{}\"; expected \"linear\" or \"cubic\"", name));
     std::filesystem::path file(*t.string("file"));
     if (file.is_relative() && !base_dir.empty()) file = std::filesystem::path(base_dir) / file;
-    sc.torque = located(t, "file", [&] {
-      return read_torque_table(file.string(), interpolation == "cubic"
-                                                  ? dynamics::TableInterpolation::cubic
-                                                  : dynamics::TableInterpolation::linear);
-    });
+    sc.torque = located(t, "file", [&] { return read_torque_table(file.string(), interpolation); });
   } else {
     t.fail("type",
            fmt::format("got \"{}\", expected one of none, gravity, body, space, table", sc.torque_type));
