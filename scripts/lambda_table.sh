@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Produces the table of docs/lambda.md: the theorems of Vallée & Dumitriu (2002) on Λ (with ERRATA.md)
+# Produces the table of docs/lambda.md: the theorems of Vallée & Dumitriu (2002) on Λ (with docs/conventions.md)
 # checked numerically by `poinsot lambda --json` on prolate, oblate, spherical, asymmetric and lamina bodies,
 # with the exact solution and with rattle. Prints the Markdown table; with --update it also rewrites the
 # block between the lambda-table markers in docs/lambda.md.
@@ -13,11 +13,11 @@ exe="${1:-build/release/apps/poinsot/poinsot}"
 
 # name | body flags | omega0
 cases=(
-  "prolate (ERRATA case b)|--A 2 --C 1|0.3 -0.4 1.2"
-  "oblate (ERRATA case c)|--A 1 --C 1.8|1.0 0.5 -2.0"
+  "prolate (case b)|--A 2 --C 1|0.3 -0.4 1.2"
+  "oblate (case c)|--A 1 --C 1.8|1.0 0.5 -2.0"
   "sphere A = C = 1.5|--A 1.5 --C 1.5|0.3 -0.4 1.2"
   "flat disc A = C/2|--A 1 --C 2 --k 1 1 1|0.5 -0.2 0.9"
-  "asymmetric (2, 3, 4) (ERRATA C3)|--moments 2 3 4|1.0 0.5 0.3"
+  "asymmetric (2, 3, 4) (C3)|--moments 2 3 4|1.0 0.5 0.3"
   "lamina (1, 2, 3)|--moments 1 2 3|0.4 1.0 -0.6"
 )
 t_end=20

@@ -253,7 +253,7 @@ def ensemble(path: str, *, samples: Optional[int] = ..., threads: int = ..., sim
     """Runs `poinsot ensemble PATH` in process (the GIL released) and returns a dict of NumPy arrays, one entry per sample: index, rejected, repaired, moments (N, 3), misalignment, omega0 (N, 3), every output (first_flip_time, flip_interval, flip_interval_theory, attitude_error, energy_error, L_space_error, and for heavy tops precession_rate, nutation_frequency, nutation_amplitude), quaternion_final (N, 4), omega_final (N, 3); and 'summary', the dict of summary.json."""
 
 def fast_top_precession_rate(top: HeavyTop, omega3: float) -> float:
-    """The gyroscopic (fast-top) precession rate of the notes, Ω = M g l/(I3 ω3) (rad/s), ERRATA B3: an approximation that neglects nutation and the transverse angular momentum."""
+    """The gyroscopic (fast-top) precession rate of the notes, Ω = M g l/(I3 ω3) (rad/s), docs/conventions.md B3: an approximation that neglects nutation and the transverse angular momentum."""
 
 def free_body_theory(body: object, omega_body: numpy.typing.ArrayLike) -> FreeBodyTheory:
     """The closed-form theory of the torque-free motion for a poinsot.RigidBody and ω in its body frame (rad/s), or for principal moments (ascending, kg·m²) and ω in the principal frame."""

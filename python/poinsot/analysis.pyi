@@ -24,13 +24,13 @@ class AxisymmetricInertia:
     def k(self) -> numpy.typing.NDArray[numpy.float64]: ...
 
 class AxisymmetricLambda:
-    """Λ of a torque-free axisymmetric body in closed form (Vallée & Dumitriu 2002, §§4–5, with ERRATA.md C11–C23): constant eigenvalues, the rotating eigenvector and the constant matrix EᵀΛE."""
+    """Λ of a torque-free axisymmetric body in closed form (Vallée & Dumitriu 2002, §§4–5, with docs/conventions.md C11–C23): constant eigenvalues, the rotating eigenvector and the constant matrix EᵀΛE."""
     @property
     def Delta(self) -> float: ...
     def E(self, t: float) -> numpy.typing.NDArray[numpy.float64]:
         """E(t) = exp[(t − t0)(C/A − 1) μ j(k)] (eq."""
     def __init__(self, inertia: AxisymmetricInertia, omega0_body: numpy.typing.ArrayLike, t0: float = ..., relative_tolerance: float = ...) -> None:
-        """Throws InvalidInput unless A > 0, C > 0, C ≤ 2A (a physical body: A − C/2 = ⟨k, K k⟩ ≥ 0, ERRATA C9), |k| > 0 (normalised here) and Ω0 finite."""
+        """Throws InvalidInput unless A > 0, C > 0, C ≤ 2A (a physical body: A − C/2 = ⟨k, K k⟩ ≥ 0, docs/conventions.md C9), |k| > 0 (normalised here) and Ω0 finite."""
     @property
     def c1(self) -> float: ...
     @property

@@ -10,7 +10,7 @@ EPS = np.finfo(float).eps
 
 
 def lambda_numpy(J, w, tau=np.zeros(3)):
-    """Λ = (j(ω)² + j(ω̇)) K with ω̇ = J⁻¹(τ − ω × Jω) and K = tr(J)/2·I − J (ERRATA conventions)."""
+    """Λ = (j(ω)² + j(ω̇)) K with ω̇ = J⁻¹(τ − ω × Jω) and K = tr(J)/2·I − J (docs/conventions.md conventions)."""
     wdot = np.linalg.solve(J, tau - np.cross(w, J @ w))
     K = np.trace(J) / 2 * np.eye(3) - J
     W = so3.hat(w)
@@ -52,7 +52,7 @@ def test_axisymmetric_eigenvalues_are_constant_along_a_run():
     assert cf is not None and cf["max_deviation"] < 1e-10
     assert np.allclose(cf["eigenvalues"], closed.eigenvalues(), rtol=1e-14)
     assert props["max_eigenvalue_max"] <= 1e-12 and props["samples"] == len(r)
-    # λ3 = −C⟨Ω0, Ω0⟩/2 (ERRATA: not η0²)
+    # λ3 = −C⟨Ω0, Ω0⟩/2 (docs/conventions.md: not η0²)
     assert closed.lambda3 == pytest.approx(-1.6 * np.dot(w0, w0) / 2, rel=1e-15)
 
 

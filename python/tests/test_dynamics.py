@@ -22,7 +22,7 @@ def test_rigid_body_tensors_match_their_definitions():
         J = (J + J.T) / 2
         body = RigidBody.from_inertia(J)
         assert np.allclose(body.inertia_com, J, rtol=0, atol=4 * EPS * m.max())
-        # K = tr(J)/2 I - J (ERRATA conventions), computed here independently.
+        # K = tr(J)/2 I - J (docs/conventions.md conventions), computed here independently.
         assert np.allclose(body.poinsot, np.trace(J) / 2 * np.eye(3) - J, rtol=0, atol=8 * EPS * m.max())
         assert np.allclose(body.inertia_inverse @ J, np.eye(3), rtol=0, atol=64 * EPS)
         # principal moments ascending, axes a proper rotation diagonalising J

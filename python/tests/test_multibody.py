@@ -163,7 +163,7 @@ def test_free_body_lambda_equals_single_body_formula():
                                           omega_body=omega)])
     exact = mb.exact_multipliers(system, state)
 
-    # Oracle in NumPy: Euler's equations J ω̇ = −ω × Jω (no torque), Λ = (j(ω)² + j(ω̇)) K (ERRATA.md).
+    # Oracle in NumPy: Euler's equations J ω̇ = −ω × Jω (no torque), Λ = (j(ω)² + j(ω̇)) K (docs/conventions.md).
     J = inertia_from_poinsot(K)
     omega_dot = np.linalg.solve(J, -np.cross(omega, J @ omega))
     Lam = (hat(omega) @ hat(omega) + hat(omega_dot)) @ K

@@ -95,7 +95,7 @@ std::string format_lambda_report(const LambdaReport& r) {
   line(fmt::format("eigenvalues of Λ at t_end (ascending, J):  {}", v(p.eigenvalues_final)));
   line(fmt::format("largest eigenvalue variation (J):          {}{}", g(p.eigenvalue_max_variation),
                    p.closed_form ? "   (axisymmetric: constant in theory)"
-                                 : "   (general body: not constant, ERRATA C3)"));
+                                 : "   (general body: not constant, docs/conventions.md C3)"));
   line(fmt::format("largest eigenvalue seen (J, must be <= 0): {}", g(p.max_eigenvalue_max)));
   line(fmt::format("symmetry error max |Λ − Λᵀ − j(τ)| (J):    {}", g(p.symmetry_error_max)));
   line(fmt::format("max |tr Λ + 2T| (J):                       {}", g(p.trace_plus_2T_max)));

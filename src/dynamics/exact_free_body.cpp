@@ -43,14 +43,15 @@ State axisymmetric_free_motion(double A, double C, const Vec3& axis_body, const 
   const double dt = t - initial.time;
   const Vec3& w0 = initial.omega_body;
   const double mu = axis_body.dot(w0);
-  const double nu = (C / A - 1.0) * mu;  // rad/s: ω precesses about the axis at ν (ERRATA C11: not (A − C)/A)
+  const double nu =
+      (C / A - 1.0) * mu;  // rad/s: ω precesses about the axis at ν (docs/conventions.md C11: not (A − C)/A)
   const Mat3 E = so3::exp((nu * dt) * axis_body);
   const Vec3 l_over_a = w0 + nu * axis_body;  // J ω0 / A
   State s;
   s.time = t;
   s.omega_body = E * w0;
   s.R_space_body = initial.R_space_body * so3::exp(dt * l_over_a) *
-                   E.transpose();  // order R·E (ERRATA, "order of factors")
+                   E.transpose();  // order R·E (docs/conventions.md, "order of factors")
   return s;
 }
 

@@ -110,8 +110,8 @@ FreeBodyTheory free_body_theory(const Vec3& principal_moments, const Vec3& omega
     return th;
   }
   if (sym12 || sym23) {
-    // J = A·1 + (C − A) e⊗e with e the symmetry axis; ω precesses about e at (C/A − 1)μ, μ = e·ω (ERRATA
-    // C11).
+    // J = A·1 + (C − A) e⊗e with e the symmetry axis; ω precesses about e at (C/A − 1)μ, μ = e·ω
+    // (docs/conventions.md C11).
     const double A = sym12 ? 0.5 * (I[0] + I[1]) : 0.5 * (I[1] + I[2]);
     const double C = sym12 ? I[2] : I[0];
     const double mu = sym12 ? w[2] : w[0];

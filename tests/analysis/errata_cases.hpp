@@ -1,8 +1,8 @@
 #pragma once
 /// @file errata_cases.hpp
-/// The worked axisymmetric cases of ERRATA.md, shared by the analysis tests (SI units, R(0) = I, the symmetry
-/// axis along body z): case b, prolate (A = 2, C = 1 kg·m²), and case c, oblate (A = 1, C = 1.8 kg·m²), each
-/// with its initial body angular velocity in rad/s.
+/// The worked axisymmetric cases of docs/conventions.md, shared by the analysis tests (SI units, R(0) = I,
+/// the symmetry axis along body z): case b, prolate (A = 2, C = 1 kg·m²), and case c, oblate (A = 1, C = 1.8
+/// kg·m²), each with its initial body angular velocity in rad/s.
 
 #include "poinsot/analysis/axisymmetric.hpp"
 #include "poinsot/core/types.hpp"

@@ -32,7 +32,7 @@ State state_at_rest_attitude(const Vec3& w) {
 
 TEST(Axisymmetric, CaseBProlateErrataNumbers) {
   const AxisymmetricLambda a(kCaseB, kOmegaB);
-  // Printed to 4-5 digits in ERRATA.md (eigenvalue ordering remark, C21).
+  // Printed to 4-5 digits in docs/conventions.md (eigenvalue ordering remark, C21).
   EXPECT_NEAR(a.lambda1(), -1.0294, 5e-5);
   EXPECT_NEAR(a.lambda2(), -0.0656, 5e-5);
   EXPECT_NEAR(a.lambda3(), -0.845, 5e-16);  // −C⟨Ω0,Ω0⟩/2 = −1.69/2 exactly representable to 1 ulp
@@ -107,8 +107,8 @@ TEST(Axisymmetric, ClosedFormsEqualTheStateFormulaAtT0) {
 }
 
 TEST(Axisymmetric, OmegaPrecessesAsEq42WithItsPrintedSign) {
-  // ERRATA C11: ω(t) = E Ω0 with E = exp[t (C/A − 1) μ j(k)], against the reference RK4 (error ~1e-12);
-  // the opposite sign is off by O(1).
+  // docs/conventions.md C11: ω(t) = E Ω0 with E = exp[t (C/A − 1) μ j(k)], against the reference RK4 (error
+  // ~1e-12); the opposite sign is off by O(1).
   for (const auto& [in, w0] : {std::pair{kCaseB, kOmegaB}, std::pair{kCaseC, kOmegaC}}) {
     const AxisymmetricLambda a(in, w0);
     const State s = test::advance(body_of(in), nullptr, state_at_rest_attitude(w0), 7.5);

@@ -70,8 +70,8 @@ TEST(ClosedForm, InvariantsOfAnAxisymmetricBodyLemma2) {
 }
 
 TEST(ClosedForm, PrintedEq38IsNotSymmetricCorrectedIsErrataC6) {
-  // Case b (A = 2, C = 1, k = e3, Ω0 = (0.3, −0.4, 1.2)): the corrected Λ13 is 0.27 (ERRATA C6, printed to
-  // two digits); the printed (3.8) with τ0 in place of τ0τ1 gives 0.54 and an unsymmetric matrix.
+  // Case b (A = 2, C = 1, k = e3, Ω0 = (0.3, −0.4, 1.2)): the corrected Λ13 is 0.27 (docs/conventions.md C6,
+  // printed to two digits); the printed (3.8) with τ0 in place of τ0τ1 gives 0.54 and an unsymmetric matrix.
   const Mat3 J = Vec3(2.0, 2.0, 1.0).asDiagonal();
   const Vec3 w(0.3, -0.4, 1.2);
   const Mat3 lambda = lambda_closed_form(J, w, ClosedForm::eq38);

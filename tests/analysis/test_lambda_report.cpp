@@ -29,8 +29,10 @@ LambdaAnalysisOptions opts(const std::string& method, double dt, double t_end, d
 
 using errata::kOmegaB;
 using errata::kOmegaC;
-const RigidBody kProlate = RigidBody::from_principal_moments(Vec3(2.0, 2.0, 1.0));  // ERRATA case b
-const RigidBody kOblate = RigidBody::from_principal_moments(Vec3(1.0, 1.0, 1.8));   // ERRATA case c
+const RigidBody kProlate =
+    RigidBody::from_principal_moments(Vec3(2.0, 2.0, 1.0));  // docs/conventions.md case b
+const RigidBody kOblate =
+    RigidBody::from_principal_moments(Vec3(1.0, 1.0, 1.8));  // docs/conventions.md case c
 
 TEST(LambdaReport, ExactSolutionKeepsTheEigenvaluesToRoundOff) {
   for (const auto& [body, w] : {std::pair{kProlate, kOmegaB}, std::pair{kOblate, kOmegaC}}) {
@@ -98,7 +100,7 @@ TEST(LambdaReport, GeneralBodyReportsVariationNotClosedForm) {
   const RigidBody body = RigidBody::from_principal_moments(Vec3(2.0, 3.0, 4.0));
   const LambdaReport r = analyse_lambda(body, initial_state(Vec3(1.0, 0.5, 0.3)), opts("dop853", 0.1, 3.0));
   EXPECT_FALSE(r.properties.closed_form.has_value());
-  EXPECT_NEAR(r.properties.eigenvalues_final[0], -2.3779, 5e-5);  // ERRATA C3
+  EXPECT_NEAR(r.properties.eigenvalues_final[0], -2.3779, 5e-5);  // docs/conventions.md C3
   EXPECT_NEAR(r.properties.eigenvalues_final[1], -0.6791, 5e-5);
   EXPECT_NEAR(r.properties.eigenvalues_final[2], -0.0530, 5e-5);
   EXPECT_GE(r.properties.eigenvalue_max_variation, 0.1);

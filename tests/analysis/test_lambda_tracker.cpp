@@ -35,7 +35,7 @@ TEST(LambdaTracker, CaseBProlateAlongTheReferenceTrajectory) {
   EXPECT_NEAR(c.inertia.A, 2.0, 1e-15);
   EXPECT_NEAR(c.inertia.C, 1.0, 1e-15);
   EXPECT_NEAR(std::abs(c.inertia.k[2]), 1.0, 1e-15);
-  EXPECT_NEAR(c.eigenvalues[0], -1.0294, 5e-5);  // ERRATA: λ1 < λ3 < λ2
+  EXPECT_NEAR(c.eigenvalues[0], -1.0294, 5e-5);  // docs/conventions.md: λ1 < λ3 < λ2
   EXPECT_NEAR(c.eigenvalues[1], -0.845, 1e-15);
   EXPECT_NEAR(c.eigenvalues[2], -0.0656, 5e-5);
   // The trajectory's eigenvalues stay on the closed form to the reference integrator's error.
@@ -50,7 +50,8 @@ TEST(LambdaTracker, CaseBProlateAlongTheReferenceTrajectory) {
 }
 
 TEST(LambdaTracker, GeneralBodyEigenvaluesVary) {
-  // ERRATA C3: J = diag(2,3,4), ω0 = (1, 0.5, 0.3); eig Λ(0) → eig Λ(3 s) moves by 0.1178 (first entry).
+  // docs/conventions.md C3: J = diag(2,3,4), ω0 = (1, 0.5, 0.3); eig Λ(0) → eig Λ(3 s) moves by 0.1178 (first
+  // entry).
   const RigidBody body = RigidBody::from_principal_moments(Vec3(2.0, 3.0, 4.0));
   State s0;
   s0.omega_body = Vec3(1.0, 0.5, 0.3);

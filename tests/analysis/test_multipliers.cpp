@@ -90,7 +90,7 @@ TEST(Multipliers, TraceIsMinusTwoTUnderTorqueToo) {
 }
 
 TEST(Multipliers, MinusLambdaIsPositiveSemiDefiniteProperty1) {
-  // ERRATA C2: max eigenvalue ≤ 0 up to round-off, for physical bodies and plane laminae alike.
+  // docs/conventions.md C2: max eigenvalue ≤ 0 up to round-off, for physical bodies and plane laminae alike.
   for (int i = 0; i < 2000; ++i) {
     RigidBody body = random_body();
     if (i % 4 == 0) {  // a lamina: I3 = I1 + I2
@@ -104,7 +104,7 @@ TEST(Multipliers, MinusLambdaIsPositiveSemiDefiniteProperty1) {
 }
 
 TEST(Multipliers, SteadySpinAboutAPrincipalAxisHasAZeroEigenvalue) {
-  // V ∥ ω is an eigenvector with λ = 0 when ṘV = 0 (ERRATA C2).
+  // V ∥ ω is an eigenvector with λ = 0 when ṘV = 0 (docs/conventions.md C2).
   const RigidBody body = RigidBody::from_principal_moments(Vec3(2.0, 3.0, 4.0));
   State s;
   s.omega_body = Vec3(0.0, 1.7, 0.0);
@@ -130,8 +130,8 @@ TEST(Multipliers, CovariantUnderAChangeOfBodyFrame) {
 }
 
 TEST(Multipliers, LaminaNeedsNoInverseOfK) {
-  // J = diag(1, 2, 3) is a plane lamina: K = diag(2, 1, 0) singular (ERRATA A3, C2). Λ = M K has a zero
-  // third column, is finite and matches the finite-difference oracle.
+  // J = diag(1, 2, 3) is a plane lamina: K = diag(2, 1, 0) singular (docs/conventions.md A3, C2). Λ = M K has
+  // a zero third column, is finite and matches the finite-difference oracle.
   const RigidBody body = RigidBody::from_principal_moments(Vec3(1.0, 2.0, 3.0));
   EXPECT_EQ(body.poinsot()(2, 2), 0.0);
   for (int i = 0; i < 50; ++i) {
@@ -146,9 +146,9 @@ TEST(Multipliers, LaminaNeedsNoInverseOfK) {
 }
 
 TEST(Multipliers, AsymmetricBodyEigenvaluesVaryErrataC3) {
-  // ERRATA C3 (printed to 4 decimals): J = diag(2,3,4), ω0 = (1, 0.5, 0.3): eig Λ(0) = (−2.2601, −0.7605,
-  // −0.0894), eig Λ(3 s) = (−2.3779, −0.6791, −0.0530). The reference RK4 error (~1e-12) is far below the
-  // 5e-5 rounding of the printed figures.
+  // docs/conventions.md C3 (printed to 4 decimals): J = diag(2,3,4), ω0 = (1, 0.5, 0.3): eig Λ(0) = (−2.2601,
+  // −0.7605, −0.0894), eig Λ(3 s) = (−2.3779, −0.6791, −0.0530). The reference RK4 error (~1e-12) is far
+  // below the 5e-5 rounding of the printed figures.
   const RigidBody body = RigidBody::from_principal_moments(Vec3(2.0, 3.0, 4.0));
   State s;
   s.omega_body = Vec3(1.0, 0.5, 0.3);

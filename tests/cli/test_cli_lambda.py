@@ -1,6 +1,6 @@
 """`poinsot lambda`: the report of the Λ theorems (Vallée & Dumitriu 2002) and its JSON keys (docs/lambda.md).
 
-Oracles: the ERRATA.md worked cases b and c (printed eigenvalues), and Λ(0) = (j(ω)² + j(ω̇))K recomputed here
+Oracles: the docs/conventions.md worked cases b and c (printed eigenvalues), and Λ(0) = (j(ω)² + j(ω̇))K recomputed here
 with NumPy from the body and ω0 for the stress integral ∫σ dv = −Λ(0) (R(0) = I).
 """
 import json
@@ -37,7 +37,7 @@ def test_case_b_prolate(cli, method):
     for key in REQUIRED_KEYS:
         assert key in d
     cf = d["closed_form"]
-    # ERRATA: λ1 = −1.0294 < λ3 = −0.845 < λ2 = −0.0656 (sorted ascending)
+    # docs/conventions.md: λ1 = −1.0294 < λ3 = −0.845 < λ2 = −0.0656 (sorted ascending)
     assert cf["eigenvalues"] == pytest.approx([-1.0294, -0.845, -0.0656], abs=5e-5)
     assert set(cf) >= {"c1", "c2", "Delta", "eigenvalues", "max_deviation"}
     assert cf["c1"] == pytest.approx(-1.095, abs=1e-14)
@@ -71,7 +71,7 @@ def test_asymmetric_body_has_no_closed_form_and_varies(cli):
     d = run_json(cli, "--moments", 2, 3, 4, "--omega0", 1, 0.5, 0.3, "--t-end", 3, "--method", "dop853",
                  "--dt", 0.1)
     assert d["closed_form"] is None
-    # ERRATA C3: eig Λ(3 s) = (−2.3779, −0.6791, −0.0530)
+    # docs/conventions.md C3: eig Λ(3 s) = (−2.3779, −0.6791, −0.0530)
     assert d["eigenvalues_final"] == pytest.approx([-2.3779, -0.6791, -0.0530], abs=5e-5)
     assert d["eigenvalue_max_variation"] > 0.1
     assert d["max_eigenvalue_max"] <= 0.0

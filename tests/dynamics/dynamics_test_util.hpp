@@ -71,8 +71,8 @@ inline double state_error(const State& a, const State& ref) {
 }
 
 /// The closed form of the axisymmetric free body J = diag(A, A, C) (Vallée & Dumitriu 2002, eq. 4.2, with
-/// the conventions of ERRATA.md): R(t) = exp[t j(L_space/A)] R0 exp[−t ν j(e3)], ν = (C − A) ω3 / A, and
-/// ω(t) = ω0 rotated by ν t about e3.
+/// the conventions of docs/conventions.md): R(t) = exp[t j(L_space/A)] R0 exp[−t ν j(e3)], ν = (C − A) ω3 /
+/// A, and ω(t) = ω0 rotated by ν t about e3.
 inline State axisymmetric_exact(double A, double C, const State& s0, double t) {
   const Vec3 L_space =
       s0.R_space_body * Vec3(A * s0.omega_body.x(), A * s0.omega_body.y(), C * s0.omega_body.z());

@@ -67,7 +67,7 @@ TEST(Dlm, NonPrincipalBodyFrameGivesTheSameMotion) {
 }
 
 TEST(Dlm, AgreesWithTheAxisymmetricClosedForm) {
-  const double A = 1.0, C = 1.8;  // ERRATA case c
+  const double A = 1.0, C = 1.8;  // docs/conventions.md case c
   const RigidBody body = RigidBody::from_principal_moments(Vec3(A, A, C));
   State s0;
   s0.omega_body = Vec3(1.0, 0.5, -2.0);

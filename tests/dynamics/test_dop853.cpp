@@ -23,7 +23,7 @@ IntegratorOptions dop853_options(double tol, double dt = 0.5) {
 
 TEST(Dop853, ReferenceAgreesWithTheAxisymmetricClosedForm) {
   // The reference used by the other tests: at rtol = atol = 1e-14 over 10 s it matches eq. (4.2) to ~1e-13.
-  const double A = 2.0, C = 1.0;  // ERRATA case b
+  const double A = 2.0, C = 1.0;  // docs/conventions.md case b
   const RigidBody body = RigidBody::from_principal_moments(Vec3(A, A, C));
   State s0;
   s0.R_space_body = so3::exp(Vec3(-0.4, 0.1, 0.9));

@@ -56,7 +56,7 @@ TEST(Dopri5, DenseOutputIsAsAccurateAsTheSteps) {
 }
 
 TEST(Dopri5, ReproducesTheAxisymmetricClosedForm) {
-  const double A = 1.0, C = 1.8;  // ERRATA case c (oblate)
+  const double A = 1.0, C = 1.8;  // docs/conventions.md case c (oblate)
   const RigidBody body = RigidBody::from_principal_moments(Vec3(A, A, C));
   State s0;
   s0.omega_body = Vec3(1.0, 0.5, -2.0);

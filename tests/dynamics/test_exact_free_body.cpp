@@ -147,8 +147,8 @@ TEST(ExactFreeBody, SphereAndSteadyRotations) {
   EXPECT_EQ(ExactFreeBody(body, rest).state_at(-5.0).R_space_body, rest.R_space_body);
 }
 
-// ERRATA cases b (prolate, A = 2, C = 1) and c (oblate, A = 1, C = 1.8), symmetry axis e3: the automatic
-// route (paper eq. 4.2), the Jacobi-elliptic route at k = 0 and the reference all agree.
+// docs/conventions.md cases b (prolate, A = 2, C = 1) and c (oblate, A = 1, C = 1.8), symmetry axis e3: the
+// automatic route (paper eq. 4.2), the Jacobi-elliptic route at k = 0 and the reference all agree.
 TEST(ExactFreeBody, AxisymmetricClosedFormAgreesWithEllipticAndReference) {
   struct Case {
     double A, C;

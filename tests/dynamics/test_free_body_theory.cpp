@@ -88,7 +88,7 @@ TEST(FreeBodyTheory, RegimesAndInvariants) {
   EXPECT_EQ(free_body_theory(I, Vec3(0, 2, 0)).regime, FreeBodyRegime::principal_rotation);
   EXPECT_EQ(free_body_theory(I, Vec3(0.1, 0.1, 1)).regime, FreeBodyRegime::largest_axis);
   EXPECT_EQ(free_body_theory(I, Vec3(1, 0.1, 0.1)).regime, FreeBodyRegime::smallest_axis);
-  // Axisymmetric: ω precesses in the body at |C/A − 1||μ| (ERRATA C11); period 2π over that.
+  // Axisymmetric: ω precesses in the body at |C/A − 1||μ| (docs/conventions.md C11); period 2π over that.
   const FreeBodyTheory ax = free_body_theory(Vec3(1, 1, 1.8), Vec3(1.0, 0.5, -2.0));
   EXPECT_NEAR(ax.omega_p, 0.8 * 2.0, 1e-15);
   EXPECT_NEAR(ax.omega_period(), 2.0 * std::numbers::pi / 1.6, 1e-14);

@@ -14,7 +14,7 @@ namespace {
 
 using dynamics::RattleIntegrator;
 
-/// Λ = (j(ω)² + j(ω̇))K with J ω̇ = τ − ω × Jω (ERRATA conventions).
+/// Λ = (j(ω)² + j(ω̇))K with J ω̇ = τ − ω × Jω (docs/conventions.md conventions).
 Mat3 exact_multiplier(const RigidBody& body, const TorqueModel& tau, const State& s) {
   const Vec3& w = s.omega_body;
   const Vec3 wdot =
@@ -116,7 +116,7 @@ TEST(Rattle, LongRunKeepsTheInvariants) {
 }
 
 TEST(Rattle, AgreesWithTheAxisymmetricClosedForm) {
-  const double A = 2.0, C = 1.0;  // ERRATA case b
+  const double A = 2.0, C = 1.0;  // docs/conventions.md case b
   const RigidBody body = RigidBody::from_principal_moments(Vec3(A, A, C));
   State s0;
   s0.omega_body = Vec3(0.3, -0.4, 1.2);

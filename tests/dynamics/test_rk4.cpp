@@ -39,7 +39,7 @@ TEST(Rk4, ConvergesAtOrderFourWithTorqueInSpace) {
 }
 
 TEST(Rk4, AgreesWithTheAxisymmetricClosedForm) {
-  const double A = 2.0, C = 1.0;  // ERRATA case b (prolate)
+  const double A = 2.0, C = 1.0;  // docs/conventions.md case b (prolate)
   const RigidBody body = RigidBody::from_principal_moments(Vec3(A, A, C));
   State s0;
   s0.omega_body = Vec3(0.3, -0.4, 1.2);

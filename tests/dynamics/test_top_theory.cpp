@@ -1,7 +1,7 @@
 // Heavy symmetric top theory (top_theory.hpp) against independent oracles: a direct long-double integration
 // of Lagrange's equations over one nutation period, Gauss–Kronrod/tanh-sinh quadrature of the energy
-// equation, the figures of ERRATA B3 (obtained there by a full 3-D DOP853 simulation), and the limits of the
-// theory.
+// equation, the figures of docs/conventions.md B3 (obtained there by a full 3-D DOP853 simulation), and the
+// limits of the theory.
 #include "poinsot/dynamics/top_theory.hpp"
 
 #include <gtest/gtest.h>
@@ -17,7 +17,8 @@
 namespace poinsot::dynamics {
 namespace {
 
-// The disc top of ERRATA B3: M = 1 kg, l = 0.1 m, disc radius 5 cm: I3 = M r²/2, I1 = M r²/4 + M l² (pivot).
+// The disc top of docs/conventions.md B3: M = 1 kg, l = 0.1 m, disc radius 5 cm: I3 = M r²/2, I1 = M r²/4 + M
+// l² (pivot).
 HeavyTop disc_top() {
   HeavyTop t;
   t.mass = 1.0;
@@ -112,9 +113,9 @@ TEST(TopTheory, MatchesQuadratureOfTheEnergyEquation) {
   EXPECT_NEAR(2.0 * half_phi, m.precession_per_nutation, 1e-7 * std::abs(m.precession_per_nutation));
 }
 
-// ERRATA B3: the fast-top formula's relative error against the exact mean precession for the disc top
-// released at θ0 = 60° with pure spin: −3.1 %, −1.8 %, −0.51 %, −0.13 % at ω3 = 200, 400, 800, 1600 rad/s
-// (figures rounded to two digits there, hence the tolerance of half a unit in the last digit).
+// docs/conventions.md B3: the fast-top formula's relative error against the exact mean precession for the
+// disc top released at θ0 = 60° with pure spin: −3.1 %, −1.8 %, −0.51 %, −0.13 % at ω3 = 200, 400, 800, 1600
+// rad/s (figures rounded to two digits there, hence the tolerance of half a unit in the last digit).
 TEST(TopTheory, FastTopErrorMatchesErrataAndFallsAsInverseSquare) {
   const HeavyTop top = disc_top();
   const double theta0 = std::numbers::pi / 3.0;

@@ -1,6 +1,6 @@
 // Tests of mass_properties.hpp: J <-> K, parallel-axis theorem both ways, re-expression, composites, voids.
-// Oracles: the lecture's plate tensor about its corner (LEC, checked symbolically in ERRATA.md A), closed
-// forms of boxes, and the mesh method (mesh.hpp) on transformed meshes.
+// Oracles: the lecture's plate tensor about its corner (LEC, checked symbolically in docs/conventions.md A),
+// closed forms of boxes, and the mesh method (mesh.hpp) on transformed meshes.
 #include "poinsot/inertia/mass_properties.hpp"
 
 #include <gtest/gtest.h>

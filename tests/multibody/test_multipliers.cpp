@@ -57,7 +57,7 @@ TEST(Multipliers, ConicalPendulumStageReactionsTrackTheClosedFormAtSecondOrder) 
 
 TEST(Multipliers, FreeBodyLambdaIsTheSingleBodyFormula) {
   // An unconnected asymmetric body and a lamina (singular K): Λ = (j(ω)² + j(ω̇)) K with ω̇ from Euler's
-  // equations J ω̇ = −ω × J ω (ERRATA.md conventions).
+  // equations J ω̇ = −ω × J ω (docs/conventions.md conventions).
   System s;
   s.add_body_from_inertia("box", 1.5, Vec3(0.2, 0.3, 0.4).asDiagonal());
   s.add_body("plate", 0.8, Vec3(0.05, 0.02, 0.0).asDiagonal());

@@ -12,7 +12,8 @@ namespace {
 // The minimum-energy sphere slew is the eigenaxis cubic: no saving over the eigenaxis manoeuvre. With
 // ω = θ̇ n and K = j/2 I, sym Λ = (j/2) θ̇² (n⊗n − I), so ∫σ dv has principal values (j/2)θ̇² (0, 1, 1):
 // Tresca (j/4)θ̇², von Mises (j/2)θ̇², largest at θ̇ = 3Θ/(2T), s = ½. Samples fall within 1/126 of s = ½,
-// so the peaks are matched to 1e-3 relative. The trace of ∫σ dv is 2 × kinetic energy (virial, ERRATA §6).
+// so the peaks are matched to 1e-3 relative. The trace of ∫σ dv is 2 × kinetic energy (virial,
+// docs/conventions.md, (6.1)).
 TEST(Interpretation, SphereSlewStressAndEigenaxis) {
   const double j = 2.5, theta = 2.0, T = 3.0;
   const auto p = testing::sphere_energy_problem(j, theta, Vec3(1.0, -2.0, 0.5), T);

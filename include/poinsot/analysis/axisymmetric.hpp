@@ -1,10 +1,11 @@
 #pragma once
 /// @file axisymmetric.hpp
-/// Λ of a torque-free axisymmetric body in closed form (Vallée & Dumitriu 2002, §§4–5, with ERRATA.md
-/// C11–C23): constant eigenvalues, the rotating eigenvector and the constant matrix EᵀΛE.
+/// Λ of a torque-free axisymmetric body in closed form (Vallée & Dumitriu 2002, §§4–5, with
+/// docs/conventions.md C11–C23): constant eigenvalues, the rotating eigenvector and the constant matrix EᵀΛE.
 ///
 /// Body: `J = A I + (C − A) k⊗k` (kg·m²) about the centre of mass, k the unit symmetry axis (body frame),
-/// Ω0 = ω(t0) the initial body-frame angular velocity (rad/s). Notation (ERRATA conventions table):
+/// Ω0 = ω(t0) the initial body-frame angular velocity (rad/s). Notation (docs/conventions.md conventions
+/// table):
 ///   μ = ⟨k, Ω0⟩,  η0* = ⟨Ω0, Ω0⟩,  r = √(η0* − μ²) = |Ω0 − μk|,  n = (Ω0 − μk)/r.
 /// Motion (4.2, C11): `ω(t) = E(t) Ω0`, `E(t) = exp[(t − t0)(C/A − 1) μ j(k)]` (the sign as printed).
 /// Constant matrix (Property 3): `EᵀΛE = Λ(t0)`, given by
@@ -56,8 +57,8 @@ struct AxisymmetricSpecialCases {
 
 class AxisymmetricLambda {
  public:
-  /// Throws InvalidInput unless A > 0, C > 0, C ≤ 2A (a physical body: A − C/2 = ⟨k, K k⟩ ≥ 0, ERRATA C9),
-  /// |k| > 0 (normalised here) and Ω0 finite. `t0` (s) is the time at which ω = Ω0.
+  /// Throws InvalidInput unless A > 0, C > 0, C ≤ 2A (a physical body: A − C/2 = ⟨k, K k⟩ ≥ 0,
+  /// docs/conventions.md C9), |k| > 0 (normalised here) and Ω0 finite. `t0` (s) is the time at which ω = Ω0.
   AxisymmetricLambda(const AxisymmetricInertia& inertia, const Vec3& omega0_body, double t0 = 0.0,
                      double relative_tolerance = 1e-12);
 

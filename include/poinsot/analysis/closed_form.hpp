@@ -1,7 +1,7 @@
 #pragma once
 /// @file closed_form.hpp
 /// Λ of a torque-free body as an explicit function of ω alone (Vallée & Dumitriu 2002, §3, Property 2), with
-/// the corrections of ERRATA.md (C4–C8).
+/// the corrections of docs/conventions.md (C4–C8).
 ///
 /// Notation of the paper (eq. 3.4), J = J0 the inertia about the centre of mass in the body frame (kg·m²):
 ///   ξ0 = ω⊗ω,  ξij = J^i ξ0 J^j,  η0 = ⟨ω, ω⟩,  ηij = η0 J^(i+j),

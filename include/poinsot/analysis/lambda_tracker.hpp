@@ -1,7 +1,7 @@
 #pragma once
 /// @file lambda_tracker.hpp
 /// Checks the properties of Λ that Vallée & Dumitriu (2002) prove, state by state along any trajectory,
-/// and keeps the worst values (ERRATA.md C2, C3, C14, C21, C24):
+/// and keeps the worst values (docs/conventions.md C2, C3, C14, C21, C24):
 ///   - symmetry: ‖Λ − Λᵀ − j(τ_body)‖_F (J), zero for a free body;
 ///   - Property 1 (corrected C2): the largest eigenvalue of sym(Λ) is ≤ 0 up to round-off (free body);
 ///   - tr Λ = −2T for every body (T the kinetic energy of the same state, J);

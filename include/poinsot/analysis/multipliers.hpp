@@ -6,17 +6,17 @@
 /// The paper describes the rotation by the nine entries of R (body → space) under the constraint RᵀR = I,
 /// enforced by a symmetric matrix Λ of six multipliers: `R̈ K = R Λ` (eq. 1.1), with K = tr(J)/2·I − J the
 /// Poinsot tensor about the rotation point (kg·m²). Differentiating `Ṙ = R j(ω)` gives `R̈ = R(j(ω)² + j(ω̇))`,
-/// hence (eq. 3.2, ERRATA.md conventions)
+/// hence (eq. 3.2, docs/conventions.md conventions)
 ///
 ///     Λ = Rᵀ R̈ K = (j(ω)² + j(ω̇)) K        (body frame, joules = kg·m²·s⁻²)
 ///
 /// with ω̇ from Euler's equations `J ω̇ + ω × J ω = τ_body`. K is never inverted (it is singular for plane
-/// laminae, ERRATA A3 and C2); J is invertible for every RigidBody.
+/// laminae, docs/conventions.md A3 and C2); J is invertible for every RigidBody.
 ///
-/// Symmetry. For any ω and ω̇, `Λ − Λᵀ = j(J ω̇ + ω × J ω) = j(τ_body)` (ERRATA C, "(1.1) equivalent to
-/// Euler's equations"). For a free body Λ is therefore symmetric; under an applied torque the matrix
-/// Rᵀ R̈ K splits into the symmetric multiplier matrix sym(Λ) and the torque part j(τ_body)/2.
-/// In every case `tr Λ = −ωᵀ J ω = −2T` (T the kinetic energy, J).
+/// Symmetry. For any ω and ω̇, `Λ − Λᵀ = j(J ω̇ + ω × J ω) = j(τ_body)` (docs/conventions.md C, "(1.1)
+/// equivalent to Euler's equations"). For a free body Λ is therefore symmetric; under an applied torque the
+/// matrix Rᵀ R̈ K splits into the symmetric multiplier matrix sym(Λ) and the torque part j(τ_body)/2. In every
+/// case `tr Λ = −ωᵀ J ω = −2T` (T the kinetic energy, J).
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"

@@ -1,6 +1,7 @@
 #pragma once
 /// @file stress.hpp
-/// The constraint stress of the rotating body (Vallée & Dumitriu 2002, §6, eq. 6.1, with ERRATA C24).
+/// The constraint stress of the rotating body (Vallée & Dumitriu 2002, §6, eq. 6.1, with docs/conventions.md
+/// C24).
 ///
 /// For a free body (no surface tractions; uniform gravity drops out about the centre of mass), Cauchy's
 /// equation `div σ = ρ a` integrated against x gives, for *any* statically admissible stress field,

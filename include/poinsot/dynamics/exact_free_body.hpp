@@ -28,7 +28,8 @@
 /// |u| ≤ K (Boost.Math ellint_rj), and sn, cn, dn, K from the complementary modulus (jacobi_elliptic.hpp),
 /// which keeps full precision near the separatrix.
 /// On the separatrix ∫du/(1 − N tanh²u) = [u + √−N atan(√−N tanh u)]/(1 − N). Axisymmetric bodies (and the
-/// sphere) use eq. (4.2) of Vallée & Dumitriu (ERRATA C11); steady rotations R(t) = R0 exp[(t − t0) j(ω0)].
+/// sphere) use eq. (4.2) of Vallée & Dumitriu (docs/conventions.md C11); steady rotations R(t) = R0 exp[(t −
+/// t0) j(ω0)].
 ///
 /// Units: t in s, ω in rad/s, J in kg·m². The body's J is taken about its rotation point
 /// (RigidBody::inertia()), so a body held at a pivot with no torque is also covered.
@@ -104,8 +105,9 @@ class ExactFreeBody {
   Mat3 left_ = Mat3::Identity();     // R_principal(t0) B(t0)ᵀ
 };
 
-/// Vallée & Dumitriu eq. (4.2) (with ERRATA C11): the free motion of an axisymmetric body J = A·1 + (C − A)
-/// e⊗e (A, C in kg·m², e a unit vector in the body frame): with μ = ⟨e, ω0⟩, E(t) = exp[t (C/A − 1) μ j(e)],
+/// Vallée & Dumitriu eq. (4.2) (with docs/conventions.md C11): the free motion of an axisymmetric body J =
+/// A·1 + (C − A) e⊗e (A, C in kg·m², e a unit vector in the body frame): with μ = ⟨e, ω0⟩, E(t) = exp[t (C/A
+/// − 1) μ j(e)],
 ///     ω(t) = E(t) ω0,   R(t) = R0 exp[t j(J ω0/A)] E(t)ᵀ   (t measured from initial.time; order R·E, not
 ///     E·R).
 /// No validation beyond finiteness; A, C > 0.

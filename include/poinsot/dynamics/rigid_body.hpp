@@ -8,7 +8,7 @@
 /// rotates about its *rotation point*: the centre of mass for a free body, the pivot for a top. `inertia()`
 /// is J about the rotation point, `J = J_com + m(|d|² I − d⊗d)` (parallel-axis theorem) with d =
 /// pivot_to_com_body; it is the J of Euler's equations `J ω̇ + ω × J ω = τ_body` and of the Poinsot tensor `K
-/// = tr(J)/2·I − J` (ERRATA.md).
+/// = tr(J)/2·I − J` (docs/conventions.md).
 
 #include "poinsot/core/types.hpp"
 

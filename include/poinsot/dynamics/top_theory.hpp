@@ -21,7 +21,7 @@
 /// from u = u1 + (u2 − u1) sin²s and (b − a u)/(1 − u²) = ½[(b − a)/(1 − u) + (b + a)/(1 + u)]; K and Π are
 /// the complete elliptic integrals of the first and third kinds (Boost.Math). For a fast top Ω̄ tends to
 /// the gyroscopic formula of the notes, M g l/(I3 ω3), with a relative error of order I1 M g l/(I3 ω3)²
-/// (ERRATA B3), and the nutation frequency 2π/T_nut to a = I3 ω3/I1.
+/// (docs/conventions.md B3), and the nutation frequency 2π/T_nut to a = I3 ω3/I1.
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
@@ -42,8 +42,8 @@ struct HeavyTop {
 /// Throws InvalidInput unless every parameter is finite and positive.
 void validate(const HeavyTop& top);
 
-/// The gyroscopic (fast-top) precession rate of the notes, Ω = M g l/(I3 ω3) (rad/s), ERRATA B3: an
-/// approximation that neglects nutation and the transverse angular momentum. Throws for ω3 = 0.
+/// The gyroscopic (fast-top) precession rate of the notes, Ω = M g l/(I3 ω3) (rad/s), docs/conventions.md B3:
+/// an approximation that neglects nutation and the transverse angular momentum. Throws for ω3 = 0.
 double fast_top_precession_rate(const HeavyTop& top, double omega3);
 
 /// The two rates of steady precession at tilt θ (rad) and spin ω3 (rad/s): the roots of

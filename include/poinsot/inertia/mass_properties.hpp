@@ -4,7 +4,7 @@
 /// about the centre of mass (kg·m²), both expressed in one frame F named by the caller (the part's own frame,
 /// the body frame of a composite, ...).
 ///
-/// Definitions (ERRATA.md, conventions table). With X the position relative to the reference point,
+/// Definitions (docs/conventions.md, conventions table). With X the position relative to the reference point,
 ///   J = ∫ρ (|X|² I − X⊗X) dV          (products of inertia are the off-diagonal entries, J_xy = −∫ρ x y),
 ///   K = ∫ρ X⊗X dV = tr(J)/2·I − J      (Poinsot / second-moment tensor; J = tr(K)·I − K).
 /// K is singular for plane laminae: it is never inverted here.

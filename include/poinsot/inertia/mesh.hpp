@@ -11,7 +11,7 @@
 /// Summing over the triangles of a closed, consistently oriented surface gives the integrals over the
 /// enclosed volume (the signed contributions of the parts outside cancel). The reference point is the centre
 /// of the bounding box, so that the sums do not cancel catastrophically for a mesh far from the origin. Then
-/// m = ρ V, c = p + ∫x/V, K_c = ρ ∫x⊗x − m (c−p)⊗(c−p), J_c = tr(K_c) I − K_c (ERRATA.md).
+/// m = ρ V, c = p + ∫x/V, K_c = ρ ∫x⊗x − m (c−p)⊗(c−p), J_c = tr(K_c) I − K_c (docs/conventions.md).
 ///
 /// Shell (a thin surface of areal density σ, as MuJoCo's shellinertia): per triangle of area A,
 ///   ∫ dA = A,  ∫ x dA = A s/3,  ∫ x⊗x dA = A/12 (Σ xi⊗xi + s⊗s).

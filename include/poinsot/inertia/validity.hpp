@@ -6,10 +6,10 @@
 /// satisfy
 ///   I1 >= 0 (positive semi-definite)   and   Ii + Ij >= Ik for every permutation (triangle inequality).
 /// Both follow from J = tr(K)·I − K with K = ∫ρ X⊗X positive semi-definite: the principal values of K are
-/// (Ij + Ik − Ii)/2 >= 0 (ERRATA.md conventions; Kane & Levinson 1985, §3.5). The triangle inequalities
-/// imply I1 >= 0, so the valid moments form the convex cone C = {I : Ii + Ij >= Ik}. Each condition is tested
-/// with a tolerance `rel_tol · tr(J)` (default 1e-10 · tr J), so that a lamina computed in floating point
-/// (I1 + I2 = I3 up to round-off) is valid.
+/// (Ij + Ik − Ii)/2 >= 0 (docs/conventions.md conventions; Kane & Levinson 1985, §3.5). The triangle
+/// inequalities imply I1 >= 0, so the valid moments form the convex cone C = {I : Ii + Ij >= Ik}. Each
+/// condition is tested with a tolerance `rel_tol · tr(J)` (default 1e-10 · tr J), so that a lamina computed
+/// in floating point (I1 + I2 = I3 up to round-off) is valid.
 ///
 /// Repair (explicit, never silent): the nearest valid tensor in the Frobenius norm with the same principal
 /// axes is Q diag(μ) Qᵀ, where Q are the axes of the symmetric part and μ is the Euclidean projection of the

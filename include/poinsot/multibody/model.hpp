@@ -4,9 +4,10 @@
 ///
 /// Each body has 12 coordinates: the position `x` of its centre of mass (space frame, m) and its rotation `R`
 /// (body → space, the nine entries are unknowns), with constant mass data: the mass `m` (kg) and the Poinsot
-/// tensor `K = ∫ρ X⊗X` about the centre of mass in the body frame (kg·m², ERRATA.md; `J = tr(K)·I − K`). The
-/// kinetic energy `½ m|ẋ|² + ½ tr(Ṙ K Ṙᵀ)` has the constant mass matrix `blockdiag(m I₃, K ⊗ I₃)`, and every
-/// constraint enters through a Lagrange multiplier (Vallée & Dumitriu 2002, eq. 1.1 extended to many bodies):
+/// tensor `K = ∫ρ X⊗X` about the centre of mass in the body frame (kg·m², docs/conventions.md; `J = tr(K)·I −
+/// K`). The kinetic energy `½ m|ẋ|² + ½ tr(Ṙ K Ṙᵀ)` has the constant mass matrix `blockdiag(m I₃, K ⊗ I₃)`,
+/// and every constraint enters through a Lagrange multiplier (Vallée & Dumitriu 2002, eq. 1.1 extended to
+/// many bodies):
 ///
 ///     m ẍ = f + Gₓᵀ λ,        R̈ K = R Λ + F_R + G_Rᵀ λ,        RᵀR = I,  g(x, R) = 0,
 ///

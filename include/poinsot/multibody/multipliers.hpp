@@ -6,7 +6,8 @@
 /// Λ (body frame, symmetric, J) is the multiplier of RᵀR = I in `R̈ K = R Λ + F_R + G_Rᵀλ`, i.e.
 /// `Λ = Rᵀ R̈ K − Φ = (j(ω)² + j(ω̇)) K − Φ` where Φ = Rᵀ(F_R + G_Rᵀλ) collects the applied loads and the joint
 /// reactions acting on the body (loads.hpp, constraints.hpp). For a free body Φ = 0 and Λ is the single-body
-/// multiplier of Vallée & Dumitriu (ERRATA.md); `−R Λ Rᵀ` is the volume integral of the body's stress.
+/// multiplier of Vallée & Dumitriu (docs/conventions.md); `−R Λ Rᵀ` is the volume integral of the body's
+/// stress.
 
 #include <vector>
 

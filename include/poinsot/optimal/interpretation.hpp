@@ -3,7 +3,8 @@
 /// What an optimal manoeuvre means mechanically, along the indirect solution's samples:
 ///  - the multipliers of Vallée & Dumitriu, Λ = Rᵀ R̈ K = (j(ω)² + j(ω̇)) K (body frame, J), whose skew part
 ///    is the control torque (vee(Λ − Λᵀ) = u) and whose symmetric part is the internal load;
-///  - the constraint stress ∫σ dv = −R Λ Rᵀ (space frame, N·m; ERRATA.md §6), its peak Tresca and von Mises
+///  - the constraint stress ∫σ dv = −R Λ Rᵀ (space frame, N·m; docs/conventions.md §6), its peak Tresca and
+///  von Mises
 ///    values over the manoeuvre (of the symmetric part);
 ///  - the space angular momentum L = R J ω (kg·m²/s);
 ///  - the eigenaxis manoeuvre with the same bounds beside the optimum: rest to rest about the fixed axis n of

@@ -3,10 +3,10 @@
 /// The optimal reorientation of one rigid body by body torques: the data of the optimal-control problem,
 /// checked once, shared read-only by the direct (collocation) and indirect (shooting) methods.
 ///
-/// Dynamics (ERRATA.md conventions): `Ṙ = R j(ω)` with R body → space and ω the body-frame angular velocity
-/// (rad/s); Euler `J ω̇ + ω × Jω = u` with J the inertia about the centre of mass in the body frame (kg·m²)
-/// and u the control torque in the body frame (N·m).
-/// Controls: per-axis bounds `|u_i| ≤ u_max,i` or a norm bound `‖u‖ ≤ u_max`; optional rate bounds
+/// Dynamics (docs/conventions.md conventions): `Ṙ = R j(ω)` with R body → space and ω the body-frame angular
+/// velocity (rad/s); Euler `J ω̇ + ω × Jω = u` with J the inertia about the centre of mass in the body frame
+/// (kg·m²) and u the control torque in the body frame (N·m). Controls: per-axis bounds `|u_i| ≤ u_max,i` or a
+/// norm bound `‖u‖ ≤ u_max`; optional rate bounds
 /// `|ω_i| ≤ ω_max` (a state constraint). Boundary conditions: R(0) = R_0, ω(0) = ω_0, R(T) = R_f, ω(T) = ω_f.
 /// Objectives:
 ///   minimum_time                 J = T, T free;

@@ -1,7 +1,7 @@
 #pragma once
 /// @file hat.hpp
 /// The skew-symmetric map of the seeds, `j(u)` (Vallée & Dumitriu 2002, §1), called `hat` here, and its
-/// inverse `vee`. Convention (ERRATA.md): `j(u) v = u × v`, so
+/// inverse `vee`. Convention (docs/conventions.md): `j(u) v = u × v`, so
 ///
 ///     j(u) = [[ 0,  -u3,  u2],
 ///             [ u3,  0,  -u1],
