@@ -51,38 +51,6 @@ TEST(EulerAngles, ClassicalZXZOfTopsPutsTheSymmetryAxisAtPolarAngleTheta) {
   EXPECT_NEAR(std::atan2(axis.y(), axis.x()), phi - std::numbers::pi / 2, 4 * kEps);
 }
 
-TEST(EulerAngles, MatrixRoundTripForAllTwelveSequences) {
-  for (const auto& s : all_sequences()) {
-    for (int i = 0; i < 500; ++i) {
-      const Mat3 R = test::random_rotation();
-      const Vec3 a = euler_from_rotation(s, R);
-      EXPECT_LE(test::max_abs_diff(rotation_from_euler(s, a), R), 16 * kEps) << s.name();
-      if (s.is_proper()) {
-        EXPECT_GE(a[1], 0.0);
-        EXPECT_LE(a[1], std::numbers::pi);
-      } else {
-        EXPECT_LE(std::abs(a[1]), std::numbers::pi / 2 + 4 * kEps);
-      }
-      EXPECT_LE(std::abs(a[0]), std::numbers::pi);
-      EXPECT_LE(std::abs(a[2]), std::numbers::pi);
-    }
-  }
-}
-
-TEST(EulerAngles, AnglesRoundTripInsideTheirRanges) {
-  for (const auto& s : all_sequences()) {
-    for (int i = 0; i < 500; ++i) {
-      Vec3 a(test::uniform(-std::numbers::pi + 0.01, std::numbers::pi - 0.01), 0.0,
-             test::uniform(-std::numbers::pi + 0.01, std::numbers::pi - 0.01));
-      a[1] = s.is_proper() ? test::uniform(0.01, std::numbers::pi - 0.01)
-                           : test::uniform(-std::numbers::pi / 2 + 0.01, std::numbers::pi / 2 - 0.01);
-      const Vec3 back = euler_from_rotation(s, rotation_from_euler(s, a));
-      // Conditioning: the outer angles are determined to ~ulp / sin(distance to gimbal lock) ≈ 100 ulp here.
-      EXPECT_LE((back - a).cwiseAbs().maxCoeff(), 400 * kEps) << s.name() << " " << a.transpose();
-    }
-  }
-}
-
 TEST(EulerAngles, GimbalLockStillReproducesTheMatrix) {
   for (const auto& s : all_sequences()) {
     const std::vector<double> locks = s.is_proper()
