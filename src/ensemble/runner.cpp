@@ -17,9 +17,12 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/axis_tracker.hpp"
 #include "poinsot/dynamics/exact_free_body.hpp"
+#include "poinsot/dynamics/exact_integrator.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/methods.hpp"
 #include "poinsot/dynamics/simulation.hpp"
+#include "poinsot/dynamics/top_prediction.hpp"
 #include "poinsot/so3/distance.hpp"
 
 namespace poinsot::ensemble {
@@ -53,13 +56,6 @@ std::pair<double, Vec3> invariants(const Sample& s, const Mat3& J, const dynamic
   double E = 0.5 * x.omega_body.dot(Jw);
   if (s.torque == TorqueKind::gravity) E -= s.mass * s.torque_value.dot(x.R_space_body * s.pivot_to_com);
   return {E, x.R_space_body * Jw};
-}
-
-/// A heavy top: gravity on a body held at a pivot away from its centre of mass. Its axis runs from the
-/// pivot to the centre of mass (body frame); the vertical is −g (space frame).
-bool is_heavy_top(const Sample& s) {
-  return s.torque == TorqueKind::gravity && s.has_pivot && s.pivot_to_com.norm() > 0.0 &&
-         s.torque_value.norm() > 0.0;
 }
 
 void fill_outputs(const Sample& s, const dynamics::State& final_state, double first, double second,
@@ -120,7 +116,7 @@ void run_block(const Context& c, std::uint64_t first, std::uint64_t count, Sampl
     // A heavy top's axis is sampled on every step (the tracker needs several samples per nutation period).
     std::optional<dynamics::AxisTracker> top;
     dynamics::Observer observer;
-    if (is_heavy_top(s)) {
+    if (dynamics::is_heavy_top(body, torque->is_gravity(), s.torque_value)) {
       top.emplace(s.pivot_to_com, -s.torque_value);
       observer = [&top](const dynamics::State& x) {
         top->add(x.time, x.R_space_body);
@@ -138,11 +134,18 @@ void run_block(const Context& c, std::uint64_t first, std::uint64_t count, Sampl
 
 Path choose_path(const Sampler& sampler, const EnsembleOptions& o) {
   const Sample nominal = sampler.nominal();
-  if (o.method == "exact") {
+  if (o.method == dynamics::kExactMethodName) {
     if (nominal.torque != TorqueKind::none || nominal.has_pivot) {
-      throw InvalidInput(
-          "ensemble: method \"exact\" solves the torque-free body only; expected rk4, dlm, dopri5, dop853 or "
-          "rattle with a torque or a pivot");
+      std::string with_torque;
+      for (const dynamics::MethodInfo& m : dynamics::methods()) {
+        if (!m.takes_torque) continue;
+        if (!with_torque.empty()) with_torque += ", ";
+        with_torque += m.name;
+      }
+      throw InvalidInput(fmt::format(
+          "ensemble: method \"{}\" solves the torque-free body only; expected one of {} with a torque or a "
+          "pivot",
+          dynamics::kExactMethodName, with_torque));
     }
     return Path::exact;
   }
@@ -159,7 +162,7 @@ void validate(const EnsembleOptions& o) {
   for (const auto& r : o.histograms.ranges)
     if (r) FixedHistogram(*r, o.histograms.bins);
   // Builds one integrator to validate the method's name (the registry's own message lists the methods).
-  if (o.method != "exact") {
+  if (o.method != dynamics::kExactMethodName) {
     dynamics::make_integrator(o.method, dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3)), nullptr,
                               {.dt = o.dt, .rtol = o.rtol, .atol = o.atol});
   }

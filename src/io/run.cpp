@@ -16,7 +16,6 @@
 #include "poinsot/dynamics/axis_tracker.hpp"
 #include "poinsot/dynamics/free_body_theory.hpp"
 #include "poinsot/dynamics/integrator.hpp"
-#include "poinsot/dynamics/top_theory.hpp"
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/io/summary.hpp"
 #include "poinsot/io/trajectory_writer.hpp"
@@ -51,59 +50,12 @@ void prepare_output_dir(const std::string& dir) {
 
 namespace {
 
-/// The figure axis of a top, if the scenario is one.
+/// The top the scenario makes, if any, with the theory's predictions (dynamics/top_prediction.hpp).
 std::optional<TopEvents> top_setup(const Scenario& sc, const dynamics::State& s0) {
-  const auto& body = sc.body;
-  const Mat3& J = body.inertia();
+  const auto theory = dynamics::predict_top(sc.body, *sc.torque, sc.gravity_space, s0);
+  if (!theory) return std::nullopt;
   TopEvents top;
-  if (sc.torque->is_gravity() && body.has_pivot() && body.pivot_to_com().norm() > 0.0 &&
-      sc.gravity_space.norm() > 0.0) {
-    top.kind = "heavy top";
-    top.axis_body = body.pivot_to_com().normalized();
-    top.direction_space = -sc.gravity_space.normalized();
-  } else if (sc.torque->is_zero() && !body.has_pivot()) {
-    const std::string sym = symmetry_class(body.principal_moments());
-    if (sym != "oblate" && sym != "prolate") return std::nullopt;
-    const int unique = sym == "oblate" ? 2 : 0;
-    top.kind = "free symmetric top";
-    top.axis_body = body.principal_axes().col(unique);
-    const Vec3 L = dynamics::angular_momentum_space(body, s0);
-    if (!(L.norm() > 0.0)) return std::nullopt;
-    top.direction_space = L.normalized();
-  } else {
-    return std::nullopt;
-  }
-  top.spin = s0.omega_body.dot(top.axis_body);
-  top.moment_axial = top.axis_body.dot(J * top.axis_body);
-  top.moment_transverse = 0.5 * (J.trace() - top.moment_axial);
-  if (top.kind == "heavy top") {
-    const double mgl = body.mass() * sc.gravity_space.norm() * body.pivot_to_com().norm();
-    if (std::abs(top.spin) > 0.0) {
-      top.precession_rate_theory = mgl / (top.moment_axial * top.spin);  // notes: Ω = M g l/(I3 ω3)
-      top.nutation_frequency_fast_top = top.moment_axial * std::abs(top.spin) / top.moment_transverse;
-    }
-    top.sleeping =
-        top.spin * top.spin > 4.0 * top.moment_transverse * mgl / (top.moment_axial * top.moment_axial);
-    // The exact heavy symmetric top (dynamics/top_theory.hpp), when the body is symmetric about its axis and
-    // the axis is tilted (θ0 in (0, π)).
-    try {
-      const dynamics::HeavyTop ht = dynamics::heavy_top_from(body, sc.gravity_space);
-      const dynamics::TopInitialConditions ic = dynamics::top_initial_conditions(body, s0, sc.gravity_space);
-      if (std::abs(ic.omega3) > 0.0)
-        top.precession_rate_theory = dynamics::fast_top_precession_rate(ht, ic.omega3);
-      top.sleeping = dynamics::is_sleeping_top_stable(ht, ic.omega3);
-      const dynamics::TopMotion m = dynamics::top_motion(ht, ic.theta, ic.theta_dot, ic.phi_dot, ic.omega3);
-      top.precession_rate_exact = m.mean_precession_rate;
-      top.nutation_frequency_theory = m.nutation_frequency;
-      top.theta_min_theory = m.theta_min;
-      top.theta_max_theory = m.theta_max;
-    } catch (const InvalidInput&) {
-      // Not a symmetric top, or upright: only the fast-top formulas above apply.
-    }
-  } else {
-    // Free symmetric body: the figure axis turns about L at |L|/I1 (I1 the transverse moment).
-    top.precession_rate_theory = dynamics::angular_momentum_space(body, s0).norm() / top.moment_transverse;
-  }
+  static_cast<dynamics::TopPrediction&>(top) = *theory;
   return top;
 }
 

@@ -74,7 +74,7 @@ std::string summary_json(const RunSummary& s) {
   json top = nullptr;
   if (s.top) {
     const auto& t = *s.top;
-    top = {{"kind", t.kind},
+    top = {{"kind", std::string(dynamics::to_string(t.kind))},
            {"axis_body", vec(t.axis_body)},
            {"direction_space", vec(t.direction_space)},
            {"spin", t.spin},
@@ -86,12 +86,13 @@ std::string summary_json(const RunSummary& s) {
            {"theta_max_theory", opt(t.theta_max_theory)},
            {"sleeping_criterion", t.sleeping ? json(*t.sleeping) : json(nullptr)}};
     events["precession_rate_mean"] = opt(t.precession_rate_mean);
-    events[t.kind == "heavy top" ? "precession_rate_fast_top" : "precession_rate_theory"] =
+    events[t.kind == dynamics::TopKind::heavy ? "precession_rate_fast_top" : "precession_rate_theory"] =
         opt(t.precession_rate_theory);
-    if (t.kind == "heavy top") events["precession_rate_exact"] = opt(t.precession_rate_exact);
+    if (t.kind == dynamics::TopKind::heavy) events["precession_rate_exact"] = opt(t.precession_rate_exact);
     events["nutation_frequency"] = opt(t.nutation_frequency);
     events["nutation_frequency_theory"] = opt(t.nutation_frequency_theory);
-    if (t.kind == "heavy top") events["nutation_frequency_fast_top"] = opt(t.nutation_frequency_fast_top);
+    if (t.kind == dynamics::TopKind::heavy)
+      events["nutation_frequency_fast_top"] = opt(t.nutation_frequency_fast_top);
   }
   j["events"] = events;
   j["top"] = top;

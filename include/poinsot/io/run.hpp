@@ -13,6 +13,7 @@
 #include "poinsot/analysis/lambda_tracker.hpp"
 #include "poinsot/core/types.hpp"
 #include "poinsot/dynamics/simulation.hpp"
+#include "poinsot/dynamics/top_prediction.hpp"
 #include "poinsot/io/scenario.hpp"
 
 namespace poinsot::io {
@@ -22,25 +23,12 @@ namespace poinsot::io {
 /// than the third), "spherical".
 std::string symmetry_class(const Vec3& principal_moments, double rel_tol = 1e-9);
 
-/// The top measurements of a run (heavy top, or torque-free axisymmetric body).
-struct TopEvents {
-  std::string kind;                            ///< "heavy top" or "free symmetric top"
-  Vec3 axis_body = Vec3::Zero();               ///< the figure axis, body frame (unit)
-  Vec3 direction_space = Vec3::Zero();         ///< precession about: −g/|g| or L_space/|L| (unit)
-  double spin = 0.0;                           ///< ω·axis at t = 0 (rad/s)
-  double moment_axial = 0.0;                   ///< I3 = aᵀJa about the rotation point (kg·m²)
-  double moment_transverse = 0.0;              ///< I1 = (tr J − I3)/2 about the rotation point (kg·m²)
+/// A top of a run (heavy top, or torque-free axisymmetric body): the theory's predictions
+/// (dynamics::predict_top) and what the run measured.
+struct TopEvents : dynamics::TopPrediction {
   std::optional<double> precession_rate_mean;  ///< measured (rad/s)
-  /// Theory (rad/s): heavy top, the fast-top rate M g l/(I3 ω3) of the notes; free symmetric top, |L|/I1.
-  std::optional<double> precession_rate_theory;
-  /// Heavy symmetric top: the exact mean precession rate Ω̄ = Δφ/T_nut (Goldstein §5.7, top_theory.hpp).
-  std::optional<double> precession_rate_exact;
-  std::optional<double> nutation_frequency;           ///< measured (rad/s)
-  std::optional<double> nutation_frequency_theory;    ///< heavy symmetric top: exact 2π/T_nut (rad/s)
-  std::optional<double> nutation_frequency_fast_top;  ///< heavy top: the fast-top value I3 ω3 / I1 (rad/s)
-  double theta_min = 0.0, theta_max = 0.0;            ///< range of the axis's polar angle, measured (rad)
-  std::optional<double> theta_min_theory, theta_max_theory;  ///< heavy symmetric top: exact range (rad)
-  std::optional<bool> sleeping;  ///< heavy top: ω3² > 4 I1 M g l / I3² (stable upright), when upright
+  std::optional<double> nutation_frequency;    ///< measured (rad/s)
+  double theta_min = 0.0, theta_max = 0.0;     ///< range of the axis's polar angle, measured (rad)
 };
 
 /// Everything a run produced, for the report and summary.json.
