@@ -219,7 +219,7 @@ constexpr std::array<Row, 4> D = [] {
 
 struct Dop853Integrator::Impl {
   Impl(detail::EulerRhs rhs, const IntegratorOptions& o)
-      : loop("dop853", std::move(rhs), o, detail::StepController{1.0 / 8.0, 0.0, 6.0, 1.0 / 0.333}) {}
+      : loop(kName, std::move(rhs), o, detail::StepController{1.0 / 8.0, 0.0, 6.0, 1.0 / 0.333}) {}
   detail::AdaptiveLoop loop;
   std::array<Vec7, kExtended> k{};  // k[0] = f(t, y) of the next step (FSAL) once a step is accepted
   // Dense output of the last accepted step: its stages, start, end, size and the interpolation coefficients.

@@ -35,7 +35,7 @@ constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700
 
 struct Dopri5Integrator::Impl {
   Impl(detail::EulerRhs rhs, const IntegratorOptions& o)
-      : loop("dopri5", std::move(rhs), o, detail::StepController{0.2 - 0.04 * 0.75, 0.04, 10.0, 5.0}) {}
+      : loop(kName, std::move(rhs), o, detail::StepController{0.2 - 0.04 * 0.75, 0.04, 10.0, 5.0}) {}
   detail::AdaptiveLoop loop;
   std::array<Vec7, 7> k{};      // the stages of the attempt; k[0] = f(t, y) (first same as last)
   Vec7 y1 = Vec7::Zero();       // the attempt's result

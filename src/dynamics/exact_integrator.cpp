@@ -18,7 +18,7 @@ class ExactIntegrator final : public Integrator {
  public:
   explicit ExactIntegrator(const RigidBody& body) : body_(body) {}
 
-  std::string_view name() const override { return "exact"; }
+  std::string_view name() const override { return kExactMethodName; }
   int order() const override { return 0; }
   bool has_dense_output() const override { return true; }
 

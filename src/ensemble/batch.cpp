@@ -1,6 +1,8 @@
 #include "poinsot/ensemble/batch.hpp"
 
+#include <array>
 #include <cmath>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -8,11 +10,41 @@
 #include "batch_lanes.hpp"
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/dynamics/dlm.hpp"
+#include "poinsot/dynamics/rk4.hpp"
 
 namespace poinsot::ensemble {
 
+namespace {
+
+/// The methods of the dynamics registry that have a batched kernel, with it: the one list of them.
+struct BatchedMethod {
+  std::string_view name;
+  void (*run)(std::span<const Sample> samples, double t_end, long long n, bool avx2,
+              std::span<LaneResult> results);
+};
+constexpr std::array kBatchedMethods{BatchedMethod{dynamics::Rk4Integrator::kName, detail::run_rk4_batch},
+                                     BatchedMethod{dynamics::DlmIntegrator::kName, detail::run_dlm_batch}};
+
+const BatchedMethod* batched_method(std::string_view name) {
+  for (const BatchedMethod& m : kBatchedMethods)
+    if (m.name == name) return &m;
+  return nullptr;
+}
+
+}  // namespace
+
+std::string batched_method_names(std::string_view last_separator) {
+  std::string out;
+  for (std::size_t i = 0; i < kBatchedMethods.size(); ++i) {
+    if (i > 0) out += i + 1 == kBatchedMethods.size() ? last_separator : std::string_view(", ");
+    out += kBatchedMethods[i].name;
+  }
+  return out;
+}
+
 bool batchable(std::string_view method, const Sample& sample) {
-  return (method == "rk4" || method == "dlm") && !sample.has_pivot &&
+  return batched_method(method) != nullptr && !sample.has_pivot &&
          (sample.torque == TorqueKind::none || sample.torque == TorqueKind::body ||
           sample.torque == TorqueKind::space);
 }
@@ -56,19 +88,15 @@ void run_batch(std::string_view method, std::span<const Sample> samples, double 
   for (const Sample& s : samples) {
     if (!batchable(method, s)) {
       throw InvalidInput(fmt::format(
-          "ensemble: method \"{}\" has no batched kernel for sample {} (expected rk4 "
-          "or dlm on a free body under no torque or a constant torque in the body frame or in space)",
-          method, s.index));
+          "ensemble: method \"{}\" has no batched kernel for sample {} (expected {} on a free body under no "
+          "torque or a constant torque in the body frame or in space)",
+          method, s.index, batched_method_names()));
     }
   }
   detail::torque_mode(samples);  // refuses a batch mixing body-frame and space-frame torques
   const long long n = batch_step_count(t_end, dt);
   const bool avx2 = simd == Simd::automatic && simd_available();
-  if (method == "rk4") {
-    detail::run_rk4_batch(samples, t_end, n, avx2, results);
-  } else {
-    detail::run_dlm_batch(samples, t_end, n, avx2, results);
-  }
+  batched_method(method)->run(samples, t_end, n, avx2, results);
 }
 
 }  // namespace poinsot::ensemble

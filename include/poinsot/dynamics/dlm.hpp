@@ -37,7 +37,9 @@ class DlmIntegrator final : public Integrator {
                 const IntegratorOptions& options = {});
   ~DlmIntegrator() override;
 
-  std::string_view name() const override { return "dlm"; }
+  /// The method's name in the registry (methods.hpp), scenario files and the command line.
+  static constexpr std::string_view kName = "dlm";
+  std::string_view name() const override { return kName; }
   int order() const override { return 2; }
   double nominal_step() const override { return dt_; }
   /// Advances by exactly dt (s). Allocates nothing. Throws ComputationFailed when the implicit closing kick

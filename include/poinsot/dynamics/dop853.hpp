@@ -22,7 +22,9 @@ class Dop853Integrator final : public Integrator {
                    const IntegratorOptions& options = {});
   ~Dop853Integrator() override;
 
-  std::string_view name() const override { return "dop853"; }
+  /// The method's name in the registry (methods.hpp), scenario files and the command line.
+  static constexpr std::string_view kName = "dop853";
+  std::string_view name() const override { return kName; }
   int order() const override { return 8; }
   bool is_adaptive() const override { return true; }
   bool has_dense_output() const override { return true; }

@@ -20,7 +20,9 @@ class Dopri5Integrator final : public Integrator {
                    const IntegratorOptions& options = {});
   ~Dopri5Integrator() override;
 
-  std::string_view name() const override { return "dopri5"; }
+  /// The method's name in the registry (methods.hpp), scenario files and the command line.
+  static constexpr std::string_view kName = "dopri5";
+  std::string_view name() const override { return kName; }
   int order() const override { return 5; }
   bool is_adaptive() const override { return true; }
   bool has_dense_output() const override { return true; }

@@ -7,12 +7,16 @@
 /// offers dense output at any time (the closed form itself).
 
 #include <memory>
+#include <string_view>
 
 #include "poinsot/dynamics/integrator.hpp"
 #include "poinsot/dynamics/rigid_body.hpp"
 #include "poinsot/dynamics/torque.hpp"
 
 namespace poinsot::dynamics {
+
+/// The name of the closed-form method in the registry (methods.hpp), scenario files and the command line.
+inline constexpr std::string_view kExactMethodName = "exact";
 
 /// The "exact" integrator. `torque` may be null or TorqueModel::none(); any other torque throws InvalidInput
 /// ("exact: the closed-form solution is torque-free; got torque ..."). The body's J about its rotation point

@@ -11,7 +11,9 @@
 #include <string>
 #include <string_view>
 
+#include "poinsot/dynamics/dop853.hpp"
 #include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/rattle.hpp"
 
 namespace poinsot::dynamics {
 
@@ -45,11 +47,11 @@ std::span<const MethodInfo> methods();
 
 /// The default method of scenario files (`[integrator] method`), `poinsot run` and poinsot.simulate: DOP853,
 /// adaptive and of order 8, accurate to its tolerance with any torque.
-inline constexpr std::string_view kDefaultMethod = "dop853";
+inline constexpr std::string_view kDefaultMethod = Dop853Integrator::kName;
 /// The default method of the Λ analysis (`poinsot lambda`, analysis::analyse_lambda,
 /// poinsot.analysis.lambda_report): RATTLE, the discretisation of R̈K = RΛ itself, whose own multipliers the
 /// analysis then checks against the state formula; it keeps RᵀR = I, L_space and |L| to round-off.
-inline constexpr std::string_view kDefaultLambdaMethod = "rattle";
+inline constexpr std::string_view kDefaultLambdaMethod = RattleIntegrator::kName;
 
 /// The entry named `name`. Throws InvalidInput "WHAT: got "NAME", expected one of exact, rk4, ..." for an
 /// unknown name; `what` names the source of the value ("--method", "[integrator] method").

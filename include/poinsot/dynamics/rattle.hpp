@@ -39,7 +39,9 @@ class RattleIntegrator final : public Integrator {
                    const IntegratorOptions& options = {});
   ~RattleIntegrator() override;
 
-  std::string_view name() const override { return "rattle"; }
+  /// The method's name in the registry (methods.hpp), scenario files and the command line.
+  static constexpr std::string_view kName = "rattle";
+  std::string_view name() const override { return kName; }
   int order() const override { return 2; }
   double nominal_step() const override { return dt_; }
   /// Advances by exactly dt (s). Allocates nothing. Throws ComputationFailed when Newton's iteration does not

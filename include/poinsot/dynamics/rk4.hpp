@@ -27,7 +27,9 @@ class Rk4Integrator final : public Integrator {
                 const IntegratorOptions& options = {});
   ~Rk4Integrator() override;
 
-  std::string_view name() const override { return "rk4"; }
+  /// The method's name in the registry (methods.hpp), scenario files and the command line.
+  static constexpr std::string_view kName = "rk4";
+  std::string_view name() const override { return kName; }
   int order() const override { return 4; }
   double nominal_step() const override { return dt_; }
   /// Advances by exactly dt (s): advance(state, dt, 1). Allocates nothing.

@@ -25,6 +25,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include "poinsot/dynamics/state.hpp"
@@ -47,8 +48,11 @@ struct LaneResult {
   long long flips = 0;
 };
 
-/// True when `method` is rk4 or dlm and the sample is a free body under no torque or a constant torque in the
-/// body frame or in space.
+/// The names of the methods that have a batched kernel, "rk4 or dlm" (the last two joined by `last_separator`).
+std::string batched_method_names(std::string_view last_separator = " or ");
+
+/// True when `method` has a batched kernel (batched_method_names()) and the sample is a free body under no
+/// torque or a constant torque in the body frame or in space.
 bool batchable(std::string_view method, const Sample& sample);
 
 /// The number of steps n = ⌈t_end/dt − 10⁻⁹⌉ (at least 1) of a run to t_end with nominal step dt (s).

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "poinsot/dynamics/rk4.hpp"
 #include "poinsot/ensemble/batch.hpp"
 #include "poinsot/ensemble/block_merge.hpp"
 #include "poinsot/ensemble/fixed_histogram.hpp"
@@ -84,7 +85,7 @@ struct HistogramSpec {
 
 struct EnsembleOptions {
   std::uint64_t samples = 1000;
-  std::string method = "rk4";
+  std::string method{dynamics::Rk4Integrator::kName};
   double t_end = 10.0;  ///< s
   double dt = 1e-3;     ///< s, the nominal step (fixed-step methods; the first step of adaptive ones)
   double rtol = 1e-10, atol = 1e-12;  ///< adaptive methods
