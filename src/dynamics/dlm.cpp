@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "closing_kick.hpp"
 #include "euler_rhs.hpp"
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
@@ -99,20 +100,10 @@ StepResult DlmIntegrator::step(State& state, double dt) {
     const Mat3 R1 = m.R_body();
     const Vec3 pi_free = m.Pi;
     m.Pi = pi_free + (0.5 * h) * m.torque_principal(t + h, R1, pi_free);  // closing kick
-    if (m.omega_dependent) {  // implicit: Π = Π_free + (h/2) τ(t + h, R, ω(Π)), by fixed-point iteration
-      int it = 0;
-      for (;; ++it) {
-        const Vec3 next = pi_free + (0.5 * h) * m.torque_principal(t + h, R1, m.Pi);
-        const double change = (next - m.Pi).norm();
-        m.Pi = next;
-        if (change <= m.tolerance * std::max(m.Pi.norm(), 1e-300)) break;
-        if (it >= m.max_iterations || !std::isfinite(change)) {
-          throw ComputationFailed(fmt::format(
-              "dlm: the closing torque kick did not converge at t = {} s after {} iterations (change "
-              "{:.3g} kg·m²/s); expected a smaller step for this ω-dependent torque",
-              t + h, it, change));
-        }
-      }
+    if (m.omega_dependent) {  // implicit: Π = Π_free + (h/2) τ(t + h, R, ω(Π))
+      m.Pi = detail::iterate_closing_kick(DlmIntegrator::kName, pi_free, m.Pi, h, t + h, m.tolerance,
+                                          m.max_iterations,
+                                          [&](const Vec3& pi) { return m.torque_principal(t + h, R1, pi); });
     }
   }
   if (++m.steps_since_projection >= detail::kReorthogonalizeEvery) {

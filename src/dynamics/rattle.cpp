@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "closing_kick.hpp"
 #include "euler_rhs.hpp"
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
@@ -106,20 +107,10 @@ StepResult RattleIntegrator::step(State& state, double dt) {
   if (!m.torque_free) {
     tau1 = m.torque_at(t + h, m.R, pi_minus);
     m.Pi = pi_minus + (0.5 * h) * tau1;  // closing kick
-    if (m.omega_dependent) {
-      for (int it = 0;; ++it) {
-        tau1 = m.torque_at(t + h, m.R, m.Pi);
-        const Vec3 next = pi_minus + (0.5 * h) * tau1;
-        const double change = (next - m.Pi).norm();
-        m.Pi = next;
-        if (change <= m.tolerance * std::max(m.Pi.norm(), 1e-300)) break;
-        if (it >= m.max_iterations || !std::isfinite(change)) {
-          throw ComputationFailed(fmt::format(
-              "rattle: the closing torque kick did not converge at t = {} s after {} iterations (change "
-              "{:.3g} kg·m²/s); expected a smaller step for this ω-dependent torque",
-              t + h, it, change));
-        }
-      }
+    if (m.omega_dependent) {  // implicit: Π = Π₋ + (h/2) τ(t + h, R, ω(Π)); tau1 is the last τ evaluated
+      m.Pi = detail::iterate_closing_kick(RattleIntegrator::kName, pi_minus, m.Pi, h, t + h, m.tolerance,
+                                          m.max_iterations,
+                                          [&](const Vec3& pi) { return tau1 = m.torque_at(t + h, m.R, pi); });
     }
   }
   if (++m.steps_since_projection >= detail::kReorthogonalizeEvery) {
