@@ -10,7 +10,6 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "commands.hpp"
 #include "poinsot/core/error.hpp"
@@ -22,6 +21,8 @@
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/inertia/shapes.hpp"
 #include "poinsot/inertia/validity.hpp"
+#include "poinsot/io/inertia_report.hpp"
+#include "poinsot/io/robot_model.hpp"
 
 namespace poinsot::cli {
 namespace {
@@ -51,136 +52,29 @@ struct InertiaOptions {
   double validity_tolerance = kDefaultValidityTolerance;
 };
 
-/// What is printed: the body's mass properties and what was found.
-struct Report {
-  std::optional<double> mass;  // absent for a tensor given without --mass
-  MassProperties props;
-  std::vector<std::string> diagnostics;
-  bool valid = true;
-  std::optional<double> repair_distance;
-};
-
-nlohmann::json json_vector(const Vec3& v) {
-  return {v.x(), v.y(), v.z()};
-}
-nlohmann::json json_matrix(const Mat3& m) {
-  return {{m(0, 0), m(0, 1), m(0, 2)}, {m(1, 0), m(1, 1), m(1, 2)}, {m(2, 0), m(2, 1), m(2, 2)}};
-}
-
-std::string matrix_rows(const Mat3& m) {
-  std::string s;
-  for (int i = 0; i < 3; ++i)
-    s += fmt::format("  [{:>24.17g} {:>24.17g} {:>24.17g}]\n", m(i, 0), m(i, 1), m(i, 2));
-  return s;
-}
+using Report = io::InertiaReport;
 
 std::string num(double x) {
   return format_number(x);
 }
 
-/// The inertial element of a robot model. All three formats give the tensor about the centre of mass, in a
-/// frame at the centre of mass whose axes are those of the link (here: the input frame), with the tensor's
-/// own entries (products of inertia with their sign as entries of J, i.e. J_xy = −∫ρxy).
-std::string model_element(const std::string& format, double mass, const MassProperties& p) {
-  const Mat3& J = p.inertia_com;
-  const Vec3& c = p.com;
-  if (format == "urdf") {
-    // URDF <inertial>: origin xyz rpy, mass value, inertia ixx ixy ixz iyy iyz izz.
-    return fmt::format(
-        "<inertial>\n  <origin xyz=\"{} {} {}\" rpy=\"0 0 0\"/>\n  <mass value=\"{}\"/>\n"
-        "  <inertia ixx=\"{}\" ixy=\"{}\" ixz=\"{}\" iyy=\"{}\" iyz=\"{}\" izz=\"{}\"/>\n</inertial>\n",
-        num(c.x()), num(c.y()), num(c.z()), num(mass), num(J(0, 0)), num(J(0, 1)), num(J(0, 2)), num(J(1, 1)),
-        num(J(1, 2)), num(J(2, 2)));
-  }
-  if (format == "mjcf") {
-    // MJCF <inertial>: pos, mass, fullinertia in the order M11 M22 M33 M12 M13 M23.
-    return fmt::format("<inertial pos=\"{} {} {}\" mass=\"{}\" fullinertia=\"{} {} {} {} {} {}\"/>\n",
-                       num(c.x()), num(c.y()), num(c.z()), num(mass), num(J(0, 0)), num(J(1, 1)),
-                       num(J(2, 2)), num(J(0, 1)), num(J(0, 2)), num(J(1, 2)));
-  }
-  // SDF <inertial>: pose (x y z roll pitch yaw), mass, inertia with ixx ixy ixz iyy iyz izz elements.
-  return fmt::format(
-      "<inertial>\n  <pose>{} {} {} 0 0 0</pose>\n  <mass>{}</mass>\n  <inertia>\n    <ixx>{}</ixx>\n"
-      "    <ixy>{}</ixy>\n    <ixz>{}</ixz>\n    <iyy>{}</iyy>\n    <iyz>{}</iyz>\n    <izz>{}</izz>\n"
-      "  </inertia>\n</inertial>\n",
-      num(c.x()), num(c.y()), num(c.z()), num(mass), num(J(0, 0)), num(J(0, 1)), num(J(0, 2)), num(J(1, 1)),
-      num(J(1, 2)), num(J(2, 2)));
-}
-
-void print_report(const InertiaOptions& o, const Report& r) {
+/// Prints the report in the form the options ask for (io/inertia_report.hpp composes it fully first).
+void print_report(const InertiaOptions& o, Report r) {
   if (o.json && !o.format.empty())
     throw InvalidInput("inertia: got --json and --format; expected at most one");
-  if (!o.format.empty() && o.format != "urdf" && o.format != "mjcf" && o.format != "sdf") {
-    throw InvalidInput(fmt::format("inertia: --format \"{}\"; expected urdf, mjcf or sdf", o.format));
-  }
-  std::optional<Vec3> about;
-  if (!o.about.empty()) {
-    about = Vec3(o.about[0], o.about[1], o.about[2]);
-    if (!about->allFinite()) {
-      throw InvalidInput(
-          fmt::format("inertia: --about {}; expected finite coordinates (m)", format_vector(*about)));
-    }
-    if (!r.mass) throw InvalidInput("inertia: --about needs the mass; expected --mass M (kg)");
-  }
-  const PrincipalAxes pa = principal_axes(r.props.inertia_com, o.symmetry_tolerance);
-  const Mat3 K = r.props.poinsot_com();
-  std::optional<Mat3> J_ref;
-  std::optional<PrincipalAxes> pa_ref;
-  if (about) {
-    J_ref = r.props.inertia_about(*about);
-    pa_ref = principal_axes(*J_ref, o.symmetry_tolerance);
-  }
-
-  std::string out;  // composed fully, then printed
-  if (!o.format.empty()) {
+  std::optional<io::RobotFormat> format;
+  if (!o.format.empty()) format = io::robot_format_named(o.format, "inertia: --format");
+  if (!o.about.empty()) r.about = Vec3(o.about[0], o.about[1], o.about[2]);
+  r.symmetry_tolerance = o.symmetry_tolerance;
+  std::string out;
+  if (format) {
     if (!r.mass)
       throw InvalidInput(
           fmt::format("inertia: --format {} needs the mass; expected --mass M (kg)", o.format));
-    out = model_element(o.format, *r.mass, r.props);
-  } else if (o.json) {
-    nlohmann::json j;
-    j["mass"] = r.mass ? nlohmann::json(*r.mass) : nlohmann::json(nullptr);
-    j["center_of_mass"] = json_vector(r.props.com);
-    j["inertia_com"] = json_matrix(r.props.inertia_com);
-    if (J_ref) {
-      j["about"] = json_vector(*about);
-      j["inertia_ref"] = json_matrix(*J_ref);
-      j["principal_moments_ref"] = json_vector(pa_ref->moments);
-      j["principal_axes_ref"] = json_matrix(pa_ref->axes);
-    }
-    j["poinsot_com"] = json_matrix(K);
-    j["principal_moments"] = json_vector(pa.moments);
-    j["principal_axes"] = json_matrix(pa.axes);
-    j["symmetry"] = to_string(pa.symmetry);
-    j["symmetry_tolerance"] = o.symmetry_tolerance;
-    j["valid"] = r.valid;
-    j["diagnostics"] = r.diagnostics;
-    if (r.repair_distance) j["repair_distance"] = *r.repair_distance;
-    out = j.dump() + "\n";
+    io::inertia_report_text(r);  // validates the reference point as the other forms do
+    out = io::inertial_element(*format, *r.mass, r.props);
   } else {
-    out +=
-        fmt::format("mass:                {}\n", r.mass ? num(*r.mass) + " kg" : std::string("(not given)"));
-    out += fmt::format("centre of mass:      {} m\n", format_vector(r.props.com));
-    out += "inertia J about the centre of mass (kg·m², input frame):\n" + matrix_rows(r.props.inertia_com);
-    if (J_ref) {
-      out += fmt::format("inertia J about {} m (kg·m², input frame):\n", format_vector(*about)) +
-             matrix_rows(*J_ref);
-      out += fmt::format("  its principal moments: {} kg·m² (ascending)\n", format_vector(pa_ref->moments));
-      out += "  its principal axes (columns):\n" + matrix_rows(pa_ref->axes);
-    }
-    out += "Poinsot tensor K = tr(J)/2·I − J about the centre of mass (kg·m²):\n" + matrix_rows(K);
-    out += fmt::format("principal moments:   {} kg·m² (ascending)\n", format_vector(pa.moments));
-    out += "principal axes (columns, a proper rotation):\n" + matrix_rows(pa.axes);
-    out += fmt::format("symmetry:            {} (relative tolerance {})\n", to_string(pa.symmetry),
-                       num(o.symmetry_tolerance));
-    out += fmt::format("valid:               {}\n", r.valid ? "yes" : "no");
-    if (r.repair_distance)
-      out += fmt::format("repair distance:     {} kg·m² (Frobenius)\n", num(*r.repair_distance));
-    out += "diagnostics:        ";
-    if (r.diagnostics.empty()) out += " none\n";
-    for (std::size_t i = 0; i < r.diagnostics.size(); ++i)
-      out += (i ? "; " : " ") + r.diagnostics[i];
-    if (!r.diagnostics.empty()) out += "\n";
+    out = o.json ? io::inertia_report_json(r) : io::inertia_report_text(r);
   }
   fmt::print("{}", out);
 }

@@ -17,6 +17,7 @@
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/inertia/shapes.hpp"
 #include "poinsot/inertia/validity.hpp"
+#include "poinsot/io/inertia_report.hpp"
 #include "poinsot/io/model_check.hpp"
 #include "poinsot/io/model_repair.hpp"
 #include "poinsot/io/robot_model.hpp"
@@ -410,6 +411,39 @@ void bind_inertia(py::module_& parent) {
        "\n\nReads the model file `path` (robot_model.hpp) and returns the report as a dict (the keys of "
        "model_check_json).\n\n" +
        POINSOT_DOC(file_io_model_check))
+          .c_str());
+  // The report of `poinsot inertia --json` and the inertial elements of `--format`, from
+  // io/inertia_report.hpp.
+  m.def(
+      "report",
+      [](const MassProperties& props, const py::object& about, double symmetry_tolerance) {
+        io::InertiaReport r;
+        r.mass = props.mass > 0.0 ? std::optional<double>(props.mass) : std::nullopt;
+        r.props = props;
+        const inertia::InertiaCheck c = inertia::check_inertia(props.inertia_com);
+        r.valid = c.valid;
+        if (!c.valid) r.diagnostics.push_back(c.message);
+        if (!about.is_none()) r.about = to_vec3(about, "about");
+        r.symmetry_tolerance = symmetry_tolerance;
+        return py::module_::import("json").attr("loads")(io::inertia_report_json(r));
+      },
+      py::arg("props"), py::kw_only(), py::arg("about") = py::none(),
+      py::arg("symmetry_tolerance") = inertia::kDefaultSymmetryTolerance,
+      (std::string(
+           "The mass properties `props` as the dict of `poinsot inertia --json` (valid and diagnostics "
+           "from check_inertia; mass null when props.mass is 0).\n\n") +
+       POINSOT_DOC(io_inertia_report_json))
+          .c_str());
+  m.def(
+      "inertial_element",
+      [](const MassProperties& props, const std::string& format) {
+        return io::inertial_element(io::robot_format_named(format, "inertial_element: format"), props.mass,
+                                    props);
+      },
+      py::arg("props"), py::arg("format"),
+      (std::string("The inertial element of `props` (its own mass) in `format`, \"urdf\", \"mjcf\" or "
+                   "\"sdf\", as `poinsot inertia --format` prints it.\n\n") +
+       POINSOT_DOC(io_inertial_element))
           .c_str());
   m.def(
       "repair_model",

@@ -144,3 +144,27 @@ position = [0.5, 0.5, 0.5]
     assert res["body"].mass == expected.mass
     assert np.allclose(res["body"].inertia_com, expected.inertia_com, rtol=1e-14, atol=1e-15)
     assert np.allclose(inertia.parse_body(text)["body"].center_of_mass, expected.center_of_mass, rtol=1e-14)
+
+
+def test_report_and_inertial_elements_are_those_of_the_command_line(cli_exe):
+    # One serialiser (io/inertia_report.hpp) behind `poinsot inertia --json / --format` and these functions:
+    # the same text for the same body, and the box's closed form m/12 (b² + c², a² + c², a² + b²) in it.
+    import json
+    import subprocess
+
+    box = inertia.box(0.4, [0.3, 0.1, 0.02])
+    args = [cli_exe, "inertia", "box", "--size", "0.3", "0.1", "0.02", "--mass", "0.4"]
+    cli = json.loads(subprocess.run(args + ["--json", "--about", "0.1", "0", "0"], capture_output=True, text=True,
+                                    check=True).stdout)
+    assert inertia.report(box, about=[0.1, 0, 0]) == cli
+    m, (a, b, c) = 0.4, (0.3, 0.1, 0.02)
+    assert np.allclose(np.diag(cli["inertia_com"]), m / 12 * np.array([b * b + c * c, a * a + c * c, a * a + b * b]),
+                       rtol=1e-15)
+    # Parallel axes: J_yy and J_zz about (0.1, 0, 0) gain m·0.1².
+    assert np.allclose(np.diag(cli["inertia_ref"]) - np.diag(cli["inertia_com"]), [0, m * 0.01, m * 0.01],
+                       rtol=1e-12)
+    for fmt in ("urdf", "mjcf", "sdf"):
+        text = subprocess.run(args + ["--format", fmt], capture_output=True, text=True, check=True).stdout
+        assert inertia.inertial_element(box, fmt) == text
+    with pytest.raises(ValueError, match='inertial_element: format "step"; expected urdf, mjcf or sdf'):
+        inertia.inertial_element(box, "step")

@@ -1,25 +1,14 @@
 // model_check_json and model_check_text of model_check.hpp: the one serialisation of a model check.
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
+#include "json_values.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/io/model_check.hpp"
 
 namespace poinsot::io {
 namespace {
 
-using json = nlohmann::ordered_json;
-
-json json_vector(const Vec3& v) {
-  return json::array({v[0], v[1], v[2]});
-}
-json json_matrix(const Mat3& m) {
-  return json::array({json_vector(m.row(0)), json_vector(m.row(1)), json_vector(m.row(2))});
-}
-template <class T>
-json optional_number(const std::optional<T>& x) {
-  return x ? json(*x) : json(nullptr);
-}
+using detail::json;
 
 std::string matrix_rows(const Mat3& m) {
   std::string s;
@@ -48,29 +37,29 @@ std::string model_check_json(const ModelCheck& check) {
     l["has_inertial"] = c.has_inertial;
     if (c.has_inertial) {
       l["mass"] = c.mass;
-      l["center_of_mass"] = json_vector(c.com_link);
-      l["inertia_com"] = json_matrix(c.inertia_link);
-      l["principal_moments"] = json_vector(c.principal.moments);
-      l["principal_axes"] = json_matrix(c.principal.axes);
+      l["center_of_mass"] = detail::vec(c.com_link);
+      l["inertia_com"] = detail::mat(c.inertia_link);
+      l["principal_moments"] = detail::vec(c.principal.moments);
+      l["principal_axes"] = detail::mat(c.principal.axes);
       l["valid"] = c.validity.valid;
       l["condition"] = c.validity.condition;
       l["amount"] = c.validity.amount;
       l["message"] = c.validity.message;
-      l["repair"] = c.repair ? json{{"inertia", json_matrix(c.repair->inertia)},
-                                    {"moments_before", json_vector(c.repair->moments_before)},
-                                    {"moments_after", json_vector(c.repair->moments_after)},
+      l["repair"] = c.repair ? json{{"inertia", detail::mat(c.repair->inertia)},
+                                    {"moments_before", detail::vec(c.repair->moments_before)},
+                                    {"moments_after", detail::vec(c.repair->moments_after)},
                                     {"distance", c.repair->distance}}
                              : json(nullptr);
       l["geometry"] = c.geometry ? json{{"source", c.geometry->source},
                                         {"volume", c.geometry->volume},
                                         {"mass", c.geometry->props.mass},
-                                        {"center_of_mass", json_vector(c.geometry->props.com)},
-                                        {"inertia_com", json_matrix(c.geometry->props.inertia_com)},
-                                        {"box_min", json_vector(c.geometry->box_min)},
-                                        {"box_max", json_vector(c.geometry->box_max)}}
+                                        {"center_of_mass", detail::vec(c.geometry->props.com)},
+                                        {"inertia_com", detail::mat(c.geometry->props.inertia_com)},
+                                        {"box_min", detail::vec(c.geometry->box_min)},
+                                        {"box_max", detail::vec(c.geometry->box_max)}}
                                  : json(nullptr);
-      l["implied_density"] = optional_number(c.implied_density);
-      l["trace_ratio"] = optional_number(c.trace_ratio);
+      l["implied_density"] = detail::opt(c.implied_density);
+      l["trace_ratio"] = detail::opt(c.trace_ratio);
     }
     l["warnings"] = c.warnings;
     l["notes"] = c.notes;
