@@ -1,11 +1,13 @@
 #include "ensemble_hdf5.hpp"
 
+#include <array>
 #include <cstdio>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/io/ensemble_table.hpp"
 
 #ifdef POINSOT_HAVE_HDF5
 #include <hdf5.h>
@@ -53,38 +55,32 @@ void write_ensemble_hdf5(const std::string& path, const ensemble::EnsembleResult
   try {
     const hid_t group = H5Gcreate2(file, "samples", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     const std::size_t n = r.rows.size();
-    std::vector<unsigned long long> index(n);
-    std::vector<int> rejected(n), repaired(n);
-    std::vector<double> misalignment(n), moments(3 * n), omega0(3 * n), omega(3 * n), q(4 * n);
-    std::vector<std::vector<double>> out(ensemble::kOutputCount, std::vector<double>(n));
-    for (std::size_t i = 0; i < n; ++i) {
-      const ensemble::SampleRow& row = r.rows[i];
-      index[i] = row.index;
-      rejected[i] = row.rejected;
-      repaired[i] = row.repaired ? 1 : 0;
-      misalignment[i] = row.misalignment;
-      const Quat qf = row.final_state.quaternion();
-      const double qv[4] = {qf.w(), qf.x(), qf.y(), qf.z()};
-      for (std::size_t k = 0; k < 3; ++k) {
-        moments[3 * i + k] = row.moments[static_cast<Eigen::Index>(k)];
-        omega0[3 * i + k] = row.omega0[static_cast<Eigen::Index>(k)];
-        omega[3 * i + k] = row.final_state.omega_body[static_cast<Eigen::Index>(k)];
+    // One dataset per column group of io/ensemble_table.hpp: n rows of its width.
+    for (const io::SampleColumn& c : io::sample_columns()) {
+      const std::size_t width = c.csv_names.size();
+      if (c.kind == io::SampleColumn::Kind::unsigned_integer) {
+        std::vector<unsigned long long> values(n);
+        for (std::size_t i = 0; i < n; ++i)
+          values[i] = c.index(r.rows[i]);
+        write_dataset(group, c.dataset.c_str(), H5T_NATIVE_ULLONG, values.data(), n, 1);
+      } else if (c.kind == io::SampleColumn::Kind::integer) {
+        std::vector<int> values(n * width);
+        for (std::size_t i = 0; i < n; ++i) {
+          const std::array<double, 4> v = c.values(r.rows[i]);
+          for (std::size_t k = 0; k < width; ++k)
+            values[width * i + k] = static_cast<int>(v[k]);
+        }
+        write_dataset(group, c.dataset.c_str(), H5T_NATIVE_INT, values.data(), n, width);
+      } else {
+        std::vector<double> values(n * width);
+        for (std::size_t i = 0; i < n; ++i) {
+          const std::array<double, 4> v = c.values(r.rows[i]);
+          for (std::size_t k = 0; k < width; ++k)
+            values[width * i + k] = v[k];
+        }
+        write_dataset(group, c.dataset.c_str(), H5T_NATIVE_DOUBLE, values.data(), n, width);
       }
-      for (std::size_t k = 0; k < 4; ++k)
-        q[4 * i + k] = qv[k];
-      for (std::size_t o = 0; o < out.size(); ++o)
-        out[o][i] = row.out[o];
     }
-    write_dataset(group, "index", H5T_NATIVE_ULLONG, index.data(), n, 1);
-    write_dataset(group, "rejected", H5T_NATIVE_INT, rejected.data(), n, 1);
-    write_dataset(group, "repaired", H5T_NATIVE_INT, repaired.data(), n, 1);
-    write_dataset(group, "moments", H5T_NATIVE_DOUBLE, moments.data(), n, 3);
-    write_dataset(group, "misalignment", H5T_NATIVE_DOUBLE, misalignment.data(), n, 1);
-    write_dataset(group, "omega0", H5T_NATIVE_DOUBLE, omega0.data(), n, 3);
-    for (std::size_t o = 0; o < out.size(); ++o)
-      write_dataset(group, ensemble::kOutputNames[o], H5T_NATIVE_DOUBLE, out[o].data(), n, 1);
-    write_dataset(group, "quaternion_final", H5T_NATIVE_DOUBLE, q.data(), n, 4);
-    write_dataset(group, "omega_final", H5T_NATIVE_DOUBLE, omega.data(), n, 3);
     H5Gclose(group);
   } catch (...) {
     H5Fclose(file);

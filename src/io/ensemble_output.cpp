@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "poinsot/io/ensemble.hpp"
+#include "poinsot/io/ensemble_table.hpp"
 #include "poinsot/version.hpp"
 
 namespace poinsot::io {
@@ -21,20 +22,35 @@ json number(double x) {
 }  // namespace
 
 std::string ensemble_csv(const ensemble::EnsembleResult& r) {
-  std::string out = "index,rejected,repaired,I1,I2,I3,misalignment,omega0_x,omega0_y,omega0_z";
-  for (const char* name : ensemble::kOutputNames)
-    out += fmt::format(",{}", name);
-  out += ",q_w,q_x,q_y,q_z,omega_x,omega_y,omega_z\n";
+  std::string out;
   auto it = std::back_inserter(out);
+  const char* separator = "";
+  for (const SampleColumn& c : sample_columns()) {
+    for (const std::string& name : c.csv_names) {
+      fmt::format_to(it, "{}{}", separator, name);
+      separator = ",";
+    }
+  }
+  out += "\n";
   for (const ensemble::SampleRow& row : r.rows) {
-    fmt::format_to(it, "{},{},{},{},{},{},{},{},{},{}", row.index, row.rejected, row.repaired ? 1 : 0,
-                   row.moments[0], row.moments[1], row.moments[2], row.misalignment, row.omega0[0],
-                   row.omega0[1], row.omega0[2]);
-    for (double x : row.out)
-      fmt::format_to(it, ",{}", x);
-    const Quat q = row.final_state.quaternion();
-    const Vec3& w = row.final_state.omega_body;
-    fmt::format_to(it, ",{},{},{},{},{},{},{}\n", q.w(), q.x(), q.y(), q.z(), w[0], w[1], w[2]);
+    separator = "";
+    for (const SampleColumn& c : sample_columns()) {
+      if (c.kind == SampleColumn::Kind::unsigned_integer) {
+        fmt::format_to(it, "{}{}", separator, c.index(row));
+        separator = ",";
+        continue;
+      }
+      const std::array<double, 4> v = c.values(row);
+      for (std::size_t k = 0; k < c.csv_names.size(); ++k) {
+        if (c.kind == SampleColumn::Kind::integer) {
+          fmt::format_to(it, "{}{}", separator, static_cast<long long>(v[k]));
+        } else {
+          fmt::format_to(it, "{}{}", separator, v[k]);
+        }
+        separator = ",";
+      }
+    }
+    out += "\n";
   }
   return out;
 }
