@@ -6,6 +6,8 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -68,6 +70,17 @@ std::string describe(const toml::node& node) {
   return "a date-time";
 }
 
+namespace {
+
+/// The top-level sections that make a scenario file the input of one sub-command: a file given to another
+/// sub-command is answered with the one that reads it.
+constexpr std::pair<std::string_view, std::string_view> kSectionReaders[] = {
+    {"ensemble", "poinsot ensemble"},
+    {"optimal_control", "poinsot optimize"},
+};
+
+}  // namespace
+
 Section::Section(const Source& source, const toml::table* table, std::string name,
                  std::initializer_list<std::string_view> valid, const toml::node* position)
     : source_(source), table_(table), name_(std::move(name)), position_(position ? position : table) {
@@ -80,6 +93,15 @@ Section::Section(const Source& source, const toml::table* table, std::string nam
       const auto& at = key.source().begin;
       const std::string where = at.line > 0 ? fmt::format("{}:{}:{}: ", source_.name, at.line, at.column)
                                             : location(source_, &value);
+      if (name_ == "top level") {
+        for (const auto& [section, reader] : kSectionReaders) {
+          if (key.str() == section) {
+            throw InvalidInput(fmt::format(
+                "{}[{}] is read by `{}`, not by this sub-command; expected `{} {}` (or a file without [{}])",
+                where, section, reader, reader, source_.name, section));
+          }
+        }
+      }
       throw InvalidInput(
           fmt::format("{}[{}] unknown key \"{}\"; valid keys: {}", where, name_, key.str(), join(valid)));
     }

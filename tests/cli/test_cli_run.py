@@ -128,6 +128,15 @@ def test_unknown_key_is_named_with_the_valid_ones(cli, tmp_path):
     assert 'unknown key "sampel_dt"; valid keys: t_end, sample_dt, dir' in msg
 
 
+def test_a_file_of_another_sub_command_names_the_one_that_reads_it(cli, source_dir):
+    for example, reader in (("examples/ensemble/tennis_racket_ensemble.toml", "poinsot ensemble"),
+                            ("examples/optimal/betts.toml", "poinsot optimize")):
+        path = Path(source_dir) / example
+        r = subprocess.run([cli, "run", str(path)], capture_output=True, text=True)
+        assert r.returncode == 2 and r.stdout == "" and r.stderr.count("\n") == 1, (r.stdout, r.stderr)
+        assert f"is read by `{reader}`, not by this sub-command; expected `{reader} {path}`" in r.stderr, r.stderr
+
+
 def test_missing_and_double_keys(cli, tmp_path):
     assert "[output] t_end: missing" in bad(cli, tmp_path, MINIMAL.replace("t_end = 5.0", ""))
     msg = bad(cli, tmp_path, MINIMAL.replace("[initial]", "[initial]\nomega_space = [1, 0, 0]"))
