@@ -196,16 +196,3 @@ def test_bad_files(cli, tmp_path):
         assert r.returncode == 2 and r.stdout == "", (f, r.stdout)
         assert len(r.stderr.strip().splitlines()) == 1
 
-
-def test_readme_examples_run(cli, source_dir):
-    """Every `poinsot inertia` line of the README's Inertia section runs (except the one on a user's part.stl)."""
-    text = (source_dir / "README.md").read_text()
-    section = text.split("## Inertia", 1)[1].split("\n## ", 1)[0]
-    lines = [l.split("#")[0].split() for l in section.splitlines() if l.startswith("poinsot inertia")]
-    assert len(lines) >= 13
-    for words in lines:
-        if "part.stl" in words:
-            continue
-        r = cli(*words[1:], cwd=source_dir)
-        assert r.returncode == 0, (words, r.stderr)
-        assert r.stdout and r.stderr == ""
