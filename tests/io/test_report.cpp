@@ -51,7 +51,7 @@ TEST(Report, TopLinesCompareWithTheory) {
   s.symmetry = "prolate";
   s.result.flip_times.clear();
   TopEvents t;
-  t.kind = "heavy top";
+  t.kind = dynamics::TopKind::heavy;
   t.precession_rate_mean = 0.5;
   t.precession_rate_theory = 0.5;
   t.nutation_frequency = 80.0;

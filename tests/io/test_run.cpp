@@ -83,7 +83,7 @@ sample_dt = 0.01
 )");
   const RunSummary s = run_scenario(sc, {});
   ASSERT_TRUE(s.top);
-  EXPECT_EQ(s.top->kind, "free symmetric top");
+  EXPECT_EQ(s.top->kind, dynamics::TopKind::free_symmetric);
   const double L = std::hypot(2.0 * 0.3, 3.0 * 1.0);
   ASSERT_TRUE(s.top->precession_rate_mean);
   EXPECT_NEAR(*s.top->precession_rate_mean, L / 2.0, 1e-10);
@@ -120,7 +120,7 @@ sample_dt = 5e-4
 )");
   const RunSummary s = run_scenario(sc, {});
   ASSERT_TRUE(s.top);
-  EXPECT_EQ(s.top->kind, "heavy top");
+  EXPECT_EQ(s.top->kind, dynamics::TopKind::heavy);
   const double fast = 0.4905 / (0.004 * 200.0);
   EXPECT_NEAR(*s.top->precession_rate_theory, fast, 1e-12);
   ASSERT_TRUE(s.top->precession_rate_mean);

@@ -64,7 +64,7 @@ TEST(Summary, SaysInterruptedOrFailed) {
 TEST(Summary, TopKeys) {
   RunSummary s = sample_summary();
   TopEvents t;
-  t.kind = "heavy top";
+  t.kind = dynamics::TopKind::heavy;
   t.precession_rate_mean = 0.5;
   t.precession_rate_theory = 0.49;
   t.nutation_frequency = 100.0;
