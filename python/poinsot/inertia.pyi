@@ -92,6 +92,9 @@ def hollow_sphere(mass: float, radius: float, inner_radius: float) -> MassProper
 def inertia_from_poinsot(K: numpy.typing.ArrayLike) -> numpy.typing.NDArray[numpy.float64]:
     """K → J = tr(K)·I − K (kg·m²), about the same point and in the same frame."""
 
+def inertial_element(props: MassProperties, format: str) -> str:
+    """The inertial element of `props` (its own mass) in `format`, "urdf", "mjcf" or "sdf", as `poinsot inertia --format` prints it."""
+
 def load_body_file(path: str) -> dict:
     """Reads and evaluates a body file."""
 
@@ -124,6 +127,9 @@ def repair_inertia(J: numpy.typing.ArrayLike) -> dict:
 
 def repair_model(path: str, out: str, *, from_geometry: bool = ...) -> object:
     """Edits `model.text` as described in the file comment; `check` is check_model(model, ...) (its repairs and geometry are used)."""
+
+def report(props: MassProperties, *, about: object = ..., symmetry_tolerance: float = ...) -> object:
+    """The mass properties `props` as the dict of `poinsot inertia --json` (valid and diagnostics from check_inertia; mass null when props.mass is 0)."""
 
 def require_valid_inertia(J: numpy.typing.ArrayLike, what: str = ..., rel_tol: float = ...) -> None:
     """Throws InvalidInput with check_inertia's message unless J is valid."""
