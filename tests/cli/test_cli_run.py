@@ -132,7 +132,7 @@ def test_a_file_of_another_sub_command_names_the_one_that_reads_it(cli, source_d
     for example, reader in (("examples/ensemble/tennis_racket_ensemble.toml", "poinsot ensemble"),
                             ("examples/optimal/betts.toml", "poinsot optimize")):
         path = Path(source_dir) / example
-        r = subprocess.run([cli, "run", str(path)], capture_output=True, text=True)
+        r = cli("run", path)
         assert r.returncode == 2 and r.stdout == "" and r.stderr.count("\n") == 1, (r.stdout, r.stderr)
         assert f"is read by `{reader}`, not by this sub-command; expected `{reader} {path}`" in r.stderr, r.stderr
 
