@@ -69,6 +69,30 @@ TEST(DirectCollocation, CostatesFromDefectMultipliers) {
   }
 }
 
+// continue_direct resumes the refinement from a result's own mesh and samples: from a solution at a mesh
+// error of 1e-5 to one at 1e-9, whose cost meets the eigenaxis cubic as a direct solve at 1e-9 does (the cost
+// error is of the order of the mesh error), with the counts carried on.
+TEST(DirectCollocation, ContinuesTheRefinementOfAPreviousSolution) {
+  const auto p = testing::sphere_energy_problem(kJ, kTheta, Vec3(0.0, 1.0, 1.0), kT);
+  CollocationOptions opt;
+  opt.initial_intervals = 8;
+  opt.mesh_tolerance = 1e-5;
+  const DirectSolution coarse = solve_direct(p, opt);
+  ASSERT_TRUE(coarse.converged) << coarse.status;
+  opt.mesh_tolerance = 1e-9;
+  const DirectSolution fine = continue_direct(p, coarse, opt);
+  ASSERT_TRUE(fine.converged && fine.nlp_solved) << fine.status;
+  EXPECT_LE(fine.max_mesh_error, 1e-9);
+  EXPECT_GT(fine.node_time.size(), coarse.node_time.size());
+  EXPECT_GT(fine.mesh_iterations, coarse.mesh_iterations);
+  EXPECT_GT(fine.nlp_iterations, coarse.nlp_iterations);
+  EXPECT_NEAR(fine.cost / sphere_cost(), 1.0, 1e-8);
+  EXPECT_GT(std::abs(coarse.cost / sphere_cost() - 1.0), std::abs(fine.cost / sphere_cost() - 1.0));
+  DirectSolution broken = coarse;
+  broken.time.pop_back();
+  EXPECT_THROW(continue_direct(p, broken, opt), InvalidInput);
+}
+
 TEST(DirectCollocation, RejectsBadOptions) {
   CollocationOptions opt;
   opt.initial_intervals = 1;
