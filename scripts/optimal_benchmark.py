@@ -17,9 +17,9 @@ minimum energy, minimal coordinates). Rigid bodies: principal moments J1 ≤ J2 
 scaled by 10^U(−1, 1) kg·m²; rest-to-rest turns of 20° … 180° about a random axis; bounds U(0.5, 2) N·m per
 axis (ū U(0.5, 2) N·m for a norm bound).
 
-Each run is `poinsot optimize FILE --json --quiet` with a wall-clock limit (--timeout); its exit status is
-the outcome: 0 verified optimal, 3 converged (direct; minimum principle not verified), 1 failed (a timeout
-counts as failed; 2, bad input, is a defect of the generator and makes this script exit 1). The CPU time is
+Each run is `poinsot optimize FILE --json --quiet` with a CPU-time limit (--cpu-limit, RLIMIT_CPU) and a
+wall-clock one (--timeout); its exit status is the outcome: 0 verified optimal, 3 converged (direct; minimum
+principle not verified), 1 failed (reaching a limit counts as failed; 2, bad input, is a defect of the generator and makes this script exit 1). The CPU time is
 the child's user + system time (resource.getrusage). Output: one row per problem (with --verbose), then per
 family the shares and the median and 95th percentile of the CPU time. `--expect-verified FAMILY,...` makes
 the script exit 1 unless every problem of those families is verified optimal (the CI's smoke run,
@@ -155,19 +155,27 @@ def scenario(family: str, seed: int, index: int, source_dir: Path) -> str:
 OUTCOMES = {0: "verified", 3: "converged_direct", 1: "failed"}
 
 
-def run_one(poinsot: str, path: Path, out: Path, timeout: float) -> dict:
-    """Runs `poinsot optimize` on one file: its outcome, CPU and wall time, and its status line."""
+def run_one(poinsot: str, path: Path, out: Path, timeout: float, cpu_limit: float) -> dict:
+    """Runs `poinsot optimize` on one file: its outcome, CPU and wall time, and its status line. The child's
+    CPU time is limited to `cpu_limit` s (RLIMIT_CPU: a loaded machine does not turn slow runs into
+    failures), its wall time to `timeout` s."""
+    def limit_cpu():
+        seconds = max(1, int(math.ceil(cpu_limit)))
+        resource.setrlimit(resource.RLIMIT_CPU, (seconds, seconds + 5))
+
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.monotonic()
     try:
         r = subprocess.run([poinsot, "optimize", str(path), "--out", str(out), "--json", "--quiet"],
-                           capture_output=True, text=True, timeout=timeout)
+                           capture_output=True, text=True, timeout=timeout, preexec_fn=limit_cpu)
         code, status = r.returncode, ""
         if code in OUTCOMES:
             try:
                 status = json.loads(r.stdout)["status"]
             except (ValueError, KeyError):
                 status = r.stdout.strip().splitlines()[0] if r.stdout.strip() else ""
+        elif code in (-24, -9):  # SIGXCPU, SIGKILL: the CPU limit
+            status = f"CPU limit of {cpu_limit:g} s reached"
         else:
             status = (r.stderr.strip() or r.stdout.strip()).splitlines()[-1:] or [""]
             status = status[0]
@@ -218,7 +226,10 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--first", type=int, default=0, help="index of the first problem (default 0)")
     ap.add_argument("--poinsot", default=os.environ.get("POINSOT_CLI", str(source_dir / "build/release/apps/poinsot/poinsot")),
                     help="the poinsot binary (default: $POINSOT_CLI, else build/release/apps/poinsot/poinsot)")
-    ap.add_argument("--timeout", type=float, default=300.0, help="wall-clock limit per problem, s (default 300)")
+    ap.add_argument("--cpu-limit", type=float, default=120.0,
+                    help="CPU-time limit per problem, s (default 120; reaching it counts as failed)")
+    ap.add_argument("--timeout", type=float, default=3600.0,
+                    help="wall-clock limit per problem, s (default 3600: a safety net beside --cpu-limit)")
     ap.add_argument("--emit", metavar="DIR", help="write the scenario files into DIR and run nothing")
     ap.add_argument("--keep", metavar="DIR", help="keep the scenario files and the outputs in DIR")
     ap.add_argument("--json", metavar="FILE", help="write every problem's result to FILE")
@@ -248,7 +259,7 @@ def main(argv: list[str] | None = None) -> int:
             path = work / f"{f}_{a.seed}_{i}.toml"
             path.write_text(scenario(f, a.seed, i, source_dir))
             r = {"family": f, "seed": a.seed, "index": i,
-                 **run_one(a.poinsot, path, work / f"{f}_{a.seed}_{i}-out", a.timeout)}
+                 **run_one(a.poinsot, path, work / f"{f}_{a.seed}_{i}-out", a.timeout, a.cpu_limit)}
             results.append(r)
             if a.verbose:
                 print(f"{f:12s} {i:3d}  {r['outcome']:16s} {r['cpu_s']:8.2f} s CPU  {r['status'][:110]}",

@@ -47,7 +47,7 @@ def test_fixed_seed_run_is_valid_and_verifies_the_tuned_families(source_dir, tmp
     if not exe:
         pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
     r = bench(source_dir, "--poinsot", exe, "--seed", 1, "--n", 1, "--family", "per_axis,energy,detumble",
-              "--expect-verified", "per_axis,energy,detumble", "--timeout", 120, "--json", tmp_path / "r.json")
+              "--expect-verified", "per_axis,energy,detumble", "--cpu-limit", 60, "--json", tmp_path / "r.json")
     assert r.returncode == 0, r.stdout + r.stderr
     lines = r.stdout.splitlines()
     assert lines[0].startswith("| family | problems | verified | converged (direct) | failed |")
