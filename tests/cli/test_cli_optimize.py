@@ -116,8 +116,10 @@ orientation = { axis_angle = { axis = [1.0, 0.0, 0.0], angle = 1.5 } }
 """
 
 
+@pytest.mark.slow_under_sanitizers
 def test_converged_direct_is_exit_3_with_marked_files_and_never_optimal(cli, tmp_path):
-    """An active rate bound: the shooting method does not handle state-constrained arcs, so the minimum
+    """(About 2 s in release; under the sanitizers the two-interval case above covers the same code.) An
+    active rate bound: the shooting method does not handle state-constrained arcs, so the minimum
     principle is not verified; the direct solution, whose control re-simulated by DOP853 meets the target to
     1e-6, is reported as "converged (direct; ...)", exit 3."""
     out = tmp_path / "out"
