@@ -13,8 +13,10 @@ packages=(
   # C++ libraries
   libeigen3-dev libboost-math-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libassimp-dev libtinyxml2-dev libgtest-dev libgmock-dev libbenchmark-dev
-  # optimal control: the NLP solver of the direct method
-  coinor-libipopt-dev
+  # optimal control: the NLP solver of the direct method, and OpenBLAS as the BLAS behind its MUMPS and NumPy
+  # (Debian's alternatives prefer it to the reference BLAS; poinsot holds it at one thread while Ipopt runs,
+  # docs/install.md)
+  coinor-libipopt-dev libopenblas0
   # Python module, its tests and the plots
   python3 python3-dev pybind11-dev python3-numpy python3-matplotlib python3-pytest
   # the viewer: three.js inlined into view.html; headless Chromium and Selenium for its tests

@@ -41,7 +41,8 @@ struct EnsembleCliOptions {
   std::uint64_t samples = 0;
   unsigned threads = 0;
   long long sample = -1;
-  bool json = false, plot = false, no_simd = false, no_per_sample = false, per_rank_files = false;
+  bool json = false, plot = false, no_simd = false, no_per_sample = false, per_rank_files = false,
+       quiet = false;
 };
 
 void run_ensemble_command(const EnsembleCliOptions& c) {
@@ -86,7 +87,7 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   sa.sa_flags = SA_RESETHAND;
   sigaction(SIGINT, &sa, &old_int);
   o.stop_requested = [] { return g_interrupted != 0; };
-  const bool tty = root && isatty(STDERR_FILENO) == 1 && !c.json;
+  const bool tty = root && isatty(STDERR_FILENO) == 1 && !c.json && !c.quiet;
   const auto start = std::chrono::steady_clock::now();
   o.on_progress = [&](std::uint64_t done) {
     if (!tty) return;
@@ -162,6 +163,7 @@ void register_ensemble(CLI::App& app) {
   cmd->add_option("--threads", opts->threads, "threads (default: all cores)")->check(CLI::PositiveNumber);
   cmd->add_option("--out", opts->out, "output folder");
   cmd->add_flag("--json", opts->json, "print summary.json on stdout");
+  cmd->add_flag("--quiet", opts->quiet, "no progress line");
   cmd->add_flag(
       "--plot", opts->plot,
       "also draw histograms.png, cdf.png and scatter.png (Matplotlib; without per-sample output only "

@@ -1,9 +1,15 @@
 // `poinsot optimize SCENARIO.toml`: the optimal reorientation of [optimal_control] (docs/optimal_control.md):
 // prints the report (or with --json summary.json) and writes report.txt, trajectory.csv, control.csv,
 // costates.csv and summary.json into the output folder, and with --plot the figures
-// (python/poinsot/plot_optimal.py). Exit status 2 for bad input (nothing written), 1 when the solution is not
-// verified optimal (the files are written and say "not converged"), 0 otherwise. A multibody scenario with an
-// [optimal_control] section (io/multibody_optimal_scenario.hpp) is solved by the multibody transcriptions.
+// (python/poinsot/plot_optimal.py). Exit status (io/optimal_run.hpp): 0 optimal (verified), 3 converged
+// (direct; minimum principle not verified: ...), 1 not converged (the files are written and say which), 2 bad
+// input (nothing written). While it runs, a progress line on stderr when stderr is a terminal (never in the
+// files), unless --quiet. A multibody scenario with an [optimal_control] section
+// (io/multibody_optimal_scenario.hpp) is solved by the multibody transcriptions (exit status 0 or 1).
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
 #include <cstdlib>
 #include <memory>
 
@@ -21,7 +27,57 @@ namespace {
 
 struct OptimizeOptions {
   std::string scenario, out;
-  bool json = false, plot = false;
+  bool json = false, plot = false, quiet = false;
+};
+
+/// One progress line on stderr, redrawn at most ten times a second after the first second, only when
+/// stderr is a terminal: the phase and, in the direct method, the mesh and Ipopt's iteration.
+class OptimizeProgress {
+ public:
+  explicit OptimizeProgress(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO) == 1) {}
+  ~OptimizeProgress() { finish(); }
+  OptimizeProgress(const OptimizeProgress&) = delete;
+  OptimizeProgress& operator=(const OptimizeProgress&) = delete;
+
+  void update(const io::OptimalProgress& p) {
+    if (!enabled_) return;
+    const auto now = std::chrono::steady_clock::now();
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const bool new_phase = p.phase != phase_;
+    phase_ = p.phase;
+    if (elapsed < 1.0 || (!new_phase && now - last_ < std::chrono::milliseconds(100))) return;
+    last_ = now;
+    std::string what;
+    if (p.phase == "direct")
+      what = fmt::format(
+          "direct method: mesh {} ({} intervals){}, Ipopt iteration {}, cost {:.6g}, "
+          "infeasibility {:.1e}",
+          p.direct.mesh_iteration, p.direct.intervals,
+          p.direct.restart > 0 ? fmt::format(", restart {}", p.direct.restart) : std::string(),
+          p.direct.nlp_iteration, p.direct.objective, p.direct.infeasibility);
+    else if (p.phase == "phased")
+      what = "direct method: the phase-per-arc re-solve";
+    else if (p.phase == "indirect")
+      what = "indirect method: shooting (Newton)";
+    else if (p.phase == "verification")
+      what = "verification: the necessary conditions and the DOP853 re-simulation";
+    else
+      what = "re-simulating the direct solution's control";
+    fmt::print(stderr, "\r\033[K{}  {:.1f} s", what, elapsed);
+    std::fflush(stderr);
+    drawn_ = true;
+  }
+  void finish() {
+    if (drawn_) fmt::print(stderr, "\r\033[K");
+    drawn_ = false;
+  }
+
+ private:
+  bool enabled_;
+  bool drawn_ = false;
+  std::string phase_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  std::chrono::steady_clock::time_point last_ = start_;
 };
 
 /// A multibody scenario (a `[[bodies]]` array): the direct transcription and its re-simulation
@@ -41,11 +97,16 @@ void optimize(const OptimizeOptions& o) {
   if (io::is_multibody_scenario(o.scenario)) return optimize_multibody(o);
   const io::OptimalScenario sc = io::load_optimal_scenario(o.scenario);  // throws for bad input: exit 2
   const std::string dir = !o.out.empty() ? o.out : !sc.out_dir.empty() ? sc.out_dir : sc.name + "-optimize";
-  const io::OptimalRun run = io::run_optimal(sc);
+  OptimizeProgress progress(!o.quiet);
+  const io::OptimalRun run = io::run_optimal(sc, [&](const io::OptimalProgress& p) { progress.update(p); });
+  progress.finish();
   io::write_optimal_files(run, dir);
   fmt::print("{}", o.json ? io::optimal_summary_json(run) : io::optimal_report(run));
   if (o.plot) make_plots(dir, o.json);
-  if (!run.optimal) std::exit(1);
+  if (const int code = io::outcome_exit_code(run.outcome); code != 0) {
+    std::fflush(stdout);
+    std::exit(code);
+  }
 }
 
 }  // namespace
@@ -59,6 +120,7 @@ void register_optimize(CLI::App& app) {
   cmd->add_option("scenario", o->scenario, "the scenario (TOML, see docs/optimal_control.md)")->required();
   cmd->add_option("--out", o->out, "output folder (default: [output] dir, else SCENARIO-optimize)");
   cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
+  cmd->add_flag("--quiet", o->quiet, "no progress line on the terminal");
   cmd->add_flag("--plot", o->plot,
                 "also draw torque.png, switching.png, omega.png, attitude_error.png and hamiltonian.png "
                 "(Matplotlib) into the output folder");

@@ -59,8 +59,13 @@ class OptimalSolution:
     """The result of ``poinsot.optimize``: the optimal manoeuvre, its checks and its interpretation.
 
     ``optimal`` is True only when both methods converged and every check passed; ``status`` is then
-    "optimal (verified)", else "not converged: <what failed>" and the arrays hold the best iterate (the
-    indirect solution when it ran, else the direct one: ``method`` says which).
+    "optimal (verified)". ``outcome`` is "optimal", "converged_direct" or "not_converged" (the exit status 0, 3
+    or 1 of ``poinsot optimize``): "converged_direct" is a direct solution whose control, re-simulated by
+    DOP853, meets the target where the minimum principle could not be verified (``status`` "converged (direct;
+    minimum principle not verified: <reason>)"; ``optimal`` False); "not_converged" has ``status`` "not
+    converged: <what failed>", and ``failed_phase`` and ``advice`` say which phase failed and what to change.
+    The arrays hold the best solution found (the converged indirect one, else the direct one: ``method`` says
+    which).
 
     Samples (NumPy float64, one row a sample; a bang-bang switch appears twice, once per side): ``t`` (n,) s,
     ``R`` (n, 3, 3) body → space, ``quaternion`` (n, 4) (w, x, y, z), ``omega_body`` (n, 3) rad/s,
@@ -119,6 +124,9 @@ class OptimalSolution:
     direct_optimum_from: str
     out_dir: str | None = None
     figures: list = field(default_factory=list)
+    outcome: str = "not_converged"
+    failed_phase: str = ""
+    advice: str = ""
 
     def __repr__(self) -> str:
         head = "optimal (verified)" if self.optimal else f"NOT OPTIMAL ({self.status})"
@@ -157,7 +165,8 @@ def _solve_single_body(scenario: Any, out_dir: str) -> OptimalSolution:
     J = np.asarray(problem.inertia_body)
     direct = DirectSolution(**raw["direct"])
     ind = raw["indirect"]
-    if len(ind["t"]):
+    summary = json.loads(raw["summary"])
+    if summary["solution_from"] == "indirect":
         method, src = "indirect", ind
         R = ind["R"]
         quaternion = _quaternions(R)
@@ -170,7 +179,6 @@ def _solve_single_body(scenario: Any, out_dir: str) -> OptimalSolution:
         costate_t = direct.costate_time
         hamiltonian = np.full(len(costate_t), np.nan)
         sigma = direct.costate_omega @ np.linalg.inv(J).T
-    summary = json.loads(raw["summary"])
     interpretation = dict(summary.get("interpretation", {}))
     interpretation.update(raw["interpretation"])
     return OptimalSolution(
@@ -183,7 +191,8 @@ def _solve_single_body(scenario: Any, out_dir: str) -> OptimalSolution:
         switch_axes=list(ind["switch_axes"]), checks=summary["checks"], interpretation=interpretation,
         direct=direct, indirect=ind, summary=summary, report=raw["report"], problem=problem,
         phased=dict(summary["phased"]), direct_optimum_from=summary["direct"]["optimum_from"],
-        out_dir=out_dir or None)
+        out_dir=out_dir or None, outcome=summary["outcome"], failed_phase=summary["failed_phase"],
+        advice=summary["advice"])
 
 
 # (recognise, solve) pairs, tried in order (see the module's docstring).

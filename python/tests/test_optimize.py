@@ -175,13 +175,34 @@ def test_scenario_objects_and_options():
         poinsot.optimize(sc, max_mesh_iterations=0)
 
 
+RATE_BOUNDED = {
+    "body": {"principal_moments": [1.0, 1.0, 1.0]},
+    "optimal_control": {"objective": "minimum_time", "torque_bound": "per_axis", "torque_max": [1.0, 1.0, 1.0],
+                        "rate_max": 0.8, "mesh_tolerance": 1e-6,
+                        "final": {"orientation": {"axis_angle": {"axis": [1.0, 0.0, 0.0], "angle": 1.5}}}},
+}
+
+
 def test_a_solution_that_is_not_verified_is_never_presented_as_optimal():
-    # One mesh iteration cannot meet a mesh tolerance of 1e-13: the direct method does not converge.
+    # Two intervals and one mesh iteration: the shooting method does not take the active rate bound, and the
+    # two-interval control misses the target by about 1e-2 rad: not converged.
     with pytest.warns(RuntimeWarning, match="not converged"):
-        r = poinsot.optimize(EXAMPLES / "betts.toml", max_mesh_iterations=1, mesh_tolerance=1e-13)
-    assert not r.optimal and r.status.startswith("not converged:") and "mesh error" in r.status
-    assert not r.direct.converged
+        r = poinsot.optimize(RATE_BOUNDED, initial_intervals=2, max_mesh_iterations=1)
+    assert not r.optimal and r.status.startswith("not converged:") and r.outcome == "not_converged"
+    assert r.failed_phase == "indirect method (shooting)" and "mesh_tolerance" in r.advice
+    assert r.method == "direct" and len(r.t) == 5
     assert r.summary["optimal"] is False and "not converged" in r.report
+    assert "NOT OPTIMAL" in repr(r)
+
+
+def test_converged_direct_is_its_own_outcome_never_optimal():
+    # The same slew refined: the direct solution's control, re-simulated by DOP853, reaches the target to
+    # 1e-6, but the minimum principle is not verified (state-constrained arcs): exit 3 of the command.
+    with pytest.warns(RuntimeWarning, match="converged \\(direct; minimum principle not verified"):
+        r = poinsot.optimize(RATE_BOUNDED)
+    assert not r.optimal and r.outcome == "converged_direct" and r.method == "direct"
+    assert r.summary["direct_replay"]["scaled_error"] <= 1e-6
+    assert np.max(np.abs(r.omega_body)) <= 0.8 * (1 + 1e-6)
     assert "NOT OPTIMAL" in repr(r)
 
 

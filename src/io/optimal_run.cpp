@@ -40,12 +40,52 @@ nlohmann::ordered_json ordered_array(const Vec3& v) {
 
 }  // namespace
 
+namespace {
+
+bool phased_is_optimum(const OptimalRun& r) {
+  return r.phased_applied && r.phased.converged && !r.direct_refined_for_replay;
+}
+
+bool indirect_is_solution(const OptimalRun& r) {
+  return r.outcome != OptimalOutcome::converged_direct && r.indirect.converged && !r.indirect.time.empty();
+}
+
+}  // namespace
+
 const optimal::DirectSolution& direct_optimum(const OptimalRun& r) {
-  return r.phased_applied && r.phased.converged ? r.phased.solution : r.direct;
+  return phased_is_optimum(r) ? r.phased.solution : r.direct;
 }
 
 const char* direct_optimum_source(const OptimalRun& r) {
-  return r.phased_applied && r.phased.converged ? "phased" : "mesh_refinement";
+  return phased_is_optimum(r) ? "phased" : "mesh_refinement";
+}
+
+const char* solution_source(const OptimalRun& r) {
+  return indirect_is_solution(r) ? "indirect" : "direct";
+}
+
+const char* outcome_name(OptimalOutcome outcome) {
+  switch (outcome) {
+    case OptimalOutcome::optimal:
+      return "optimal";
+    case OptimalOutcome::converged_direct:
+      return "converged_direct";
+    case OptimalOutcome::not_converged:
+      break;
+  }
+  return "not_converged";
+}
+
+int outcome_exit_code(OptimalOutcome outcome) {
+  switch (outcome) {
+    case OptimalOutcome::optimal:
+      return 0;
+    case OptimalOutcome::converged_direct:
+      return 3;
+    case OptimalOutcome::not_converged:
+      break;
+  }
+  return 1;
 }
 
 namespace {
@@ -65,8 +105,8 @@ void run_phased(OptimalRun& r) {
                       " (the re-solve takes bang arcs of a minimum-time control)";
     return;
   }
-  if (!r.direct.converged) {
-    r.phased_status = "not applicable: the direct method did not converge";
+  if (!r.direct.nlp_solved) {
+    r.phased_status = "not applicable: Ipopt did not solve the direct method's last mesh";
     return;
   }
   try {
@@ -82,13 +122,112 @@ void run_phased(OptimalRun& r) {
 
 }  // namespace
 
-OptimalRun run_optimal(const OptimalScenario& sc) {
+namespace {
+
+/// `status` without a leading "not applied: " or "not converged: " (it follows "not verified: ").
+std::string reason_of(const std::string& status) {
+  for (const std::string_view prefix : {"not applied: ", "not converged: "})
+    if (status.starts_with(prefix)) return status.substr(prefix.size());
+  return status;
+}
+
+/// The replay of the direct optimum, and the continuations of its mesh refinement at tolerances ten times
+/// smaller while the target is out of reach and within reach of the refinements left (each divides the
+/// replay's error by about ten: the mesh error, times the motion's amplification) and each still helps.
+void replay_direct_optimum(OptimalRun& r, const std::function<void(const OptimalProgress&)>& progress) {
+  constexpr int kMaxRefinements = 3;
+  const auto& p = r.scenario.problem;
+  if (!direct_optimum(r).nlp_solved) return;
+  if (progress) progress({"replay", {}});
+  r.direct_replayed = true;
+  r.direct_replay = optimal::replay_direct(p, direct_optimum(r));
+  optimal::CollocationOptions options = r.scenario.collocation;
+  if (progress) options.progress = [&](const optimal::DirectProgress& d) { progress({"direct", d}); };
+  for (int k = 0; k < kMaxRefinements; ++k) {
+    const double error = r.direct_replay.scaled_error();
+    if (!(error > r.direct_replay_tolerance)) return;  // met, or NaN: DOP853 gave up
+    if (error > r.direct_replay_tolerance * std::pow(10.0, kMaxRefinements - k)) return;  // out of reach
+    options.mesh_tolerance = 0.1 * std::min(options.mesh_tolerance, r.direct.max_mesh_error);
+    optimal::DirectSolution next = optimal::continue_direct(p, r.direct, options);
+    ++r.direct_replay_refinements;
+    if (!next.nlp_solved) return;
+    const optimal::DirectReplay replay = optimal::replay_direct(p, next);
+    if (!(replay.scaled_error() < error)) return;
+    r.direct = std::move(next);
+    r.direct_refined_for_replay = true;
+    r.direct_replay = replay;
+  }
+}
+
+/// The phase that failed and what to change (OptimalRun::failed_phase, advice).
+void explain_failure(OptimalRun& r) {
+  const auto& sc = r.scenario;
+  const int intervals = sc.collocation.initial_intervals;
+  if (!r.direct.nlp_solved && !(r.phased_applied && r.phased.converged)) {
+    r.failed_phase = "direct method (Ipopt)";
+    r.advice = fmt::format(
+        "more initial_intervals (now {}: the first mesh must resolve the motion, e.g. every turn of a spin), "
+        "or a problem Ipopt can start from: a final_time or torque bounds that make the target reachable "
+        "(the files hold Ipopt's last iterate)",
+        intervals);
+    return;
+  }
+  if (!r.indirect.converged) {
+    r.failed_phase = "indirect method (shooting)";
+    const bool not_applied = r.indirect.status.starts_with("not applied");
+    if (r.outcome == OptimalOutcome::converged_direct) {
+      r.advice = not_applied
+                     ? "nothing in the scenario: the shooting method does not handle this structure; the "
+                       "direct solution is the answer, checked by its re-simulation"
+                     : fmt::format(
+                           "more shooting_nodes (now {}: a long or unstable motion needs "
+                           "segments, e.g. 8 … 64) may let the shooting converge",
+                           sc.shooting.shooting_nodes);
+      return;
+    }
+    const std::string replay =
+        r.direct_replayed
+            ? fmt::format("; the direct solution's re-simulation misses the target by {} rad (target {})",
+                          format_number(r.direct_replay.scaled_error(), 3),
+                          format_number(r.direct_replay_tolerance))
+            : std::string();
+    if (not_applied)
+      r.advice = "the shooting method does not handle this structure" + replay +
+                 ": a smaller mesh_tolerance (now " + format_number(sc.collocation.mesh_tolerance) +
+                 ") or more max_mesh_iterations (now " + std::to_string(sc.collocation.max_mesh_iterations) +
+                 ") refine the direct solution until it reaches the target";
+    else
+      r.advice = fmt::format(
+          "more shooting_nodes (now {}: a long or unstable motion needs segments, e.g. 8 … 64), or more "
+          "initial_intervals (now {}) and a smaller mesh_tolerance (now {}) for a better start from the "
+          "direct "
+          "method{}",
+          sc.shooting.shooting_nodes, intervals, format_number(sc.collocation.mesh_tolerance), replay);
+    return;
+  }
+  r.failed_phase = "verification";
+  r.advice = fmt::format(
+      "the shooting converged but a check failed: a smaller mesh_tolerance (now {}) or more shooting_nodes "
+      "(now {}) may lead it to the optimum; a failing re-simulation of an unstable motion needs more "
+      "shooting_nodes",
+      format_number(sc.collocation.mesh_tolerance), sc.shooting.shooting_nodes);
+}
+
+}  // namespace
+
+OptimalRun run_optimal(const OptimalScenario& sc,
+                       const std::function<void(const OptimalProgress&)>& progress) {
   OptimalRun r;
   r.scenario = sc;
-  r.direct = optimal::solve_direct(sc.problem, sc.collocation);
+  optimal::CollocationOptions collocation = sc.collocation;
+  if (progress) collocation.progress = [&](const optimal::DirectProgress& d) { progress({"direct", d}); };
+  r.direct = optimal::solve_direct(sc.problem, collocation);
+  if (progress) progress({"phased", {}});
   run_phased(r);
+  if (progress) progress({"indirect", {}});
   if (r.direct.costate_time.size() >= 2)
     r.indirect = optimal::solve_indirect(sc.problem, r.direct, sc.shooting);
+  if (progress) progress({"verification", {}});
   if (!r.indirect.time.empty()) {
     r.verification = optimal::verify(sc.problem, direct_optimum(r), r.indirect);
     r.interpretation = optimal::interpret(sc.problem, r.indirect);
@@ -96,11 +235,28 @@ OptimalRun run_optimal(const OptimalScenario& sc) {
   } else {
     r.verification.failures.push_back(r.indirect.status.empty() ? "indirect method not run"
                                                                 : r.indirect.status);
-    if (!r.direct.converged) r.verification.failures.insert(r.verification.failures.begin(), r.direct.status);
+    if (!r.direct.nlp_solved)
+      r.verification.failures.insert(r.verification.failures.begin(), r.direct.status);
   }
-  r.optimal = r.direct.converged && r.indirect.converged && r.verification.passed;
-  r.status =
-      r.optimal ? "optimal (verified)" : fmt::format("not converged: {}", r.verification.failures.front());
+  r.optimal = direct_optimum(r).nlp_solved && r.indirect.converged && r.verification.passed;
+  if (r.optimal) {
+    r.outcome = OptimalOutcome::optimal;
+    r.status = "optimal (verified)";
+    return r;
+  }
+  const std::string reason =
+      !r.indirect.converged
+          ? reason_of(r.indirect.status.empty() ? "indirect method not run" : r.indirect.status)
+          : r.verification.failures.front();
+  replay_direct_optimum(r, progress);
+  if (r.direct_replayed && r.direct_replay.scaled_error() <= r.direct_replay_tolerance) {
+    r.outcome = OptimalOutcome::converged_direct;
+    r.status = fmt::format("converged (direct; minimum principle not verified: {})", reason);
+  } else {
+    r.outcome = OptimalOutcome::not_converged;
+    r.status = fmt::format("not converged: {}", r.verification.failures.front());
+  }
+  explain_failure(r);
   return r;
 }
 
@@ -118,13 +274,40 @@ std::string optimal_report(const OptimalRun& r) {
                                                   : "norm " + format_number(p.torque_max[0]))
     << " N·m";
   if (p.has_rate_bound()) o << "; rate bound " << format_number(p.rate_max) << " rad/s";
-  o << "\nstatus: " << r.status << "\n\n";
+  o << "\nstatus: " << r.status << "\n";
+  if (r.outcome == OptimalOutcome::not_converged) {
+    o << "failed: " << r.failed_phase << "\n";
+    o << "what to change: " << r.advice << "\n";
+  } else if (r.outcome == OptimalOutcome::converged_direct) {
+    o << "not verified in: " << r.failed_phase << "\n";
+    o << "what to change: " << r.advice << "\n";
+  }
+  if (r.direct_replayed)
+    o << fmt::format(
+        "direct re-simulation (DOP853, the collocation's control{}): attitude error {} rad, rate error {} "
+        "rad/s, max(δθ, T δω) {} rad against the target {}\n",
+        r.direct_replay_refinements > 0
+            ? fmt::format(", after {} continued mesh refinements", r.direct_replay_refinements)
+            : std::string(),
+        format_number(r.direct_replay.attitude_error, 3), format_number(r.direct_replay.rate_error, 3),
+        format_number(r.direct_replay.scaled_error(), 3), format_number(r.direct_replay_tolerance));
+  if (r.outcome != OptimalOutcome::optimal)
+    o << "the files hold: "
+      << (solution_source(r) == std::string_view("indirect") ? "the indirect solution"
+          : direct_optimum(r).nlp_solved                     ? "the direct solution Ipopt solved"
+                                                             : "the direct method's last iterate")
+      << "\n";
+  o << "\n";
   o << fmt::format(
       "direct (Hermite–Simpson, Ipopt): {}; {} intervals after {} mesh iterations, mesh error {}, "
-      "{} Ipopt iterations\n  final time {} s, cost {}\n",
+      "{} Ipopt iterations{}\n  final time {} s, cost {}\n",
       r.direct.status, r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1,
       r.direct.mesh_iterations, format_number(r.direct.max_mesh_error, 3), r.direct.nlp_iterations,
+      r.direct.nlp_restarts > 0 ? fmt::format(" ({} restarts with other settings)", r.direct.nlp_restarts)
+                                : std::string(),
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));
+  if (r.optimal && !r.direct.converged)
+    o << "  the mesh tolerance was not met; the indirect solution is verified on its own\n";
   if (r.phased_applied) {
     o << fmt::format("direct, one phase per arc ({} intervals per arc, Ipopt): {}; {} Ipopt iterations\n",
                      r.scenario.phased_options.intervals_per_arc, r.phased.status, r.phased.nlp_iterations)
@@ -197,6 +380,10 @@ std::string optimal_summary_json(const OptimalRun& r) {
   j["scenario"] = r.scenario.source;
   j["status"] = r.status;
   j["optimal"] = r.optimal;
+  j["outcome"] = outcome_name(r.outcome);
+  j["solution_from"] = solution_source(r);
+  j["failed_phase"] = r.failed_phase;
+  j["advice"] = r.advice;
   j["objective"] = std::string(optimal::objective_name(p.objective));
   const Quat& qf = p.attitude_final;
   j["problem"] = {
@@ -214,7 +401,18 @@ std::string optimal_summary_json(const OptimalRun& r) {
                  {"intervals", r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1},
                  {"mesh_error", r.direct.max_mesh_error},
                  {"nlp_iterations", r.direct.nlp_iterations},
+                 {"nlp_solved", r.direct.nlp_solved},
+                 {"nlp_restarts", r.direct.nlp_restarts},
                  {"optimum_from", direct_optimum_source(r)}};
+  const auto finite_or_null = [](double x) {
+    return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json();
+  };
+  j["direct_replay"] = {{"run", r.direct_replayed},
+                        {"attitude_error", finite_or_null(r.direct_replay.attitude_error)},
+                        {"rate_error", finite_or_null(r.direct_replay.rate_error)},
+                        {"scaled_error", finite_or_null(r.direct_replay.scaled_error())},
+                        {"tolerance", r.direct_replay_tolerance},
+                        {"refinements", r.direct_replay_refinements}};
   nlohmann::ordered_json phased = {{"enabled", r.scenario.phased},
                                    {"applied", r.phased_applied},
                                    {"status", r.phased_status},
@@ -284,7 +482,7 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
   costates.append(
       "t,p_theta_x,p_theta_y,p_theta_z,p_omega_x,p_omega_y,p_omega_z,sigma_x,sigma_y,sigma_z,H\n");
   const auto& s = r.indirect;
-  if (!s.time.empty()) {
+  if (solution_source(r) == std::string_view("indirect")) {
     for (std::size_t k = 0; k < s.time.size(); ++k) {
       const Quat q(s.attitude[k]);
       traj += trajectory_row(s.time[k], q, s.omega_body[k], s.torque_body[k],
@@ -300,7 +498,7 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
       for (std::size_t k = 0; k < s.time.size(); ++k)
         control += csv_row(s.time[k], {s.torque_body[k]});
     }
-  } else {  // the best iterate: the direct optimum
+  } else {  // the direct optimum: the best solution found, or the last iterate
     const auto& d = direct_optimum(r);
     for (std::size_t k = 0; k < d.time.size(); ++k) {
       const Quat& q = d.attitude[k];

@@ -1,4 +1,6 @@
 #include "control_replay.hpp"
+// The replays of a control history through DOP853: an indirect solution's (control_replay.hpp) and a direct
+// solution's (poinsot/optimal/direct_replay.hpp).
 
 // GCC 12 reports -Wmaybe-uninitialized and -Wrestrict inside Boost.Odeint's stepper copy constructors when
 // they are inlined here (false positives in library code: the work arrays are resized before use).
@@ -17,6 +19,8 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/dop853.hpp"
 #include "poinsot/dynamics/tabulated_torque.hpp"
+#include "poinsot/optimal/direct_replay.hpp"
+#include "poinsot/so3/distance.hpp"
 #include "poinsot/so3/hat.hpp"
 
 namespace poinsot::optimal::detail {
@@ -160,3 +164,94 @@ double replay_amplification(const ReorientationProblem& p, const IndirectSolutio
 }
 
 }  // namespace poinsot::optimal::detail
+
+namespace poinsot::optimal {
+
+double DirectReplay::scaled_error() const {
+  if (std::isnan(attitude_error) || std::isnan(rate_error)) return std::numeric_limits<double>::quiet_NaN();
+  return std::max(attitude_error, final_time * rate_error);
+}
+
+namespace {
+
+/// One interval of the transcription: the sample indices of its left node, midpoint and right node.
+struct ReplayInterval {
+  std::size_t left = 0;
+  double t_begin = 0.0, t_end = 0.0;
+};
+
+/// The intervals of `d`: node, midpoint, node, ..., a repeated time (a phase boundary's duplicated node)
+/// starting the next phase.
+std::vector<ReplayInterval> intervals_of(const DirectSolution& d) {
+  const std::size_t n = d.time.size();
+  if (n < 3 || d.torque_body.size() != n || d.attitude.empty())
+    throw InvalidInput("direct replay: " + std::to_string(n) +
+                       " samples; expected a direct solution (nodes and midpoints)");
+  std::vector<ReplayInterval> out;
+  std::size_t i = 0;
+  while (i + 2 < n) {
+    if (d.time[i + 1] == d.time[i]) {  // the duplicated node between two phases
+      ++i;
+      continue;
+    }
+    if (!(d.time[i] < d.time[i + 1] && d.time[i + 1] < d.time[i + 2]))
+      throw InvalidInput("direct replay: the sample times are not increasing at t = " +
+                         std::to_string(d.time[i]) + " s; expected nodes and midpoints in order");
+    out.push_back({i, d.time[i], d.time[i + 2]});
+    i += 2;
+  }
+  if (i + 1 != n) throw InvalidInput("direct replay: the samples do not end on a node");
+  return out;
+}
+
+}  // namespace
+
+DirectReplay replay_direct(const ReorientationProblem& p, const DirectSolution& d) {
+  const std::vector<ReplayInterval> intervals = intervals_of(d);
+  // The quadratic through (u_left, u_mid, u_right) at s = 0, ½, 1 of the interval entered last.
+  auto current = std::make_shared<ReplayInterval>(intervals.front());
+  const auto torque = dynamics::TorqueModel::callback(
+      [current, &d](double t, const Mat3&, const Vec3&) -> Vec3 {
+        const ReplayInterval& k = *current;
+        const double s = (t - k.t_begin) / (k.t_end - k.t_begin);
+        const Vec3& u0 = d.torque_body[k.left];
+        const Vec3& u1 = d.torque_body[k.left + 1];
+        const Vec3& u2 = d.torque_body[k.left + 2];
+        return 2 * (s - 0.5) * (s - 1) * u0 - 4 * s * (s - 1) * u1 + 2 * s * (s - 0.5) * u2;
+      },
+      false, "direct collocation torque");
+  const auto body = dynamics::RigidBody::from_inertia(p.inertia_body);
+  dynamics::IntegratorOptions opt;
+  opt.dt = d.final_time / 16.0;
+  opt.rtol = opt.atol = 1e-13;
+  dynamics::Dop853Integrator integrator(body, torque, opt);
+  dynamics::State state;
+  state.time = 0.0;
+  state.R_space_body = p.attitude_initial.toRotationMatrix();
+  state.omega_body = p.omega_initial;
+  DirectReplay r;
+  r.final_time = d.final_time;
+  double dt = opt.dt;
+  try {
+    for (const ReplayInterval& k : intervals) {
+      *current = k;
+      state.time = k.t_begin;
+      while (k.t_end - state.time > 1e-14 * d.final_time) {
+        const auto step = integrator.step(state, std::min(dt, k.t_end - state.time));
+        dt = std::max(step.dt_next, 1e-12);
+      }
+      state.time = k.t_end;
+    }
+  } catch (const ComputationFailed&) {  // DOP853 gave up: nothing to compare
+    r.attitude_error = r.rate_error = std::numeric_limits<double>::quiet_NaN();
+    return r;
+  }
+  const Mat3 target =
+      p.free_final_attitude ? d.attitude.back().toRotationMatrix() : p.attitude_final.toRotationMatrix();
+  r.attitude_error = state.R_space_body.allFinite() ? so3::angle_between(state.R_space_body, target)
+                                                    : std::numeric_limits<double>::quiet_NaN();
+  r.rate_error = (state.omega_body - p.omega_final).norm();
+  return r;
+}
+
+}  // namespace poinsot::optimal

@@ -6,8 +6,10 @@
 #include <memory>
 #include <numbers>
 
+#include <fmt/format.h>
 #include "collocation_nlp.hpp"
 #include "collocation_solution.hpp"
+
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/so3/exp_log.hpp"
@@ -181,6 +183,106 @@ void validate(const CollocationOptions& options) {
                        "; expected a finite positive tolerance");
 }
 
+namespace {
+
+/// The Ipopt settings of attempt 0, 1, 2 on one mesh (solve_direct's restarts, direct_collocation.hpp).
+detail::IpoptSettings attempt_settings(const CollocationOptions& options, int attempt) {
+  detail::IpoptSettings ipopt;
+  ipopt.tolerance = options.nlp_tolerance;
+  ipopt.acceptable_tolerance = options.nlp_tolerance;
+  ipopt.max_iterations = options.max_nlp_iterations;
+  ipopt.print_level = options.print_level;
+  if (attempt >= 1) ipopt.warm_start = true;
+  if (attempt == 1) {
+    ipopt.mu_strategy = "monotone";
+    ipopt.mu_init = 1e-4;
+  }
+  if (attempt == 2) ipopt.max_iterations = 2 * options.max_nlp_iterations;
+  return ipopt;
+}
+
+constexpr int kAttempts = 3;
+
+/// The mesh refinement from `nlp` and its start `z`; the counts of `before` (a previous solve) are added to.
+DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<CollocationNlp> nlp,
+                           std::vector<double> z, const CollocationOptions& options,
+                           const DirectSolution& before) {
+  std::vector<double> y;
+  DirectSolution best, previous;  // previous: the last mesh Ipopt solved
+  bool have_previous = false;
+  std::string failure;
+  int nlp_iterations = before.nlp_iterations, restarts = before.nlp_restarts;
+  for (int it = 0; it < options.max_mesh_iterations; ++it) {
+    const int mesh = before.mesh_iterations + it + 1;
+    detail::NlpSolution solution;
+    int attempt = 0;
+    for (; attempt < kAttempts; ++attempt) {
+      detail::IpoptSettings ipopt = attempt_settings(options, attempt);
+      if (options.progress)
+        ipopt.on_iteration = [&, attempt](int i, double f, double inf) {
+          options.progress(DirectProgress{mesh, nlp->intervals(), attempt, i, f, inf});
+        };
+      solution = detail::solve_with_ipopt(*nlp, z, ipopt);
+      nlp_iterations += solution.iterations;
+      if (solution.solved || solution.acceptable) break;
+    }
+    restarts += std::min(attempt, kAttempts - 1);
+    const bool solved = attempt < kAttempts;
+    if (!solved) {
+      failure = fmt::format(
+          "Ipopt did not converge (status {}: {}) on mesh {} with {} intervals, also when "
+          "restarted with {} other settings",
+          solution.return_code, solution.status, mesh, nlp->intervals(), kAttempts - 1);
+      if (have_previous) {  // the previous mesh's solution, which Ipopt solved, is the result
+        best = std::move(previous);
+        failure += fmt::format("; the solution of mesh {} ({} intervals, mesh error {}) is kept", mesh - 1,
+                               best.node_time.size() - 1, format_number(best.max_mesh_error, 3));
+      } else {  // the last iterate and, where Ipopt finalised, its multipliers
+        if (!solution.y.empty()) {
+          z = std::move(solution.x);
+          y = std::move(solution.y);
+        }
+        best = detail::extract_solution(*nlp, z, y);
+        best.mesh_iterations = mesh;
+      }
+      break;
+    }
+    z = std::move(solution.x);
+    y = std::move(solution.y);
+    best = detail::extract_solution(*nlp, z, y);
+    best.nlp_solved = true;
+    best.mesh_iterations = mesh;
+    best.nlp_iterations = nlp_iterations;
+    best.nlp_restarts = restarts;
+    if (best.max_mesh_error <= options.mesh_tolerance) {
+      best.converged = true;
+      best.status = "converged";
+      return best;
+    }
+    std::vector<double> next = refine(nlp->tau(), best.mesh_error, options.mesh_tolerance);
+    if (static_cast<int>(next.size()) - 1 > options.max_intervals) {
+      failure = "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
+                format_number(options.mesh_tolerance) + " with the interval limit " +
+                std::to_string(options.max_intervals) + " reached";
+      break;
+    }
+    previous = best;
+    have_previous = true;
+    auto refined = std::make_unique<CollocationNlp>(problem, std::move(next));
+    z = interpolate(*nlp, z, *refined);
+    nlp = std::move(refined);
+  }
+  best.nlp_iterations = nlp_iterations;
+  best.nlp_restarts = restarts;
+  best.status = failure.empty() ? "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
+                                      format_number(options.mesh_tolerance) + " after " +
+                                      std::to_string(best.mesh_iterations) + " mesh iterations"
+                                : failure;
+  return best;
+}
+
+}  // namespace
+
 DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options) {
   validate(problem);
   validate(options);
@@ -199,53 +301,42 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
                     : dumping_is_optimal       ? minimum_duration_bound(problem)
                                                : 2.0 * minimum_duration_bound(problem);
   std::vector<double> z = initial_guess(*nlp, T0);
-  std::vector<double> y;
+  return refine_mesh(problem, std::move(nlp), std::move(z), options, DirectSolution{});
+}
 
-  detail::IpoptSettings ipopt;
-  ipopt.tolerance = options.nlp_tolerance;
-  ipopt.acceptable_tolerance = options.nlp_tolerance;
-  ipopt.max_iterations = options.max_nlp_iterations;
-  ipopt.print_level = options.print_level;
-
-  DirectSolution best;
-  std::string failure;
-  int nlp_iterations = 0;
-  for (int it = 0; it < options.max_mesh_iterations; ++it) {
-    detail::NlpSolution solution = detail::solve_with_ipopt(*nlp, z, ipopt);
-    if (!solution.y.empty()) {  // Ipopt finalised: its last iterate and multipliers
-      z = std::move(solution.x);
-      y = std::move(solution.y);
-    }
-    nlp_iterations += solution.iterations;
-    best = detail::extract_solution(*nlp, z, y);
-    best.mesh_iterations = it + 1;
-    best.nlp_iterations = nlp_iterations;
-    if (!solution.solved && !solution.acceptable) {
-      failure = "Ipopt did not converge (status " + std::to_string(solution.return_code) + ") on mesh " +
-                std::to_string(it + 1) + " with " + std::to_string(nlp->intervals()) + " intervals";
-      break;
-    }
-    if (best.max_mesh_error <= options.mesh_tolerance) {
-      best.converged = true;
-      best.status = "converged";
-      return best;
-    }
-    std::vector<double> next = refine(nlp->tau(), best.mesh_error, options.mesh_tolerance);
-    if (static_cast<int>(next.size()) - 1 > options.max_intervals) {
-      failure = "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
-                format_number(options.mesh_tolerance) + " with the interval limit " +
-                std::to_string(options.max_intervals) + " reached";
-      break;
-    }
-    auto refined = std::make_unique<CollocationNlp>(problem, std::move(next));
-    z = interpolate(*nlp, z, *refined);
-    nlp = std::move(refined);
+DirectSolution continue_direct(const ReorientationProblem& problem, const DirectSolution& previous,
+                               const CollocationOptions& options) {
+  validate(problem);
+  validate(options);
+  const std::size_t n = previous.node_time.size();
+  if (n < 2 || previous.time.size() != 2 * n - 1 || previous.attitude.size() != previous.time.size() ||
+      !(previous.final_time > 0.0))
+    throw InvalidInput("continue_direct: the previous solution has no single-phase mesh (" +
+                       std::to_string(n) + " nodes, " + std::to_string(previous.time.size()) +
+                       " samples); expected a solve_direct result");
+  std::vector<double> tau(n);
+  for (std::size_t k = 0; k < n; ++k)
+    tau[k] = previous.node_time[k] / previous.final_time;
+  tau.front() = 0.0;
+  tau.back() = 1.0;
+  auto nlp = std::make_unique<CollocationNlp>(problem, std::move(tau));
+  std::vector<double> z(nlp->num_variables(), 0.0);
+  for (std::size_t pt = 0; pt < previous.time.size(); ++pt) {
+    const Quat& q = previous.attitude[pt];
+    const double v[10] = {q.w(),
+                          q.x(),
+                          q.y(),
+                          q.z(),
+                          previous.omega_body[pt][0],
+                          previous.omega_body[pt][1],
+                          previous.omega_body[pt][2],
+                          previous.torque_body[pt][0],
+                          previous.torque_body[pt][1],
+                          previous.torque_body[pt][2]};
+    std::copy(v, v + 10, z.begin() + static_cast<std::ptrdiff_t>(kP * pt));  // ν = 0
   }
-  best.status = failure.empty() ? "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
-                                      format_number(options.mesh_tolerance) + " after " +
-                                      std::to_string(options.max_mesh_iterations) + " mesh iterations"
-                                : failure;
-  return best;
+  z[nlp->time_index()] = previous.final_time;
+  return refine_mesh(problem, std::move(nlp), std::move(z), options, previous);
 }
 
 }  // namespace poinsot::optimal

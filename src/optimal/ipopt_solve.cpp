@@ -1,4 +1,5 @@
 // Ipopt's view of a SparseNlp (sparse_nlp.hpp).
+#include <dlfcn.h>
 #include <IpIpoptApplication.hpp>
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
@@ -14,9 +15,51 @@
 namespace poinsot::optimal::detail {
 namespace {
 
+/// OpenBLAS's function `name` in the process: through the already loaded libopenblas.so.0 (its symbols are
+/// not global where a Python extension loaded it), else in the global scope; nullptr when absent (another
+/// BLAS).
+void* openblas_symbol(const char* name) {
+  if (void* lib = dlopen("libopenblas.so.0", RTLD_LAZY | RTLD_NOLOAD)) {
+    void* f = dlsym(lib, name);
+    dlclose(lib);  // RTLD_NOLOAD took a reference: give it back (the library stays loaded)
+    if (f != nullptr) return f;
+  }
+  return dlsym(RTLD_DEFAULT, name);
+}
+
+/// One BLAS thread while Ipopt runs, so that its results are bit-identical from run to run on a machine.
+/// MUMPS calls the BLAS that Debian's alternatives select for libblas.so.3: the reference BLAS, or OpenBLAS
+/// (scripts/setup.sh installs it). A threaded OpenBLAS may split a product's sums between threads, whose
+/// number then changes the rounding, and Ipopt's path with it. OpenBLAS's `openblas_get_num_threads` and
+/// `openblas_set_num_threads` are looked up at run time (no link dependency: with another BLAS they are
+/// absent and nothing is done); one thread is set for the object's lifetime, the previous count restored.
+class SingleBlasThread {
+ public:
+  using GetThreads = int (*)();
+  using SetThreads = void (*)(int);
+  SingleBlasThread()
+      : get_(reinterpret_cast<GetThreads>(openblas_symbol("openblas_get_num_threads"))),
+        set_(reinterpret_cast<SetThreads>(openblas_symbol("openblas_set_num_threads"))) {
+    if (get_ == nullptr || set_ == nullptr) return;
+    previous_ = get_();
+    if (previous_ != 1) set_(1);
+  }
+  ~SingleBlasThread() {
+    if (previous_ > 1) set_(previous_);
+  }
+  SingleBlasThread(const SingleBlasThread&) = delete;
+  SingleBlasThread& operator=(const SingleBlasThread&) = delete;
+
+ private:
+  GetThreads get_ = nullptr;
+  SetThreads set_ = nullptr;
+  int previous_ = 0;
+};
+
 class SparseNlpAdapter : public Ipopt::TNLP {
  public:
-  SparseNlpAdapter(const SparseNlp& nlp, const std::vector<double>& start) : nlp_(nlp), x_(start) {}
+  SparseNlpAdapter(const SparseNlp& nlp, const std::vector<double>& start, const IpoptSettings& settings)
+      : nlp_(nlp), x_(start), settings_(settings) {}
 
   bool get_nlp_info(Ipopt::Index& n, Ipopt::Index& m, Ipopt::Index& nnz_jac, Ipopt::Index& nnz_h,
                     IndexStyleEnum& style) override {
@@ -79,6 +122,13 @@ class SparseNlpAdapter : public Ipopt::TNLP {
     y_.assign(lambda, lambda + m);
     f_ = f;
   }
+  bool intermediate_callback(Ipopt::AlgorithmMode, Ipopt::Index iteration, Ipopt::Number objective,
+                             Ipopt::Number infeasibility, Ipopt::Number, Ipopt::Number, Ipopt::Number,
+                             Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Index,
+                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    if (settings_.on_iteration) settings_.on_iteration(iteration, objective, infeasibility);
+    return true;
+  }
 
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
@@ -87,6 +137,7 @@ class SparseNlpAdapter : public Ipopt::TNLP {
  private:
   const SparseNlp& nlp_;
   std::vector<double> x_, y_;
+  const IpoptSettings& settings_;
   double f_ = 0.0;
 };
 
@@ -130,11 +181,16 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
     app->Options()->SetNumericValue("acceptable_tol", settings.acceptable_tolerance);
   app->Options()->SetIntegerValue("max_iter", settings.max_iterations);
   app->Options()->SetStringValue("hessian_approximation", "exact");
-  app->Options()->SetStringValue("mu_strategy", "adaptive");
+  app->Options()->SetStringValue("mu_strategy", settings.mu_strategy);
+  if (settings.mu_init > 0.0) app->Options()->SetNumericValue("mu_init", settings.mu_init);
+  if (settings.warm_start)
+    for (const char* option : {"bound_push", "bound_frac", "slack_bound_push", "slack_bound_frac"})
+      app->Options()->SetNumericValue(option, 1e-9);
   if (settings.exact_bounds) app->Options()->SetNumericValue("bound_relax_factor", 0.0);
   app->Options()->SetIntegerValue("mumps_scaling", settings.mumps_scaling);
   if (app->Initialize() != Ipopt::Solve_Succeeded) throw ComputationFailed("ipopt: initialisation failed");
-  Ipopt::SmartPtr<SparseNlpAdapter> adapter = new SparseNlpAdapter(nlp, start);
+  Ipopt::SmartPtr<SparseNlpAdapter> adapter = new SparseNlpAdapter(nlp, start, settings);
+  const SingleBlasThread one_blas_thread;  // bit-identical results with a threaded OpenBLAS
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
   NlpSolution out;
   out.solved = status == Ipopt::Solve_Succeeded;

@@ -216,6 +216,7 @@ PhasedSolution solve_direct_phased(const ReorientationProblem& p, const DirectSo
                                    " (" + nlp_solution.status + ")";
   out.solution = detail::extract_solution(nlp, z, y);
   out.solution.converged = out.converged;
+  out.solution.nlp_solved = out.converged;
   out.solution.status = out.status;
   out.solution.mesh_iterations = 1;
   out.solution.nlp_iterations = nlp_solution.iterations;

@@ -4,6 +4,7 @@
 /// derivatives, independent of the solver, and its solution by Ipopt (ipopt_solve.cpp). The Jacobian and
 /// the lower triangle (row ≥ col) of the Hessian of the Lagrangian σ f + yᵀg are given as triplets whose
 /// structure is fixed.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,17 @@ struct IpoptSettings {
   /// MUMPS' scaling of the KKT matrix (Ipopt's mumps_scaling): 77, Ipopt's default, lets MUMPS choose; 0
   /// none beyond Ipopt's own NLP scaling (MultibodyOptions::mumps_scaling).
   int mumps_scaling = 77;
+  /// Ipopt's barrier strategy: "adaptive" (the default here) or "monotone" (Fiacco–McCormick).
+  std::string mu_strategy = "adaptive";
+  /// Ipopt's mu_init, the first barrier parameter; 0 keeps Ipopt's default (0.1).
+  double mu_init = 0.0;
+  /// A start near a solution (a previous mesh's optimum): the variables are pushed off their bounds by 1e-9
+  /// instead of 1e-2 (bound_push, bound_frac and their slack counterparts), so the barrier does not move
+  /// the start away from where it is.
+  bool warm_start = false;
+  /// Called after every Ipopt iteration with its number, the objective and the constraint violation (the
+  /// terminal progress of `poinsot optimize`); empty: not called.
+  std::function<void(int iteration, double objective, double infeasibility)> on_iteration;
 };
 
 struct NlpSolution {
@@ -52,8 +64,10 @@ struct NlpSolution {
       y;  ///< constraint multipliers (Lagrangian σ f + yᵀg); empty when Ipopt did not finalise
 };
 
-/// Solves `nlp` from `start` with Ipopt (exact Hessian, adaptive barrier). Throws ComputationFailed if Ipopt
-/// cannot be initialised; any other outcome is returned in `status`.
+/// Solves `nlp` from `start` with Ipopt (exact Hessian; the barrier and start options of `settings`), with
+/// OpenBLAS held at one thread while it runs (ipopt_solve.cpp: bit-identical results with a threaded
+/// OpenBLAS). Throws ComputationFailed if Ipopt cannot be initialised; any other outcome is returned in
+/// `status`.
 NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& start,
                              const IpoptSettings& settings);
 

@@ -30,9 +30,13 @@ TEST(OptimalRun, SphereEnergyRunIsVerifiedAndDeterministic) {
   const OptimalRun r = run_optimal(sc);
   ASSERT_TRUE(r.optimal) << r.status;
   EXPECT_EQ(r.status, "optimal (verified)");
+  EXPECT_EQ(r.outcome, OptimalOutcome::optimal);
+  EXPECT_STREQ(solution_source(r), "indirect");
+  EXPECT_TRUE(r.failed_phase.empty() && r.advice.empty() && !r.direct_replayed);
   EXPECT_NEAR(r.indirect.cost / (12.0 * 2.5 * 2.5 * 4.0 / 27.0), 1.0, 1e-11);
   const std::string summary = optimal_summary_json(r);
   EXPECT_NE(summary.find("\"optimal\": true"), std::string::npos);
+  EXPECT_NE(summary.find("\"outcome\": \"optimal\""), std::string::npos);
   EXPECT_EQ(summary, optimal_summary_json(run_optimal(sc)));
   EXPECT_NE(optimal_report(r).find("status: optimal (verified)"), std::string::npos);
 
@@ -43,6 +47,16 @@ TEST(OptimalRun, SphereEnergyRunIsVerifiedAndDeterministic) {
     EXPECT_EQ(test::read_text(dir / f).rfind("# status: optimal (verified)\n", 0), 0u) << f;
   EXPECT_EQ(test::read_text(dir / "summary.json"), summary);
   std::filesystem::remove_all(dir);
+}
+
+// The three outcomes of a run and the exit statuses of `poinsot optimize` (2 is bad input, before any run).
+TEST(OptimalRun, OutcomesAndExitCodes) {
+  EXPECT_EQ(outcome_exit_code(OptimalOutcome::optimal), 0);
+  EXPECT_EQ(outcome_exit_code(OptimalOutcome::converged_direct), 3);
+  EXPECT_EQ(outcome_exit_code(OptimalOutcome::not_converged), 1);
+  EXPECT_STREQ(outcome_name(OptimalOutcome::optimal), "optimal");
+  EXPECT_STREQ(outcome_name(OptimalOutcome::converged_direct), "converged_direct");
+  EXPECT_STREQ(outcome_name(OptimalOutcome::not_converged), "not_converged");
 }
 
 }  // namespace

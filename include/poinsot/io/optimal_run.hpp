@@ -10,16 +10,43 @@
 ///   costates.csv    t, p_θ, p_ω, σ = J⁻¹p_ω, H
 ///   summary.json    the same as `--json`: "kind": "optimal", status, the problem's bounds and target, both
 ///                   methods' results, the checks and the interpretation
-/// Every CSV starts with a `# status: ...` line; a solution that is not verified optimal says
-/// "not converged" there, in the report and in summary.json, and keeps the best iterate.
+/// Every CSV starts with a `# status: ...` line, and summary.json's "outcome" says which of three it is:
+///   "optimal"           "optimal (verified)": both methods converged and every check of verification.hpp
+///                       passed (exit status 0 of `poinsot optimize`);
+///   "converged_direct"  "converged (direct; minimum principle not verified: <reason>)": the indirect method
+///                       could not verify the optimum (a structure it does not handle, or it did not
+///                       converge, or a check failed: the reason), and the direct solution, refined until
+///                       its control re-simulated by DOP853 meets the target (direct_replay.hpp), is
+///                       reported; never called optimal (exit status 3);
+///   "not_converged"     "not converged: <what failed>": neither (exit status 1); the report names the phase
+///                       that failed and what to change, and the files keep the best solution found (the
+///                       converged indirect one, else the last direct one Ipopt solved, else the last
+///                       iterate).
+#include <functional>
 #include <string>
 
 #include "poinsot/io/optimal_scenario.hpp"
+#include "poinsot/optimal/direct_replay.hpp"
 #include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/interpretation.hpp"
 #include "poinsot/optimal/verification.hpp"
 
 namespace poinsot::io {
+
+/// What a run ended with (see the file comment).
+enum class OptimalOutcome { optimal, converged_direct, not_converged };
+
+/// "optimal", "converged_direct" or "not_converged" (summary.json's "outcome").
+const char* outcome_name(OptimalOutcome outcome);
+/// The exit status of `poinsot optimize` for an outcome: 0, 3, 1 (2 is bad input, before any run).
+int outcome_exit_code(OptimalOutcome outcome);
+
+/// The progress of a run, for a terminal display: the phase ("direct", "phased", "indirect",
+/// "verification", "replay") and, during the direct method, where Ipopt is.
+struct OptimalProgress {
+  std::string phase;
+  optimal::DirectProgress direct;  ///< meaningful while phase is "direct"
+};
 
 struct OptimalRun {
   OptimalScenario scenario;
@@ -36,7 +63,23 @@ struct OptimalRun {
   bool has_interpretation = false;
   optimal::ManoeuvreInterpretation interpretation;
   bool optimal = false;  ///< both methods converged and every check passed
-  std::string status;    ///< "optimal (verified)" or "not converged: <what failed>"
+  OptimalOutcome outcome = OptimalOutcome::not_converged;
+  /// "optimal (verified)", "converged (direct; minimum principle not verified: <reason>)" or
+  /// "not converged: <what failed>"
+  std::string status;
+  /// Where the run is not optimal: the re-simulation of the direct optimum's control (direct_replay.hpp),
+  /// after `direct_replay_refinements` continuations of the mesh refinement at ten times smaller mesh
+  /// tolerances (each where the target was within reach of the remaining ones); `direct_replayed` false when
+  /// no direct solution was solved by Ipopt.
+  bool direct_replayed = false;
+  optimal::DirectReplay direct_replay;
+  double direct_replay_tolerance = optimal::direct_replay_tolerance;
+  int direct_replay_refinements = 0;
+  bool direct_refined_for_replay = false;  ///< `direct` is the refined one, and the direct optimum
+  /// Not optimal: the phase that failed ("direct method", "indirect method", "verification") and what to
+  /// change in the scenario; empty when optimal.
+  std::string failed_phase;
+  std::string advice;
 };
 
 /// The direct optimum the checks compare with: the phased re-solve's when it converged, else the mesh-refined
@@ -45,8 +88,14 @@ const optimal::DirectSolution& direct_optimum(const OptimalRun& run);
 /// "phased" or "mesh_refinement": which phase of the direct method produced direct_optimum(run).
 const char* direct_optimum_source(const OptimalRun& run);
 
-/// Solves and checks; never throws for a solver failure (the status says it).
-OptimalRun run_optimal(const OptimalScenario& scenario);
+/// "indirect" or "direct": the solution the files and the arrays hold (the indirect one when it converged
+/// and the outcome is not converged_direct; else direct_optimum(run)).
+const char* solution_source(const OptimalRun& run);
+
+/// Solves and checks; never throws for a solver failure (the status says it). `progress`, when given, is
+/// called as the run goes (not part of the result).
+OptimalRun run_optimal(const OptimalScenario& scenario,
+                       const std::function<void(const OptimalProgress&)>& progress = {});
 
 std::string optimal_report(const OptimalRun& run);
 std::string optimal_summary_json(const OptimalRun& run);

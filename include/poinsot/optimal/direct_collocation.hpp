@@ -17,6 +17,7 @@
 /// Costates: λ(t_k + h_k/2) ≈ −y_{D,k}, the multipliers of the Simpson defects (the NLP Lagrangian is f +
 /// yᵀg; minimum principle H = L + λᵀf). The body attitude costate is p_θ = ½ M(q)ᵀ λ_q (so that λ_qᵀq̇ =
 /// p_θᵀω), p_ω = λ_ω.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,16 @@
 #include "poinsot/optimal/problem.hpp"
 
 namespace poinsot::optimal {
+
+/// Where a direct solve stands, for a progress display: the mesh, its intervals, and Ipopt's iteration on it.
+struct DirectProgress {
+  int mesh_iteration = 0;  ///< 1, 2, ... (the first mesh is 1)
+  int intervals = 0;
+  int restart = 0;  ///< 0: the first attempt on this mesh; 1, 2: Ipopt restarted with other settings
+  int nlp_iteration = 0;
+  double objective = 0.0;
+  double infeasibility = 0.0;  ///< Ipopt's constraint violation
+};
 
 struct CollocationOptions {
   int initial_intervals = 10;
@@ -33,12 +44,18 @@ struct CollocationOptions {
   double nlp_tolerance = 1e-10;  ///< Ipopt's tol (scaled KKT error)
   int max_nlp_iterations = 1000;
   int print_level = 0;  ///< Ipopt's print_level (0 = silent)
+  /// Called after every Ipopt iteration (a terminal progress line); empty: not called. Not part of the
+  /// result.
+  std::function<void(const DirectProgress&)> progress;
 };
 
 /// A collocated trajectory: samples at the nodes and midpoints (times ascending), costates at the interval
 /// centres.
 struct DirectSolution {
-  bool converged = false;    ///< every NLP solved and the final mesh meets mesh_tolerance
+  bool converged = false;  ///< every NLP solved and the final mesh meets mesh_tolerance
+  /// Ipopt solved the NLP whose solution this is (a KKT point of its mesh), even where the mesh error is
+  /// still above the tolerance; false when the samples are an iterate Ipopt stopped on.
+  bool nlp_solved = false;
   std::string status;        ///< "converged", or what failed (Ipopt's status, mesh error not met)
   double final_time = 0.0;   ///< s
   double cost = 0.0;         ///< the objective (s, N²·m²·s, or s)
@@ -55,6 +72,7 @@ struct DirectSolution {
   double max_mesh_error = 0.0;
   int mesh_iterations = 0;
   int nlp_iterations = 0;  ///< Ipopt iterations, summed over the mesh iterations
+  int nlp_restarts = 0;    ///< Ipopt runs restarted with other settings after a failure (see solve_direct)
 };
 
 /// Throws InvalidInput (one line naming the field) unless 2 ≤ initial_intervals ≤ max_intervals,
@@ -63,6 +81,19 @@ void validate(const CollocationOptions& options);
 
 /// Solves `problem` by collocation. Throws InvalidInput for an invalid problem or options; a solver failure
 /// is reported in `converged`/`status` with the best iterate kept.
+///
+/// Where Ipopt fails on a mesh it is restarted from the same start (the guess, or the previous mesh's
+/// solution interpolated) with other settings before the method gives up: first the monotone barrier from
+/// μ = 1e-4 with the start kept where it is (bound_push 1e-9: the start is near a solution, the default
+/// μ = 0.1 and push 1e-2 move it away), then the adaptive barrier with the same start options and twice the
+/// iterations. When every attempt fails on a refined mesh, the previous mesh's solution (Ipopt solved it:
+/// `nlp_solved`) is the result, and the status says what failed.
 DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options = {});
+
+/// Continues the mesh refinement of `previous` (a solve_direct result for the same problem: its mesh and
+/// samples start the NLP, ν = 0) under `options` (typically a smaller mesh_tolerance); the iteration counts
+/// add to the previous ones. Throws InvalidInput as solve_direct, or when `previous` has no mesh.
+DirectSolution continue_direct(const ReorientationProblem& problem, const DirectSolution& previous,
+                               const CollocationOptions& options);
 
 }  // namespace poinsot::optimal

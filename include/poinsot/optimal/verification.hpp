@@ -4,6 +4,8 @@
 /// indirect solution, the agreement of the direct and indirect optima, and an independent re-simulation of
 /// the control history through the dynamics layer's DOP853 (quaternion + Euler, rtol = atol = 1e-13).
 /// A solution is reported as optimal only when every check passes; otherwise `failures` says which failed.
+/// The direct solution must be one Ipopt solved (`converged` or `nlp_solved`); its mesh error may be above
+/// the mesh tolerance, the indirect solution being checked on its own and the costs' agreement bounding it.
 ///
 /// The re-simulation is done twice: open loop from t = 0 to T, and, with M > 1 shooting segments, split at
 /// the nodes (each segment from its node's state to the next node's, the last to the target). Beside them the

@@ -1,0 +1,38 @@
+#pragma once
+/// @file direct_replay.hpp
+/// The independent re-simulation of a direct (collocation) solution's control: what decides "converged
+/// (direct; minimum principle not verified: ...)" where the indirect method cannot verify the optimum
+/// (io/optimal_run.hpp; docs/optimal_control.md, "Scenario files and `poinsot optimize`").
+///
+/// The replayed torque is the transcription's own control: on each interval the quadratic through the node,
+/// midpoint and node values (Hermite–Simpson; a phase boundary's duplicated node starts the next interval),
+/// integrated by the dynamics layer's DOP853 at rtol = atol = 1e-13, interval by interval so that no stage
+/// sees the next interval's quadratic, from the problem's initial state to T. The errors at T are compared
+/// with the target R_f, ω_f (with a free final attitude, with the direct solution's own R(T)): a collocation
+/// solution reaches it to about its mesh error times the motion's amplification, so the replay measures
+/// what the mesh error estimates, independently of the transcription.
+#include <string>
+
+#include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/problem.hpp"
+
+namespace poinsot::optimal {
+
+struct DirectReplay {
+  double attitude_error = 0.0;  ///< rad: angle between the replayed R(T) and the target
+  double rate_error = 0.0;      ///< rad/s: ‖ω(T) − ω_f‖
+  double final_time = 0.0;      ///< s, the T replayed
+  /// max(attitude_error, T · rate_error) (rad, the scaled coordinates (δθ, T δω) of verification.hpp); NaN
+  /// when DOP853 gave up.
+  double scaled_error() const;
+};
+
+/// The default target of the replay (rad, on scaled_error): the threshold of the verification's smooth
+/// replay (VerificationTolerances::resimulated_attitude_smooth).
+inline constexpr double direct_replay_tolerance = 1e-6;
+
+/// Replays `direct`'s control (see above). Throws InvalidInput when `direct` has no samples or its samples
+/// are not node, midpoint, node, ... in increasing time (a solve_direct or phased result).
+DirectReplay replay_direct(const ReorientationProblem& problem, const DirectSolution& direct);
+
+}  // namespace poinsot::optimal
