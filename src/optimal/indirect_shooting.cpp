@@ -9,6 +9,7 @@
 #include "pmp_system.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "rate_bound_shooting.hpp"
 #include "switching_structure.hpp"
 
 namespace poinsot::optimal {
@@ -171,12 +172,12 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   IndirectSolution out;
   out.bang_bang = p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis;
 
-  double rate_peak = 0.0;
-  for (const auto& w : d.omega_body)
-    rate_peak = std::max(rate_peak, w.cwiseAbs().maxCoeff());
-  if (p.has_rate_bound() && rate_peak > p.rate_max * (1.0 - 1e-4)) {
+  // An active rate bound: boundary arcs (rate_bound_shooting.hpp), for minimum time with per-axis bounds.
+  if (double rate_peak = 0.0; detail::rate_bound_active(p, d, rate_peak)) {
+    if (p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis)
+      return detail::solve_rate_bounded(p, d, o);
     out.status = "not applied: the rate bound is active (peak |ω_i| = " + format_number(rate_peak, 8) +
-                 " rad/s); state-constrained arcs are not handled by the shooting method";
+                 " rad/s); state-constrained arcs are handled for minimum time with per-axis bounds only";
     return out;
   }
   SwitchGuess sw = out.bang_bang ? read_switching_structure(p, d) : SwitchGuess{};

@@ -1,9 +1,11 @@
 #include "multiple_shooting.hpp"
 
-// GCC 12 reports -Wmaybe-uninitialized and -Wrestrict inside Boost.Odeint's stepper copy constructors when
-// they are inlined here (false positives in library code: the work arrays are resized before use).
+// GCC 12 reports -Wmaybe-uninitialized, -Wuninitialized and -Wrestrict inside Boost.Odeint's stepper copy
+// constructors when they are inlined here (false positives in library code: the work arrays are resized
+// before use).
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #pragma GCC diagnostic ignored "-Wrestrict"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
@@ -17,6 +19,12 @@
 namespace poinsot::optimal::detail {
 
 namespace odeint = boost::numeric::odeint;
+
+/// The largest turn (rad) of a norm-bound torque between two output samples: the replay's local cubic then
+/// errs by about ū (0.02)⁴/4! ≈ 7e-9 ū in the fastest turn.
+constexpr double kMaxSampleTurn = 0.02;
+/// The largest turn (rad) of a norm-bound torque over one piece of the residual's integration.
+constexpr double kMaxPieceTurn = 0.5;
 
 Shooter::Shooter(const ReorientationProblem& p, const ShootingOptions& o, const SwitchGuess& s,
                  bool bang_bang, std::vector<Mat3> node_attitude, double omega_scale,
@@ -114,6 +122,13 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
     cuts.push_back(k.first);
   cuts.push_back(t_b);
   end.knot_sigma.clear();
+  // A norm-bound torque turns fast where σ passes near 0 (by π within about ‖σ‖_min/‖σ̇‖): integrated over
+  // a long piece, RKF78's stages can straddle such a turn and its error estimate miss it (a random slew
+  // with ‖σ‖_min 2e-4 of its largest then converged to an extremal whose replay missed R_f by 4.5e-4 rad).
+  // Pieces over which the torque turns by more than max_turn are therefore halved: kMaxSampleTurn between
+  // output samples, kMaxPieceTurn for the residual's integration.
+  const bool refine = !bang_ && p_.objective == Objective::minimum_time && p_.bound == TorqueBound::norm;
+  const double max_turn = observe ? kMaxSampleTurn : kMaxPieceTurn;
   for (std::size_t a = 0; a + 1 < cuts.size(); ++a) {
     const double t0 = cuts[a], t1 = cuts[a + 1];
     const Vec3 u_arc = bang_ ? arc_torque(x, 0.5 * (t0 + t1)) : Vec3::Zero();
@@ -127,17 +142,32 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
                  : Vec3::Zero();
     };
     auto rhs = [&](const PmpState& yy, PmpState& dy, double) { pmp_rhs(p_, J_inv_, yy, dy, control(yy)); };
-    const int n = std::max(2, samples);
-    for (int i = 0; i < n; ++i) {
-      const double ts = t0 + (t1 - t0) * i / (n - 1);
-      if (i > 0 && t1 > t0) {
-        const double ta = t0 + (t1 - t0) * (i - 1) / (n - 1);
-        odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(
-                                       options_.integration_tolerance, options_.integration_tolerance),
-                                   rhs, y, ta, ts, (ts - ta) / 4);
+    // Integrates y from ta to ts and observes it there; where a norm-bound torque turns by more than
+    // max_turn over the interval, the interval is halved (at most 30 times) and integrated again from ta
+    // (docs/optimal_control.md, section 3, "Norm bound on any body").
+    const std::function<void(double, double, int)> advance = [&](double ta, double ts, int depth) {
+      const PmpState y_a = y;
+      const Vec3 u_a = control(y);
+      odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(
+                                     options_.integration_tolerance, options_.integration_tolerance),
+                                 rhs, y, ta, ts, (ts - ta) / 4);
+      const Vec3 u_b = control(y);
+      if (refine && depth < 30 && std::atan2(u_a.cross(u_b).norm(), u_a.dot(u_b)) > max_turn) {
+        y = y_a;
+        const double mid = 0.5 * (ta + ts);
+        advance(ta, mid, depth + 1);
+        advance(mid, ts, depth + 1);
+        return;
       }
-      if (observe) observe(ts, y, control(y));
-    }
+      if (observe) observe(ts, y, u_b);
+    };
+    const int n = std::max(2, samples);
+    if (observe) observe(t0, y, control(y));
+    for (int i = 1; i < n && t1 > t0; ++i)
+      advance(t0 + (t1 - t0) * (i - 1) / (n - 1), t0 + (t1 - t0) * i / (n - 1), 0);
+    if (observe && !(t1 > t0))
+      for (int i = 1; i < n; ++i)
+        observe(t1, y, control(y));
     if (a + 1 < inside.size() + 1) {
       const Vec3 sigma = J_inv_ * Eigen::Map<const Vec3>(y.data() + 21);
       const std::size_t k = inside[a].second;

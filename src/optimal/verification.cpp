@@ -130,6 +130,24 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
     fail(std::string("re-simulation could not run: ") + e.what());
   }
   r.direct_indirect_difference = std::abs(d.cost - s.cost) / std::max(std::abs(s.cost), 1e-300);
+  // Admissibility of the samples and the sign of the rate-bound multipliers.
+  r.torque_bound_excess = -1.0;
+  for (std::size_t j = 0; j < s.time.size(); ++j) {
+    const Vec3& u = s.torque_body[j];
+    r.torque_bound_excess = std::max(
+        r.torque_bound_excess, p.bound == TorqueBound::per_axis
+                                   ? (u.cwiseAbs().cwiseQuotient(p.torque_max) - Vec3::Ones()).maxCoeff()
+                                   : u.norm() / p.torque_max[0] - 1.0);
+    if (p.has_rate_bound())
+      r.rate_bound_excess =
+          std::max(r.rate_bound_excess, s.omega_body[j].cwiseAbs().maxCoeff() / p.rate_max - 1.0);
+  }
+  double mu_max = 0.0, mu_min = 0.0;
+  for (const auto& mu : s.rate_bound_multiplier) {
+    mu_max = std::max(mu_max, mu.cwiseAbs().maxCoeff());
+    mu_min = std::min(mu_min, mu.minCoeff());
+  }
+  r.rate_multiplier_min = mu_max > 0.0 ? mu_min / mu_max : 0.0;
 
   const double h_level = p.free_final_time() ? std::abs(r.hamiltonian_mean) : 0.0;
   if (r.hamiltonian_deviation > tol.hamiltonian || h_level > tol.hamiltonian)
@@ -170,6 +188,13 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
          format_number(r.split_replay_attitude_error, 3) + " rad (segment " +
          std::to_string(r.split_replay_worst_segment) + "), " + format_number(r.split_replay_rate_error, 3) +
          " rad/s");
+  if (!(r.torque_bound_excess <= tol.admissibility))
+    fail("the torque exceeds its bound by " + format_number(r.torque_bound_excess, 3) + " (relative)");
+  if (!(r.rate_bound_excess <= tol.admissibility))
+    fail("|ω_i| exceeds the rate bound by " + format_number(r.rate_bound_excess, 3) + " (relative)");
+  if (!(r.rate_multiplier_min >= -tol.admissibility))
+    fail("a rate-bound multiplier is negative: " + format_number(r.rate_multiplier_min, 3) +
+         " of the largest");
   if (r.direct_indirect_difference > tol.direct_indirect)
     fail("direct and indirect costs differ by " + format_number(r.direct_indirect_difference, 3) +
          " (relative)");

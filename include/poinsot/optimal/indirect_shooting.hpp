@@ -66,6 +66,13 @@ struct ControlArc {
   Vec3 torque_body = Vec3::Zero();    ///< N·m
 };
 
+/// A boundary arc of an active rate bound: ω_axis = side · rate_max on [t_entry, t_exit] (s).
+struct RateBoundArc {
+  int axis = 0;       ///< body axis 0, 1, 2
+  double side = 1.0;  ///< +1: the upper bound, −1: the lower one
+  double t_entry = 0.0, t_exit = 0.0;
+};
+
 struct IndirectSolution {
   bool converged = false;
   std::string status;  ///< "converged" or what failed
@@ -90,6 +97,10 @@ struct IndirectSolution {
   std::vector<Vec3> costate_omega;          ///< p_ω
   std::vector<Vec3> switching_function;     ///< σ = J⁻¹ p_ω
   std::vector<double> hamiltonian;          ///< H (0 on a free-time extremal)
+  /// Active rate bounds: the boundary arcs, and at each sample the multipliers μ_k ≥ 0 of the adjoined
+  /// constraints s_k ω_k − r ≤ 0 (units of ṗ_ω; 0 off the arcs). Empty where no rate bound is active.
+  std::vector<RateBoundArc> rate_bound_arcs;
+  std::vector<Vec3> rate_bound_multiplier;
 
   // Multiple shooting: the interior nodes t_1 … t_{M−1} and the state there, the Newton unknowns that start
   // the segments after the first (empty for single shooting). At convergence the end of segment m − 1 meets

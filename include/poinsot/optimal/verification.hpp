@@ -37,6 +37,9 @@ struct VerificationTolerances {
   /// Relative difference of the costs: the direct mesh blurs the switches (6.5e-5 for Betts at a mesh error
   /// of 1e-5), while another extremal (the eigenaxis manoeuvre: 20 % for Betts) is far above it.
   double direct_indirect = 1e-3;
+  /// Torque and rate bounds along the indirect samples, relative: RKF78 at 1e-13 holds ω_k on a boundary
+  /// arc to about 1e-11 relative, and u is exactly at its bounds on bang arcs.
+  double admissibility = 1e-9;
 };
 
 struct VerificationReport {
@@ -67,6 +70,13 @@ struct VerificationReport {
   double split_replay_rate_error = 0.0;
   int split_replay_worst_segment = 1;       ///< 1 … M, the segment of the largest attitude error
   double direct_indirect_difference = 0.0;  ///< |J_direct − J_indirect| / |J_indirect|
+  /// Admissibility along the indirect samples: the largest excess of the torque over its bound (relative to
+  /// the bound; ≤ 0 when admissible) and of |ω_i| over the rate bound (relative to it; −1 without one).
+  double torque_bound_excess = 0.0;
+  double rate_bound_excess = -1.0;
+  /// Active rate bounds: the smallest multiplier μ_k of the boundary arcs relative to the largest |μ| (must
+  /// not be negative: μ ≥ 0 is the minimum principle's sign condition of the state constraint); 0 when none.
+  double rate_multiplier_min = 0.0;
 };
 
 VerificationReport verify(const ReorientationProblem& problem, const DirectSolution& direct,
