@@ -120,6 +120,8 @@ void read_geom(const XmlSource& xml, const XMLElement& geom, const MjcfDefaults&
                                   defaults.values(MjcfDefaults::class_of(geom, true), "geom", geom));
   const char* type_attr = attributes.get("type").text;
   const std::string type = type_attr != nullptr ? type_attr : "sphere";
+  if (auto density = attributes.numbers("density", 1)) g.density = (*density)[0];
+  if (auto mass = attributes.numbers("mass", 1)) g.mass = (*mass)[0];
   for (const char* other : kOtherOrientations) {
     if (const MjcfValue v = attributes.get(other); v.text != nullptr) {
       link.notes.push_back(fmt::format("{}: orientation given by {}; skipped (quat is understood)",
