@@ -100,15 +100,12 @@ LinkInertia link_inertia(const RobotModel& model, const RobotTree& tree, std::si
   out.how = "from its <inertial>";
   if (source == RobotInertiaSource::geometry && link.mass > 0.0) {
     std::vector<std::string> notes;
-    const auto g = geometry_inertia(link, link.mass, ModelCheckOptions{}, notes);
-    if (!g) {
-      throw InvalidInput(
-          fmt::format("{}: link \"{}\" has no geometry to take its inertia from; expected a "
-                      "collision or visual shape (or inertia = \"file\")",
-                      line_of(model.source, link.line, "<link>"), link.name));
+    if (const auto g = geometry_inertia(link, link.mass, ModelCheckOptions{}, notes)) {
+      out.props.inertia_com = g->props.inertia_com;
+      out.how = "tensor from its geometry at the file's mass, about the file's centre of mass";
+    } else {
+      out.how = "from its <inertial> (it has no geometry)";
     }
-    out.props.inertia_com = g->props.inertia_com;
-    out.how = "tensor from its geometry at the file's mass, about the file's centre of mass";
   }
   return out;
 }
@@ -284,7 +281,7 @@ struct Builder {
       const Twist parent_twist = j->parent < 0 ? Twist{} : twist[static_cast<std::size_t>(j->parent)];
       pose0[u] = parent0 * j->parent_child;
       if (j->kind == RobotJointKind::free) {
-        pose[u] = pose0[u];
+        pose[u] = parent * j->parent_child;
         set_base(u);
         continue;
       }

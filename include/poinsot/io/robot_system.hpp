@@ -7,11 +7,11 @@
 ///
 ///  * Links: mass, centre of mass and tensor from the file (robot_model.hpp), or, with
 ///    RobotInertiaSource::geometry, the tensor of the link's geometry at the file's mass about the file's
-///    centre of mass (as `poinsot inertia check --from-geometry`). MJCF bodies without <inertial> (or all
-///    bodies with <compiler inertiafromgeom="true">) take it from their geoms as MuJoCo does: each geom of
-///    uniform density (its `density`, 1000 kg/m³ by default) or of its `mass`. SDF links without <inertial>
-///    take SDF's default (1 kg, J = I kg·m²). A link without mass attached by a fixed joint is a frame of its
-///    parent (no body); one that moves is refused.
+///    centre of mass (as `poinsot inertia check --from-geometry`; a link without shapes keeps its tensor).
+///    MJCF bodies without <inertial> (or all bodies with <compiler inertiafromgeom="true">) take it from
+///    their geoms as MuJoCo does: each geom of uniform density (its `density`, 1000 kg/m³ by default) or of
+///    its `mass`. SDF links without <inertial> take SDF's default (1 kg, J = I kg·m²). A link without mass
+///    attached by a fixed joint is a frame of its parent (no body); one that moves is refused.
 ///  * Joints, each in its child link's frame: URDF revolute/continuous → hinge, prismatic → prismatic, fixed
 ///  →
 ///    weld, floating → none (a free body); the root link is fixed to the world (`floating_base` frees it).
@@ -39,7 +39,8 @@ namespace poinsot::io {
 /// Where each link's inertia tensor comes from.
 enum class RobotInertiaSource {
   file,      ///< the file's <inertial> (MJCF: its geoms where MuJoCo takes them)
-  geometry,  ///< the link's geometry at the file's mass, about the file's centre of mass
+  geometry,  ///< the link's geometry at the file's mass, about the file's centre of mass (a link without
+             ///< shapes keeps the file's tensor)
 };
 
 /// The initial state and the choices a scenario makes about a robot file.
