@@ -153,7 +153,7 @@ struct Builder {
   std::vector<std::size_t> link_of_body;  ///< per body, its link
   std::map<std::string, std::vector<const RobotDof*>> dofs_by_name;
   std::map<const RobotDof*, std::vector<double>> q, qd;  // per dof, the initial coordinates
-  int free_links = 0;
+  int floating_bases = 0;
 
   Builder(const RobotModel& m, const RobotSystemOptions& o, RobotTree t)
       : model(m), options(o), tree(std::move(t)) {}
@@ -282,7 +282,7 @@ struct Builder {
       pose0[u] = parent0 * j->parent_child;
       if (j->kind == RobotJointKind::free) {
         pose[u] = parent * j->parent_child;
-        set_base(u);
+        if (model.format != RobotFormat::urdf) set_base(u);  // a URDF floating joint: at rest
         continue;
       }
       RigidPose f = parent * j->parent_child;
@@ -316,8 +316,9 @@ struct Builder {
     }
   }
 
+  /// The floating base: the URDF root with floating_base, or a free body of MJCF or SDF.
   void set_base(std::size_t u) {
-    ++free_links;
+    ++floating_bases;
     if (options.base_position) pose[u].p = *options.base_position;
     if (options.base_rotation) pose[u].R = *options.base_rotation;
     Twist t;
@@ -556,10 +557,12 @@ multibody::Scenario robot_scenario(const RobotModel& model, const RobotSystemOpt
   bld.sort_links();
   bld.read_coordinates();
   bld.pose_links();
-  if (bld.free_links != 1 &&
+  if (bld.floating_bases != 1 &&
       (options.base_position || options.base_rotation || options.base_velocity || options.base_omega_body)) {
-    throw InvalidInput(fmt::format("base: the model has {} free bodies; expected exactly one floating base",
-                                   bld.free_links));
+    throw InvalidInput(
+        fmt::format("base: the model has {} floating bases; expected exactly one (the URDF root "
+                    "with floating_base, or the one free body of MJCF and SDF)",
+                    bld.floating_bases));
   }
   bld.place_links();
   if (bld.sc.system.body_count() == 0)

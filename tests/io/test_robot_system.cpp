@@ -294,7 +294,9 @@ TEST(RobotSystem, InitialVelocitiesAreTheDerivativesOfThePoses) {
 }
 
 TEST(RobotSystem, MjcfLoopsAreClosedByConnectAndWeld) {
-  const multibody::Scenario sc = load_robot_scenario(robots("loop.xml"));
+  RobotSystemOptions o;
+  o.velocities = {{"crank_pin", {2.0}}};  // projected onto the loop
+  const multibody::Scenario sc = load_robot_scenario(robots("loop.xml"), o);
   const auto types = joint_types_of(sc.system);
   EXPECT_EQ(types.at("close"), JointType::ball);
   EXPECT_EQ(types.at("glue"), JointType::weld);
@@ -302,10 +304,16 @@ TEST(RobotSystem, MjcfLoopsAreClosedByConnectAndWeld) {
   const multibody::Joint& close = sc.system.joints()[3];
   EXPECT_EQ(close.body_b, 2);
   POINSOT_EXPECT_MATRIX_NEAR(close.point_b, Vec3(0.1, 0, 0.1) - Vec3(0, 0, 0.05), 1e-16);
-  double de = 0.0, gap = 0.0;
+  // The energy error of the projected RK4 over 0.5 s is of fourth order (measured 2.6e-7 J at dt = 1e-3,
+  // 1.7e-8 J at 5e-4, with a kinetic energy of up to 1.06 J); the loop's gaps stay at round-off.
+  double de = 0.0, gap = 0.0, de_half = 0.0, gap_half = 0.0;
   const multibody::State end = run_rk4(sc, 500, &de, &gap);
-  EXPECT_LT(gap, 1e-12);
-  EXPECT_LT(de, 1e-9);
+  multibody::Scenario half = sc;
+  half.dt = sc.dt / 2;
+  run_rk4(half, 1000, &de_half, &gap_half);
+  EXPECT_LT(std::max(gap, gap_half), 1e-13);
+  EXPECT_LT(de, 1e-6);
+  EXPECT_NEAR(de / de_half, 16.0, 3.0);
   // The crank turned, and the plate stayed glued to it: their relative rotation is the initial one.
   const Mat3 rel0 = sc.initial.bodies[0].R_space_body.transpose() * sc.initial.bodies[3].R_space_body;
   const Mat3 rel = end.bodies[0].R_space_body.transpose() * end.bodies[3].R_space_body;
@@ -352,7 +360,7 @@ TEST(RobotSystem, ScenarioKeysAreChecked) {
              {"s.toml:2:", "[model] file", "missing.urdf"});
   expect_has(
       message_of([&] { parse("[model]\nfile = \"pendulum2.urdf\"\n[model.base]\nposition = [0, 0, 1]\n"); }),
-      {"[model] base", "0 free bodies; expected exactly one floating base"});
+      {"[model] base", "0 floating bases; expected exactly one"});
   expect_has(message_of([&] { parse("[model]\nfile = \"pendulum2.urdf\"\ncolour = 1\n"); }), {"colour"});
 }
 

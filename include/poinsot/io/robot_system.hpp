@@ -54,8 +54,10 @@ struct RobotSystemOptions {
   std::map<std::string, std::vector<double>> positions;
   /// Joint velocities: hinge rad/s, slide m/s (1), universal (2), ball (ω, rad/s, child frame: 3).
   std::map<std::string, std::vector<double>> velocities;
-  /// The floating base (the one free body): the pose of its link frame in space (default: the file's), the
-  /// velocity of the link frame's origin (m/s, space) and its angular velocity (rad/s, link frame).
+  /// The floating base (the URDF root with floating_base; the one free body of MJCF or SDF; a URDF floating
+  /// joint's child starts at rest where its joint places it): the pose of its link frame in space (default:
+  /// the file's), the velocity of the link frame's origin (m/s, space) and its angular velocity (rad/s, link
+  /// frame).
   std::optional<Vec3> base_position;
   std::optional<Mat3> base_rotation;
   std::optional<Vec3> base_velocity;
