@@ -379,7 +379,7 @@ struct Builder {
     s.v_space = twist[u].at(s.x_space);
     s.omega_body = pose[u].R.transpose() * twist[u].omega;
     sc.initial.bodies.push_back(s);
-    sc.body_descriptions.push_back(fmt::format("link line {}, inertia {}", link.line, li.how));
+    sc.body_descriptions.push_back(fmt::format("line {} of the file, inertia {}", link.line, li.how));
     sc.body_surfaces.push_back(nullptr);
   }
 
