@@ -61,7 +61,6 @@ struct RobotJointSpec {
   int child = 0;               ///< link index
   RigidPose parent_child;      ///< the child's frame in the parent's (space for the world), at q = 0
   std::vector<RobotDof> dofs;  ///< kind dofs: in order of application
-  bool universal = false;      ///< SDF universal: two hinges about one anchor, the first fixed in the parent
 };
 
 /// A loop-closing joint (MJCF <equality><connect> or <weld>).

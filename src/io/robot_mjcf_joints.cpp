@@ -4,15 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <numbers>
 
 #include <fmt/format.h>
 
 #include "mjcf_defaults.hpp"
+#include "mjcf_orientation.hpp"
 #include "poinsot/core/error.hpp"
-#include "poinsot/so3/axis_angle.hpp"
-#include "poinsot/so3/euler_angles.hpp"
-#include "poinsot/so3/quaternion.hpp"
 #include "robot_kinematics.hpp"
 
 namespace poinsot::io::detail {
@@ -20,82 +17,8 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-/// <compiler angle eulerseq inertiafromgeom>.
-struct MjcfCompiler {
-  double angle_unit = std::numbers::pi / 180.0;  ///< MuJoCo's default: degrees
-  std::string eulerseq = "xyz";
-  std::string inertiafromgeom = "auto";
-};
-
-MjcfCompiler read_compiler(const XmlSource& xml) {
-  MjcfCompiler c;
-  for (const XMLElement* e = xml.root()->FirstChildElement("compiler"); e != nullptr;
-       e = e->NextSiblingElement("compiler")) {
-    if (const char* a = e->Attribute("angle")) {
-      const std::string_view v = a;
-      if (v != "radian" && v != "degree")
-        throw InvalidInput(fmt::format("{} angle=\"{}\": expected radian or degree", xml.where(*e), v));
-      c.angle_unit = v == "radian" ? 1.0 : std::numbers::pi / 180.0;
-    }
-    if (const char* s = e->Attribute("eulerseq")) c.eulerseq = s;
-    if (const char* g = e->Attribute("inertiafromgeom")) c.inertiafromgeom = g;
-  }
-  return c;
-}
-
-Vec3 vec3_of(const std::vector<double>& v, std::size_t offset = 0) {
-  return Vec3(v[offset], v[offset + 1], v[offset + 2]);
-}
-
-/// The frame orientation an element writes (quat, axisangle, euler, xyaxes or zaxis, as MuJoCo's XML
-/// reference defines them with <compiler angle eulerseq>); identity when none.
-Mat3 mjcf_orientation(const XmlSource& xml, const XMLElement& e, const MjcfCompiler& c) {
-  if (auto q = xml.numbers_attribute(e, "quat", 4)) {
-    const Quat quat((*q)[0], (*q)[1], (*q)[2], (*q)[3]);
-    if (!(quat.norm() > 0.0))
-      throw InvalidInput(fmt::format("{} quat: zero quaternion; expected w x y z, not all 0", xml.where(e)));
-    return so3::rotation_from_quaternion(quat.normalized());
-  }
-  if (auto aa = xml.numbers_attribute(e, "axisangle", 4)) {
-    const Vec3 axis = unit_axis_of(xml, e, "axisangle", vec3_of(*aa));
-    return so3::rotation_from_axis_angle(axis, (*aa)[3] * c.angle_unit);
-  }
-  if (auto eu = xml.numbers_attribute(e, "euler", 3)) {
-    const std::string& s = c.eulerseq;
-    const bool lower = s.size() == 3 && std::all_of(s.begin(), s.end(), [](char ch) { return ch >= 'a'; });
-    const bool upper = s.size() == 3 && std::all_of(s.begin(), s.end(), [](char ch) { return ch < 'a'; });
-    if (!lower && !upper) {
-      throw InvalidInput(
-          fmt::format("{} euler: <compiler eulerseq=\"{}\"> mixes rotating and fixed axes; "
-                      "expected three lower-case or three upper-case letters",
-                      xml.where(e), s));
-    }
-    const Vec3 angles = c.angle_unit * vec3_of(*eu);
-    if (lower) return so3::rotation_from_euler(so3::EulerSequence::parse(s), angles);
-    // Fixed axes: the reversed rotating sequence with the angles reversed.
-    const std::string reversed{s[2], s[1], s[0]};
-    return so3::rotation_from_euler(so3::EulerSequence::parse(reversed),
-                                    Vec3(angles[2], angles[1], angles[0]));
-  }
-  if (auto xy = xml.numbers_attribute(e, "xyaxes", 6)) {
-    const Vec3 x = unit_axis_of(xml, e, "xyaxes", vec3_of(*xy));
-    Vec3 y = vec3_of(*xy, 3);
-    y -= x * x.dot(y);
-    y = unit_axis_of(xml, e, "xyaxes (second axis along the first)", y);
-    Mat3 R;
-    R << x, y, x.cross(y);
-    return R;
-  }
-  if (auto z = xml.numbers_attribute(e, "zaxis", 3)) {
-    // MuJoCo: the minimal rotation taking (0, 0, 1) to the given axis.
-    const Vec3 to = unit_axis_of(xml, e, "zaxis", vec3_of(*z));
-    const Vec3 k = Vec3::UnitZ().cross(to);
-    const double s = k.norm(), cth = to.z();
-    if (!(s > 1e-15))
-      return cth > 0.0 ? Mat3::Identity() : Mat3(Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal());
-    return so3::rotation_from_axis_angle(k / s, std::atan2(s, cth));
-  }
-  return Mat3::Identity();
+Vec3 vec3_of(const std::vector<double>& v) {
+  return Vec3(v[0], v[1], v[2]);
 }
 
 struct MjcfReader {
@@ -109,7 +32,7 @@ struct MjcfReader {
   std::vector<std::string> limited, damped, sprung, armatured;  // joint names, for the not-modelled lines
 
   MjcfReader(const XmlSource& x, const RobotModel& m)
-      : xml(x), model(m), compiler(read_compiler(x)), defaults(x) {}
+      : xml(x), model(m), compiler(read_mjcf_compiler(x)), defaults(x) {}
 
   /// One <joint> of a body, with its class.
   RobotDof read_joint(const XMLElement& j, bool& free) {

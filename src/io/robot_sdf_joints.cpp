@@ -186,7 +186,6 @@ struct SdfReader {
     } else if (type == "universal") {
       spec.dofs.push_back(dof(RobotDof::Kind::hinge, "axis"));
       spec.dofs.push_back(dof(RobotDof::Kind::hinge, "axis2"));
-      spec.universal = true;
     } else if (type != "fixed") {
       throw InvalidInput(
           fmt::format("{} {} type=\"{}\": not supported; expected revolute, continuous, "

@@ -238,6 +238,42 @@ TEST(RobotSystem, SdfJointKinds) {
   EXPECT_NEAR(end.bodies[6].x_space.z(), 1.0 - 0.5 * 9.8 * 0.09, 1e-12);  // the free satellite falls
 }
 
+TEST(RobotSystem, MjcfOrientationsAreMuJoCos) {
+  // Each geom turns its z axis onto space x, written five ways; the angles in degrees (MuJoCo's default).
+  const std::string text =
+      "<mujoco><worldbody><body name=\"b\" euler=\"90 90 0\">\n"
+      "<geom type=\"capsule\" size=\"0.01 0.1\" zaxis=\"2 0 0\"/>\n"
+      "<geom type=\"capsule\" size=\"0.01 0.1\" euler=\"0 90 0\"/>\n"
+      "<geom type=\"capsule\" size=\"0.01 0.1\" axisangle=\"0 1 0 90\"/>\n"
+      "<geom type=\"capsule\" size=\"0.01 0.1\" xyaxes=\"0 0 -1 0 1 0\"/>\n"
+      "<geom type=\"capsule\" size=\"0.01 0.1\" quat=\"1 0 1 0\"/>\n"
+      "<joint type=\"ball\"/></body></worldbody></mujoco>\n";
+  const RobotModel model = read_robot_model(text, "o.xml");
+  ASSERT_EQ(model.links[0].geometry.size(), 5u);
+  for (const LinkGeometry& g : model.links[0].geometry)
+    POINSOT_EXPECT_MATRIX_NEAR(g.R_link_geometry * Vec3::UnitZ(), Vec3::UnitX(), 1e-15);
+  // The body's euler "90 90 0" about axes that rotate with the frame (eulerseq "xyz"): R = R_x(90°) R_y(90°);
+  // about fixed axes ("XYZ"): R = R_y(90°) R_x(90°).
+  const Mat3 Rx = so3::rotation_from_axis_angle(Vec3::UnitX(), std::numbers::pi / 2);
+  const Mat3 Ry = so3::rotation_from_axis_angle(Vec3::UnitY(), std::numbers::pi / 2);
+  POINSOT_EXPECT_MATRIX_NEAR(robot_scenario(model).initial.bodies[0].R_space_body, Rx * Ry, 1e-15);
+  std::string fixed = text;
+  fixed.replace(fixed.find("<worldbody>"), 0, "<compiler eulerseq=\"XYZ\"/>");
+  POINSOT_EXPECT_MATRIX_NEAR(robot_scenario(read_robot_model(fixed, "o.xml")).initial.bodies[0].R_space_body,
+                             Ry * Rx, 1e-15);
+  std::string radians = text;
+  radians.replace(radians.find("<worldbody>"), 0, "<compiler angle=\"radian\"/>");
+  radians.replace(radians.find("euler=\"0 90 0\""), 14, "euler=\"0 1.5707963267948966 0\"");
+  POINSOT_EXPECT_MATRIX_NEAR(read_robot_model(radians, "o.xml").links[0].geometry[1].R_link_geometry,
+                             model.links[0].geometry[1].R_link_geometry, 1e-16);
+  expect_has(message_of([&] {
+               std::string mixed = text;
+               mixed.replace(mixed.find("<worldbody>"), 0, "<compiler eulerseq=\"xYz\"/>");
+               read_robot_model(mixed, "o.xml");
+             }),
+             {"o.xml:3: <geom> euler: <compiler eulerseq=\"xYz\">: expected three of x, y, z"});
+}
+
 /// The scenario at joint coordinates `q` (and velocities `v`), MJCF joints.xml.
 multibody::Scenario joints_at(const std::map<std::string, std::vector<double>>& q,
                               const std::map<std::string, std::vector<double>>& v = {},
