@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -531,6 +533,43 @@ TEST(RobotSystem, MujocoSampleModelsRunOrAreRefusedWithOneLine) {
   }
   EXPECT_GE(ran, 2);  // arm26 and slider_crank at least
   EXPECT_GE(refused, 1);
+}
+
+TEST(RobotSystem, MujocoHumanoidWithOnePointAnklesIsUniversalBallAndHingeJoints) {
+  std::ifstream in("/usr/share/mujoco/model/humanoid/humanoid.xml");
+  if (!in) GTEST_SKIP() << "MuJoCo's sample models are not installed";
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string xml = text.str();
+  // Each ankle's second hinge moved to the first's point (4 cm): then every body's joints compose.
+  const std::string from = "pos=\"0 0 .04\" axis=\"1 0 .5\"";
+  for (std::size_t at = xml.find(from); at != std::string::npos; at = xml.find(from, at))
+    xml.replace(at, from.size(), "pos=\"0 0 .08\" axis=\"1 0 .5\"");
+  RobotSystemOptions o;
+  o.gravity = Vec3::Zero();
+  o.base_omega_body = Vec3(0.3, -0.2, 0.5);
+  o.velocities = {{"right_knee", {2.0}}, {"left_shoulder1", {-1.5}}, {"abdomen_y", {1.0}}};
+  const multibody::Scenario sc = robot_scenario(read_robot_model(xml, "humanoid.xml"), o);
+  EXPECT_EQ(sc.system.body_count(), 16);
+  std::map<JointType, int> count;
+  for (const multibody::Joint& j : sc.system.joints())
+    ++count[j.type];
+  // Abdomen z+y, both ankles, both shoulders: universal; the hips' three hinges: balls; knees, elbows and
+  // abdomen x: hinges; the head and the hands (no joints): welds. 6 (free torso) + 5·2 + 2·3 + 5·1 = 27
+  // degrees of freedom, MuJoCo's count.
+  EXPECT_EQ(count[JointType::universal], 5);
+  EXPECT_EQ(count[JointType::ball], 2);
+  EXPECT_EQ(count[JointType::hinge], 5);
+  EXPECT_EQ(count[JointType::weld], 3);
+  // A free system: RATTLE conserves its momenta to round-off.
+  multibody::Rattle rattle(sc.system, 1e-3);
+  multibody::State s = sc.initial;
+  const Vec3 p0 = multibody::linear_momentum(sc.system, s), L0 = multibody::angular_momentum(sc.system, s);
+  for (int k = 0; k < 500; ++k)
+    rattle.step(s);
+  POINSOT_EXPECT_MATRIX_NEAR(multibody::linear_momentum(sc.system, s), p0, 1e-12);
+  POINSOT_EXPECT_MATRIX_NEAR(multibody::angular_momentum(sc.system, s), L0, 1e-11);
+  EXPECT_GT(L0.norm(), 0.1);
 }
 
 }  // namespace
