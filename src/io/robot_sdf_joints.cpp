@@ -210,7 +210,6 @@ struct SdfReader {
 
 RobotTree read_sdf_tree(const XmlSource& xml, const RobotModel& model) {
   SdfReader r{xml, model, {}, 0, {}, {}, {}};
-  std::vector<const XMLElement*> stack{xml.root()};
   // Models under <sdf> and under its <world>s, in file order.
   for (const XMLElement* e = xml.root()->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
     const std::string_view n = e->Name();

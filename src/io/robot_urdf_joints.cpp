@@ -106,10 +106,9 @@ RobotTree read_urdf_tree(const XmlSource& xml, const RobotModel& model) {
                       "prismatic, fixed or floating",
                       xml.where(*e), element_label(*e), type));
     }
-    if (const XMLElement* dyn = e->FirstChildElement("dynamics")) {
+    if (e->FirstChildElement("dynamics") != nullptr) {
       tree.not_modelled.push_back(
           fmt::format("{} line {}: <dynamics> (joint damping and friction)", j.element, j.line));
-      (void)dyn;
     }
     if (e->FirstChildElement("mimic") != nullptr)
       tree.not_modelled.push_back(fmt::format("{} line {}: <mimic> (joint coupling)", j.element, j.line));
