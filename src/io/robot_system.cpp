@@ -12,10 +12,12 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/inertia/shapes.hpp"
+#include "poinsot/inertia/tessellation.hpp"
 #include "poinsot/io/model_check.hpp"
 #include "poinsot/so3/axis_angle.hpp"
 #include "poinsot/so3/quaternion.hpp"
 #include "robot_kinematics.hpp"
+#include "scenario_body.hpp"
 
 namespace poinsot::io {
 namespace {
@@ -498,6 +500,36 @@ struct Builder {
         where(j), list, same_anchor ? "" : " (their anchors differ)"));
   }
 
+  /// Each body's drawn surface (view.html): the shapes of its link and of the frames merged into it, about
+  /// its centre of mass in its frame; meshes are not drawn.
+  void add_surfaces() {
+    std::vector<inertia::TriangleMesh> surfaces(static_cast<std::size_t>(sc.system.body_count()));
+    for (std::size_t k = 0; k < place.size(); ++k) {
+      if (place[k].body == kWorld) continue;
+      const std::size_t b = static_cast<std::size_t>(place[k].body);
+      const Vec3 com = inertia[link_of_body[b]].props.com;
+      for (const LinkGeometry& g : model.links[k].geometry) {
+        if (g.shape.kind == "mesh") continue;
+        inertia::TriangleMesh part;
+        try {
+          part = inertia::tessellate(g.shape, detail::kSurfaceSegments);
+        } catch (const InvalidInput&) {
+          continue;  // a shape too degenerate to draw; its mass is already accounted for or refused
+        }
+        inertia::TriangleMesh& m = surfaces[b];
+        const auto offset = static_cast<std::int32_t>(m.vertices.size());
+        for (const Vec3& v : part.vertices)
+          m.vertices.push_back(place[k].in_body * (g.R_link_geometry * v + g.position_link) - com);
+        for (const auto& t : part.triangles)
+          m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+      }
+    }
+    for (std::size_t b = 0; b < surfaces.size(); ++b) {
+      if (!surfaces[b].triangles.empty())
+        sc.body_surfaces[b] = std::make_shared<const inertia::TriangleMesh>(std::move(surfaces[b]));
+    }
+  }
+
   void add_loops() {
     for (const detail::RobotLoopSpec& loop : tree.loops) {
       const std::size_t l1 = static_cast<std::size_t>(loop.body1);
@@ -569,6 +601,7 @@ multibody::Scenario robot_scenario(const RobotModel& model, const RobotSystemOpt
         fmt::format("{}: no link has mass and moves; expected at least one body", model.source));
   bld.add_joints();
   bld.add_loops();
+  bld.add_surfaces();
   bld.sc.system.set_gravity(
       options.gravity.value_or(bld.tree.has_gravity ? bld.tree.gravity : Vec3(0.0, 0.0, -9.81)));
   std::size_t shapes = 0;

@@ -213,6 +213,24 @@ TEST(RobotSystem, MjcfJointKinds) {
   run_rk4(sc, 300, &de, &gap);
   EXPECT_LT(gap, 1e-12);
   EXPECT_LT(de, 1e-8);
+  // The drawn surfaces (view.html): every body's geoms about its centre of mass; the post's cube of half-size
+  // 0.05 m, the crank's capsule from its pin (x = 0, less the 0.02 m cap) to x = 0.22 m in its frame.
+  ASSERT_EQ(sc.body_surfaces.size(), 8u);
+  for (const auto& surface : sc.body_surfaces)
+    EXPECT_NE(surface, nullptr);
+  double post = 0.0;
+  for (const Vec3& v : sc.body_surfaces[0]->vertices)
+    post = std::max(post, v.cwiseAbs().maxCoeff());
+  EXPECT_NEAR(post, 0.05, 1e-15);
+  const multibody::BodyState& crank = sc.initial.bodies[1];
+  const Vec3 pin_to_com = crank.R_space_body.transpose() * (crank.x_space - Vec3(0, 0.1, 1));
+  double lo = 1.0, hi = -1.0;
+  for (const Vec3& v : sc.body_surfaces[1]->vertices) {
+    lo = std::min(lo, v.x() + pin_to_com.x());
+    hi = std::max(hi, v.x() + pin_to_com.x());
+  }
+  EXPECT_NEAR(lo, -0.02, 1e-12);
+  EXPECT_NEAR(hi, 0.22, 1e-12);
 }
 
 TEST(RobotSystem, SdfJointKinds) {
