@@ -267,7 +267,10 @@ void run(RunCliOptions& o) {
 void register_run(CLI::App& app) {
   auto o = std::make_shared<RunCliOptions>();
   auto* cmd = app.add_subcommand("run", "Run a scenario file: report, trajectory.csv, summary.json, plots");
-  cmd->add_option("scenario", o->scenario, "the scenario (TOML, see docs/scenario.md)")->required();
+  cmd->add_option("scenario", o->scenario,
+                  "the scenario (TOML, see docs/scenario.md), or a robot file (.urdf, .xml, .sdf: "
+                  "docs/robot_models.md)")
+      ->required();
   cmd->add_option("--out", o->out, "output folder (default: [output] dir, else SCENARIO-run)");
   cmd->add_flag("--json", o->json, "print summary.json on stdout instead of the report");
   cmd->add_flag("--plot", o->plot, "also draw the figures (PNG, Matplotlib) into the output folder");

@@ -169,6 +169,10 @@ class Scenario:
     @method.setter
     def method(self, value: Any) -> None: ...
     @property
+    def not_modelled(self) -> List[str]: ...
+    @not_modelled.setter
+    def not_modelled(self, value: Any) -> None: ...
+    @property
     def order(self) -> int: ...
     @order.setter
     def order(self, value: Any) -> None: ...
@@ -248,6 +252,9 @@ class System:
     def body_names(self) -> List[str]: ...
     def constraint_rows(self) -> int:
         """Total number of joint constraint rows."""
+    @staticmethod
+    def from_file(path: str) -> System:
+        """The system of a robot file (URDF, MJCF, SDF) at its file pose; multibody.load_robot gives its initial state too."""
     @property
     def gravity(self) -> numpy.typing.NDArray[numpy.float64]: ...
     @gravity.setter
@@ -278,13 +285,16 @@ def exact_multipliers(system: System, state: State) -> ExactMultipliers:
     """The exact multipliers of the continuous equations at `state` (index-1 form: the constraint accelerations g̈ = 0 with the velocity-product terms), together with the accelerations: `acceleration_space[i]` (m/s²) and `omega_dot_body[i]` (rad/s²)."""
 
 def is_multibody_scenario(toml_path: str) -> bool:
-    """True when the TOML file at `path` is a multibody scenario (its top level has `bodies`)."""
+    """True when the TOML file at `path` is a multibody scenario (its top level has `bodies` or `model`), or `path` is a robot file."""
 
 def kinetic_energy(system: System, state: State) -> float:
     """Σ ½ m |v|² + ½ ωᵀ J ω (J), equal to ½ m|ẋ|² + ½ tr(Ṙ K Ṙᵀ) in the 12 coordinates."""
 
 def linear_momentum(system: System, state: State) -> numpy.typing.NDArray[numpy.float64]:
     """Σ m v, space frame, kg·m/s."""
+
+def load_robot(path: str, positions: Dict[str, List[float]] = ..., velocities: Dict[str, List[float]] = ..., gravity: object = ..., floating_base: bool = ..., inertia: str = ..., base_position: object = ..., base_rotation: object = ..., base_velocity: object = ..., base_omega_body: object = ...) -> Scenario:
+    """A robot file (URDF, MJCF, SDF) as a multibody Scenario: positions and velocities by joint name (lists of numbers), gravity (default: the file's), floating_base (URDF), inertia ("file" or "geometry"), the floating base's pose and rates."""
 
 def load_scenario(toml_path: str) -> Scenario:
     """Reads and validates a multibody scenario file (relative files from its folder)."""

@@ -5,6 +5,8 @@
 // from the headers' doc comments through the generated docstrings.hpp (python/tools/gen_docstrings.py).
 #include <pybind11/stl.h>
 
+#include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,6 +19,7 @@
 #include "poinsot/inertia/mass_properties.hpp"
 #include "poinsot/io/multibody_run.hpp"
 #include "poinsot/io/multibody_scenario.hpp"
+#include "poinsot/io/robot_system.hpp"
 #include "poinsot/io/scenario_file.hpp"
 #include "poinsot/multibody/loads.hpp"
 #include "poinsot/multibody/methods.hpp"
@@ -320,7 +323,9 @@ void bind_multibody_scenario(py::module_& m) {
       .def_readwrite("source", &mb::Scenario::source, POINSOT_DOC(multibody_Scenario_source))
       .def_readwrite("title", &mb::Scenario::title, POINSOT_DOC(multibody_Scenario_title))
       .def_readwrite("body_descriptions", &mb::Scenario::body_descriptions,
-                     POINSOT_DOC(multibody_Scenario_body_descriptions));
+                     POINSOT_DOC(multibody_Scenario_body_descriptions))
+      .def_readwrite("not_modelled", &mb::Scenario::not_modelled,
+                     POINSOT_DOC(multibody_Scenario_not_modelled));
   m.def("is_multibody_scenario", &io::is_multibody_scenario, py::arg("toml_path"),
         POINSOT_DOC(io_is_multibody_scenario));
   m.def("load_scenario", &io::load_multibody_scenario, py::arg("toml_path"),
@@ -332,6 +337,42 @@ void bind_multibody_scenario(py::module_& m) {
       },
       py::arg("toml_text"), py::arg("source_name") = "<string>", py::arg("base_dir") = "",
       POINSOT_DOC(io_parse_multibody_scenario));
+  m.def(
+      "load_robot",
+      [](const std::string& path, const std::map<std::string, std::vector<double>>& positions,
+         const std::map<std::string, std::vector<double>>& velocities, const py::object& gravity,
+         bool floating_base, const std::string& inertia, const py::object& base_position,
+         const py::object& base_rotation, const py::object& base_velocity,
+         const py::object& base_omega_body) {
+        io::RobotSystemOptions o;
+        o.positions = positions;
+        o.velocities = velocities;
+        o.floating_base = floating_base;
+        if (inertia != "file" && inertia != "geometry")
+          throw InvalidInput("inertia: got \"" + inertia + "\", expected \"file\" or \"geometry\"");
+        o.inertia = inertia == "file" ? io::RobotInertiaSource::file : io::RobotInertiaSource::geometry;
+        const auto vec = [](const py::object& x, const char* what) -> std::optional<Vec3> {
+          if (x.is_none()) return std::nullopt;
+          return to_vec3(x, what);
+        };
+        o.gravity = vec(gravity, "gravity");
+        o.base_position = vec(base_position, "base_position");
+        o.base_velocity = vec(base_velocity, "base_velocity");
+        o.base_omega_body = vec(base_omega_body, "base_omega_body");
+        if (!base_rotation.is_none()) o.base_rotation = to_mat3(base_rotation, "base_rotation");
+        return io::load_robot_scenario(path, o);
+      },
+      py::arg("path"), py::arg("positions") = std::map<std::string, std::vector<double>>{},
+      py::arg("velocities") = std::map<std::string, std::vector<double>>{}, py::arg("gravity") = py::none(),
+      py::arg("floating_base") = false, py::arg("inertia") = "file", py::arg("base_position") = py::none(),
+      py::arg("base_rotation") = py::none(), py::arg("base_velocity") = py::none(),
+      py::arg("base_omega_body") = py::none(),
+      (std::string(
+           "A robot file (URDF, MJCF, SDF) as a multibody Scenario: positions and velocities by joint "
+           "name (lists of numbers), gravity (default: the file's), floating_base (URDF), inertia "
+           "(\"file\" or \"geometry\"), the floating base's pose and rates. ") +
+       POINSOT_DOC(io_load_robot_scenario))
+          .c_str());
   m.def("project_velocities", &mb::project_velocities, py::arg("system"), py::arg("state"),
         POINSOT_DOC(multibody_project_velocities));
 

@@ -10,6 +10,7 @@
 #include "docstrings.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/inertia/mass_properties.hpp"
+#include "poinsot/io/robot_system.hpp"
 #include "poinsot/multibody/loads.hpp"
 #include "poinsot/multibody/model.hpp"
 
@@ -32,6 +33,13 @@ int body_ref(const mb::System& s, const py::handle& body, const char* what) {
 void bind_multibody_system(py::module_& m) {
   py::class_<mb::System>(m, "System", POINSOT_DOC(multibody_System))
       .def(py::init<>(), "An empty system: no bodies, no joints, no gravity.")
+      .def_static(
+          "from_file", [](const std::string& path) { return io::load_robot_scenario(path).system; },
+          py::arg("path"),
+          (std::string("The system of a robot file (URDF, MJCF, SDF) at its file pose; "
+                       "multibody.load_robot gives its initial state too. ") +
+           POINSOT_DOC(io_robot_scenario))
+              .c_str())
       .def(
           "add_body",
           [](mb::System& s, const std::string& name, double mass, ArrayLike K) {

@@ -557,3 +557,23 @@ def test_universal_joint_keeps_its_cross_pins_perpendicular():
     assert abs(mb.total_energy(system, state) - E0) < 1e-4 * abs(E0)
     with pytest.raises(ValueError, match="axis b"):
         system.add_universal("bad", link, [0, 0, 0], [0, 1, 0], mb.WORLD, [0, 0, 0], [0, 0, 0])
+
+
+def test_robot_files_load_as_scenarios_and_systems():
+    robots = SOURCE_DIR / "tests" / "data" / "models" / "robots"
+    # The URDF double pendulum is the hand-written scenario: same bodies and joints, same initial state.
+    robot = mb.load_robot(str(robots / "pendulum2.urdf"))
+    toml = mb.load_scenario(str(robots / "pendulum2.toml"))
+    assert robot.system.body_names == toml.system.body_names == ["upper", "lower"]
+    assert robot.system.joint_names == toml.system.joint_names == ["shoulder", "elbow"]
+    for a, b in zip(robot.initial, toml.initial):
+        np.testing.assert_array_equal(a.x_space, b.x_space)
+    assert any("limits" in line for line in robot.not_modelled)
+    assert mb.System.from_file(str(robots / "joints.sdf")).body_names[0] == "tower"
+    # Joint coordinates by name: the shoulder at 0.3 rad about y.
+    turned = mb.load_robot(str(robots / "pendulum2.urdf"), positions={"shoulder": [0.3]}, gravity=[0, 0, -1.62])
+    np.testing.assert_allclose(turned.initial[0].x_space, 0.25 * np.array([math.cos(0.3), 0, -math.sin(0.3)]),
+                               atol=1e-16)
+    np.testing.assert_array_equal(turned.system.gravity, [0, 0, -1.62])
+    with pytest.raises(ValueError, match=r"positions\.knee: no moving joint of that name"):
+        mb.load_robot(str(robots / "pendulum2.urdf"), positions={"knee": [1.0]})

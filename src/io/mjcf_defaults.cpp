@@ -13,7 +13,7 @@ namespace {
 using tinyxml2::XMLElement;
 
 constexpr const char* kMain = "main";
-constexpr const char* kKinds[] = {"geom", "mesh"};
+constexpr const char* kKinds[] = {"geom", "mesh", "joint"};
 
 bool is_orientation(std::string_view name) {
   for (const char* o : kMjcfOrientations)

@@ -1,13 +1,14 @@
 #pragma once
 // Internal to the io layer: MJCF default classes, as MuJoCo's modeling guide ("Default settings") and XML
-// reference (<default>, body childclass) define them, for the elements the MJCF reader uses (<geom> and the
-// <mesh> assets).
+// reference (<default>, body childclass) define them, for the elements the MJCF readers use (<geom>, <joint>
+// and the <mesh> assets).
 //
 //  * The top-level <default> of <mujoco> is the class "main"; a <default class="NAME"> nested in another
 //    defines the class NAME, which starts from every attribute value of the enclosing class and overrides
-//    those it writes itself. Inside a class, <geom .../> and <mesh .../> give the attribute values of the
-//    geoms and meshes of that class.
-//  * The class of a <geom> is its own `class` attribute; without one, the `childclass` of the nearest body
+//    those it writes itself. Inside a class, <geom .../>, <joint .../> and <mesh .../> give the attribute
+//    values of the geoms, joints and meshes of that class.
+//  * The class of a <geom> (or <joint>) is its own `class` attribute; without one, the `childclass` of the
+//  nearest body
 //    that contains it (the geom's own body included, then its ancestors); without one, "main". A <mesh>
 //    asset uses its own `class` or "main" (childclass applies to the bodies' elements only).
 //  * An attribute the element writes itself wins over its class's.
@@ -43,9 +44,9 @@ class MjcfDefaults {
   /// <default> without a class name and for a class defined twice.
   explicit MjcfDefaults(const XmlSource& xml);
 
-  /// The values of class `name` for elements of `kind` ("geom" or "mesh"); `user` is the element that asked,
-  /// for the message. Throws InvalidInput `SOURCE:LINE: <geom> class="NAME": no such default class` when the
-  /// model does not define it.
+  /// The values of class `name` for elements of `kind` ("geom", "joint" or "mesh"); `user` is the element
+  /// that asked, for the message. Throws InvalidInput `SOURCE:LINE: <geom> class="NAME": no such default
+  /// class` when the model does not define it.
   const MjcfClassValues& values(const std::string& name, const char* kind,
                                 const tinyxml2::XMLElement& user) const;
 

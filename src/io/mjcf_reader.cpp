@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "mjcf_defaults.hpp"
+#include "mjcf_orientation.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/so3/quaternion.hpp"
 #include "robot_readers.hpp"
@@ -113,20 +114,15 @@ MeshAssets read_assets(const XmlSource& xml, const MjcfDefaults& defaults, const
 }
 
 void read_geom(const XmlSource& xml, const XMLElement& geom, const MjcfDefaults& defaults,
-               const MeshAssets& assets, RobotLink& link) {
+               const MjcfCompiler& compiler, const MeshAssets& assets, RobotLink& link) {
   LinkGeometry g;
   g.element = "geom";
   const MjcfAttributes attributes(xml, geom,
                                   defaults.values(MjcfDefaults::class_of(geom, true), "geom", geom));
   const char* type_attr = attributes.get("type").text;
   const std::string type = type_attr != nullptr ? type_attr : "sphere";
-  for (const char* other : kOtherOrientations) {
-    if (const MjcfValue v = attributes.get(other); v.text != nullptr) {
-      link.notes.push_back(fmt::format("{}: orientation given by {}; skipped (quat is understood)",
-                                       xml.where(*v.owner), other));
-      return;
-    }
-  }
+  if (auto density = attributes.numbers("density", 1)) g.density = (*density)[0];
+  if (auto mass = attributes.numbers("mass", 1)) g.mass = (*mass)[0];
   if (type == "mesh") {
     const char* mesh = attributes.get("mesh").text;
     const auto it = mesh != nullptr ? assets.files.find(mesh) : assets.files.end();
@@ -189,9 +185,9 @@ void read_geom(const XmlSource& xml, const XMLElement& geom, const MjcfDefaults&
     return;  // plane, hfield, sdf: no volume of a link
   }
   if (auto pos = attributes.numbers("pos", 3)) g.position_link = Vec3((*pos)[0], (*pos)[1], (*pos)[2]);
-  const MjcfValue quat = attributes.get("quat");
-  g.R_link_geometry =
-      rotation_of_quat(xml, quat.owner != nullptr ? *quat.owner : geom, attributes.numbers("quat", 4));
+  g.R_link_geometry = mjcf_orientation(xml, geom, compiler, [&](const char* name, std::size_t count) {
+    return attributes.numbers(name, count);
+  });
   link.geometry.push_back(std::move(g));
 }
 
@@ -199,6 +195,7 @@ void read_geom(const XmlSource& xml, const XMLElement& geom, const MjcfDefaults&
 
 void read_mjcf(const XmlSource& xml, const std::string& base_dir, RobotModel& model) {
   const MjcfDefaults defaults(xml);
+  const MjcfCompiler compiler = read_mjcf_compiler(xml);
   const MeshAssets assets = read_assets(xml, defaults, base_dir);
   std::vector<const XMLElement*> stack;
   for (const XMLElement* w = xml.root()->FirstChildElement("worldbody"); w != nullptr;
@@ -223,7 +220,7 @@ void read_mjcf(const XmlSource& xml, const std::string& base_dir, RobotModel& mo
     if (const XMLElement* inertial = e->FirstChildElement("inertial"))
       read_mjcf_inertial(xml, *inertial, link);
     for (const XMLElement* g = e->FirstChildElement("geom"); g != nullptr; g = g->NextSiblingElement("geom"))
-      read_geom(xml, *g, defaults, assets, link);
+      read_geom(xml, *g, defaults, compiler, assets, link);
     model.links.push_back(std::move(link));
   }
 }

@@ -107,6 +107,11 @@ std::string format_multibody_report(const multibody::Scenario& sc, const Multibo
     }
     i = j;
   }
+  if (!sc.not_modelled.empty()) {
+    fmt::format_to(o, "  not modelled (the file states them; the run leaves them out):\n");
+    for (const std::string& line : sc.not_modelled)
+      fmt::format_to(o, "    - {}\n", line);
+  }
 
   fmt::format_to(o, "\nrun\n  method: {}\n", method_description(sc));
   fmt::format_to(o, "  dt = {} s, duration = {} s, a row every {} steps ({} rows)\n", report_number(sc.dt),
@@ -182,6 +187,7 @@ std::string multibody_summary_json(const multibody::Scenario& sc, const Multibod
   j["scenario"] = sc.source;
   j["title"] = sc.title;
   j["kind"] = "multibody";
+  j["not_modelled"] = sc.not_modelled;
   j["status"] = detail::run_status(r.failure, r.interrupted);
   j["interrupted"] = r.interrupted;
   j["failure"] = text_or_null(r.failure);

@@ -274,14 +274,8 @@ void read_loads(Reader& r, const Section& top, const toml::table& root) {
 
 namespace detail {
 
-multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::string_view source,
-                                                  std::string_view base_dir) {
-  const Source src{std::string(source)};
-  const Section top(src, &root, "top level",
-                    {"title", "simulation", "bodies", "joints", "springs", "forces", "torques"});
-  multibody::Scenario sc;
-  sc.source = std::string(source);
-  sc.title = top.string("title").value_or("");
+std::optional<Vec3> read_multibody_simulation(const Source& src, const Section& top,
+                                              multibody::Scenario& sc) {
   const Section sim(src, top.table("simulation"), "simulation",
                     {"dt", "duration", "output_every", "gravity", "method", "order"});
   const auto positive = [&](std::string_view key, double fallback) {
@@ -320,7 +314,18 @@ multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::
                                   format_number(order)));
   }
   sc.order = static_cast<int>(order);
-  sc.system.set_gravity(sim.vec3("gravity").value_or(Vec3::Zero()));
+  return sim.vec3("gravity");
+}
+
+multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::string_view source,
+                                                  std::string_view base_dir) {
+  const Source src{std::string(source)};
+  const Section top(src, &root, "top level",
+                    {"title", "simulation", "bodies", "joints", "springs", "forces", "torques"});
+  multibody::Scenario sc;
+  sc.source = std::string(source);
+  sc.title = top.string("title").value_or("");
+  sc.system.set_gravity(read_multibody_simulation(src, top, sc).value_or(Vec3::Zero()));
 
   Reader r{src, sc, {}};
   read_bodies(r, top, root, base_dir);

@@ -2,6 +2,7 @@
 // Internal to the io layer: the two kinds of scenario read from an already parsed TOML table, so that a file
 // is parsed once whichever kind it is (scenario_file.hpp).
 
+#include <optional>
 #include <string_view>
 
 #include "poinsot/io/scenario.hpp"
@@ -18,6 +19,15 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
 /// A multibody scenario (docs/multibody.md, a `[[bodies]]` array) from its table.
 multibody::Scenario multibody_scenario_from_table(const toml::table& root, std::string_view source,
                                                   std::string_view base_dir);
+
+/// The `[simulation]` section of a multibody file (dt, duration, output_every, method, order) into `sc`;
+/// returns its `gravity` (m/s²) when given. Throws located InvalidInput.
+std::optional<Vec3> read_multibody_simulation(const Source& src, const Section& top, multibody::Scenario& sc);
+
+/// A multibody scenario whose system comes from a robot file (`[model] file = "arm.urdf"`, relative to
+/// `base_dir`; docs/robot_models.md) from its table.
+multibody::Scenario robot_scenario_from_table(const toml::table& root, std::string_view source,
+                                              std::string_view base_dir);
 
 /// The array of tables `key` of a section (`[[key]]`, or an array of inline tables), or null when absent.
 /// Throws located InvalidInput when it is something else.

@@ -3,6 +3,8 @@
 // own class over the childclass, the orientation taken whole from one level, mesh assets — is read into the
 // same geometry as the same model expanded by hand (every attribute written on its geom or mesh). The two
 // models give the same numbers to the reader, so the geometry must agree exactly (==).
+#include <cmath>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -19,7 +21,7 @@ using test::expect_has;
 const std::string kMeshDir = std::string(POINSOT_TEST_DATA_DIR) + "/inertia";
 
 // The capsule of class main is turned by quat (0 0 0 1) = R_z(π); the class finger writes its orientation as
-// euler (skipped by the reader with a note) unless its geom writes a quat of its own.
+// euler (degrees, MuJoCo's default) unless its geom writes a quat of its own.
 const char* const kWithDefaults = R"(<mujoco>
   <default>
     <geom type="capsule" size="0.05 0.2" quat="0 0 0 1"/>
@@ -128,14 +130,18 @@ TEST(MjcfDefaults, ModelWithClassesReadsAsTheModelExpandedByHand) {
   EXPECT_EQ(base.geometry[1].shape.kind, "sphere");
   EXPECT_EQ(base.geometry[2].mesh_scale, Vec3(2, 2, 2));
   EXPECT_EQ(base.geometry[3].mesh_scale, Vec3(0.001, 0.001, 0.001));
-  // arm1: the class finger's euler is skipped (noted, pointing at the class's line 9), the geom's own quat
-  // wins.
+  // arm1: the geom's own quat wins over the class finger's euler; without one, the class's euler "0 0 1" is
+  // a turn of 1° about z.
   const RobotLink& arm1 = with.links[1];
-  EXPECT_EQ(arm1.geometry.size(), 3u);
-  ASSERT_EQ(arm1.notes.size(), 1u);
-  expect_has(arm1.notes[0], {"with.xml:9:", "euler"});
+  ASSERT_EQ(arm1.geometry.size(), 4u);
+  EXPECT_TRUE(arm1.notes.empty());
   EXPECT_EQ(arm1.geometry[2].shape.size, Vec3(0.02, 0.04, 0.06));
   EXPECT_EQ(arm1.geometry[2].R_link_geometry, Mat3::Identity());
+  const double one_degree = std::numbers::pi / 180.0;
+  Mat3 Rz;
+  Rz << std::cos(one_degree), -std::sin(one_degree), 0, std::sin(one_degree), std::cos(one_degree), 0, 0, 0,
+      1;
+  POINSOT_EXPECT_MATRIX_NEAR(arm1.geometry[3].R_link_geometry, Rz, 1e-16);
   // tip: childclass ball, then class main and class arm over it.
   const RobotLink& tip = with.links[3];
   ASSERT_EQ(tip.geometry.size(), 3u);

@@ -22,6 +22,7 @@
 /// ellipsoids (MJCF, SDF), and meshes (a file path resolved relative to the model's folder; `package://` and
 /// `model://` URIs are resolved only when the file exists under the model's folder, else noted).
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,8 @@ struct LinkGeometry {
   Vec3 mesh_scale = Vec3::Ones();  ///< per-axis scale of the mesh's coordinates
   Mat3 R_link_geometry = Mat3::Identity();  ///< orientation of the shape's frame in the link frame
   Vec3 position_link = Vec3::Zero();        ///< origin of the shape's frame in the link frame (m)
+  double density = 1000.0;                  ///< MJCF: the geom's density, kg/m³ (MuJoCo's default 1000)
+  std::optional<double> mass;  ///< MJCF: the geom's mass when it writes one (kg; replaces density × volume)
 };
 
 /// How the file writes the tensor, for in-place edits.

@@ -23,10 +23,13 @@ AnyScenario parse_any_scenario(std::string_view text, std::string_view source = 
                                std::string_view base_dir = "");
 
 /// Reads a scenario file of either kind; a single-body scenario is named after the file's stem, as
-/// load_scenario does.
+/// load_scenario does. A robot file (.urdf, .xml, .sdf: robot_system.hpp) is read as a multibody scenario
+/// with the defaults of RobotSystemOptions; a TOML file with a `[model]` table names one
+/// (docs/robot_models.md).
 AnyScenario load_any_scenario(const std::string& path);
 
-/// True when the TOML file at `path` is a multibody scenario (its top level has `bodies`). Parses the file;
+/// True when the TOML file at `path` is a multibody scenario (its top level has `bodies` or `model`), or
+/// `path` is a robot file. Parses the file;
 /// prefer load_any_scenario when the scenario is then loaded. Throws InvalidInput when the file cannot be
 /// read or is not TOML.
 bool is_multibody_scenario(const std::string& path);

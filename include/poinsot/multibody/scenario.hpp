@@ -36,6 +36,9 @@ struct Scenario {
   /// Per body (system order), its surface about its centre of mass (body frame, m) when the file gives a
   /// shape or a mesh, for drawing (view.html); null otherwise. May be empty.
   std::vector<std::shared_ptr<const inertia::TriangleMesh>> body_surfaces;
+  /// What the source file states that the model leaves out (a robot file's contacts, limits, actuators...),
+  /// one line each, for the report; empty for poinsot's own scenario files.
+  std::vector<std::string> not_modelled;
 };
 
 /// Projects every body's velocity onto the joint constraints, G v = 0, minimising the change of kinetic
