@@ -4,10 +4,12 @@
 
   norm       rest to rest, ‖u‖ ≤ ū: principal moments drawn in [1, 4] kg·m² (triangle inequality, ratio ≤ 4),
              a random axis, Θ in 20° … 180°, ū in [0.2, 2] N·m;
-  norm_spin  the same from a spin: ω_0 along a random axis with ‖L_0‖ up to ū·T_rest/2, to rest at R_f;
+  norm_spin  the same from a spin: ω_0 = J⁻¹L_0 with L_0 along a random axis, ‖L_0‖ drawn in
+             [0.1, 0.5] ū √(Θ J_min/ū), to rest at R_f;
   rate_axis  single-axis slews about a principal axis with a rate bound r, |u_i| ≤ ū on the three axes, Θ in
              60° … 180°, r drawn so that the bound is active (θ > r² J/ū): the closed form
-             T = Θ/r + r J/ū (accelerate at the bound, coast at the rate limit, brake) is printed beside;
+             T = Θ/r + r J/ū (accelerate at the bound, coast at the rate limit, brake) is printed beside (an
+             extremal with singular transverse torques under per-axis bounds: not handled by the shooting);
   rate       rest to rest about a random axis, per-axis bounds, a rate bound at 0.5 … 0.8 of the unbounded
              optimum's peak |ω_i| estimate √(Θ ū/J) (active in most draws).
 
@@ -15,7 +17,8 @@ Each line: the status, the final time (and the closed form where there is one), 
 process (user + system, s). The summary: the share verified optimal, with the median and the largest CPU time.
 
 Usage: scripts/optimal_indirect_families.py FAMILY [N] [SEED] (POINSOT_CLI: the poinsot binary, default
-build/release/apps/poinsot/poinsot). Deterministic for a given binary: the problems depend on SEED only."""
+build/release/apps/poinsot/poinsot; KEEP=DIR: keep each scenario file there). Deterministic for a given binary:
+the problems depend on SEED only."""
 import json
 import math
 import os

@@ -3,6 +3,7 @@
 // independent re-simulation (docs/optimal_control.md, section 3, "Norm bound on any body").
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "poinsot/optimal/indirect_shooting.hpp"
@@ -20,22 +21,38 @@ ReorientationProblem norm_problem(const Vec3& moments, double ubar, const Vec3& 
   return p;
 }
 
-// The sphere's minimum-time slew under ‖u‖ ≤ ū is the eigenaxis manoeuvre about any axis (the duration
-// bound of problem.hpp is attained): T = 2√(Θ j/ū), σ through 0 at T/2, where u reverses.
-TEST(NormBoundAnyAxis, SphereAboutAGenericAxisMeetsTheEigenaxisTime) {
-  const double j = 1.5, ubar = 0.8, theta = 2.5;
-  const ReorientationProblem p = norm_problem(Vec3::Constant(j), ubar, Vec3(1.0, -2.0, 0.7), theta);
-  CollocationOptions opt;
-  opt.initial_intervals = 10;
-  opt.mesh_tolerance = 1e-6;
-  const DirectSolution d = solve_direct(p, opt);
+// An asymmetric body (moments 1.40, 3.54, 3.29 kg·m²) about a generic axis (draw 0 of
+// `scripts/optimal_indirect_families.py norm 16 1`): σ passes within 1.1e-2 of its largest norm near
+// mid-manoeuvre, where u = −ū σ/‖σ‖ turns by about π in a fraction of a second. With 64 uniform samples
+// consecutive torques were 1.9 rad apart there and the replay missed the target by 2.2e-2 rad, so the
+// converged extremal could not be verified; the samples are now refined where the torque turns. Oracles:
+// the minimum principle's checks along the shooting solution (H constant and 0, the control minimising H),
+// the independent DOP853 replay of the sampled torque (1e-6 rad), the direct cost (1e-3 relative), and the
+// duration bound of problem.hpp, which no admissible manoeuvre beats.
+TEST(NormBoundAnyAxis, FastTurnNearAZeroOfSigmaIsResolvedAndVerified) {
+  const ReorientationProblem p =
+      norm_problem(Vec3(1.40309273234, 3.54230121081, 3.29132385693), 0.368947256194,
+                   Vec3(-0.0205928695972, 0.646346826029, -0.762765831828), 2.55159694875);
+  const DirectSolution d = solve_direct(p, CollocationOptions{});
   ASSERT_TRUE(d.converged) << d.status;
   const IndirectSolution s = solve_indirect(p, d);
   ASSERT_TRUE(s.converged) << s.status;
-  const double T = 2.0 * std::sqrt(theta * j / ubar);
-  EXPECT_NEAR(s.final_time / T, 1.0, 1e-10);
+  EXPECT_GE(s.final_time, minimum_duration_bound(p));
+  double sigma_min = 1e300, sigma_max = 0.0, largest_turn = 0.0;
+  for (std::size_t k = 0; k < s.time.size(); ++k) {
+    sigma_min = std::min(sigma_min, s.switching_function[k].norm());
+    sigma_max = std::max(sigma_max, s.switching_function[k].norm());
+    if (k > 0) {
+      const Vec3 &a = s.torque_body[k - 1], &b = s.torque_body[k];
+      largest_turn = std::max(largest_turn, std::atan2(a.cross(b).norm(), a.dot(b)));
+    }
+  }
+  EXPECT_LT(sigma_min, 2e-2 * sigma_max);  // the fast turn is there
+  EXPECT_LE(largest_turn, 0.02 + 1e-12);   // and resolved by the samples
   const VerificationReport v = verify(p, d, s);
   EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+  EXPECT_LT(v.resimulated_attitude_error, 1e-6);
+  EXPECT_LT(v.hamiltonian_deviation, 1e-8);
 }
 
 }  // namespace

@@ -23,6 +23,9 @@ ReorientationProblem diagonal_sphere(double j, double ubar, double r, double the
 }
 
 TEST(RateBoundShooting, DiagonalSphereAcceleratesCoastsAndBrakes) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "about 1 s in release (the direct phase), a minute under ASan";
+#endif
   const double j = 1.5, ubar = 0.8, r = 0.4, theta = 2.5;
   const ReorientationProblem p = diagonal_sphere(j, ubar, r, theta);
   CollocationOptions opt;

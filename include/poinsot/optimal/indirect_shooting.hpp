@@ -36,9 +36,11 @@
 /// saturated samples, σ passes through 0 and u = −ū σ/‖σ‖ reverses (the eigenaxis slew of a sphere at T/2).
 /// Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of σ at the start
 /// of the arc ending there; on each arc the control is continued through σ = 0 without flipping, so the
-/// conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a sphere). Not
-/// handled: active rate bounds (state constraints; the solver reports them and does not claim optimality),
-/// singular arcs (|u_i| strictly inside its bound over an interval of the direct solution).
+/// conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a sphere). The output
+/// samples of a norm-bound torque are refined where it turns fast (σ passing near 0). Active rate bounds:
+/// boundary arcs for minimum time with per-axis bounds (rate_bound_shooting.hpp, single shooting; the other
+/// objectives and bounds are reported "not applied"). Not handled: singular arcs (|u_i| strictly inside its
+/// bound over an interval of the direct solution, off the rate bound).
 #include <string>
 #include <vector>
 
