@@ -177,14 +177,15 @@ def test_scenario_objects_and_options():
 
 RATE_BOUNDED = {
     "body": {"principal_moments": [1.0, 1.0, 1.0]},
-    "optimal_control": {"objective": "minimum_time", "torque_bound": "per_axis", "torque_max": [1.0, 1.0, 1.0],
+    "optimal_control": {"objective": "minimum_time", "torque_bound": "norm", "torque_max": 1.0,
                         "rate_max": 0.8, "mesh_tolerance": 1e-6,
                         "final": {"orientation": {"axis_angle": {"axis": [1.0, 0.0, 0.0], "angle": 1.5}}}},
 }
 
 
 def test_a_solution_that_is_not_verified_is_never_presented_as_optimal():
-    # Two intervals and one mesh iteration: the shooting method does not take the active rate bound, and the
+    # Two intervals and one mesh iteration: the shooting method does not take an active rate bound under a
+    # norm bound on the torque, and the
     # two-interval control misses the target by about 1e-2 rad: not converged.
     with pytest.warns(RuntimeWarning, match="not converged"):
         r = poinsot.optimize(RATE_BOUNDED, initial_intervals=2, max_mesh_iterations=1)
@@ -197,7 +198,8 @@ def test_a_solution_that_is_not_verified_is_never_presented_as_optimal():
 
 def test_converged_direct_is_its_own_outcome_never_optimal():
     # The same slew refined: the direct solution's control, re-simulated by DOP853, reaches the target to
-    # 1e-6, but the minimum principle is not verified (state-constrained arcs): exit 3 of the command.
+    # 1e-6, but the minimum principle is not verified (a state-constrained arc under a norm bound): exit 3 of
+    # the command.
     with pytest.warns(RuntimeWarning, match="converged \\(direct; minimum principle not verified"):
         r = poinsot.optimize(RATE_BOUNDED)
     assert not r.optimal and r.outcome == "converged_direct" and r.method == "direct"

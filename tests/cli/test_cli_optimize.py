@@ -107,8 +107,8 @@ RATE_BOUNDED = """
 principal_moments = [1.0, 1.0, 1.0]
 [optimal_control]
 objective = "minimum_time"
-torque_bound = "per_axis"
-torque_max = [1.0, 1.0, 1.0]
+torque_bound = "norm"
+torque_max = 1.0
 rate_max = 0.8
 mesh_tolerance = 1e-6
 [optimal_control.final]
@@ -118,16 +118,16 @@ orientation = { axis_angle = { axis = [1.0, 0.0, 0.0], angle = 1.5 } }
 
 @pytest.mark.slow_under_sanitizers
 def test_converged_direct_is_exit_3_with_marked_files_and_never_optimal(cli, tmp_path):
-    """(About 2 s in release; under the sanitizers the two-interval case above covers the same code.) An
-    active rate bound: the shooting method does not handle state-constrained arcs, so the minimum
-    principle is not verified; the direct solution, whose control re-simulated by DOP853 meets the target to
+    """(About 2 s in release; under the sanitizers the two-interval case below covers the same code.) An
+    active rate bound under a norm bound on the torque: the shooting method handles state-constrained arcs
+    only with per-axis bounds, so the minimum principle is not verified; the direct solution, whose control re-simulated by DOP853 meets the target to
     1e-6, is reported as "converged (direct; ...)", exit 3."""
     out = tmp_path / "out"
     r = cli("optimize", write(tmp_path, RATE_BOUNDED), "--out", out)
     assert r.returncode == 3, r.stdout
     head = "converged (direct; minimum principle not verified: the rate bound is active"
     assert f"status: {head}" in r.stdout and "optimal (verified)" not in r.stdout
-    assert "state-constrained arcs are not handled by the shooting method" in r.stdout
+    assert "state-constrained arcs are handled for minimum time with per-axis bounds only" in r.stdout
     for name in ("trajectory.csv", "control.csv", "costates.csv"):
         assert (out / name).read_text().startswith(f"# status: {head}")
     assert (out / "report.txt").read_text() == r.stdout
@@ -136,18 +136,18 @@ def test_converged_direct_is_exit_3_with_marked_files_and_never_optimal(cli, tmp
     assert summary["status"].startswith(head) and summary["solution_from"] == "direct"
     replay = summary["direct_replay"]
     assert replay["run"] is True and replay["scaled_error"] <= replay["tolerance"] == 1e-6
-    # Bounds on T (J = I): ‖u‖ ≤ √3 and L̇_space = R u give Θ ≤ ∫‖ω‖dt ≤ √3 T²/4, so T ≥ 2√(Θ/√3); the
-    # single-axis accelerate–coast–brake at 0.8 rad/s (T = Θ/r + r j/ū = 1.875 + 0.8 s) is admissible, so the
-    # minimum is at most that.
+    # Bounds on T (J = I): ‖u‖ ≤ 1 and L̇_space = R u give Θ ≤ ∫‖ω‖dt ≤ T²/4, so T ≥ 2√Θ; the single-axis
+    # accelerate–coast–brake at 0.8 rad/s (T = Θ/r + r j/ū = 1.875 + 0.8 s) is admissible, so the minimum is
+    # at most that.
     T = summary["direct"]["final_time"]
-    assert 2 * (1.5 / 3**0.5) ** 0.5 <= T <= 1.5 / 0.8 + 0.8 + 1e-6
+    assert 2 * 1.5**0.5 <= T <= 1.5 / 0.8 + 0.8 + 1e-6
     assert max(abs(w) for row in rows(out / "trajectory.csv")[2] for w in row[5:8]) <= 0.8 * (1 + 1e-6)
 
 
 def test_not_converged_is_exit_1_with_marked_files_the_phase_and_what_to_change(cli, tmp_path):
     out = tmp_path / "out"
-    # the rate-bounded slew below on two intervals and one mesh iteration: the shooting method does not take
-    # the state-constrained arcs, and the two-interval control misses the target by about 1e-2 rad, beyond
+    # the rate-bounded slew above on two intervals and one mesh iteration: the shooting method does not take
+    # its state-constrained arc (norm bound), and the two-interval control misses the target by about 1e-2 rad, beyond
     # what three continued refinements could bring to 1e-6
     text = RATE_BOUNDED.replace("mesh_tolerance = 1e-6", "initial_intervals = 2\nmax_mesh_iterations = 1")
     r = cli("optimize", write(tmp_path, text), "--out", out)
