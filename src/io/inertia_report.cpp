@@ -54,7 +54,8 @@ std::string inertia_report_text(const InertiaReport& r) {
   out += fmt::format("mass:                {}\n",
                      r.mass ? format_number(*r.mass) + " kg" : std::string("(not given)"));
   out += fmt::format("centre of mass:      {} m\n", format_vector(r.props.com));
-  out += "inertia J about the centre of mass (kg·m², input frame):\n" + full_precision_rows(r.props.inertia_com);
+  out +=
+      "inertia J about the centre of mass (kg·m², input frame):\n" + full_precision_rows(r.props.inertia_com);
   if (d.J_ref) {
     out += fmt::format("inertia J about {} m (kg·m², input frame):\n", format_vector(*r.about)) +
            full_precision_rows(*d.J_ref);

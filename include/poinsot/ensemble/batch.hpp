@@ -48,7 +48,8 @@ struct LaneResult {
   long long flips = 0;
 };
 
-/// The names of the methods that have a batched kernel, "rk4 or dlm" (the last two joined by `last_separator`).
+/// The names of the methods that have a batched kernel, "rk4 or dlm" (the last two joined by
+/// `last_separator`).
 std::string batched_method_names(std::string_view last_separator = " or ");
 
 /// True when `method` has a batched kernel (batched_method_names()) and the sample is a free body under no
