@@ -20,6 +20,7 @@
 #include "poinsot/io/multibody_optimal_run.hpp"
 #include "poinsot/io/optimal_run.hpp"
 #include "poinsot/io/scenario_file.hpp"
+#include "progress_line.hpp"
 
 namespace poinsot::cli {
 
@@ -34,19 +35,12 @@ struct OptimizeOptions {
 /// stderr is a terminal: the phase and, in the direct method, the mesh and Ipopt's iteration.
 class OptimizeProgress {
  public:
-  explicit OptimizeProgress(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO) == 1) {}
-  ~OptimizeProgress() { finish(); }
-  OptimizeProgress(const OptimizeProgress&) = delete;
-  OptimizeProgress& operator=(const OptimizeProgress&) = delete;
+  explicit OptimizeProgress(bool enabled) : line_(enabled) {}
 
   void update(const io::OptimalProgress& p) {
-    if (!enabled_) return;
-    const auto now = std::chrono::steady_clock::now();
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
     const bool new_phase = p.phase != phase_;
     phase_ = p.phase;
-    if (elapsed < 1.0 || (!new_phase && now - last_ < std::chrono::milliseconds(100))) return;
-    last_ = now;
+    if (!line_.due(new_phase)) return;
     std::string what;
     if (p.phase == "direct")
       what = fmt::format(
@@ -63,21 +57,13 @@ class OptimizeProgress {
       what = "verification: the necessary conditions and the DOP853 re-simulation";
     else
       what = "re-simulating the direct solution's control";
-    fmt::print(stderr, "\r\033[K{}  {:.1f} s", what, elapsed);
-    std::fflush(stderr);
-    drawn_ = true;
+    line_.draw(fmt::format("{}  {:.1f} s", what, line_.elapsed()));
   }
-  void finish() {
-    if (drawn_) fmt::print(stderr, "\r\033[K");
-    drawn_ = false;
-  }
+  void finish() { line_.finish(); }
 
  private:
-  bool enabled_;
-  bool drawn_ = false;
+  ProgressLine line_;
   std::string phase_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point last_ = start_;
 };
 
 /// A multibody scenario (a `[[bodies]]` array): the direct transcription and its re-simulation

@@ -32,6 +32,7 @@
 #include "poinsot/io/view_page.hpp"
 #include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/scenario.hpp"
+#include "progress_line.hpp"
 
 extern char** environ;
 
@@ -82,36 +83,25 @@ class SignalGuard {
   struct sigaction old_term_ {};
 };
 
-/// A one-line progress bar on stderr, drawn only when stderr is a terminal, after the first second.
+/// A one-line progress bar of the simulated time (progress_line.hpp).
 class Progress {
  public:
-  Progress(bool enabled, double t_end) : enabled_(enabled && isatty(STDERR_FILENO) == 1), t_end_(t_end) {}
+  Progress(bool enabled, double t_end) : line_(enabled), t_end_(t_end) {}
   void update(double t) {
-    if (!enabled_) return;
-    const auto now = std::chrono::steady_clock::now();
-    const double elapsed = std::chrono::duration<double>(now - start_).count();
-    if (elapsed < 1.0 || now - last_ < std::chrono::milliseconds(100)) return;
-    last_ = now;
+    if (!line_.due()) return;
     const double f = t_end_ > 0.0 ? std::min(1.0, t / t_end_) : 1.0;
     const int width = 30;
     const int done = static_cast<int>(f * width);
-    fmt::print(stderr, "\r[{}{}] {:5.1f}%  t = {:.4g} / {:.4g} s  {:.1f} s elapsed",
-               std::string(static_cast<std::size_t>(done), '#'),
-               std::string(static_cast<std::size_t>(width - done), '.'), 100.0 * f, t, t_end_, elapsed);
-    std::fflush(stderr);
-    drawn_ = true;
+    line_.draw(fmt::format("[{}{}] {:5.1f}%  t = {:.4g} / {:.4g} s  {:.1f} s elapsed",
+                           std::string(static_cast<std::size_t>(done), '#'),
+                           std::string(static_cast<std::size_t>(width - done), '.'), 100.0 * f, t, t_end_,
+                           line_.elapsed()));
   }
-  void finish() {
-    if (drawn_) fmt::print(stderr, "\r\033[K");
-    drawn_ = false;
-  }
+  void finish() { line_.finish(); }
 
  private:
-  bool enabled_;
+  ProgressLine line_;
   double t_end_;
-  bool drawn_ = false;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-  std::chrono::steady_clock::time_point last_ = start_;
 };
 
 struct RunCliOptions {
