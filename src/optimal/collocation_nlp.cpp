@@ -60,6 +60,8 @@ void CollocationNlp::set_up() {
   const Vec3 av = -qf.vec();
   final_attitude_rows_.col(0) = av;
   final_attitude_rows_.block<3, 3>(0, 1) = a0 * Mat3::Identity() + hat(av);
+  for (const PointingConstraint& c : problem_.pointing)
+    pointing_forms_.push_back(c.quadratic_form());
 }
 
 std::vector<double> CollocationNlp::point_times(const double* z) const {
@@ -86,8 +88,7 @@ double CollocationNlp::final_time(const double* z) const {
 }
 
 int CollocationNlp::num_constraints() const {
-  const int base = 14 * intervals() + (points() - phases()) + 7 * (phases() - 1) + final_rows();
-  return problem_.bound == TorqueBound::norm ? base + points() : base;
+  return pointing_rows_begin() + pointing_count() * (points() - phases());
 }
 
 double CollocationNlp::quadrature_weight(int p) const {
@@ -185,6 +186,13 @@ void CollocationNlp::constraint_bounds(std::vector<double>& lo, std::vector<doub
       up[torque_norm_rows_begin() + p] = u2;
     }
   }
+  for (int p = 0; p < points(); ++p)
+    for (int c = 0; c < pointing_count() && norm_row_[p] >= 0; ++c) {
+      const PointingConstraint& pc = problem_.pointing[c];
+      const bool out = pc.kind == PointingKind::keep_out;
+      lo[pointing_row(p, c)] = out ? -kInf : std::cos(pc.half_angle);
+      up[pointing_row(p, c)] = out ? std::cos(pc.half_angle) : kInf;
+    }
 }
 
 double CollocationNlp::objective(const double* z) const {
@@ -231,13 +239,18 @@ void CollocationNlp::constraints(const double* z, double* g) const {
   if (problem_.bound == TorqueBound::norm)
     for (int p = 0; p < points(); ++p)
       g[torque_norm_rows_begin() + p] = point(z, p).segment<3>(7).squaredNorm();
+  for (int p = 0; p < points(); ++p)
+    for (int c = 0; c < pointing_count() && norm_row_[p] >= 0; ++c) {
+      const Vec4 q = point(z, p).head<4>();
+      g[pointing_row(p, c)] = q.dot(pointing_forms_[c] * q);
+    }
 }
 
 int CollocationNlp::jacobian_nonzeros() const {
   const int per_interval = 14 * (3 * kPointVars + 1);
   const int torque = problem_.bound == TorqueBound::norm ? 3 * points() : 0;
   return intervals() * per_interval + 4 * (points() - phases()) + 14 * (phases() - 1) + 4 * final_rows() +
-         torque;
+         torque + 4 * pointing_count() * (points() - phases());
 }
 
 void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
@@ -273,6 +286,12 @@ void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
       for (int c = 0; c < 3; ++c) {
         rows[n] = torque_norm_rows_begin() + p;
         cols[n++] = kPointVars * p + 7 + c;
+      }
+  for (int p = 0; p < points(); ++p)
+    for (int c = 0; c < pointing_count() && norm_row_[p] >= 0; ++c)
+      for (int i = 0; i < 4; ++i) {
+        rows[n] = pointing_row(p, c);
+        cols[n++] = kPointVars * p + i;
       }
 }
 
@@ -317,6 +336,12 @@ void CollocationNlp::jacobian_values(const double* z, double* v) const {
     for (int p = 0; p < points(); ++p)
       for (int c = 0; c < 3; ++c)
         v[n++] = 2.0 * z[kPointVars * p + 7 + c];
+  for (int p = 0; p < points(); ++p)
+    for (int c = 0; c < pointing_count() && norm_row_[p] >= 0; ++c) {
+      const Vec4 grad = 2.0 * pointing_forms_[c] * point(z, p).head<4>();
+      for (int i = 0; i < 4; ++i)
+        v[n++] = grad[i];
+    }
 }
 
 int CollocationNlp::hessian_nonzeros() const {
@@ -355,6 +380,8 @@ void CollocationNlp::hessian_values(const double* z, double sigma, const double*
       H.block<4, 4>(0, 0).diagonal().array() += 2.0 * y[norm_rows_begin() + norm_row_[p]];
     if (problem_.bound == TorqueBound::norm)
       H.block<3, 3>(7, 7).diagonal().array() += 2.0 * y[torque_norm_rows_begin() + p];
+    for (int c = 0; c < pointing_count() && norm_row_[p] >= 0; ++c)
+      H.block<4, 4>(0, 0) += 2.0 * y[pointing_row(p, c)] * pointing_forms_[c];
     const double w = quadrature_weight(p);
     H.block<3, 3>(7, 7).diagonal().array() += sigma * 2.0 * a * w * D;
     for (int r = 0; r < kPointVars; ++r)

@@ -18,6 +18,8 @@
 ///   x_{last of phase a} − x_{first of phase a+1} = 0             (state continuity, 7 per phase boundary)
 ///   vec(q_f* ⊗ q_{last}) = 0                                     (final attitude, 3; none when free)
 ///   ‖u_p‖² ≤ u_max² for every point                              (norm bound only)
+///   q_pᵀ A_c q_p ≤ cos θ_c (keep-out), ≥ cos θ_c (keep-in) for every pointing constraint c and every point
+///   but the first of each phase, c fastest                       (pointing_constraint.hpp: A_c, exact)
 /// ν = 0 at the first point of each phase (q is unit there: given, or equal to the previous phase's last q).
 /// Objective: β T + α Σ_k h_k/6 (‖u_k‖² + 4‖u_m‖² + ‖u_{k+1}‖²) (Simpson's rule for ∫‖u‖²dt), with
 /// (β, α) = (1, 0), (0, 1), (1, ε) for minimum time, minimum energy, regularised minimum time.
@@ -95,6 +97,10 @@ class CollocationNlp final : public SparseNlp {
 
   /// Rows of the first Simpson defect row of interval k / of the constraints after the defects.
   static int defect_row(int k) { return 14 * k; }
+  /// The row of pointing constraint c at point p, or −1 at the first point of a phase (none there).
+  int pointing_row(int p, int c) const {
+    return norm_row_[p] < 0 ? -1 : pointing_rows_begin() + norm_row_[p] * pointing_count() + c;
+  }
 
  private:
   void set_up();
@@ -114,6 +120,10 @@ class CollocationNlp final : public SparseNlp {
   int final_rows_begin() const { return link_rows_begin() + 7 * (phases() - 1); }
   int final_rows() const { return problem_.free_final_attitude ? 0 : 3; }
   int torque_norm_rows_begin() const { return final_rows_begin() + final_rows(); }
+  int pointing_rows_begin() const {
+    return torque_norm_rows_begin() + (problem_.bound == TorqueBound::norm ? points() : 0);
+  }
+  int pointing_count() const { return static_cast<int>(pointing_forms_.size()); }
   int phase_first_point(int a) const { return 2 * phase_first_interval_[a] + a; }
   int phase_last_point(int a) const { return phase_first_point(a + 1) - 1; }
 
@@ -126,6 +136,7 @@ class CollocationNlp final : public SparseNlp {
   std::vector<int> norm_row_;  // per point: its ‖q‖² row offset, −1 at the first point of a phase
   CollocationDynamics dyn_;
   Eigen::Matrix<double, 3, 4> final_attitude_rows_;  // vec(q_f* ⊗ q) = final_attitude_rows_ q
+  std::vector<Eigen::Matrix4d> pointing_forms_;      // A_c of every pointing constraint
 };
 
 /// The variables of one collocation point, the stride of the NLP vector z (CollocationNlp::kPointVars).

@@ -71,6 +71,15 @@ DirectSolution extract_solution(const CollocationNlp& nlp, const std::vector<dou
       s.costate_attitude_body.push_back(0.5 * quaternion_omega_matrix(q).transpose() * lambda.head<4>());
       s.costate_omega.push_back(lambda.tail<3>());
     }
+  const auto& pointing = nlp.problem().pointing;
+  s.pointing_multiplier.assign(pointing.size(), std::vector<double>(nlp.points(), 0.0));
+  if (!y.empty())
+    for (std::size_t c = 0; c < pointing.size(); ++c) {
+      const double sign = pointing[c].kind == PointingKind::keep_out ? 1.0 : -1.0;
+      for (int pt = 0; pt < nlp.points(); ++pt)
+        if (const int row = nlp.pointing_row(pt, static_cast<int>(c)); row >= 0)
+          s.pointing_multiplier[c][pt] = sign * y[row];
+    }
   s.mesh_error = mesh_errors(nlp, z);
   s.max_mesh_error = *std::max_element(s.mesh_error.begin(), s.mesh_error.end());
   return s;

@@ -231,14 +231,32 @@ DirectReplay replay_direct(const ReorientationProblem& p, const DirectSolution& 
   state.omega_body = p.omega_initial;
   DirectReplay r;
   r.final_time = d.final_time;
+  const std::size_t cones = p.pointing.size();
+  r.pointing.reset(p.pointing);
+  Quat q_prev(state.R_space_body);
+  r.pointing.lower(p.pointing, 0.0, q_prev);
+  // Between the end of the previous step and `s`: the Hermite interpolant at 8 points
+  // (pointing_constraint.hpp).
+  Vec3 w_prev = state.omega_body;
+  double t_prev = 0.0;
+  const auto check_pointing = [&](const dynamics::State& s) {
+    if (cones == 0) return;
+    const Quat q(s.R_space_body);
+    r.pointing.lower_along(p.pointing, t_prev, q_prev, w_prev, s.time, q, s.omega_body, 8);
+    q_prev = q;
+    w_prev = s.omega_body;
+    t_prev = s.time;
+  };
   double dt = opt.dt;
   try {
     for (const ReplayInterval& k : intervals) {
       *current = k;
       state.time = k.t_begin;
+      const double max_step = cones > 0 ? (k.t_end - k.t_begin) / 16.0 : k.t_end - k.t_begin;
       while (k.t_end - state.time > 1e-14 * d.final_time) {
-        const auto step = integrator.step(state, std::min(dt, k.t_end - state.time));
+        const auto step = integrator.step(state, std::min({dt, max_step, k.t_end - state.time}));
         dt = std::max(step.dt_next, 1e-12);
+        check_pointing(state);
       }
       state.time = k.t_end;
     }

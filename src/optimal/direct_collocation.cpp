@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <memory>
 #include <numbers>
 
 #include <fmt/format.h>
 #include "collocation_nlp.hpp"
 #include "collocation_solution.hpp"
+#include "poinsot/optimal/direct_replay.hpp"
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
@@ -281,6 +283,49 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
   return best;
 }
 
+/// `problem` with every pointing constraint's cone widened by δ rad (PointingConstraint::widened).
+ReorientationProblem widened(const ReorientationProblem& problem, double delta) {
+  ReorientationProblem out = problem;
+  for (PointingConstraint& c : out.pointing)
+    c = c.widened(delta);
+  return out;
+}
+
+/// The continuation of `previous`'s refinement on the problem whose cones are widened by δ (rad).
+DirectSolution continue_widened(const ReorientationProblem& problem, const DirectSolution& previous,
+                                const CollocationOptions& options, double delta);
+
+/// Pointing constraints between the collocation points: while the dense replay (direct_replay.hpp) of
+/// `solution`'s control violates a cone by more than pointing_replay_tolerance, the cones imposed at the
+/// points are widened by twice the violation more and the refinement continues from `solution`; at most
+/// four times. The widening stays in the result (DirectSolution::pointing_widening).
+DirectSolution meet_pointing_between_points(const ReorientationProblem& problem, DirectSolution solution,
+                                            const CollocationOptions& options) {
+  constexpr int kMaxWidenings = 4;
+  if (problem.pointing.empty()) return solution;
+  for (int k = 0; k < kMaxWidenings && solution.nlp_solved; ++k) {
+    const double violation = -replay_direct(problem, solution).pointing.worst();
+    if (!(violation > pointing_replay_tolerance)) {  // met, or NaN: nothing to widen by
+      // A solution clear of every widened cone is a KKT point of the NLP with the cones as given (its rows
+      // are inactive either way): the widening did not shape it. (It can be left over from an earlier
+      // solution that touched a cone, from which Ipopt moved on.)
+      if (solution.pointing_widening > 0.0 && active_pointing_constraint(problem, solution).empty())
+        solution.pointing_widening = 0.0;
+      return solution;
+    }
+    const double delta = solution.pointing_widening + 2.0 * violation;
+    DirectSolution next = continue_widened(problem, solution, options, delta);
+    if (!next.nlp_solved) {
+      solution.status = fmt::format(
+          "{}; the cones widened by {} rad to hold between the collocation points could not be solved ({})",
+          solution.status, format_number(delta, 3), next.status);
+      return solution;
+    }
+    solution = std::move(next);
+  }
+  return solution;
+}
+
 }  // namespace
 
 DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options) {
@@ -301,13 +346,23 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
                     : dumping_is_optimal       ? minimum_duration_bound(problem)
                                                : 2.0 * minimum_duration_bound(problem);
   std::vector<double> z = initial_guess(*nlp, T0);
-  return refine_mesh(problem, std::move(nlp), std::move(z), options, DirectSolution{});
+  return meet_pointing_between_points(
+      problem, refine_mesh(problem, std::move(nlp), std::move(z), options, DirectSolution{}), options);
 }
 
 DirectSolution continue_direct(const ReorientationProblem& problem, const DirectSolution& previous,
                                const CollocationOptions& options) {
   validate(problem);
   validate(options);
+  return meet_pointing_between_points(
+      problem, continue_widened(problem, previous, options, previous.pointing_widening), options);
+}
+
+namespace {
+
+DirectSolution continue_widened(const ReorientationProblem& original, const DirectSolution& previous,
+                                const CollocationOptions& options, double delta) {
+  const ReorientationProblem problem = widened(original, delta);
   const std::size_t n = previous.node_time.size();
   if (n < 2 || previous.time.size() != 2 * n - 1 || previous.attitude.size() != previous.time.size() ||
       !(previous.final_time > 0.0))
@@ -336,7 +391,32 @@ DirectSolution continue_direct(const ReorientationProblem& problem, const Direct
     std::copy(v, v + 10, z.begin() + static_cast<std::ptrdiff_t>(kP * pt));  // ν = 0
   }
   z[nlp->time_index()] = previous.final_time;
-  return refine_mesh(problem, std::move(nlp), std::move(z), options, previous);
+  DirectSolution out = refine_mesh(problem, std::move(nlp), std::move(z), options, previous);
+  out.pointing_widening = delta;
+  return out;
+}
+
+/// The margin (rad) below which a pointing constraint counts as active on a direct solution, beyond the
+/// widening of its cones: an interior-point solution keeps an inactive constraint's margin orders of
+/// magnitude above its tolerance (1e-10 on the KKT conditions), while an active one sits at the widened edge
+/// to that tolerance.
+constexpr double kPointingActiveMargin = 1e-6;
+
+}  // namespace
+
+std::string active_pointing_constraint(const ReorientationProblem& p, const DirectSolution& d) {
+  for (const PointingConstraint& c : p.pointing) {
+    double smallest = std::numeric_limits<double>::infinity(), when = 0.0;
+    for (std::size_t i = 0; i < d.time.size(); ++i)
+      if (const double m = c.margin(d.attitude[i]); m < smallest) {
+        smallest = m;
+        when = d.time[i];
+      }
+    if (smallest - d.pointing_widening < kPointingActiveMargin)
+      return fmt::format("the {} cone is active (the boresight reaches {} rad from its edge at t = {} s)",
+                         c.label(), format_number(smallest, 3), format_number(when, 6));
+  }
+  return {};
 }
 
 }  // namespace poinsot::optimal

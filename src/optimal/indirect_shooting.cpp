@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "multiple_shooting.hpp"
 #include "pmp_system.hpp"
@@ -171,6 +174,14 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
                        "; expected an integer in 1 … 1000 (1: single shooting)");
   IndirectSolution out;
   out.bang_bang = p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis;
+
+  // An active pointing constraint: its arcs (or touch points) are not handled by the shooting; a cone the
+  // direct solution stays clear of leaves the unconstrained extremal, whose margins the verification checks.
+  if (const std::string active = active_pointing_constraint(p, d); !active.empty()) {
+    out.status = "not applied: " + active +
+                 "; attitude path constraints on their active arcs are not handled by the shooting method";
+    return out;
+  }
 
   // An active rate bound: boundary arcs (rate_bound_shooting.hpp), for minimum time with per-axis bounds.
   if (double rate_peak = 0.0; detail::rate_bound_active(p, d, rate_peak)) {

@@ -3,6 +3,10 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <string>
+
+#include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
@@ -81,6 +85,40 @@ double minimum_duration_bound(const ReorientationProblem& p) {
   return hi;
 }
 
+std::string pointing_field(const ReorientationProblem& p, std::size_t index) {
+  std::size_t same_kind = 0;
+  for (std::size_t i = 0; i <= index && i < p.pointing.size(); ++i)
+    same_kind += p.pointing[i].kind == p.pointing[index].kind ? 1 : 0;
+  return fmt::format("optimal_control.{}[{}]", pointing_kind_name(p.pointing[index].kind), same_kind);
+}
+
+namespace {
+
+/// Each constraint well formed and met, with a positive margin, at the given end attitudes.
+void validate_pointing(const ReorientationProblem& p) {
+  for (std::size_t i = 0; i < p.pointing.size(); ++i) {
+    const PointingConstraint& c = p.pointing[i];
+    const std::string field = pointing_field(p, i);
+    validate(c, field);
+    const char* where =
+        c.kind == PointingKind::keep_out ? "inside the keep-out cone" : "outside the keep-in cone";
+    for (const auto& [q, end] :
+         {std::pair{p.attitude_initial, "initial"}, std::pair{p.attitude_final, "final"}}) {
+      if (std::string_view(end) == "final" && p.free_final_attitude) continue;
+      if (!(c.margin(q) > 0.0))
+        throw InvalidInput(fmt::format(
+            "{}: the boresight {} is {} deg from the direction {} at the {} attitude, {} of half-angle {} "
+            "deg; "
+            "expected every constraint to hold at both ends",
+            field, format_vector(c.boresight_body), format_number(c.angle(q) * 180.0 / std::numbers::pi, 6),
+            format_vector(c.direction_space), end, where,
+            format_number(c.half_angle * 180.0 / std::numbers::pi, 6)));
+    }
+  }
+}
+
+}  // namespace
+
 void validate(const ReorientationProblem& p) {
   inertia::require_valid_inertia(p.inertia_body, "optimal_control.inertia");
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(p.inertia_body);
@@ -130,6 +168,7 @@ void validate(const ReorientationProblem& p) {
           " s is too short: within these torque and rate bounds any manoeuvre needs at least " +
           format_number(t_min, 6) + " s");
   }
+  validate_pointing(p);
 }
 
 }  // namespace poinsot::optimal

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "control_replay.hpp"
 #include "pmp_system.hpp"
 #include "poinsot/analysis/multipliers.hpp"
@@ -142,6 +144,16 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
       r.rate_bound_excess =
           std::max(r.rate_bound_excess, s.omega_body[j].cwiseAbs().maxCoeff() / p.rate_max - 1.0);
   }
+  r.pointing.reset(p.pointing);
+  for (std::size_t j = 0; j < s.time.size() && !p.pointing.empty(); ++j) {
+    const Quat q(s.attitude[j]);
+    if (j == 0 || !(s.time[j] > s.time[j - 1])) {
+      r.pointing.lower(p.pointing, s.time[j], q);
+    } else {
+      r.pointing.lower_along(p.pointing, s.time[j - 1], Quat(s.attitude[j - 1]), s.omega_body[j - 1],
+                             s.time[j], q, s.omega_body[j], 64);
+    }
+  }
   double mu_max = 0.0, mu_min = 0.0;
   for (const auto& mu : s.rate_bound_multiplier) {
     mu_max = std::max(mu_max, mu.cwiseAbs().maxCoeff());
@@ -195,6 +207,10 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
   if (!(r.rate_multiplier_min >= -tol.admissibility))
     fail("a rate-bound multiplier is negative: " + format_number(r.rate_multiplier_min, 3) +
          " of the largest");
+  for (std::size_t c = 0; c < p.pointing.size(); ++c)
+    if (!(r.pointing.margin[c] > 0.0))
+      fail(fmt::format("the {} cone is entered: margin {} rad at t = {} s", p.pointing[c].label(),
+                       format_number(r.pointing.margin[c], 3), format_number(r.pointing.time[c], 6)));
   if (r.direct_indirect_difference > tol.direct_indirect)
     fail("direct and indirect costs differ by " + format_number(r.direct_indirect_difference, 3) +
          " (relative)");

@@ -131,6 +131,24 @@ TEST(CollocationPhases, JacobianAndHessianMatchCentralDifferences) {
   }
 }
 
+// Keep-out and keep-in rows (qᵀAq, exact gradient 2Aq and Hessian 2A) on one phase and on three.
+TEST(CollocationPointing, JacobianAndHessianMatchCentralDifferences) {
+  ReorientationProblem p = general_problem(TorqueBound::norm, Objective::minimum_time, false);
+  const int base_rows = CollocationNlp(p, {0.0, 0.3, 0.55, 1.0}).num_constraints();
+  p.pointing.push_back({"sun", PointingKind::keep_out, Vec3(1, 0, 0), Vec3(0.6, 0.8, 0.0), 0.5});
+  p.pointing.push_back({"earth", PointingKind::keep_in, Vec3(0, 0.6, -0.8), Vec3(0, 0, -1), 1.2});
+  const CollocationNlp one(p, {0.0, 0.3, 0.55, 1.0});
+  EXPECT_EQ(one.num_constraints(), base_rows + 2 * (one.points() - 1));
+  expect_derivatives_match_central_differences(one);
+  CollocationPhases phases;
+  phases.intervals = {2, 1};
+  phases.torque_lower = {Vec3::Constant(-1), Vec3::Constant(-1)};
+  phases.torque_upper = {Vec3::Constant(1), Vec3::Constant(1)};
+  const CollocationNlp two(p, {0.0, 0.4, 1.0, 0.0, 1.0}, phases);
+  EXPECT_EQ(two.pointing_row(two.interval_first_point(2), 0), -1);  // the second phase's first point
+  expect_derivatives_match_central_differences(two);
+}
+
 TEST(CollocationPhases, RefusesInconsistentPhases) {
   CollocationPhases phases;
   phases.intervals = {2, 1};

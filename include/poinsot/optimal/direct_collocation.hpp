@@ -69,6 +69,16 @@ struct DirectSolution {
                                             ///< in the normalisation H = 1 + λᵀf)
   std::vector<Vec3> costate_omega;          ///< p_ω
   std::vector<double> mesh_error;           ///< ε_k on the final mesh
+  /// Pointing constraints (problem.pointing): the NLP multiplier of constraint c's row at every sample,
+  /// [c][sample], signed so that it is ≥ 0 where the constraint is active (Ipopt's multiplier of the keep-out
+  /// row sᵀRb ≤ cos θ, minus that of the keep-in row) and 0 off the active set; 0 at the first sample of
+  /// each phase, where no row is imposed. Units: those of the cost per unit of cosine (it is the change of
+  /// the cost when the row's bound moves); a discrete measure, so it scales with the intervals' lengths.
+  std::vector<std::vector<double>> pointing_multiplier;
+  /// The widening δ (rad) of the cones imposed at the collocation points (θ + δ keep-out, θ − δ keep-in),
+  /// so that the control re-simulated between the points meets the cones themselves (solve_direct); 0 when
+  /// none was needed.
+  double pointing_widening = 0.0;
   double max_mesh_error = 0.0;
   int mesh_iterations = 0;
   int nlp_iterations = 0;  ///< Ipopt iterations, summed over the mesh iterations
@@ -95,5 +105,11 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
 /// add to the previous ones. Throws InvalidInput as solve_direct, or when `previous` has no mesh.
 DirectSolution continue_direct(const ReorientationProblem& problem, const DirectSolution& previous,
                                const CollocationOptions& options);
+
+/// Whether a pointing constraint is active on `direct` (a solution of `problem`): "the keep_out \"sun\" cone
+/// is active (...)" for the first constraint whose smallest margin over the samples, beyond the widening of
+/// the cones, is below 1e-6 rad (an interior-point solution keeps an inactive constraint's margin orders of
+/// magnitude above that, and an active one at the widened edge to its tolerance); empty when none is.
+std::string active_pointing_constraint(const ReorientationProblem& problem, const DirectSolution& direct);
 
 }  // namespace poinsot::optimal

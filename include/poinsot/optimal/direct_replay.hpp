@@ -11,9 +11,17 @@
 /// with the target R_f, ω_f (with a free final attitude, with the direct solution's own R(T)): a collocation
 /// solution reaches it to about its mesh error times the motion's amplification, so the replay measures
 /// what the mesh error estimates, independently of the transcription.
+///
+/// With pointing constraints (problem.pointing) the replay is also the dense check of the cones between the
+/// collocation points: its steps are at most a sixteenth of an interval, and every constraint's margin
+/// (pointing_constraint.hpp) is evaluated at t = 0 and at 8 points of every step (the end of the step and the
+/// cubic Hermite interpolant of the quaternion between its ends: PointingMargins::lower_along); `pointing`
+/// holds the smallest margin of each and when it is reached. The cones of the problem given are checked (not
+/// the widened ones a DirectSolution was solved with).
 #include <string>
 
 #include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/pointing_constraint.hpp"
 #include "poinsot/optimal/problem.hpp"
 
 namespace poinsot::optimal {
@@ -22,6 +30,7 @@ struct DirectReplay {
   double attitude_error = 0.0;  ///< rad: angle between the replayed R(T) and the target
   double rate_error = 0.0;      ///< rad/s: ‖ω(T) − ω_f‖
   double final_time = 0.0;      ///< s, the T replayed
+  PointingMargins pointing;     ///< the smallest margin of every pointing constraint along the replay
   /// max(attitude_error, T · rate_error) (rad, the scaled coordinates (δθ, T δω) of verification.hpp); NaN
   /// when DOP853 gave up.
   double scaled_error() const;
@@ -30,6 +39,10 @@ struct DirectReplay {
 /// The default target of the replay (rad, on scaled_error): the threshold of the verification's smooth
 /// replay (VerificationTolerances::resimulated_attitude_smooth).
 inline constexpr double direct_replay_tolerance = 1e-6;
+
+/// The largest violation of a pointing constraint accepted on the dense replay (rad): the cones hold to this
+/// between the collocation points (solve_direct widens them at the points until they do).
+inline constexpr double pointing_replay_tolerance = 1e-9;
 
 /// Replays `direct`'s control (see above). Throws InvalidInput when `direct` has no samples or its samples
 /// are not node, midpoint, node, ... in increasing time (a solve_direct or phased result).

@@ -8,6 +8,8 @@
 /// (kg·m²) and u the control torque in the body frame (N·m). Controls: per-axis bounds `|u_i| ≤ u_max,i` or a
 /// norm bound `‖u‖ ≤ u_max`; optional rate bounds
 /// `|ω_i| ≤ ω_max` (a state constraint). Boundary conditions: R(0) = R_0, ω(0) = ω_0, R(T) = R_f, ω(T) = ω_f.
+/// Attitude path constraints (pointing_constraint.hpp): body-fixed boresights kept out of, or within, cones
+/// about space-fixed directions at every instant.
 /// Objectives:
 ///   minimum_time                 J = T, T free;
 ///   minimum_energy               J = ∫₀ᵀ ‖u‖² dt (N²·m²·s) at the fixed final time T;
@@ -18,7 +20,10 @@
 #include <string>
 #include <string_view>
 
+#include <vector>
+
 #include "poinsot/core/types.hpp"
+#include "poinsot/optimal/pointing_constraint.hpp"
 
 namespace poinsot::optimal {
 
@@ -41,6 +46,8 @@ struct ReorientationProblem {
   Vec3 omega_final = Vec3::Zero();                            ///< ω_f, body frame (rad/s)
   /// Detumbling: R(T) is free (attitude_final is ignored); the transversality condition is p_θ(T) = 0.
   bool free_final_attitude = false;
+  /// Keep-out and keep-in cones, in the order of the files (each kind's entries numbered from 1 in messages).
+  std::vector<PointingConstraint> pointing;
 
   Objective objective = Objective::minimum_time;
   double final_time = 0.0;     ///< T (s) for minimum_energy; ignored by the free-time objectives
@@ -63,7 +70,13 @@ double minimum_duration_bound(const ReorientationProblem& problem);
 /// singular inertia; non-finite or non-positive torque bounds; a rate bound ≤ 0 or below |ω_0,i| or |ω_f,i|;
 /// non-unit or non-finite attitudes (tolerance 1e-9 on ‖q‖); a minimum-energy final time that is not
 /// finite and positive or is below minimum_duration_bound; an energy weight that is negative, non-finite, or
-/// given for another objective.
+/// given for another objective; a pointing constraint that is malformed (validate(PointingConstraint)) or
+/// that the initial attitude, or the final one when it is given, does not meet with a positive margin (the
+/// boresight starts or ends inside a keep-out cone, or outside a keep-in cone).
+///
+/// The field of a pointing constraint is "optimal_control.keep_out[i]" or "optimal_control.keep_in[i]", i
+/// counting the constraints of that kind from 1.
+std::string pointing_field(const ReorientationProblem& problem, std::size_t index);
 void validate(const ReorientationProblem& problem);
 
 }  // namespace poinsot::optimal

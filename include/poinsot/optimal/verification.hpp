@@ -77,6 +77,11 @@ struct VerificationReport {
   /// Active rate bounds: the smallest multiplier μ_k of the boundary arcs relative to the largest |μ| (must
   /// not be negative: μ ≥ 0 is the minimum principle's sign condition of the state constraint); 0 when none.
   double rate_multiplier_min = 0.0;
+  /// Pointing constraints (the shooting runs only where the direct solution stays clear of every cone): the
+  /// smallest margin of each along the indirect solution (rad: its samples, and 64 points between each two on
+  /// the cubic Hermite of the quaternion, PointingMargins::lower_along), which must be positive: an extremal
+  /// of the problem without the cones that meets them is an extremal of the problem with them.
+  PointingMargins pointing;
 };
 
 VerificationReport verify(const ReorientationProblem& problem, const DirectSolution& direct,
