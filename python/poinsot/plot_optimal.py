@@ -9,6 +9,8 @@ Reads ``trajectory.csv``, ``costates.csv`` and ``summary.json`` and writes into 
 - ``omega.png``: the body rates ω_i (rad/s) against the rate bound, if any;
 - ``attitude_error.png``: the angle (rad) from the attitude to the target R_f, log scale (with a free final
   attitude: to the final attitude reached);
+- ``pointing.png`` (with keep-out or keep-in cones): each boresight's angle (deg) to its cone's axis over
+  time, its half-angle dashed (a keep-out curve stays above its line, a keep-in curve below);
 - ``hamiltonian.png``: H − mean(H) along the indirect solution, log scale of its magnitude (0 for a free final
   time; only when the indirect solution ran).
 
@@ -133,6 +135,20 @@ def plot_optimal_run(folder):
     ax.set(xlabel="t (s)", ylabel="angle to the " + ("final attitude" if free else "target") + " (rad)",
            title=_title(summary, "attitude error"))
     save(fig, "attitude_error.png")
+
+    cones = summary.get("pointing", [])
+    if cones:
+        fig, ax = plt.subplots(figsize=(8, 4.5))
+        for i, cone in enumerate(cones):
+            c = f"C{i % 10}"
+            label = cone["kind"].replace("_", "-") + (f" {cone['name']}" if cone["name"] else f" {i + 1}")
+            ax.plot(t, np.degrees(traj[cone["column"]]), color=c, lw=1.2, label=label)
+            ax.axhline(np.degrees(cone["half_angle"]), color=c, lw=0.8, ls="--")
+        _switches(ax, summary)
+        ax.set(xlabel="t (s)", ylabel="boresight angle to the cone's axis (deg)",
+               title=_title(summary, "pointing constraints (dashed: the limits)"))
+        ax.legend(loc="best", fontsize=8)
+        save(fig, "pointing.png")
 
     H = co.get("H")
     if H is not None and np.all(np.isfinite(H)):

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -107,6 +108,10 @@ void run_phased(OptimalRun& r) {
   }
   if (!r.direct.nlp_solved) {
     r.phased_status = "not applicable: Ipopt did not solve the direct method's last mesh";
+    return;
+  }
+  if (const std::string active = optimal::active_pointing_constraint(p, r.direct); !active.empty()) {
+    r.phased_status = "not applicable: " + active + " (the re-solve takes bang arcs only)";
     return;
   }
   try {
@@ -249,16 +254,72 @@ OptimalRun run_optimal(const OptimalScenario& sc,
           ? reason_of(r.indirect.status.empty() ? "indirect method not run" : r.indirect.status)
           : r.verification.failures.front();
   replay_direct_optimum(r, progress);
-  if (r.direct_replayed && r.direct_replay.scaled_error() <= r.direct_replay_tolerance) {
+  if (r.direct_replayed && r.direct_replay.scaled_error() <= r.direct_replay_tolerance &&
+      r.direct_replay.pointing.worst() >= -optimal::pointing_replay_tolerance) {
     r.outcome = OptimalOutcome::converged_direct;
     r.status = fmt::format("converged (direct; minimum principle not verified: {})", reason);
   } else {
     r.outcome = OptimalOutcome::not_converged;
     r.status = fmt::format("not converged: {}", r.verification.failures.front());
+    if (r.direct_replayed && r.direct_replay.pointing.worst() < -optimal::pointing_replay_tolerance)
+      r.status = fmt::format("not converged: the direct control's re-simulation enters a cone by {} rad",
+                             format_number(-r.direct_replay.pointing.worst(), 3));
   }
   explain_failure(r);
   return r;
 }
+
+namespace {
+
+/// "TITLE: keep_out "sun" smallest margin m rad at t = … s; …\n" (PointingMargins of the problem's cones).
+std::string pointing_lines(std::string_view title, const optimal::ReorientationProblem& p,
+                           const optimal::PointingMargins& m) {
+  std::string out(title);
+  for (std::size_t c = 0; c < p.pointing.size() && c < m.margin.size(); ++c)
+    out += fmt::format("{} {} smallest margin {} rad at t = {} s", c == 0 ? ":" : ";", p.pointing[c].label(),
+                       format_number(m.margin[c], 3), format_number(m.time[c], 6));
+  return out + "\n";
+}
+
+/// The column of constraint c in trajectory.csv: angle_keep_out_1, angle_keep_in_2, ... (rad).
+std::string pointing_column(const optimal::ReorientationProblem& p, std::size_t c) {
+  const std::string field = optimal::pointing_field(p, c);  // optimal_control.keep_out[1]
+  const auto open = field.find('['), dot = field.find('.');
+  return fmt::format("angle_{}_{}", field.substr(dot + 1, open - dot - 1),
+                     field.substr(open + 1, field.size() - open - 2));
+}
+
+nlohmann::ordered_json pointing_json(const OptimalRun& r) {
+  const auto& p = r.scenario.problem;
+  const auto& d = direct_optimum(r);
+  auto out = nlohmann::ordered_json::array();
+  for (std::size_t c = 0; c < p.pointing.size(); ++c) {
+    const auto& pc = p.pointing[c];
+    double multiplier = 0.0;
+    if (c < d.pointing_multiplier.size())
+      for (const double y : d.pointing_multiplier[c])
+        multiplier = std::max(multiplier, y);
+    const auto margin_or_null = [](const optimal::PointingMargins& m, std::size_t i) {
+      return i < m.margin.size() && std::isfinite(m.margin[i])
+                 ? nlohmann::ordered_json({{"margin", m.margin[i]}, {"t", m.time[i]}})
+                 : nlohmann::ordered_json();
+    };
+    out.push_back({{"name", pc.name},
+                   {"kind", std::string(optimal::pointing_kind_name(pc.kind))},
+                   {"column", pointing_column(p, c)},
+                   {"boresight_body", ordered_array(pc.boresight_body)},
+                   {"direction_space", ordered_array(pc.direction_space)},
+                   {"half_angle", pc.half_angle},
+                   {"widening", d.pointing_widening},
+                   {"largest_multiplier", multiplier},
+                   {"direct_replay", r.direct_replayed ? margin_or_null(r.direct_replay.pointing, c)
+                                                       : nlohmann::ordered_json()},
+                   {"indirect", margin_or_null(r.verification.pointing, c)}});
+  }
+  return out;
+}
+
+}  // namespace
 
 std::string optimal_report(const OptimalRun& r) {
   const auto& p = r.scenario.problem;
@@ -274,6 +335,11 @@ std::string optimal_report(const OptimalRun& r) {
                                                   : "norm " + format_number(p.torque_max[0]))
     << " N·m";
   if (p.has_rate_bound()) o << "; rate bound " << format_number(p.rate_max) << " rad/s";
+  for (const auto& c : p.pointing)
+    o << fmt::format(
+        "\n{}: boresight {} (body) {} {} deg of {} (space)", c.label(), format_vector(c.boresight_body),
+        c.kind == optimal::PointingKind::keep_out ? "at least" : "within",
+        format_number(c.half_angle * 180.0 / std::numbers::pi, 8), format_vector(c.direction_space));
   o << "\nstatus: " << r.status << "\n";
   if (r.outcome == OptimalOutcome::not_converged) {
     o << "failed: " << r.failed_phase << "\n";
@@ -291,6 +357,12 @@ std::string optimal_report(const OptimalRun& r) {
             : std::string(),
         format_number(r.direct_replay.attitude_error, 3), format_number(r.direct_replay.rate_error, 3),
         format_number(r.direct_replay.scaled_error(), 3), format_number(r.direct_replay_tolerance));
+  if (r.direct_replayed && !p.pointing.empty())
+    o << pointing_lines("cones on the direct re-simulation (DOP853, steps ≤ 1/16 interval)", p,
+                        r.direct_replay.pointing);
+  if (direct_optimum(r).pointing_widening > 0.0)
+    o << fmt::format("  cones widened by {} rad at the collocation points so that they hold between them\n",
+                     format_number(direct_optimum(r).pointing_widening, 3));
   if (r.outcome != OptimalOutcome::optimal)
     o << "the files hold: "
       << (solution_source(r) == std::string_view("indirect") ? "the indirect solution"
@@ -356,7 +428,10 @@ std::string optimal_report(const OptimalRun& r) {
                             v.split_replay_worst_segment, format_number(v.split_replay_rate_error, 3))
               : std::string())
       << fmt::format("  direct vs indirect cost: {} (relative)\n",
-                     format_number(v.direct_indirect_difference, 3));
+                     format_number(v.direct_indirect_difference, 3))
+      << (p.pointing.empty()
+              ? std::string()
+              : pointing_lines("  cones along the indirect solution (none active)", p, v.pointing));
     for (const auto& f : v.failures)
       o << "  FAILED: " << f << "\n";
   }
@@ -407,6 +482,7 @@ std::string optimal_summary_json(const OptimalRun& r) {
   const auto finite_or_null = [](double x) {
     return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json();
   };
+  j["pointing"] = pointing_json(r);
   j["direct_replay"] = {{"run", r.direct_replayed},
                         {"attitude_error", finite_or_null(r.direct_replay.attitude_error)},
                         {"rate_error", finite_or_null(r.direct_replay.rate_error)},
@@ -477,7 +553,18 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
   const std::string head = fmt::format("# status: {}\n", r.status);
   const Mat3& J = r.scenario.problem.inertia_body;
   std::string traj = head, control = head, costates = head;
-  traj.append("t,qw,qx,qy,qz,wx,wy,wz,ux,uy,uz,Lx,Ly,Lz\n");
+  const auto& cones = r.scenario.problem.pointing;
+  traj.append("t,qw,qx,qy,qz,wx,wy,wz,ux,uy,uz,Lx,Ly,Lz");
+  for (std::size_t c = 0; c < cones.size(); ++c)
+    traj.append(",").append(pointing_column(r.scenario.problem, c));
+  traj += "\n";
+  // The row's end: each boresight's angle to its cone's axis (rad).
+  const auto angles = [&](const Mat3& R) {
+    std::string out;
+    for (const auto& c : cones)
+      out.append(",").append(format_number(c.angle(R)));
+    return out;
+  };
   control.append("t,ux,uy,uz\n");
   costates.append(
       "t,p_theta_x,p_theta_y,p_theta_z,p_omega_x,p_omega_y,p_omega_z,sigma_x,sigma_y,sigma_z,H\n");
@@ -487,6 +574,7 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
       const Quat q(s.attitude[k]);
       traj += trajectory_row(s.time[k], q, s.omega_body[k], s.torque_body[k],
                              s.attitude[k] * (J * s.omega_body[k]));
+      traj.insert(traj.size() - 1, angles(s.attitude[k]));
       costates +=
           csv_row(s.time[k], {s.costate_attitude_body[k], s.costate_omega[k], s.switching_function[k]},
                   {s.hamiltonian[k]});
@@ -504,6 +592,7 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
       const Quat& q = d.attitude[k];
       traj += trajectory_row(d.time[k], q, d.omega_body[k], d.torque_body[k],
                              q.toRotationMatrix() * (J * d.omega_body[k]));
+      traj.insert(traj.size() - 1, angles(q.toRotationMatrix()));
       control += csv_row(d.time[k], {d.torque_body[k]});
     }
     const Mat3 J_inv = J.inverse();

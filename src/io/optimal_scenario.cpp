@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <numbers>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -10,6 +12,7 @@
 #include "poinsot/so3/quaternion.hpp"
 #include "scenario_body.hpp"
 #include "scenario_orientation.hpp"
+#include "scenario_table.hpp"
 #include "toml_fields.hpp"
 
 namespace poinsot::io {
@@ -37,6 +40,38 @@ Endpoint read_endpoint(const Source& src, const Section& oc, const char* key) {
           s.vec3("omega_body").value_or(Vec3::Zero()), free};
 }
 
+/// A non-zero vector, normalised.
+Vec3 direction(const Section& s, std::string_view key, std::string_view frame) {
+  s.require(key, fmt::format("[x, y, z] in the {} frame (any non-zero length)", frame));
+  const Vec3 v = *s.vec3(key);
+  if (!(v.norm() > 0.0)) s.fail(key, fmt::format("got {}, expected a non-zero vector", format_vector(v)));
+  return v.normalized();
+}
+
+/// Every [[optimal_control.keep_out]] or [[optimal_control.keep_in]] table: name (optional), boresight_body,
+/// direction_space, and half_angle (rad) or half_angle_deg.
+void read_pointing(const Source& src, const Section& oc, optimal::PointingKind kind,
+                   std::vector<optimal::PointingConstraint>& out) {
+  const std::string key(optimal::pointing_kind_name(kind));
+  const toml::array* a = detail::table_array(oc, key);
+  if (a == nullptr) return;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const Section c(src, (*a)[i].as_table(), fmt::format("optimal_control.{}[{}]", key, i + 1),
+                    {"name", "boresight_body", "direction_space", "half_angle", "half_angle_deg"}, &(*a)[i]);
+    optimal::PointingConstraint pc;
+    pc.kind = kind;
+    pc.name = c.string("name").value_or("");
+    pc.boresight_body = direction(c, "boresight_body", "body");
+    pc.direction_space = direction(c, "direction_space", "space");
+    const std::string_view how = c.exactly_one({"half_angle", "half_angle_deg"}, "the cone's half-angle");
+    pc.half_angle = *c.number(how) * (how == "half_angle" ? 1.0 : std::numbers::pi / 180.0);
+    if (!(pc.half_angle > 0.0 && pc.half_angle < std::numbers::pi))
+      c.fail(how, fmt::format("got {}, expected 0 < {} < {}", format_number(*c.number(how)), how,
+                              how == "half_angle" ? "π" : "180"));
+    out.push_back(std::move(pc));
+  }
+}
+
 }  // namespace
 
 OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view source,
@@ -59,7 +94,7 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   const Section oc(src, root["optimal_control"].as_table(), "optimal_control",
                    {"objective", "torque_bound", "torque_max", "rate_max", "final_time", "energy_weight",
                     "mesh_tolerance", "initial_intervals", "max_mesh_iterations", "shooting_nodes", "phased",
-                    "phased_intervals_per_arc", "initial", "final"},
+                    "phased_intervals_per_arc", "initial", "final", "keep_out", "keep_in"},
                    root.get("optimal_control"));
   if (!oc.present()) top.fail("optimal_control", "missing; expected an [optimal_control] section");
   auto& p = sc.problem;
@@ -98,6 +133,8 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   p.attitude_final = f.attitude;
   p.omega_final = f.omega;
   p.free_final_attitude = f.free_attitude;
+  read_pointing(src, oc, optimal::PointingKind::keep_out, p.pointing);
+  read_pointing(src, oc, optimal::PointingKind::keep_in, p.pointing);
   detail::located(src, root.get("optimal_control"), [&] { optimal::validate(p); });
 
   const Section out(src, root["output"].as_table(), "output", {"dir"});

@@ -124,6 +124,16 @@ ViewJson optimal_view_data(const std::string& dir, const ViewJson& summary, cons
   const Quat& target = pb.attitude_final;
   o["target"] =
       pb.free_final_attitude ? ViewJson(nullptr) : ViewJson({target.w(), target.x(), target.y(), target.z()});
+  // Pointing constraints: the cones on the sky (space frame) and the boresights (body frame); the page draws
+  // each boresight's path R(t) b from the frames' attitudes.
+  ViewJson cones = ViewJson::array();
+  for (const auto& c : pb.pointing)
+    cones.push_back({{"name", c.name},
+                     {"kind", std::string(optimal::pointing_kind_name(c.kind))},
+                     {"boresight_body", vec(c.boresight_body)},
+                     {"direction_space", vec(c.direction_space)},
+                     {"half_angle", c.half_angle}});
+  o["cones"] = cones;
   j["optimal"] = o;
   return j;
 }

@@ -9,6 +9,7 @@ the chart (its sign changes between the costate samples around it), and between 
 has the sign of -sigma_i. The Bilimoria & Wie slew takes 0.3 s to solve."""
 import csv
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -95,3 +96,45 @@ def test_chart_of_control_and_switching_functions(example, slew, load):
         u = np.interp(t, ctrl[:, 0], ctrl[:, 1 + axis])
         away = np.abs(sig) > 1e-6 * np.abs(sig).max()
         assert np.all(np.abs(u[away] + umax * np.sign(sig[away])) <= 1e-9), axis
+
+
+@pytest.fixture(scope="module")
+def sun_run(cli, tmp_path_factory):
+    """examples/optimal/sun_avoidance_slew.toml (a keep-out cone, exit 3: converged direct; 2 s) and its page."""
+    out = tmp_path_factory.mktemp("optimal") / "sun"
+    example = Path(__file__).resolve().parents[2] / "examples" / "optimal" / "sun_avoidance_slew.toml"
+    r = cli("optimize", example, "--out", out, "--quiet")
+    assert r.returncode == 3, r.stdout + r.stderr
+    assert cli("view", out).returncode == 0
+    return out
+
+
+def test_cones_boresights_and_their_chart_as_drawn(sun_run, load):
+    """The boresight arrow at each frame is R(q) b of trajectory.csv's row, its angle to the Sun is the row's
+    angle_keep_out_1 column, never inside the cone; the chart's pointing view is that column in degrees
+    beside the half-angle."""
+    page = load(sun_run / "view.html")
+    summary = json.loads((sun_run / "summary.json").read_text())
+    [sun] = summary["pointing"]
+    names, traj = rows(sun_run / "trajectory.csv")
+    col = {c: k for k, c in enumerate(names)}
+    n = page.js("return window.poinsotView.track.n")
+    idx = sorted(set(np.linspace(0, n - 1, 30).astype(int).tolist()))
+    drawn = page.js("""var v = window.poinsotView, out = [];
+        arguments[0].forEach(function (i) { v.moveTo(v.data.t[i]); out.push(v.optimal().boresights[0]); });
+        return out;""", idx)
+    for i, d in zip(idx, drawn):
+        R = rotation(traj[i, [col[c] for c in ("qw", "qx", "qy", "qz")]])
+        assert np.linalg.norm(np.array(d["direction"]) - R @ sun["boresight_body"]) <= 1e-6
+        assert d["angle"] == pytest.approx(traj[i, col["angle_keep_out_1"]], abs=1e-6)
+        assert d["angle"] >= sun["half_angle"] - 1e-6
+    page.js("var s = document.getElementById('chart-view'); s.value = 'pointing'; "
+            "s.dispatchEvent(new Event('change'));")
+    chart = page.js("var c = window.poinsotView.chart(); return {key: c.key, series: c.series.map("
+                    "function (s) { return {label: s.label, values: s.values}; })};")
+    assert chart["key"] == "pointing"
+    angle, limit = chart["series"]
+    assert angle["label"] == "keep-out sun" and limit["label"] == "keep-out sun limit"
+    assert np.allclose(angle["values"], np.degrees(traj[:, col["angle_keep_out_1"]]), atol=1e-9)
+    assert np.allclose(limit["values"], 50.0, atol=1e-12)
+    assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]

@@ -2,7 +2,10 @@
 // from the centre of mass (drawn in space, R u); its bounds in the body frame (|u_i| ≤ u_max,i: a box, or
 // ‖u‖ ≤ ū: three great circles of the sphere), at the arrow's scale; the target attitude as a ghost of the
 // body. The data are data.optimal (view_optimal.hpp): u per frame, control.csv's and costates.csv's rows,
-// the switches and the target quaternion (null for a free final attitude).
+// the switches and the target quaternion (null for a free final attitude). Pointing constraints (o.cones):
+// each cone's edge on a sky sphere about the centre of mass (a circle at its half-angle about its axis, the
+// axis drawn faint), each boresight's path R(t) b over the whole manoeuvre on the same sphere, and the
+// boresight now as an arrow; keep-out in amber, keep-in in cyan.
 PV.OptimalScene = (function () {
   'use strict';
   var M = PV.math, D = PV.draw;
@@ -55,12 +58,46 @@ PV.OptimalScene = (function () {
       this.ghostPose.add(this.ghost);
       ctx.scene.add(this.ghostPose);
     }
+    this.sky = 2.2 * body.length;
+    this.cones = new THREE.Group();
+    this.boresights = [];
+    var sky = this.sky, frames = data.q.length / 4, scene = this;
+    (o.cones || []).forEach(function (c) {
+      var colour = c.kind === 'keep_out' ? 0xffbf00 : 0x17becf, a = c.direction_space;
+      var e1 = M.cross(a, Math.abs(a[0]) < 0.9 ? [1, 0, 0] : [0, 1, 0]);
+      e1 = M.scale(e1, 1 / M.norm(e1));
+      var e2 = M.cross(a, e1), edge = [];
+      for (var i = 0; i < 96; i++) {
+        var phi = 2 * Math.PI * i / 96;
+        var r = M.add(M.scale(a, Math.cos(c.half_angle)),
+                      M.scale(M.add(M.scale(e1, Math.cos(phi)), M.scale(e2, Math.sin(phi))), Math.sin(c.half_angle)));
+        edge.push(M.scale(r, sky));
+      }
+      scene.cones.add(D.loop(edge, colour));
+      scene.cones.add(D.tracedLine([0, 0, 0].concat(M.scale(a, sky)), colour, 0.4));
+      var path = [];
+      for (var f = 0; f < frames; f++) {
+        var qf = [data.q[4 * f], data.q[4 * f + 1], data.q[4 * f + 2], data.q[4 * f + 3]];
+        path = path.concat(M.scale(M.rotate(qf, c.boresight_body), sky));
+      }
+      scene.cones.add(D.tracedLine(path, colour, 0.8));
+      var arrow = D.arrow(colour);
+      ctx.scene.add(arrow);
+      scene.boresights.push({ arrow: arrow, cone: c });
+    });
+    ctx.scene.add(this.cones);
+
     this.overlays = [
       { key: 'torque', label: 'control torque u', objects: [this.arrow], on: true },
       { key: 'bounds', label: 'torque bounds', objects: [this.bounds], on: true }
     ];
     if (this.ghostPose) {
       this.overlays.push({ key: 'target', label: 'target attitude', objects: [this.ghostPose], on: true });
+    }
+    if (this.boresights.length) {
+      this.overlays.push({ key: 'cones', label: 'pointing cones and boresight paths',
+                           objects: [this.cones].concat(this.boresights.map(function (b) { return b.arrow; })),
+                           on: true });
     }
     var bound = o.bound === 'norm' ? '\u2016u\u2016 \u2264 ' + m[0] + ' N\u00b7m'
                                    : '|u\u1d62| \u2264 (' + m.join(', ') + ') N\u00b7m';
@@ -69,6 +106,10 @@ PV.OptimalScene = (function () {
       ['#7f7f7f', o.target ? 'target attitude' : 'free final attitude (detumbling)'],
       ['#ffffff', o.objective + ': ' + o.status]
     ];
+    if (this.boresights.length) {
+      this.legend.push(['#ffbf00', 'keep-out cones (edge, axis) and boresight paths'],
+                       ['#17becf', 'keep-in cones (edge, axis) and boresight paths']);
+    }
   }
 
   OptimalScene.prototype.update = function (time) {
@@ -76,6 +117,8 @@ PV.OptimalScene = (function () {
     this.u = u;
     this.arrow.set([0, 0, 0], M.scale(M.rotate(this.body.q, u), this.scale));
     if (this.ghost) this.ghost.userData.show(this.body.shapeShown());
+    var q = this.body.q, sky = this.sky;
+    this.boresights.forEach(function (b) { b.arrow.set([0, 0, 0], M.scale(M.rotate(q, b.cone.boresight_body), sky)); });
   };
 
   // What is drawn (for tests): the torque (N·m, space frame, from the arrow), the bounds' half-extents
@@ -87,12 +130,19 @@ PV.OptimalScene = (function () {
       torque: [d.x * a.userData.length / s, d.y * a.userData.length / s, d.z * a.userData.length / s],
       bounds: this.bounds.userData.halfExtents.map(function (h) { return h / s; }),
       boundsFollowBody: this.bounds.parent === this.body.group,
-      target: g ? [g.w, g.x, g.y, g.z] : null
+      target: g ? [g.w, g.x, g.y, g.z] : null,
+      // Each boresight now (space frame, unit, from its arrow) and its angle to its cone's axis (rad).
+      boresights: this.boresights.map(function (b) {
+        var v = new THREE.Vector3(0, 1, 0).applyQuaternion(b.arrow.quaternion), a = b.cone.direction_space;
+        return { direction: [v.x, v.y, v.z],
+                 angle: Math.acos(Math.max(-1, Math.min(1, v.x * a[0] + v.y * a[1] + v.z * a[2]))) };
+      })
     };
   };
 
   // The chart's views: the control (control.csv, exact between its rows, switches marked), the switching
-  // functions (costates.csv) and ω.
+  // functions (costates.csv), ω and, with pointing constraints, each boresight's angle to its cone's axis
+  // beside the limit.
   OptimalScene.prototype.chartViews = function (omegaSeries) {
     var o = this.optimal, c = ['#d62728', '#2ca02c', '#1f77b4'];
     function series(t, flat, name) {
@@ -103,13 +153,31 @@ PV.OptimalScene = (function () {
       });
     }
     var marks = o.switches.map(function (s) { return s.t; });
-    return [
+    var data = this.ctx.data, frames = data.q.length / 4, pointing = [];
+    (o.cones || []).forEach(function (cone, i) {
+      var colour = ['#ff7f0e', '#9467bd', '#8c564b', '#e377c2'][i % 4], angle = [], limit = [];
+      for (var f = 0; f < frames; f++) {
+        var qf = [data.q[4 * f], data.q[4 * f + 1], data.q[4 * f + 2], data.q[4 * f + 3]];
+        var c = M.dot(M.rotate(qf, cone.boresight_body), cone.direction_space);
+        angle.push(Math.acos(Math.max(-1, Math.min(1, c))) * 180 / Math.PI);
+        limit.push(cone.half_angle * 180 / Math.PI);
+      }
+      var name = cone.kind.replace('_', '-') + ' ' + (cone.name || i + 1);
+      pointing.push({ label: name, color: colour, values: angle },
+                    { label: name + ' limit', color: '#7f7f7f', values: limit });
+    });
+    var views = [
       { key: 'control', label: 'control u', yLabel: 'u body (N\u00b7m)', marks: marks,
         series: series(o.control.t, o.control.u, 'u') },
       { key: 'sigma', label: 'switching functions \u03c3', yLabel: '\u03c3 = J\u207b\u00b9p\u03c9', marks: marks,
         series: series(o.costates.t, o.costates.sigma, '\u03c3') },
       { key: 'omega', label: '\u03c9', yLabel: '\u03c9 body (rad/s)', marks: marks, series: omegaSeries }
     ];
+    if (pointing.length) {
+      views.push({ key: 'pointing', label: 'pointing angles', yLabel: 'boresight to cone axis (deg)', marks: marks,
+                   series: pointing });
+    }
+    return views;
   };
 
   return OptimalScene;

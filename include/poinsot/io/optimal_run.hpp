@@ -4,7 +4,10 @@
 /// bang-bang solution), the indirect method from its costates, the verification and the interpretation of an
 /// OptimalScenario, and the files and texts that report them (docs/optimal_control.md):
 ///   report.txt      the human-readable report (also printed)
-///   trajectory.csv  t, q (w, x, y, z), ω body (rad/s), u body (N·m), L space (kg·m²/s)
+///   trajectory.csv  t, q (w, x, y, z), ω body (rad/s), u body (N·m), L space (kg·m²/s), and with pointing
+///                   constraints each boresight's angle to its cone's axis (rad): angle_keep_out_1, ...,
+///                   angle_keep_in_1, ... (numbered per kind in the file's order; summary.json's "pointing"
+///                   lists each constraint with its column, half-angle and margins)
 ///   control.csv     t, u body (N·m): piecewise linear in t, with two rows at each switch (left and right
 ///                   values), so that linear interpolation replays a bang-bang control exactly
 ///   costates.csv    t, p_θ, p_ω, σ = J⁻¹p_ω, H

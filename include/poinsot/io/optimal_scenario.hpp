@@ -21,6 +21,9 @@
 ///     phased_intervals_per_arc = 64  # optional (1 … 2000): its uniform intervals on every arc
 ///     [optimal_control.initial]      # orientation = { ... } as in [initial]; omega_body (rad/s)
 ///     [optimal_control.final]        # the same, or free_attitude = true (detumbling)
+///     [[optimal_control.keep_out]]   # any number (pointing_constraint.hpp): name (optional),
+///                                    # boresight_body, direction_space ([x, y, z], any non-zero length),
+///                                    # half_angle (rad) or half_angle_deg; [[optimal_control.keep_in]] alike
 ///     [output]
 ///     dir = "..."                    # optional, default SCENARIO-optimize
 ///
