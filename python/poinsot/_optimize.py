@@ -34,6 +34,9 @@ class DirectSolution:
     Costates from the defect multipliers at the interval centres ``costate_time`` (m,) s:
     ``costate_attitude_body`` p_θ (m, 3), ``costate_omega`` p_ω (m, 3). ``converged`` (every NLP solved and the
     mesh error met), ``status``, ``final_time`` s, ``cost``, ``mesh_iterations``, ``nlp_iterations``.
+    With keep-out or keep-in cones: ``pointing_multiplier`` (c, n), the NLP multiplier of each cone's row at
+    each sample (≥ 0 on the active set, 0 off it), and ``pointing_widening`` rad, how much the cones imposed
+    at the samples were widened so that the re-simulated control meets them between the samples.
     """
 
     converged: bool
@@ -52,6 +55,8 @@ class DirectSolution:
     max_mesh_error: float
     mesh_iterations: int
     nlp_iterations: int
+    pointing_multiplier: np.ndarray
+    pointing_widening: float
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,10 @@
 // come back as NumPy arrays. poinsot.optimize (python/poinsot/_optimize.py) is the public entry point.
 #include <pybind11/stl.h>
 
+#include <numbers>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "bindings.hpp"
 #include "convert.hpp"
@@ -41,12 +44,53 @@ Mat3 to_inertia(const py::handle& obj) {
   return to_mat3(obj, "inertia");
 }
 
+/// The cones of `kind` from a list of dicts {boresight_body, direction_space, half_angle (rad) or
+/// half_angle_deg, name (optional)}; vectors of any non-zero length, normalised.
+void read_cones(const py::object& list, opt::PointingKind kind, std::vector<opt::PointingConstraint>& out) {
+  if (list.is_none()) return;
+  const std::string key(opt::pointing_kind_name(kind));
+  int index = 0;
+  for (const py::handle item : list) {
+    const std::string field = "optimal_control." + key + "[" + std::to_string(++index) + "]";
+    if (!py::isinstance<py::dict>(item))
+      throw poinsot::InvalidInput(field +
+                                  ": expected a dict with boresight_body, direction_space and "
+                                  "half_angle (rad) or half_angle_deg");
+    const py::dict d = py::reinterpret_borrow<py::dict>(item);
+    for (const auto& [k, v] : d) {
+      const std::string name = py::str(k);
+      if (name != "name" && name != "boresight_body" && name != "direction_space" && name != "half_angle" &&
+          name != "half_angle_deg")
+        throw poinsot::InvalidInput(field + "." + name +
+                                    ": unknown key; expected name, boresight_body, direction_space, "
+                                    "half_angle or half_angle_deg");
+    }
+    opt::PointingConstraint c;
+    c.kind = kind;
+    if (d.contains("name")) c.name = py::str(d["name"]);
+    for (const char* v : {"boresight_body", "direction_space"}) {
+      if (!d.contains(v)) throw poinsot::InvalidInput(field + "." + v + ": missing; expected [x, y, z]");
+      const Vec3 u = to_vec3(d[v], v);
+      if (!(u.norm() > 0.0))
+        throw poinsot::InvalidInput(field + "." + v + ": got " + format_vector(u) +
+                                    ", expected a non-zero vector");
+      (std::string_view(v) == "boresight_body" ? c.boresight_body : c.direction_space) = u.normalized();
+    }
+    if (d.contains("half_angle") == d.contains("half_angle_deg"))
+      throw poinsot::InvalidInput(field + ": expected exactly one of half_angle (rad) and half_angle_deg");
+    c.half_angle = d.contains("half_angle") ? d["half_angle"].cast<double>()
+                                            : d["half_angle_deg"].cast<double>() * std::numbers::pi / 180.0;
+    out.push_back(std::move(c));
+  }
+}
+
 opt::ReorientationProblem make_problem(const ArrayLike& inertia, const ArrayLike& torque_max,
                                        const std::string& torque_bound, const py::object& rate_max,
                                        const std::string& objective, const py::object& final_time,
                                        const py::object& energy_weight, const py::object& attitude_initial,
                                        const py::object& attitude_final, const py::object& omega_initial,
-                                       const py::object& omega_final, bool free_final_attitude) {
+                                       const py::object& omega_final, bool free_final_attitude,
+                                       const py::object& keep_out, const py::object& keep_in) {
   opt::ReorientationProblem p;
   p.inertia_body = to_inertia(inertia.obj);
   if (torque_bound != "per_axis" && torque_bound != "norm")
@@ -86,6 +130,8 @@ opt::ReorientationProblem make_problem(const ArrayLike& inertia, const ArrayLike
   if (!omega_initial.is_none()) p.omega_initial = to_vec3(omega_initial, "omega_initial");
   if (!omega_final.is_none()) p.omega_final = to_vec3(omega_final, "omega_final");
   p.free_final_attitude = free_final_attitude;
+  read_cones(keep_out, opt::PointingKind::keep_out, p.pointing);
+  read_cones(keep_in, opt::PointingKind::keep_in, p.pointing);
   opt::validate(p);
   return p;
 }
@@ -128,6 +174,13 @@ py::dict direct_dict(const opt::DirectSolution& d) {
   o["costate_time"] = as_array(d.costate_time);
   o["costate_attitude_body"] = stack_vec3(d.costate_attitude_body);
   o["costate_omega"] = stack_vec3(d.costate_omega);
+  std::vector<double> multipliers;
+  for (const auto& row : d.pointing_multiplier)
+    multipliers.insert(multipliers.end(), row.begin(), row.end());
+  o["pointing_multiplier"] = array_from_buffer(
+      std::move(multipliers),
+      {static_cast<py::ssize_t>(d.pointing_multiplier.size()), static_cast<py::ssize_t>(d.time.size())});
+  o["pointing_widening"] = d.pointing_widening;
   o["mesh_error"] = as_array(d.mesh_error);
   o["max_mesh_error"] = d.max_mesh_error;
   o["mesh_iterations"] = d.mesh_iterations;
@@ -180,19 +233,24 @@ py::dict interpretation_dict(const io::OptimalRun& r) {
 
 void bind_problem(py::module_& m) {
   py::class_<opt::ReorientationProblem>(m, "ReorientationProblem", POINSOT_DOC(file_optimal_problem))
-      .def(py::init(&make_problem), py::kw_only(), py::arg("inertia"), py::arg("torque_max"),
-           py::arg("torque_bound") = "per_axis", py::arg("rate_max") = py::none(),
-           py::arg("objective") = "minimum_time", py::arg("final_time") = py::none(),
-           py::arg("energy_weight") = py::none(), py::arg("attitude_initial") = py::none(),
-           py::arg("attitude_final") = py::none(), py::arg("omega_initial") = py::none(),
-           py::arg("omega_final") = py::none(), py::arg("free_final_attitude") = false,
-           "A validated problem. inertia: principal moments (3,) or J (3, 3) about the centre of mass, body "
-           "frame (kg·m²); torque_max: (3,) per-axis bounds or one number with torque_bound=\"norm\" (N·m); "
-           "rate_max: |ω_i| bound (rad/s) or None; objective: \"minimum_time\", \"minimum_energy\" (needs "
-           "final_time, s) or \"minimum_time_regularised\" (needs energy_weight, s/(N·m)²); attitudes: "
-           "quaternions (w, x, y, z) or rotation matrices (body → space), default identity; omega_initial, "
-           "omega_final: body frame (rad/s), default 0; free_final_attitude: detumbling (no attitude_final). "
-           "Raises ValueError naming the field for invalid input (optimal::validate).")
+      .def(
+          py::init(&make_problem), py::kw_only(), py::arg("inertia"), py::arg("torque_max"),
+          py::arg("torque_bound") = "per_axis", py::arg("rate_max") = py::none(),
+          py::arg("objective") = "minimum_time", py::arg("final_time") = py::none(),
+          py::arg("energy_weight") = py::none(), py::arg("attitude_initial") = py::none(),
+          py::arg("attitude_final") = py::none(), py::arg("omega_initial") = py::none(),
+          py::arg("omega_final") = py::none(), py::arg("free_final_attitude") = false,
+          py::arg("keep_out") = py::none(), py::arg("keep_in") = py::none(),
+          "A validated problem. inertia: principal moments (3,) or J (3, 3) about the centre of mass, body "
+          "frame (kg·m²); torque_max: (3,) per-axis bounds or one number with torque_bound=\"norm\" (N·m); "
+          "rate_max: |ω_i| bound (rad/s) or None; objective: \"minimum_time\", \"minimum_energy\" (needs "
+          "final_time, s) or \"minimum_time_regularised\" (needs energy_weight, s/(N·m)²); attitudes: "
+          "quaternions (w, x, y, z) or rotation matrices (body → space), default identity; omega_initial, "
+          "omega_final: body frame (rad/s), default 0; free_final_attitude: detumbling (no attitude_final); "
+          "keep_out, keep_in: lists of cones, each a dict {boresight_body (body frame), direction_space "
+          "(space frame), half_angle (rad) or half_angle_deg, name (optional)}: the boresight stays at least "
+          "(keep_out) or at most (keep_in) the half-angle from the direction. "
+          "Raises ValueError naming the field for invalid input (optimal::validate).")
       .def_property_readonly(
           "inertia_body", [](const opt::ReorientationProblem& p) { return from_mat3(p.inertia_body); },
           POINSOT_DOC(optimal_ReorientationProblem_inertia_body))
@@ -228,6 +286,22 @@ void bind_problem(py::module_& m) {
           POINSOT_DOC(optimal_ReorientationProblem_omega_final))
       .def_readonly("free_final_attitude", &opt::ReorientationProblem::free_final_attitude,
                     POINSOT_DOC(optimal_ReorientationProblem_free_final_attitude))
+      .def_property_readonly(
+          "pointing",
+          [](const opt::ReorientationProblem& p) {
+            py::list out;
+            for (const auto& c : p.pointing) {
+              py::dict d;
+              d["name"] = c.name;
+              d["kind"] = std::string(opt::pointing_kind_name(c.kind));
+              d["boresight_body"] = from_vec3(c.boresight_body);
+              d["direction_space"] = from_vec3(c.direction_space);
+              d["half_angle"] = c.half_angle;
+              out.append(d);
+            }
+            return out;
+          },
+          POINSOT_DOC(optimal_ReorientationProblem_pointing))
       .def_property_readonly(
           "objective",
           [](const opt::ReorientationProblem& p) { return std::string(opt::objective_name(p.objective)); })

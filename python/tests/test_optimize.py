@@ -226,11 +226,42 @@ def test_converged_direct_is_its_own_outcome_never_optimal():
     (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1], free_final_attitude=True, attitude_final=[1, 0, 0, 0]),
      "free_final_attitude"),
     (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1], energy_weight=1e-3), "energy_weight"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1],
+          keep_out=[{"boresight_body": [1, 0, 0], "direction_space": [1, 0, 0], "half_angle": 0.1}]),
+     r"keep_out\[1\]: the boresight .* initial attitude"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1],
+          keep_in=[{"boresight_body": [0, 0, 0], "direction_space": [1, 0, 0], "half_angle": 0.1}]),
+     r"keep_in\[1\]\.boresight_body"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1],
+          keep_out=[{"boresight_body": [1, 0, 0], "direction_space": [0, 1, 0], "half_angle": 0.1,
+                     "half_angle_deg": 5}]), r"keep_out\[1\]: expected exactly one"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1],
+          keep_out=[{"boresight_body": [1, 0, 0], "direction_space": [0, 1, 0], "angle": 0.1}]),
+     r"keep_out\[1\]\.angle: unknown key"),
 ])
 def test_bad_problems_raise_value_error_naming_the_field(kwargs, match):
     with pytest.raises(ValueError, match=match) as err:
         poinsot.optimal.ReorientationProblem(**kwargs)
     assert "\n" not in str(err.value)
+
+
+def test_keep_out_cone_the_sphere_misses_leaves_the_verified_optimum():
+    """The sphere turned 150° about z at minimum energy: its boresight x passes 0.3 rad from a Sun set above its
+    halfway direction; a 0.25 rad cone leaves the eigenaxis optimum (docs/pointing_constraints.md)."""
+    j, theta, T = 2.0, math.radians(150.0), 4.0
+    sun = [math.cos(0.3) * math.cos(theta / 2), math.cos(0.3) * math.sin(theta / 2), math.sin(0.3)]
+    p = poinsot.optimal.ReorientationProblem(
+        inertia=[j, j, j], torque_max=100.0, torque_bound="norm", objective="minimum_energy", final_time=T,
+        attitude_final=[math.cos(theta / 2), 0.0, 0.0, math.sin(theta / 2)],
+        keep_out=[{"name": "sun", "boresight_body": [2, 0, 0], "direction_space": sun, "half_angle": 0.25}])
+    [cone] = p.pointing
+    assert cone["kind"] == "keep_out" and cone["name"] == "sun" and cone["boresight_body"].tolist() == [1, 0, 0]
+    r = poinsot.optimize(p, mesh_tolerance=1e-8)
+    assert r.optimal and r.cost == pytest.approx(12 * j**2 * theta**2 / T**3, rel=1e-10)
+    [summary] = r.summary["pointing"]
+    assert summary["indirect"]["margin"] == pytest.approx(0.05, abs=1e-6)
+    assert r.direct.pointing_multiplier.shape == (1, len(r.direct.t))
+    assert np.max(np.abs(r.direct.pointing_multiplier)) < 1e-9 and r.direct.pointing_widening == 0.0
 
 
 def test_bad_scenarios_raise_value_error():
