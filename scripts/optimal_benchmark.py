@@ -12,7 +12,9 @@ again and run by hand:
 Families (FAMILIES below): per_axis, norm (minimum time under ‖u‖ ≤ ū), energy (minimum energy, norm bound,
 T fixed), spin (minimum time from a spin about a random axis to rest), rate (minimum time with an active rate
 bound), detumble (minimum time to rest, free final attitude), nonprincipal (minimum time, per-axis bounds, a
-full inertia tensor), arm (the two-link arm of examples/optimal/two_link_arm.toml to a random target at
+full inertia tensor), keep_out (minimum time, per-axis bounds, turns of 60° … 180°, a random boresight kept
+15° … 40° from a direction within half that angle of the boresight's position halfway along the eigenaxis
+turn, and at least 5° more from it at both ends: a cone across the eigenaxis path), arm (the two-link arm of examples/optimal/two_link_arm.toml to a random target at
 minimum energy, minimal coordinates). Rigid bodies: principal moments J1 ≤ J2 ≤ J3 ≤ J1 + J2 with J3/J1 ≤ 4,
 scaled by 10^U(−1, 1) kg·m²; rest-to-rest turns of 20° … 180° about a random axis; bounds U(0.5, 2) N·m per
 axis (ū U(0.5, 2) N·m for a norm bound).
@@ -40,7 +42,7 @@ import tempfile
 import time
 from pathlib import Path
 
-FAMILIES = ("per_axis", "norm", "energy", "spin", "rate", "detumble", "nonprincipal", "arm")
+FAMILIES = ("per_axis", "norm", "energy", "spin", "rate", "detumble", "nonprincipal", "keep_out", "arm")
 
 
 def _moments(rng: random.Random) -> list[float]:
@@ -76,6 +78,31 @@ def _fmt(v) -> str:
     return repr(float(v))
 
 
+def _keep_out_cone(rng: random.Random, axis: list[float], angle: float) -> list[str]:
+    """A [[optimal_control.keep_out]] table across the eigenaxis turn (family keep_out): redrawn until both ends
+    are at least 5° outside the cone."""
+    def apply(R, v):
+        return [sum(R[i][k] * v[k] for k in range(3)) for i in range(3)]
+
+    def angle_between(a, b):
+        return math.acos(max(-1.0, min(1.0, sum(x * y for x, y in zip(a, b)))))
+
+    while True:
+        boresight, half = _unit(rng), math.radians(rng.uniform(15.0, 40.0))
+        halfway = apply(_rotation(axis, 0.5 * angle), boresight)
+        side = _unit(rng)  # tilt `halfway` towards a random direction by at most half the half-angle
+        ortho = [x - sum(a * b for a, b in zip(side, halfway)) * h for x, h in zip(side, halfway)]
+        n = math.sqrt(sum(x * x for x in ortho))
+        if n < 1e-3:
+            continue
+        tilt = rng.uniform(0.0, 0.5 * half)
+        sun = [math.cos(tilt) * h + math.sin(tilt) * o / n for h, o in zip(halfway, ortho)]
+        end = apply(_rotation(axis, angle), boresight)
+        if min(angle_between(boresight, sun), angle_between(end, sun)) > half + math.radians(5.0):
+            return ["[[optimal_control.keep_out]]", 'name = "sun"', f"boresight_body = {_fmt(boresight)}",
+                    f"direction_space = {_fmt(sun)}", f"half_angle = {_fmt(half)}"]
+
+
 def _rigid_body(family: str, rng: random.Random) -> str:
     """The scenario text of a single-body family's problem."""
     moments = _moments(rng)
@@ -85,6 +112,7 @@ def _rigid_body(family: str, rng: random.Random) -> str:
     body = f"principal_moments = {_fmt(moments)}"
     lines = ["[optimal_control]"]
     initial: list[str] = []
+    cones: list[str] = []  # [[optimal_control.keep_out]] tables, after the final state
     final = [f"orientation = {{ axis_angle = {{ axis = {_fmt(axis)}, angle = {_fmt(angle)} }} }}"]
     if family == "per_axis":
         lines += ['objective = "minimum_time"', 'torque_bound = "per_axis"', f"torque_max = {_fmt(per_axis)}"]
@@ -112,6 +140,11 @@ def _rigid_body(family: str, rng: random.Random) -> str:
         initial = [f"omega_body = {_fmt([rate * x for x in _unit(rng)])}"]
         final = ["free_attitude = true"]
         lines += ['objective = "minimum_time"', 'torque_bound = "norm"', f"torque_max = {_fmt(norm)}"]
+    elif family == "keep_out":
+        angle = math.radians(rng.uniform(60.0, 180.0))
+        final = [f"orientation = {{ axis_angle = {{ axis = {_fmt(axis)}, angle = {_fmt(angle)} }} }}"]
+        lines += ['objective = "minimum_time"', 'torque_bound = "per_axis"', f"torque_max = {_fmt(per_axis)}"]
+        cones = _keep_out_cone(rng, axis, angle)
     elif family == "nonprincipal":
         R = _rotation(_unit(rng), rng.uniform(0.0, math.pi))
         J = [[sum(R[i][k] * moments[k] * R[j][k] for k in range(3)) for j in range(3)] for i in range(3)]
@@ -123,7 +156,7 @@ def _rigid_body(family: str, rng: random.Random) -> str:
     text = ["[body]", body, *lines]
     if initial:
         text += ["[optimal_control.initial]", *initial]
-    text += ["[optimal_control.final]", *final]
+    text += ["[optimal_control.final]", *final, *cones]
     return "\n".join(text) + "\n"
 
 

@@ -7,7 +7,7 @@ import sys
 
 import pytest
 
-FAMILIES = ["per_axis", "norm", "energy", "spin", "rate", "detumble", "nonprincipal", "arm"]
+FAMILIES = ["per_axis", "norm", "energy", "spin", "rate", "detumble", "nonprincipal", "keep_out", "arm"]
 
 
 def bench(source_dir, *args, timeout=240):
