@@ -10,6 +10,10 @@ from pathlib import Path
 
 import pytest
 
+# Help texts and the completion script: many short runs of the tool, 44 s under the sanitizers for no memory
+# path that the other command-line tests do not run.
+pytestmark = pytest.mark.slow_under_sanitizers
+
 
 def help_subcommands(cli, path):
     """Sub-command names listed under "Subcommands:" in `poinsot <path> --help`."""

@@ -100,6 +100,10 @@ TEST_F(TiltedPhaseAdvance, SplitReplayFailsWhenANodeIsOffTheMotion) {
 // the attitude part is a rotation, whose blocks are no larger; RKF78 at 1e-10 gives it to about 1e-9.
 // A node that is not finite fails the split replay, and samples the replay cannot interpolate fail it too.
 TEST(SplitReplay, StableProblemsKeepTheOpenLoopCheck) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "about 1 s in release, 17 s under ASan; DirectReplay and the other split-replay tests "
+                  "cover the code there";
+#endif
   const auto p = testing::sphere_energy_problem(2.5, 2.0, Vec3(1.0, -2.0, 0.5), 3.0);
   CollocationOptions opt;
   opt.initial_intervals = 10;
