@@ -24,7 +24,8 @@
 /// Dynamics: q̇ = ½ q ⊗ (0, ω), J ω̇ = u − ω × J ω with the sample's full inertia J (body frame, about the
 /// centre of mass), integrated by classical RK4 on a grid that has a node at every row time of the control
 /// table (every jump and kink of u_ref) and steps h ≤ dt between them, so the torque is smooth within each
-/// step and RK4 keeps its fourth order (global error O(h⁴)); q is normalised after each step.
+/// step and RK4 keeps its fourth order (global error O(h⁴)); q is brought back to unit norm after each step
+/// (q ← q (3 − |q|²)/2, exact to rounding while |q|² − 1 is as small as one RK4 step makes it).
 ///
 /// Outputs of one run (runner.hpp names them):
 ///   pointing_error        rad, the angle between the final attitude R(t_end) and the target R_f
