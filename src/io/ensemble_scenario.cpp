@@ -1,12 +1,15 @@
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/io/ensemble.hpp"
 #include "poinsot/io/torque_table.hpp"
+#include "poinsot/so3/quaternion.hpp"
 #include "scenario_orientation.hpp"
 #include "scenario_table.hpp"
 #include "toml_fields.hpp"
@@ -84,6 +87,40 @@ std::uint64_t read_count(const Section& e, std::string_view key, std::uint64_t f
   return static_cast<std::uint64_t>(*x);
 }
 
+/// The target (attitude_final as w, x, y, z; omega_final, rad/s) of a summary.json of `poinsot optimize`.
+std::pair<Quat, Vec3> optimal_target(const std::string& path) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(detail::read_text_file(path));
+  } catch (const nlohmann::json::exception& e) {
+    throw InvalidInput(
+        fmt::format("\"{}\": {}; expected the summary.json of poinsot optimize", path, e.what()));
+  }
+  const auto numbers = [&](const char* key, std::size_t n) {
+    const nlohmann::json* v = j.contains("problem") && j["problem"].is_object() && j["problem"].contains(key)
+                                  ? &j["problem"][key]
+                                  : nullptr;
+    std::vector<double> x;
+    if (v && v->is_array() && v->size() == n)
+      for (const auto& e : *v)
+        if (e.is_number()) x.push_back(e.get<double>());
+    if (x.size() != n || !std::all_of(x.begin(), x.end(), [](double y) { return std::isfinite(y); }))
+      throw InvalidInput(
+          fmt::format("\"{}\": problem.{} missing or not {} numbers; expected the summary.json "
+                      "of poinsot optimize with a fixed final attitude",
+                      path, key, n));
+    return x;
+  };
+  const std::vector<double> q = numbers("attitude_final", 4), w = numbers("omega_final", 3);
+  const double n = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+  if (j["problem"].value("free_final_attitude", false) || !(n > 0.5))
+    throw InvalidInput(
+        fmt::format("\"{}\": the plan's final attitude is free; expected a fixed target (give "
+                    "orientation instead)",
+                    path));
+  return {Quat(q[0] / n, q[1] / n, q[2] / n, q[3] / n), Vec3(w[0], w[1], w[2])};
+}
+
 double non_negative(const Section& s, std::string_view key, double scale, std::string_view unit) {
   const double x = *s.number(key);
   if (!(x >= 0.0)) s.fail(key, fmt::format("got {}, expected a number >= 0 {}", x, unit));
@@ -153,11 +190,23 @@ std::shared_ptr<const ensemble::SlewTracking> read_slew(const Source& src, const
   spec.pointing_requirement = non_negative(s, "pointing_requirement", unit, unit == 1.0 ? "rad" : "degrees");
   const toml::table* target = s.table("target");
   if (!target)
-    s.fail("target", "missing; expected [ensemble.slew.target] with the target orientation and omega_body");
-  const Section g(src, target, "ensemble.slew.target", {"orientation", "omega_body"}, s.node("target"));
-  g.require("orientation", "the target attitude, e.g. orientation = { quaternion = [0, 1, 0, 0] }");
-  spec.target_attitude = detail::read_orientation(src, g);
-  spec.target_omega = g.vec3("omega_body").value_or(Vec3::Zero());
+    s.fail("target",
+           "missing; expected [ensemble.slew.target] with the target orientation and omega_body, or the "
+           "summary.json of the plan");
+  const Section g(src, target, "ensemble.slew.target", {"orientation", "omega_body", "summary"},
+                  s.node("target"));
+  if (g.exactly_one({"orientation", "summary"}, "the target") == "orientation") {
+    spec.target_attitude = detail::read_orientation(src, g);
+    spec.target_omega = g.vec3("omega_body").value_or(Vec3::Zero());
+  } else {
+    if (g.has("omega_body"))
+      g.fail("omega_body", "given with summary; expected the summary's omega_final alone");
+    std::filesystem::path summary(*g.string("summary"));
+    if (summary.is_relative() && !base_dir.empty()) summary = std::filesystem::path(base_dir) / summary;
+    const auto [q, w] = detail::located(g, "summary", [&] { return optimal_target(summary.string()); });
+    spec.target_attitude = so3::rotation_from_quaternion(q);
+    spec.target_omega = w;
+  }
 
   const Section in(src, root["integrator"].as_table(), "integrator", {"method", "dt", "rtol", "atol"});
   if (base.method != "rk4") {

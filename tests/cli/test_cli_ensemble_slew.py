@@ -80,6 +80,16 @@ def test_zero_dispersion_reproduces_the_verified_replay(cli, tmp_path, optimum):
     assert abs(s["outputs"]["peak_torque"]["nominal"] - 3 ** 0.5) < 1e-9  # |u_i| = 1 on every arc
     assert s["slew"]["share_meeting_requirement"] == 1.0
     assert s["slew"]["kp"] == 4.0 and s["slew"]["torque_bound"] == "per_axis"
+    # The target taken from the optimizer's summary.json instead: the same target, the same outputs.
+    def from_summary(text):
+        head = text[: text.index("[ensemble.slew.target]")]
+        return head + f'[ensemble.slew.target]\nsummary = "{opt_dir / "summary.json"}"\n'
+
+    r = cli("ensemble", scenario(tmp_path, opt_dir / "control.csv", T, edit=from_summary), "--out",
+            tmp_path / "f", "--json")
+    assert r.returncode == 0, r.stderr
+    f = json.loads(r.stdout)
+    assert f["outputs"] == s["outputs"] and f["slew"]["attitude_final"] == summary["problem"]["attitude_final"]
 
 
 def test_the_committed_example_plan_is_the_optimizers(source_dir, optimum):
@@ -156,5 +166,11 @@ def test_missing_control_file_and_missing_target(cli, tmp_path, source_dir):
 
     r = cli("ensemble", scenario(tmp_path, control, 3.0, edit=no_target), "--out", tmp_path / "bad")
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "target" in r.stderr, r.stderr
+    def bad_summary(text):
+        return no_target(text) + '[ensemble.slew.target]\nsummary = "nowhere.json"\n'
+
+    r = cli("ensemble", scenario(tmp_path, control, 3.0, edit=bad_summary), "--out", tmp_path / "bad")
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "summary" in r.stderr, r.stderr
+    assert "nowhere.json" in r.stderr, r.stderr
     r = cli("ensemble", scenario(tmp_path, control, 3.0), "--sample", "2", "--out", tmp_path / "bad")
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--sample" in r.stderr, r.stderr
