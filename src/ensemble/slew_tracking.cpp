@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -60,6 +61,67 @@ void rk4_step(const BodyMatrices& b, double h, Quat& q, Vec3& w, Torque&& torque
 BodyMatrices matrices(const Mat3& J) {
   return {J, J.inverse()};
 }
+
+void validate(const ReferenceRows& r) {
+  const std::size_t n = r.time.size();
+  if (r.attitude.size() != n || r.omega.size() != n || r.torque.size() != n)
+    throw InvalidInput(
+        "slew: reference: columns of unequal lengths; expected one attitude, rate and torque a row");
+  if (n < 2) throw InvalidInput(fmt::format("slew: reference: {} rows; expected at least 2", n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool finite = std::isfinite(r.time[i]) && r.attitude[i].coeffs().allFinite() &&
+                        r.omega[i].allFinite() && r.torque[i].allFinite();
+    if (!finite)
+      throw InvalidInput(fmt::format("slew: reference: row {} is not finite; expected numbers", i + 1));
+    if (!(r.attitude[i].norm() > 0.5))
+      throw InvalidInput(fmt::format("slew: reference: row {}: |q| = {}; expected a unit quaternion", i + 1,
+                                     r.attitude[i].norm()));
+    if (i > 0 && !(r.time[i] >= r.time[i - 1]))
+      throw InvalidInput(fmt::format("slew: reference: row {}: t = {} after {}; expected times in order",
+                                     i + 1, r.time[i], r.time[i - 1]));
+  }
+}
+
+/// The rows' motion at time t (see the header): cubic Hermite on the interval [t_i, t_(i+1)] (t_i <
+/// t_(i+1)) that holds t, the first such interval from `hint` on (the times asked are non-decreasing).
+class ReferenceInterpolant {
+ public:
+  ReferenceInterpolant(const ReferenceRows& r, const Mat3& J) : r_(r), b_(matrices(J)), q_(r.attitude) {
+    for (std::size_t i = 0; i < q_.size(); ++i) {
+      q_[i].normalize();
+      if (i > 0 && q_[i].coeffs().dot(q_[i - 1].coeffs()) < 0.0) q_[i].coeffs() *= -1.0;
+    }
+  }
+  void at(double t, Quat& q, Vec3& w) {
+    const std::size_t n = r_.time.size();
+    if (t <= r_.time.front() || t >= r_.time.back()) {
+      const std::size_t i = t <= r_.time.front() ? 0 : n - 1;
+      q = q_[i];
+      w = r_.omega[i];
+      return;
+    }
+    while (!(r_.time[i_ + 1] > t && r_.time[i_ + 1] > r_.time[i_]) && i_ + 2 < n)
+      ++i_;
+    const std::size_t a = i_, b = i_ + 1;
+    const double h = r_.time[b] - r_.time[a], s = (t - r_.time[a]) / h;
+    const double h00 = (1.0 + 2.0 * s) * (1.0 - s) * (1.0 - s), h10 = s * (1.0 - s) * (1.0 - s),
+                 h01 = s * s * (3.0 - 2.0 * s), h11 = s * s * (s - 1.0);
+    const Quat dqa = quaternion_rate(q_[a], r_.omega[a]), dqb = quaternion_rate(q_[b], r_.omega[b]);
+    q.coeffs() =
+        h00 * q_[a].coeffs() + h10 * h * dqa.coeffs() + h01 * q_[b].coeffs() + h11 * h * dqb.coeffs();
+    q.normalize();
+    const auto dw = [&](std::size_t i) {
+      return Vec3(b_.J_inv * (r_.torque[i] - r_.omega[i].cross(b_.J * r_.omega[i])));
+    };
+    w = h00 * r_.omega[a] + h10 * h * dw(a) + h01 * r_.omega[b] + h11 * h * dw(b);
+  }
+
+ private:
+  const ReferenceRows& r_;
+  BodyMatrices b_;
+  std::vector<Quat> q_;
+  std::size_t i_ = 0;
+};
 
 }  // namespace
 
@@ -136,6 +198,13 @@ SlewTracking::SlewTracking(SlewSpec spec, const Mat3& nominal_inertia, const dyn
   q_ref_[0] = q;
   w_ref_[0] = w;
   const Mat3 I = Mat3::Identity();
+  const bool rows = !s.reference.time.empty();
+  std::optional<ReferenceInterpolant> interpolant;
+  if (rows) {
+    validate(s.reference);
+    interpolant.emplace(s.reference, nominal_inertia);
+    interpolant->at(0.0, q_ref_[0], w_ref_[0]);
+  }
   for (std::size_t k = 0; k < n; ++k) {
     const double t = step_t_[k], h = step_t_[k + 1] - t;
     step_h_[k] = h;
@@ -143,6 +212,11 @@ SlewTracking::SlewTracking(SlewSpec spec, const Mat3& nominal_inertia, const dyn
     u_ref_[3 * k] = table.torque_body(t, I, Vec3::Zero());
     u_ref_[3 * k + 1] = table.torque_body(t + 0.5 * h, I, Vec3::Zero());
     u_ref_[3 * k + 2] = table.torque_body(step_t_[k + 1], I, Vec3::Zero());
+    if (rows) {
+      interpolant->at(t + 0.5 * h, q_ref_[2 * k + 1], w_ref_[2 * k + 1]);
+      interpolant->at(step_t_[k + 1], q_ref_[2 * k + 2], w_ref_[2 * k + 2]);
+      continue;
+    }
     for (int half = 0; half < 2; ++half) {
       const double t0 = t + 0.5 * h * half, t1 = half == 0 ? t + 0.5 * h : step_t_[k + 1];
       const double stage_t[4] = {t0, 0.5 * (t0 + t1), 0.5 * (t0 + t1), t1};

@@ -8,6 +8,7 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/io/ensemble.hpp"
+#include "poinsot/io/reference_trajectory.hpp"
 #include "poinsot/io/torque_table.hpp"
 #include "poinsot/so3/quaternion.hpp"
 #include "scenario_orientation.hpp"
@@ -137,7 +138,7 @@ std::shared_ptr<const ensemble::SlewTracking> read_slew(const Source& src, const
   if (!t) return nullptr;
   const Section s(src, t, "ensemble.slew",
                   {"control", "interpolation", "kp", "kd", "torque_bound", "torque_max",
-                   "pointing_requirement", "degrees", "target"},
+                   "pointing_requirement", "degrees", "target", "reference"},
                   e.node("slew"));
   ensemble::SlewSpec spec;
   s.require("control",
@@ -153,6 +154,12 @@ std::shared_ptr<const ensemble::SlewTracking> read_slew(const Source& src, const
   if (file.is_relative() && !base_dir.empty()) file = std::filesystem::path(base_dir) / file;
   spec.control =
       detail::located(s, "control", [&] { return read_torque_table(file.string(), interpolation); });
+  if (s.has("reference")) {
+    std::filesystem::path reference(*s.string("reference"));
+    if (reference.is_relative() && !base_dir.empty()) reference = std::filesystem::path(base_dir) / reference;
+    spec.reference =
+        detail::located(s, "reference", [&] { return read_reference_trajectory(reference.string()); });
+  }
   s.require("kp", "the proportional gain K_p in N·m/rad (0: none)");
   s.require("kd", "the derivative gain K_d in N·m·s/rad (0: none)");
   spec.kp = non_negative(s, "kp", 1.0, "N·m/rad");

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -210,6 +211,57 @@ TEST(SlewTracking, ClosedLoopConvergesAtFourthOrder) {
   EXPECT_NEAR(d[0] / d[1], 16.0, 3.0);
   EXPECT_NEAR(d[1] / d[2], 16.0, 2.0);
   EXPECT_LT(d[2], 1e-7);
+}
+
+// The plan's own rows as the reference (a trajectory.csv): the rows here are the plan's motion on the sphere
+// (the plan-replay reference at every m-th step of a 1e-4 grid, both sides of each switch), so the nominal
+// body tracks them with a feedback that is the Hermite interpolation's error times the gains, falling by 16
+// per halving of the row spacing, and ends where the plan ends.
+ReferenceRows plan_rows(int every) {
+  const SlewTracking fine(sphere_spec(1e-4, 0.0, 0.0), Mat3::Identity(), dynamics::State{});
+  const auto plan = sphere_plan();
+  ReferenceRows r;
+  for (std::int64_t k = 0; k <= fine.step_count(); ++k) {
+    const double t = fine.step_time(k);
+    const bool at_switch = std::find(std::begin(kSwitch), std::end(kSwitch), t) != std::end(kSwitch);
+    if (!at_switch && k % every != 0) continue;
+    for (int side = 0; side < (at_switch && k > 0 && k < fine.step_count() ? 2 : 1); ++side) {
+      // The torque just before a switch (side 0) and just after (side 1).
+      int arc = 0;
+      while (arc < 5 && (side == 0 ? kSwitch[arc + 1] < t : kSwitch[arc + 1] <= t))
+        ++arc;
+      r.time.push_back(t);
+      r.attitude.push_back(fine.reference_attitude(k));
+      r.omega.push_back(fine.reference_omega(k));
+      r.torque.emplace_back(kArcTorque[arc][0], kArcTorque[arc][1], kArcTorque[arc][2]);
+    }
+  }
+  return r;
+}
+
+TEST(SlewTracking, TheOptimizersRowsAsReferenceAreTrackedToTheirInterpolationError) {
+  const dynamics::State start;
+  const SlewOutcome plan =
+      SlewTracking(sphere_spec(1e-3), Mat3::Identity(), start).run(Mat3::Identity(), start);
+  std::vector<double> feedback;
+  for (int every : {200, 100, 50}) {  // rows every 0.02, 0.01, 0.005 s
+    SlewSpec s = sphere_spec(1e-3);
+    s.reference = plan_rows(every);
+    const SlewOutcome r = SlewTracking(s, Mat3::Identity(), start).run(Mat3::Identity(), start);
+    feedback.push_back(r.peak_feedback_torque);
+    EXPECT_LT(so3::angle_between(r.final_state.R_space_body, plan.final_state.R_space_body), 1e-9) << every;
+  }
+  EXPECT_GT(feedback[0], 1e-12) << feedback[0] << " " << feedback[1] << " " << feedback[2];
+  EXPECT_NEAR(feedback[0] / feedback[1], 16.0, 5.0);
+  EXPECT_NEAR(feedback[1] / feedback[2], 16.0, 5.0);
+  EXPECT_LT(feedback[2], 1e-8);
+  // Bad rows name the reference.
+  SlewSpec s = sphere_spec(1e-3);
+  s.reference = plan_rows(100);
+  std::swap(s.reference.time[3], s.reference.time[4]);
+  EXPECT_THROW(SlewTracking(s, Mat3::Identity(), start), InvalidInput);
+  s.reference.omega.pop_back();
+  EXPECT_THROW(SlewTracking(s, Mat3::Identity(), start), InvalidInput);
 }
 
 TEST(SlewTracking, RefusesBadSpecificationsNamingTheField) {

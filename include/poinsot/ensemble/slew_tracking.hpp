@@ -10,6 +10,13 @@
 /// RK4 as the samples on the half-step grid (step h/2), so that it is known at every stage time of the
 /// samples' steps (t, t + h/2, t + h).
 ///
+/// With SlewSpec::reference (the optimizer's trajectory.csv) the reference is instead the rows' motion,
+/// interpolated at the stage times by cubic Hermite polynomials on each interval between rows, with the
+/// derivatives q̇ = ½ q ⊗ (0, ω) and ω̇ = J₀⁻¹(u − ω × J₀ ω) of the rows (J₀ the nominal inertia, u the row's
+/// torque; an interval's ends take its own side of a switch): error O(Δt⁴) for a row spacing Δt, q
+/// normalised (the rows' signs made continuous first). Before the first row and after the last the reference
+/// holds the end row.
+///
 /// Feedback law (body frame):
 ///     u = sat( u_ref(t) − K_p e_θ − K_d (ω − ω_ref(t)) ),
 ///     e_θ = 2 sgn(w) v   with (w, v) = q_ref(t)* ⊗ q  (Hamilton product, q body → space),
@@ -56,6 +63,16 @@ enum class SlewTorqueLimit { none, per_axis, norm };
 /// "none", "per_axis", "norm".
 const char* to_string(SlewTorqueLimit limit);
 
+/// A planned motion given by rows (the trajectory.csv of `poinsot optimize`): times (s, non-decreasing; two
+/// rows at one time are a switch of the torque), attitudes (body → space), body rates (rad/s) and torques
+/// (N·m, body frame).
+struct ReferenceRows {
+  std::vector<double> time;
+  std::vector<Quat> attitude;
+  std::vector<Vec3> omega;
+  std::vector<Vec3> torque;
+};
+
 /// What a slew-tracking ensemble replays and how.
 struct SlewSpec {
   std::shared_ptr<const dynamics::TabulatedTorque> control;  ///< u_ref(t), N·m, body frame
@@ -68,6 +85,9 @@ struct SlewSpec {
   double pointing_requirement = 0.0;  ///< rad
   double t_end = 0.0;                 ///< s, the end of the replay
   double dt = 1e-3;                   ///< s, the largest step
+  /// The reference (q_ref, ω_ref) from the plan's own rows instead of the plan replayed on the nominal
+  /// body (see the file comment), when not empty.
+  ReferenceRows reference;
 };
 
 /// One closed-loop replay's outputs (see the file comment).
@@ -88,6 +108,7 @@ class SlewTracking {
  public:
   /// Builds the step grid and the reference from the nominal body (inertia about its centre of mass, body
   /// frame, kg·m²) and initial state. Throws InvalidInput, one line naming the field, for: no control,
+  /// reference rows of unequal lengths, fewer than two, not finite or not in time order,
   /// negative or non-finite gains, a limit with a torque_max component ≤ 0 (or non-finite), a negative
   /// pointing requirement, t_end or dt ≤ 0, more than kMaxSlewSteps steps, a target that is not a
   /// rotation, a non-finite target rate.
