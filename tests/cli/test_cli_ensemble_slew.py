@@ -90,6 +90,18 @@ def test_zero_dispersion_reproduces_the_verified_replay(cli, tmp_path, optimum):
     assert r.returncode == 0, r.stderr
     f = json.loads(r.stdout)
     assert f["outputs"] == s["outputs"] and f["slew"]["attitude_final"] == summary["problem"]["attitude_final"]
+    # The optimizer's trajectory.csv as the reference: its rows (every 0.007 s, both sides of each switch)
+    # interpolated by cubic Hermite, error O(Δt⁴) ≈ 1e-10 rad here (tests/ensemble measures the order): the
+    # feedback that error times the gains, the end the same to 1e-10.
+    def with_reference(text):
+        return text.replace("kp = 4.0", f'reference = "{opt_dir / "trajectory.csv"}"\nkp = 4.0')
+
+    r = cli("ensemble", scenario(tmp_path, opt_dir / "control.csv", T, edit=with_reference), "--out",
+            tmp_path / "g", "--json")
+    assert r.returncode == 0, r.stderr
+    g = json.loads(r.stdout)["outputs"]
+    assert 0 < g["peak_feedback_torque"]["nominal"] < 1e-8
+    assert abs(g["pointing_error"]["nominal"] - pointing["nominal"]) < 1e-10
 
 
 def test_the_committed_example_plan_is_the_optimizers(source_dir, optimum):
@@ -172,5 +184,11 @@ def test_missing_control_file_and_missing_target(cli, tmp_path, source_dir):
     r = cli("ensemble", scenario(tmp_path, control, 3.0, edit=bad_summary), "--out", tmp_path / "bad")
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "summary" in r.stderr, r.stderr
     assert "nowhere.json" in r.stderr, r.stderr
+    def bad_reference(text):
+        return text.replace("kp = 4.0", f'reference = "{control}"\nkp = 4.0')
+
+    r = cli("ensemble", scenario(tmp_path, control, 3.0, edit=bad_reference), "--out", tmp_path / "bad")
+    assert r.returncode == 2 and r.stderr.count("\n") == 1 and "reference" in r.stderr, r.stderr
+    assert "t,qw,qx,qy,qz,wx,wy,wz,ux,uy,uz" in r.stderr, r.stderr
     r = cli("ensemble", scenario(tmp_path, control, 3.0), "--sample", "2", "--out", tmp_path / "bad")
     assert r.returncode == 2 and r.stderr.count("\n") == 1 and "--sample" in r.stderr, r.stderr
