@@ -8,6 +8,10 @@
 // the flips located (--benchmark_filter=EnsembleTorque).
 // Also the cost per value of the statistics without rows: the quantile sketch against the running moments
 // (--benchmark_filter=Statistics).
+// A planned slew replayed in closed loop on dispersed bodies (slew_tracking.hpp; the sphere example of
+// examples/ensemble/sphere_slew_robustness.toml, dt = 1e-3 s, 3 247 steps a sample): the replay of one
+// sample after the other (SlewTracking::run) and the whole runner, one thread, rows off, 1024 samples (one
+// block: sampling, outputs, statistics, sketches, histograms) (--benchmark_filter=Slew).
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -17,7 +21,10 @@
 #include "poinsot/dynamics/simulation.hpp"
 #include "poinsot/ensemble/batch.hpp"
 #include "poinsot/ensemble/quantile_sketch.hpp"
+#include "poinsot/ensemble/runner.hpp"
+#include "poinsot/ensemble/slew_tracking.hpp"
 #include "poinsot/ensemble/statistics.hpp"
+#include "poinsot/so3/axis_angle.hpp"
 
 namespace {
 
@@ -124,6 +131,80 @@ void BM_EnsembleTorqueScalar(benchmark::State& st, const char* method, ensemble:
   }
   st.SetItemsProcessed(st.iterations() * kSteps * static_cast<long long>(s.size()));
 }
+
+// The minimum-time 180° slew of a sphere about x (examples/ensemble/sphere_slew_control.csv), its
+// dispersions and feedback those of examples/ensemble/sphere_slew_robustness.toml.
+std::shared_ptr<const ensemble::SlewTracking> sphere_slew() {
+  const double t[] = {0.0,
+                      0.4454389949447971,
+                      1.1761026437813165,
+                      1.621541638726129,
+                      2.0669806336709238,
+                      2.7976442825074437,
+                      3.2430832774522544};
+  const double u[6][3] = {{1, -1, 1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, 1, 1}, {-1, -1, 1}};
+  std::vector<double> time;
+  std::vector<Vec3> torque;
+  for (int a = 0; a < 6; ++a)
+    for (int e = 0; e < 2; ++e) {
+      time.push_back(t[a + e]);
+      torque.emplace_back(u[a][0], u[a][1], u[a][2]);
+    }
+  ensemble::SlewSpec s;
+  s.control = std::make_shared<dynamics::TabulatedTorque>(time, torque, "sphere slew");
+  s.target_attitude = so3::rotation_from_axis_angle(Vec3::UnitX(), 3.141592653589793);
+  s.kp = 4.0;
+  s.kd = 4.0;
+  s.limit = ensemble::SlewTorqueLimit::per_axis;
+  s.torque_max = Vec3::Constant(1.2);
+  s.pointing_requirement = 0.0174533;
+  s.t_end = t[6];
+  s.dt = 1e-3;
+  return std::make_shared<const ensemble::SlewTracking>(s, Mat3::Identity(), dynamics::State{});
+}
+
+ensemble::Sampler slew_sampler() {
+  ensemble::Nominal n;
+  ensemble::Dispersions d;
+  d.moments = {ensemble::Law::truncated_normal, 0.05, true};
+  d.axes = {ensemble::RotationLaw::cone, 0.0175};
+  d.attitude = {ensemble::RotationLaw::cone, 0.0087};
+  d.omega = {ensemble::Law::normal, 0.001, false};
+  return ensemble::Sampler(n, d, 11);
+}
+
+void BM_SlewReplay(benchmark::State& st) {
+  const auto slew = sphere_slew();
+  const ensemble::Sampler sampler = slew_sampler();
+  std::vector<ensemble::Sample> s;
+  for (std::uint64_t i = 0; i < 64; ++i)
+    s.push_back(sampler.draw(i));
+  for (auto _ : st)
+    for (const auto& x : s)
+      benchmark::DoNotOptimize(slew->run(x.inertia_com(), x.initial));
+  st.SetItemsProcessed(st.iterations() * slew->step_count() * static_cast<long long>(s.size()));
+}
+
+void BM_SlewEnsemble(benchmark::State& st) {
+  ensemble::EnsembleOptions o;
+  o.samples = ensemble::kBlockSamples;
+  o.threads = 1;
+  o.keep_rows = false;
+  o.slew = sphere_slew();
+  o.t_end = o.slew->spec().t_end;
+  o.dt = o.slew->spec().dt;
+  const ensemble::Sampler sampler = slew_sampler();
+  std::int64_t steps = 0;
+  for (auto _ : st) {
+    const ensemble::EnsembleResult r = ensemble::run_ensemble(sampler, o);
+    steps += r.body_steps;
+    benchmark::DoNotOptimize(r.stats);
+  }
+  st.SetItemsProcessed(steps);
+}
+
+BENCHMARK(BM_SlewReplay)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SlewEnsemble)->Unit(benchmark::kMillisecond);
 
 constexpr auto kBody = ensemble::TorqueKind::body;
 constexpr auto kSpace = ensemble::TorqueKind::space;

@@ -59,6 +59,10 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
   const ensemble::Sampler sampler(sc.nominal, sc.dispersions, sc.seed);
 
   if (c.sample >= 0) {
+    if (o.slew)
+      throw InvalidInput(
+          "ensemble: --sample runs one sample through the single-body run, which does not replay "
+          "[ensemble.slew]; expected no --sample with a slew (samples.csv has every sample's row)");
     const ensemble::Sample s = sampler.draw(static_cast<std::uint64_t>(c.sample));
     const std::string sample_dir = fmt::format("{}/sample_{}", dir, c.sample);
     io::prepare_output_dir(sample_dir);
@@ -142,6 +146,12 @@ void run_ensemble_command(const EnsembleCliOptions& c) {
       fmt::print("  {:<22} mean {:<12.6g} std {:<12.6g} min {:<12.6g} max {:<12.6g} {}\n",
                  ensemble::kOutputNames[q], s.mean, std::sqrt(s.variance()), s.min, s.max,
                  ensemble::kOutputUnits[q]);
+    }
+    if (o.slew) {
+      const auto& m = r.stats[ensemble::meets_requirement];
+      fmt::print("slew: {} of {} samples within the pointing requirement {:.6g} rad ({:.4g} %)\n",
+                 static_cast<long long>(std::llround(m.mean * static_cast<double>(m.count))), m.count,
+                 o.slew->spec().pointing_requirement, 100.0 * m.mean);
     }
     fmt::print("written: {}{}/summary.json\n", written, dir);
   }

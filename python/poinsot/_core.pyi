@@ -250,7 +250,7 @@ def axisymmetric_free_motion(A: float, C: float, axis_body: numpy.typing.ArrayLi
     """Vallée & Dumitriu eq."""
 
 def ensemble(path: str, *, samples: Optional[int] = ..., threads: int = ..., simd: bool = ..., per_sample: bool = ...) -> dict:
-    """Runs `poinsot ensemble PATH` in process (the GIL released) and returns a dict of NumPy arrays, one entry per sample: index, rejected, repaired, moments (N, 3), misalignment, omega0 (N, 3), every output (first_flip_time, flip_interval, flip_interval_theory, attitude_error, energy_error, L_space_error, and for heavy tops precession_rate, nutation_frequency, nutation_amplitude), quaternion_final (N, 4), omega_final (N, 3); and 'summary', the dict of summary.json."""
+    """Runs `poinsot ensemble PATH` in process (the GIL released) and returns a dict of NumPy arrays, one entry per sample: index, rejected, repaired, moments (N, 3), misalignment, omega0 (N, 3), every output (first_flip_time, flip_interval, flip_interval_theory, attitude_error, energy_error, L_space_error, for heavy tops precession_rate, nutation_frequency, nutation_amplitude, and with [ensemble.slew] pointing_error, rate_error, peak_torque, peak_feedback_torque, peak_wheel_momentum, meets_requirement), quaternion_final (N, 4), omega_final (N, 3); and 'summary', the dict of summary.json."""
 
 def fast_top_precession_rate(top: HeavyTop, omega3: float) -> float:
     """The gyroscopic (fast-top) precession rate of the notes, Ω = M g l/(I3 ω3) (rad/s), docs/conventions.md B3: an approximation that neglects nutation and the transverse angular momentum."""

@@ -3,10 +3,12 @@
 ``plot_ensemble_run(folder)`` writes, next to the data:
 
 - ``histograms.png``: a histogram of every per-sample output that has values; the flip interval with the
-  closed form 2K(k)/ω_p of the same samples (those with two flips before t_end) overlaid (a step line);
+  closed form 2K(k)/ω_p of the same samples (those with two flips before t_end) overlaid (a step line), a
+  slew's pointing error with its requirement (a dashed line);
 - ``cdf.png``: their empirical CDFs, the flip interval's theory overlaid;
-- ``scatter.png``: the attitude error (or the first output with values) against the input that explains it
-  best: the one of I1, I2, I3, misalignment, omega0 with the largest absolute Pearson correlation.
+- ``scatter.png``: a slew's pointing error, else the attitude error (or the first output with values),
+  against the input that explains it best: the one of I1, I2, I3, misalignment, omega0 with the largest
+  absolute Pearson correlation.
 
 Without samples.csv (per-sample output off, or more rows than the CSV holds) only ``histograms.png`` is
 drawn, from the fixed-edge histograms of summary.json (their edges and counts; the samples below and above
@@ -22,7 +24,8 @@ from pathlib import Path
 
 import numpy as np
 
-OUTPUTS = ("first_flip_time", "flip_interval", "attitude_error", "energy_error", "L_space_error")
+OUTPUTS = ("first_flip_time", "flip_interval", "attitude_error", "energy_error", "L_space_error", "pointing_error",
+           "rate_error", "peak_torque", "peak_wheel_momentum")
 INPUTS = ("I1", "I2", "I3", "misalignment", "omega0_x", "omega0_y", "omega0_z")
 
 
@@ -124,6 +127,9 @@ def plot_ensemble_run(folder):
         if name == "flip_interval" and theory.size:
             ax.hist(theory, bins=edges, histtype="step", color="k", label="2K(k)/ω_p")
             ax.legend(fontsize=8)
+        if name == "pointing_error" and "slew" in summary:
+            ax.axvline(summary["slew"]["pointing_requirement"], color="r", ls="--", label="requirement")
+            ax.legend(fontsize=8)
         ax.set_xlabel(_label(summary, name))
     axes[0][0].set_ylabel("samples")
     fig.suptitle(title)
@@ -149,7 +155,7 @@ def plot_ensemble_run(folder):
     plt.close(fig)
     written.append(folder / "cdf.png")
 
-    output = "attitude_error" if "attitude_error" in shown else shown[0]
+    output = next((n for n in ("pointing_error", "attitude_error") if n in shown), shown[0])
     cause = most_influential_input(cols, output)
     if cause is not None:
         fig, ax = plt.subplots(figsize=(5, 4))

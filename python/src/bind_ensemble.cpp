@@ -83,8 +83,10 @@ void bind_ensemble(py::module_& m) {
         (std::string("Runs `poinsot ensemble PATH` in process (the GIL released) and returns a dict of NumPy "
                      "arrays, one entry per sample: index, rejected, repaired, moments (N, 3), misalignment, "
                      "omega0 (N, 3), every output (first_flip_time, flip_interval, flip_interval_theory, "
-                     "attitude_error, energy_error, L_space_error, and for heavy tops precession_rate, "
-                     "nutation_frequency, nutation_amplitude), quaternion_final (N, 4), omega_final "
+                     "attitude_error, energy_error, L_space_error, for heavy tops precession_rate, "
+                     "nutation_frequency, nutation_amplitude, and with [ensemble.slew] pointing_error, "
+                     "rate_error, peak_torque, peak_feedback_torque, peak_wheel_momentum, "
+                     "meets_requirement), quaternion_final (N, 4), omega_final "
                      "(N, 3); and 'summary', the dict of summary.json. Nothing is written to disk.\n\n") +
          POINSOT_DOC(file_io_ensemble))
             .c_str());

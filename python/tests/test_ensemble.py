@@ -86,3 +86,26 @@ def test_plot_without_rows_draws_the_summary_histograms(tmp_path):
     written = plot_run(tmp_path)
     assert [p.name for p in written] == ["histograms.png"]
     assert written[0].stat().st_size > 1000
+
+
+def test_slew_ensemble_in_python_and_its_figures(tmp_path):
+    """[ensemble.slew] through poinsot.ensemble (the slew outputs as arrays) and plot_run (the slew's
+    outputs drawn, the pointing requirement marked)."""
+    import os
+    import subprocess
+
+    slew = RACKET.parent / "sphere_slew_robustness.toml"
+    r = poinsot.ensemble(str(slew), samples=40, threads=2)
+    share = r["summary"]["slew"]["share_meeting_requirement"]
+    assert abs(r["meets_requirement"].mean() - share) < 1e-12
+    assert ((r["pointing_error"] <= r["summary"]["slew"]["pointing_requirement"]) == (r["meets_requirement"] == 1)).all()
+    cli = os.environ.get("POINSOT_CLI")
+    if not cli:
+        pytest.skip("POINSOT_CLI is not set")
+    p = subprocess.run([cli, "ensemble", str(slew), "--samples", "40", "--out", str(tmp_path)], capture_output=True,
+                       text=True, timeout=120)
+    assert p.returncode == 0, p.stderr
+    from poinsot.plot import plot_run
+
+    written = plot_run(tmp_path)
+    assert {q.name for q in written} == {"histograms.png", "cdf.png", "scatter.png"}

@@ -30,7 +30,7 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-enum class Path { batched, exact, scalar };
+enum class Path { batched, exact, scalar, slew };
 
 struct Context {
   const Sampler& sampler;
@@ -82,11 +82,34 @@ void fill_outputs(const Sample& s, const dynamics::State& final_state, double fi
   row.out[precession_rate] = top ? top->precession_rate_mean().value_or(kNaN) : kNaN;
   row.out[nutation_frequency] = top ? top->nutation_frequency().value_or(kNaN) : kNaN;
   row.out[nutation_amplitude] = top ? top->theta_max() - top->theta_min() : kNaN;
+  for (int q = pointing_error; q <= meets_requirement; ++q)
+    row.out[static_cast<std::size_t>(q)] = kNaN;
+}
+
+/// The outputs of a sample replayed in closed loop (slew_tracking.hpp).
+void fill_slew_outputs(const Sample& s, const SlewOutcome& r, const Context& c, SampleRow& row) {
+  fill_outputs(s, r.final_state, kNaN, kNaN, c, row);
+  row.out[flip_interval_theory] = kNaN;
+  row.out[energy_error] = kNaN;
+  row.out[L_space_error] = kNaN;
+  row.out[pointing_error] = r.pointing_error;
+  row.out[rate_error] = r.rate_error;
+  row.out[peak_torque] = r.peak_torque;
+  row.out[peak_feedback_torque] = r.peak_feedback_torque;
+  row.out[peak_wheel_momentum] = r.peak_wheel_momentum;
+  row.out[meets_requirement] = r.meets_requirement ? 1.0 : 0.0;
 }
 
 /// Runs samples [first, first + count) into rows (count ≤ kBlockSamples) by the context's path.
 void run_block(const Context& c, std::uint64_t first, std::uint64_t count, SampleRow* rows) {
   const EnsembleOptions& o = c.options;
+  if (c.path == Path::slew) {
+    for (std::uint64_t i = 0; i < count; ++i) {
+      const Sample s = c.sampler.draw(first + i);
+      fill_slew_outputs(s, o.slew->run(s.inertia_com(), s.initial), c, rows[i]);
+    }
+    return;
+  }
   if (c.path == Path::batched) {
     std::vector<Sample> samples;
     std::vector<LaneResult> lanes(kBatchLanes);
@@ -134,6 +157,13 @@ void run_block(const Context& c, std::uint64_t first, std::uint64_t count, Sampl
 
 Path choose_path(const Sampler& sampler, const EnsembleOptions& o) {
   const Sample nominal = sampler.nominal();
+  if (o.slew) {
+    if (nominal.torque != TorqueKind::none || nominal.has_pivot)
+      throw InvalidInput(
+          "ensemble: a slew replayed in closed loop with a torque or a pivot; expected a free body (the "
+          "slew's control is its only torque)");
+    return Path::slew;
+  }
   if (o.method == dynamics::kExactMethodName) {
     if (nominal.torque != TorqueKind::none || nominal.has_pivot) {
       std::string with_torque;
@@ -171,6 +201,7 @@ void validate(const EnsembleOptions& o) {
 std::string path_name(Path p, const EnsembleOptions& o) {
   if (p == Path::exact) return "exact (closed form per sample)";
   if (p == Path::scalar) return "scalar " + o.method;
+  if (p == Path::slew) return "closed-loop slew, scalar rk4";
   const bool avx2 = o.simd == Simd::automatic && simd_available();
   return fmt::format("batched {} ({}, {} lanes)", o.method, avx2 ? "AVX2" : "portable", kBatchLanes);
 }
@@ -277,7 +308,9 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
                                               std::vector<SampleRow>(kBlockSamples));
   std::vector<BlockSummary> block(per_round);
   BlockTree tree;  // the blocks' statistics, merged in the fixed tree as they complete
-  const long long steps_per_sample = path == Path::exact ? 0 : batch_step_count(o.t_end, o.dt);
+  const long long steps_per_sample = path == Path::exact  ? 0
+                                     : path == Path::slew ? o.slew->step_count()
+                                                          : batch_step_count(o.t_end, o.dt);
 
   for (std::uint64_t round = 0; round * per_round < blocks; ++round) {
     const std::uint64_t b0 = round * per_round;

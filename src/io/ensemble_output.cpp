@@ -8,6 +8,7 @@
 
 #include "poinsot/io/ensemble.hpp"
 #include "poinsot/io/ensemble_table.hpp"
+#include "poinsot/so3/quaternion.hpp"
 #include "poinsot/version.hpp"
 
 namespace poinsot::io {
@@ -84,6 +85,26 @@ std::string ensemble_summary_json(const EnsembleScenario& sc, const ensemble::En
                            "|x_hi|), x_lo and x_hi the order statistics interpolated (Hyndman-Fan 7)",
                            ensemble::kQuantileRelativeAccuracy)
                      : "exact order statistics, linear interpolation (Hyndman-Fan 7)";
+  if (o.slew) {
+    const ensemble::SlewSpec& sp = o.slew->spec();
+    const Quat qf = so3::quaternion_from_rotation(sp.target_attitude);
+    const ensemble::RunningStats& m = r.stats[ensemble::meets_requirement];
+    j["slew"] = {
+        {"feedback_law",
+         "u = sat(u_ref - kp e_theta - kd (omega - omega_ref)), e_theta = 2 sgn(w) v, (w, v) = q_ref* q"},
+        {"kp", sp.kp},
+        {"kd", sp.kd},
+        {"torque_bound", ensemble::to_string(sp.limit)},
+        {"torque_max", sp.limit == ensemble::SlewTorqueLimit::none ? json()
+                       : sp.limit == ensemble::SlewTorqueLimit::norm
+                           ? json(sp.torque_max[0])
+                           : json{sp.torque_max[0], sp.torque_max[1], sp.torque_max[2]}},
+        {"pointing_requirement", sp.pointing_requirement},
+        {"attitude_final", {qf.w(), qf.x(), qf.y(), qf.z()}},
+        {"omega_final", {sp.target_omega[0], sp.target_omega[1], sp.target_omega[2]}},
+        {"steps_per_sample", o.slew->step_count()},
+        {"share_meeting_requirement", number(m.count > 0 ? m.mean : NAN)}};
+  }
   json outputs = json::object();
   for (int q = 0; q < ensemble::kOutputCount; ++q) {
     const ensemble::RunningStats& s = r.stats[static_cast<std::size_t>(q)];

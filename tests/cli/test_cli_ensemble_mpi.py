@@ -97,3 +97,19 @@ def test_per_rank_files_hold_the_rows_of_one_process_in_rank_order(cli, tmp_path
             for p, exact in out["percentiles"].items():
                 assert abs(b["outputs"][name]["percentiles"][p] - exact) <= 1e-3 * max(
                     abs(out["min"]), abs(out["max"])) * (1 + 1e-9), (name, p)
+
+
+@pytest.mark.skipif(not MPIEXEC, reason="poinsot was built without MPI")
+def test_two_ranks_equal_one_process_for_a_slew(cli, tmp_path, source_dir):
+    """[ensemble.slew] (the sphere slew example, 2 100 samples: three blocks over two ranks)."""
+    example = source_dir / "examples/ensemble/sphere_slew_robustness.toml"
+    one = cli("ensemble", example, "--samples", "2100", "--threads", "1", "--out", tmp_path / "one")
+    assert one.returncode == 0, one.stderr
+    two = subprocess.run([MPIEXEC, "--allow-run-as-root", "--oversubscribe", "-n", "2", os.environ["POINSOT_CLI"],
+                          "ensemble", str(example), "--samples", "2100", "--threads", "1", "--out",
+                          str(tmp_path / "two")], capture_output=True, text=True, timeout=120)
+    assert two.returncode == 0, two.stderr
+    assert (tmp_path / "one/samples.csv").read_bytes() == (tmp_path / "two/samples.csv").read_bytes()
+    a = json.loads((tmp_path / "one/summary.json").read_text())
+    b = json.loads((tmp_path / "two/summary.json").read_text())
+    assert a["outputs"] == b["outputs"] and a["slew"] == b["slew"]

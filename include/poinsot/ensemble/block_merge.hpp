@@ -22,7 +22,7 @@
 namespace poinsot::ensemble {
 
 /// The outputs' count (runner.hpp names them).
-inline constexpr int kOutputSlots = 9;
+inline constexpr int kOutputSlots = 15;
 
 /// The statistics of one block of consecutive samples (the unit of merging), or of a subtree of blocks.
 struct BlockSummary {

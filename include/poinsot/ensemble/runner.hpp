@@ -15,6 +15,10 @@
 ///                         otherwise)
 ///   nutation_frequency    rad/s, heavy tops: 2π/T_nut from the minima of θ (NaN: fewer than two minima)
 ///   nutation_amplitude    rad, heavy tops: θ_max − θ_min of the axis's angle from the vertical
+///   pointing_error, rate_error, peak_torque, peak_feedback_torque, peak_wheel_momentum, meets_requirement
+///                         a slew replayed in closed loop (options.slew; slew_tracking.hpp defines them;
+///                         NaN otherwise). A slew ensemble has no flips, energy or momentum outputs (NaN):
+///                         its attitude_error is against the nominal sample's closed-loop final attitude.
 ///
 /// Work is split into blocks of kBlockSamples consecutive samples; threads take whole blocks, and the
 /// statistics of the blocks are merged in the fixed binary tree over the block indices (block_merge.hpp), so
@@ -28,6 +32,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +43,7 @@
 #include "poinsot/ensemble/fixed_histogram.hpp"
 #include "poinsot/ensemble/quantile_sketch.hpp"
 #include "poinsot/ensemble/sampler.hpp"
+#include "poinsot/ensemble/slew_tracking.hpp"
 #include "poinsot/ensemble/statistics.hpp"
 
 namespace poinsot::ensemble {
@@ -54,15 +60,22 @@ enum Output {
   precession_rate,
   nutation_frequency,
   nutation_amplitude,
+  pointing_error,
+  rate_error,
+  peak_torque,
+  peak_feedback_torque,
+  peak_wheel_momentum,
+  meets_requirement,
   kOutputCount
 };
 /// The outputs' names, as in the CSV header and summary.json.
 inline constexpr const char* kOutputNames[kOutputCount] = {
-    "first_flip_time", "flip_interval",   "flip_interval_theory", "attitude_error",    "energy_error",
-    "L_space_error",   "precession_rate", "nutation_frequency",   "nutation_amplitude"};
+    "first_flip_time", "flip_interval",   "flip_interval_theory", "attitude_error",      "energy_error",
+    "L_space_error",   "precession_rate", "nutation_frequency",   "nutation_amplitude",  "pointing_error",
+    "rate_error",      "peak_torque",     "peak_feedback_torque", "peak_wheel_momentum", "meets_requirement"};
 /// Their units.
-inline constexpr const char* kOutputUnits[kOutputCount] = {"s", "s",     "s",     "rad", "",
-                                                           "",  "rad/s", "rad/s", "rad"};
+inline constexpr const char* kOutputUnits[kOutputCount] = {
+    "s", "s", "s", "rad", "", "", "rad/s", "rad/s", "rad", "rad", "rad/s", "N·m", "N·m", "N·m·s", ""};
 
 /// One sample's inputs and outputs.
 struct SampleRow {
@@ -99,6 +112,10 @@ struct EnsembleOptions {
   HistogramSpec histograms;
   /// Refuse keep_rows when the rows would exceed this many bytes (0: half the physical memory).
   std::uint64_t max_row_bytes = 0;
+  /// A planned slew replayed in closed loop on every sample (slew_tracking.hpp) instead of the free or
+  /// constant-torque motion: its own RK4 grid replaces method, t_end and dt (the sample's torque must be
+  /// none).
+  std::shared_ptr<const SlewTracking> slew;
 };
 
 struct EnsembleResult {
@@ -132,8 +149,8 @@ void set_statistics(EnsembleResult& result, std::vector<BlockNode> nodes, std::u
 std::uint64_t row_bytes(std::uint64_t samples);
 
 /// Runs the ensemble. Throws InvalidInput for bad options (samples = 0, threads = 0, t_end or dt <= 0, an
-/// unknown method, `exact` with a torque or a pivot, stored rows that would not fit in memory: refused before
-/// allocating, with the size), and the sampler's errors.
+/// unknown method, a slew with a torque or a pivot, `exact` with a torque or a pivot, stored rows that would
+/// not fit in memory: refused before allocating, with the size), and the sampler's errors.
 EnsembleResult run_ensemble(const Sampler& sampler, const EnsembleOptions& options);
 
 /// Runs the blocks [first_block, last_block) of an ensemble of options.samples samples (rows of those samples

@@ -4,6 +4,7 @@
 /// number of samples, the seed and the dispersions (docs/ensemble.md), and what an ensemble run writes:
 /// samples.csv (one row per sample) and summary.json (statistics and percentiles of every output).
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "poinsot/ensemble/runner.hpp"
@@ -22,6 +23,9 @@ struct EnsembleScenario {
   /// [ensemble.histogram]: `bins` and per output `NAME = [lo, hi]` (the output's unit); the other outputs'
   /// edges come from the pilot (runner.hpp).
   ensemble::HistogramSpec histograms;
+  /// [ensemble.slew]: a planned control replayed in closed loop on every sample (slew_tracking.hpp;
+  /// docs/ensemble.md "Slew robustness"), or null.
+  std::shared_ptr<const ensemble::SlewTracking> slew;
 };
 
 /// Reads a scenario file with an `[ensemble]` section. Throws InvalidInput (one line, `FILE:LINE:COLUMN:`,
