@@ -5,30 +5,12 @@
 
 #include <fmt/format.h>
 
+#include "csv_fields.hpp"
 #include "poinsot/core/error.hpp"
 #include "toml_fields.hpp"
 
 namespace poinsot::io {
 namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
-    s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= line.size(); ++i)
-    if (i == line.size() || line[i] == ',') {
-      out.push_back(trim(line.substr(start, i - start)));
-      start = i + 1;
-    }
-  return out;
-}
 
 constexpr int kColumnCount = 11;
 constexpr const char* kColumns[kColumnCount] = {"t",  "qw", "qx", "qy", "qz", "wx",
@@ -44,11 +26,11 @@ ensemble::ReferenceRows parse_reference_trajectory(std::string_view text, std::s
   std::size_t pos = 0;
   while (pos < text.size()) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
-    const std::string_view line = trim(text.substr(pos, end - pos));
+    const std::string_view line = detail::csv_trim(text.substr(pos, end - pos));
     pos = end + 1;
     ++line_no;
     if (line.empty() || line.front() == '#') continue;
-    const std::vector<std::string_view> cols = split(line);
+    const std::vector<std::string_view> cols = detail::csv_split(line);
     if (!header) {
       for (int i = 0; i < kColumnCount; ++i)
         if (static_cast<int>(cols.size()) <= i || cols[i] != kColumns[i])

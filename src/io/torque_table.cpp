@@ -5,33 +5,11 @@
 
 #include <fmt/format.h>
 
+#include "csv_fields.hpp"
 #include "poinsot/core/error.hpp"
 #include "toml_fields.hpp"
 
 namespace poinsot::io {
-
-namespace {
-
-std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t'))
-    s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
-    s.remove_suffix(1);
-  return s;
-}
-
-std::vector<std::string_view> split(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t start = 0;
-  for (std::size_t i = 0; i <= line.size(); ++i)
-    if (i == line.size() || line[i] == ',') {
-      out.push_back(trim(line.substr(start, i - start)));
-      start = i + 1;
-    }
-  return out;
-}
-
-}  // namespace
 
 std::shared_ptr<const dynamics::TabulatedTorque> parse_torque_table(
     std::string_view text, std::string_view source, dynamics::TableInterpolation interpolation) {
@@ -43,11 +21,11 @@ std::shared_ptr<const dynamics::TabulatedTorque> parse_torque_table(
   std::size_t pos = 0;
   while (pos < text.size()) {
     const std::size_t end = std::min(text.find('\n', pos), text.size());
-    const std::string_view line = trim(text.substr(pos, end - pos));
+    const std::string_view line = detail::csv_trim(text.substr(pos, end - pos));
     pos = end + 1;
     ++line_no;
     if (line.empty() || line.front() == '#') continue;
-    const std::vector<std::string_view> cols = split(line);
+    const std::vector<std::string_view> cols = detail::csv_split(line);
     if (!header) {
       for (int i = 0; i < 4; ++i)
         if (static_cast<int>(cols.size()) <= i || cols[i] != kColumns[i])
