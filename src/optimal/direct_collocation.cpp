@@ -298,7 +298,8 @@ DirectSolution continue_widened(const ReorientationProblem& problem, const Direc
 /// Pointing constraints between the collocation points: while the dense replay (direct_replay.hpp) of
 /// `solution`'s control violates a cone by more than pointing_replay_tolerance, the cones imposed at the
 /// points are widened by twice the violation more and the refinement continues from `solution`; at most
-/// four times. The widening stays in the result (DirectSolution::pointing_widening).
+/// four times. The widening stays in the result (DirectSolution::pointing_widening), unless the result is
+/// clear of every cone (active_pointing_constraint finds none), whose solution it then did not shape.
 DirectSolution meet_pointing_between_points(const ReorientationProblem& problem, DirectSolution solution,
                                             const CollocationOptions& options) {
   constexpr int kMaxWidenings = 4;
@@ -307,8 +308,8 @@ DirectSolution meet_pointing_between_points(const ReorientationProblem& problem,
     const double violation = -replay_direct(problem, solution).pointing.worst();
     if (!(violation > pointing_replay_tolerance)) {  // met, or NaN: nothing to widen by
       // A solution clear of every widened cone is a KKT point of the NLP with the cones as given (its rows
-      // are inactive either way): the widening did not shape it. (It can be left over from an earlier
-      // solution that touched a cone, from which Ipopt moved on.)
+      // are inactive either way): the widening did not shape it. It comes from an earlier solution that
+      // touched a cone, from which Ipopt moved on to one that does not.
       if (solution.pointing_widening > 0.0 && active_pointing_constraint(problem, solution).empty())
         solution.pointing_widening = 0.0;
       return solution;
