@@ -99,6 +99,7 @@ def test_per_rank_files_hold_the_rows_of_one_process_in_rank_order(cli, tmp_path
                     abs(out["min"]), abs(out["max"])) * (1 + 1e-9), (name, p)
 
 
+@pytest.mark.slow_under_sanitizers  # 6 300 closed-loop slews: seconds in release, a minute under the sanitizers
 @pytest.mark.skipif(not MPIEXEC, reason="poinsot was built without MPI")
 def test_two_ranks_equal_one_process_for_a_slew(cli, tmp_path, source_dir):
     """[ensemble.slew] (the sphere slew example, 2 100 samples: three blocks over two ranks)."""

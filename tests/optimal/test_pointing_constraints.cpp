@@ -71,6 +71,10 @@ DirectSolution solve_sun(double half_angle) {
 // A cone the free optimum stays 0.05 rad clear of: the indirect method runs, the verification passes with a
 // positive margin, and the optimum is the free one to the shooting's accuracy.
 TEST(PointingConstraint, AConeTheFreeOptimumMissesLeavesItUnchanged) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "two solves on 212 intervals, 4 s in release and 37 s under ASan; the command-line test of "
+                  "the same slew (tests/cli/test_cli_optimize_pointing.py) runs the whole pipeline there";
+#endif
   const ReorientationProblem p = sun_problem(kAlpha - 0.05);
   const DirectSolution d = solve_sun(kAlpha - 0.05);
   ASSERT_TRUE(d.converged) << d.status;
