@@ -110,8 +110,12 @@ void run_phased(OptimalRun& r) {
     r.phased_status = "not applicable: Ipopt did not solve the direct method's last mesh";
     return;
   }
-  if (const std::string active = optimal::active_pointing_constraint(p, r.direct); !active.empty()) {
-    r.phased_status = "not applicable: " + active + " (the re-solve takes bang arcs only)";
+  if (!p.pointing.empty()) {
+    // Its arcs are fixed by the mesh solution's switches, and nothing keeps a cone that this solution
+    // grazes from becoming active on them: Ipopt can then spend thousands of iterations on the re-solve.
+    r.phased_status =
+        "not applicable: pointing constraints (the re-solve takes bang arcs only, without the "
+        "cones' junctions)";
     return;
   }
   try {
