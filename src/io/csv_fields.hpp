@@ -2,6 +2,7 @@
 /// @file csv_fields.hpp (internal)
 /// The fields of one line of the CSV tables the io layer reads (torque tables, reference trajectories):
 /// comma-separated, each trimmed of spaces and tabs (and a trailing carriage return).
+#include <initializer_list>
 #include <string_view>
 #include <vector>
 
@@ -26,5 +27,12 @@ inline std::vector<std::string_view> csv_split(std::string_view line) {
     }
   return out;
 }
+
+/// The numbers of a CSV table whose header line starts with `columns` (further columns are allowed and
+/// ignored): one row per data line, the values of those columns in order. Blank lines and `#` comments are
+/// skipped. Throws InvalidInput naming `source` and the line for a header without those columns first, a
+/// row with fewer values, a value that is not a number, or no header at all.
+std::vector<std::vector<double>> read_numeric_columns(std::string_view text, std::string_view source,
+                                                      std::initializer_list<const char*> columns);
 
 }  // namespace poinsot::io::detail

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "optimal_pointing_output.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/io/summary.hpp"
@@ -273,58 +274,6 @@ OptimalRun run_optimal(const OptimalScenario& sc,
   return r;
 }
 
-namespace {
-
-/// "TITLE: keep_out "sun" smallest margin m rad at t = … s; …\n" (PointingMargins of the problem's cones).
-std::string pointing_lines(std::string_view title, const optimal::ReorientationProblem& p,
-                           const optimal::PointingMargins& m) {
-  std::string out(title);
-  for (std::size_t c = 0; c < p.pointing.size() && c < m.margin.size(); ++c)
-    out += fmt::format("{} {} smallest margin {} rad at t = {} s", c == 0 ? ":" : ";", p.pointing[c].label(),
-                       format_number(m.margin[c], 3), format_number(m.time[c], 6));
-  return out + "\n";
-}
-
-/// The column of constraint c in trajectory.csv: angle_keep_out_1, angle_keep_in_2, ... (rad).
-std::string pointing_column(const optimal::ReorientationProblem& p, std::size_t c) {
-  const std::string field = optimal::pointing_field(p, c);  // optimal_control.keep_out[1]
-  const auto open = field.find('['), dot = field.find('.');
-  return fmt::format("angle_{}_{}", field.substr(dot + 1, open - dot - 1),
-                     field.substr(open + 1, field.size() - open - 2));
-}
-
-nlohmann::ordered_json pointing_json(const OptimalRun& r) {
-  const auto& p = r.scenario.problem;
-  const auto& d = direct_optimum(r);
-  auto out = nlohmann::ordered_json::array();
-  for (std::size_t c = 0; c < p.pointing.size(); ++c) {
-    const auto& pc = p.pointing[c];
-    double multiplier = 0.0;
-    if (c < d.pointing_multiplier.size())
-      for (const double y : d.pointing_multiplier[c])
-        multiplier = std::max(multiplier, y);
-    const auto margin_or_null = [](const optimal::PointingMargins& m, std::size_t i) {
-      return i < m.margin.size() && std::isfinite(m.margin[i])
-                 ? nlohmann::ordered_json({{"margin", m.margin[i]}, {"t", m.time[i]}})
-                 : nlohmann::ordered_json();
-    };
-    out.push_back({{"name", pc.name},
-                   {"kind", std::string(optimal::pointing_kind_name(pc.kind))},
-                   {"column", pointing_column(p, c)},
-                   {"boresight_body", ordered_array(pc.boresight_body)},
-                   {"direction_space", ordered_array(pc.direction_space)},
-                   {"half_angle", pc.half_angle},
-                   {"widening", d.pointing_widening},
-                   {"largest_multiplier", multiplier},
-                   {"direct_replay", r.direct_replayed ? margin_or_null(r.direct_replay.pointing, c)
-                                                       : nlohmann::ordered_json()},
-                   {"indirect", margin_or_null(r.verification.pointing, c)}});
-  }
-  return out;
-}
-
-}  // namespace
-
 std::string optimal_report(const OptimalRun& r) {
   const auto& p = r.scenario.problem;
   std::ostringstream o;
@@ -362,8 +311,8 @@ std::string optimal_report(const OptimalRun& r) {
         format_number(r.direct_replay.attitude_error, 3), format_number(r.direct_replay.rate_error, 3),
         format_number(r.direct_replay.scaled_error(), 3), format_number(r.direct_replay_tolerance));
   if (r.direct_replayed && !p.pointing.empty())
-    o << pointing_lines("cones on the direct re-simulation (DOP853, steps ≤ 1/16 interval)", p,
-                        r.direct_replay.pointing);
+    o << detail::pointing_lines("cones on the direct re-simulation (DOP853, steps ≤ 1/16 interval)", p,
+                                r.direct_replay.pointing);
   if (direct_optimum(r).pointing_widening > 0.0)
     o << fmt::format("  cones widened by {} rad at the collocation points so that they hold between them\n",
                      format_number(direct_optimum(r).pointing_widening, 3));
@@ -435,7 +384,7 @@ std::string optimal_report(const OptimalRun& r) {
                      format_number(v.direct_indirect_difference, 3))
       << (p.pointing.empty()
               ? std::string()
-              : pointing_lines("  cones along the indirect solution (none active)", p, v.pointing));
+              : detail::pointing_lines("  cones along the indirect solution (none active)", p, v.pointing));
     for (const auto& f : v.failures)
       o << "  FAILED: " << f << "\n";
   }
@@ -486,7 +435,7 @@ std::string optimal_summary_json(const OptimalRun& r) {
   const auto finite_or_null = [](double x) {
     return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json();
   };
-  j["pointing"] = pointing_json(r);
+  j["pointing"] = detail::pointing_json(r);
   j["direct_replay"] = {{"run", r.direct_replayed},
                         {"attitude_error", finite_or_null(r.direct_replay.attitude_error)},
                         {"rate_error", finite_or_null(r.direct_replay.rate_error)},
@@ -560,7 +509,7 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
   const auto& cones = r.scenario.problem.pointing;
   traj.append("t,qw,qx,qy,qz,wx,wy,wz,ux,uy,uz,Lx,Ly,Lz");
   for (std::size_t c = 0; c < cones.size(); ++c)
-    traj.append(",").append(pointing_column(r.scenario.problem, c));
+    traj.append(",").append(detail::pointing_column(r.scenario.problem, c));
   traj += "\n";
   // The row's end: each boresight's angle to its cone's axis (rad).
   const auto angles = [&](const Mat3& R) {
