@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The side-by-side comparison: poinsot's RATTLE beside Bullet, ODE, MuJoCo and Simbody on the same
-# chain of ball-jointed rods, in one Google Benchmark program (bench/peers/, docs/benchmarks.md).
+# chain of ball-jointed rods, in one Google Benchmark program (bench/peers/, docs/measurements/peers.md).
 #   1. installs the four peers' Debian packages with scripts/setup.sh (idempotent; they are not in its own list:
 #      poinsot and its CI do not need them),
 #   2. configures the release preset with -DPOINSOT_BENCH_PEERS=ON and builds bench_multibody_peers only,

@@ -3,7 +3,7 @@
 
 Runs each selected command of BUILD/compile_commands.json (the ccache launcher dropped, the object written to a
 temporary file, the build tree left as it is) and prints the compiler's user + sys time, then the total. CPU time,
-unlike wall time, does not depend on how loaded the machine is (docs/benchmarks.md, "CI time").
+unlike wall time, does not depend on how loaded the machine is (docs/measurements/ci_time.md).
 
 Usage: scripts/compile-cpu.py BUILD [REGEX] [--every N] [--add FLAG]...
   REGEX       only the sources whose path matches (default: all)

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Random optimal-control problems for `poinsot optimize`, and how it ends on them (docs/optimal_control.md,
-"The random-problem benchmark").
+"""Random optimal-control problems for `poinsot optimize`, and how it ends on them
+(docs/measurements/optimal_control.md, "The random-problem benchmark").
 
 Each problem is a scenario file generated from (family, seed, index) alone, so any problem can be written
 again and run by hand:

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""Seeded random families of minimum-time slews for the indirect method of docs/optimal_control.md, section 3
-("Norm bound on any body" and "Active rate bounds"), each problem solved by `poinsot optimize --json`:
+"""Seeded random families of minimum-time slews for the indirect method of docs/optimal_control_theory.md,
+section 3 (figures: docs/measurements/optimal_shooting.md, "Norm bound on any body" and "Active rate bounds"),
+each problem solved by `poinsot optimize --json`:
 
   norm       rest to rest, ‖u‖ ≤ ū: principal moments drawn in [1, 4] kg·m² (triangle inequality, ratio ≤ 4),
              a random axis, Θ in 20° … 180°, ū in [0.2, 2] N·m;

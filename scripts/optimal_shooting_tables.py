@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""The two tables of docs/optimal_control.md, section 3, measured with `poinsot optimize --json` on variants of
+"""The tables of docs/measurements/optimal_shooting.md, measured with `poinsot optimize --json` on variants of
 scenario files (deterministic: the same binary gives the same table):
 
   spin      examples/optimal/racket_spin_phase.toml (Brody's racket spinning at 1 rad/s about its unstable

@@ -70,7 +70,7 @@ def test_rate_bound_in_rotation_matrix_coordinates():
 def test_rotation_matrix_coordinates_arrays_and_files(tmp_path):
     r = poinsot.optimize(hinge_problem("rotation_matrix", 8), out_dir=tmp_path)
     assert r.optimal, r.status
-    # Hermite–Simpson's error in R-coordinates at N = 8: 2.0e-5 relative (docs/optimal_control.md).
+    # Hermite–Simpson's error in R-coordinates at N = 8: 2.0e-5 relative (docs/optimal_control_multibody.md).
     assert r.cost == pytest.approx(EXACT, rel=1e-4)
     n = 2 * 8 + 1
     assert r.t.shape == (n,) and r.x_space.shape == (n, 1, 3) and r.R_space_body.shape == (n, 1, 3, 3)

@@ -51,7 +51,7 @@ def test_per_axis_sphere_slew_files_and_report(cli, tmp_path):
     assert "status: optimal (verified)" in r.stdout
     summary = json.loads((out / "summary.json").read_text())
     assert summary["optimal"] is True
-    # Bilimoria & Wie's slew: 3.2430832775 s (docs/optimal_control.md), five switches.
+    # Bilimoria & Wie's slew: 3.2430832775 s (docs/measurements/optimal_control.md), five switches.
     assert abs(summary["indirect"]["final_time"] - 3.2430832775) < 1e-9
     assert len(summary["indirect"]["switches"]) == 5
     status, names, control = rows(out / "control.csv")

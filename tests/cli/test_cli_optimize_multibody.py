@@ -57,7 +57,7 @@ def test_hinge_rotation_matrix_coordinates_meet_the_closed_form(cli, tmp_path):
     summary = json.loads((out / "summary.json").read_text())
     assert summary["kind"] == "multibody_optimal" and summary["optimal"] is True
     # In R-coordinates (cos θ, sin θ) is not a polynomial: Hermite–Simpson's error at N = 8 is measured at
-    # 2.0e-5 relative (docs/optimal_control.md); 1e-4 leaves room for Ipopt's tolerance and other platforms.
+    # 2.0e-5 relative (docs/optimal_control_multibody.md); 1e-4 leaves room for Ipopt's tolerance and other platforms.
     exact = 12 * I_HINGE**2 * THETA**2 / T**3
     assert summary["solution"]["cost"] == pytest.approx(exact, rel=1e-4)
     # The control at the collocation points is the closed form u = 6IΘ/T² (1 − 2t/T) to the same order.

@@ -1,6 +1,6 @@
 """scripts/optimal_benchmark.py, the random-problem benchmark of `poinsot optimize`: its generator (valid,
 deterministic scenario files for every family) and a small fixed-seed run (the CI's version of the
-benchmark; the full table in docs/optimal_control.md comes from larger runs)."""
+benchmark; the full table in docs/measurements/optimal_control.md comes from larger runs)."""
 import os
 import subprocess
 import sys
@@ -42,7 +42,7 @@ def test_bad_arguments_are_refused(source_dir, tmp_path):
 @pytest.mark.slow_under_sanitizers
 def test_fixed_seed_run_is_valid_and_verifies_the_tuned_families(source_dir, tmp_path):
     """Every family's problem 0 of seed 1 through the tool (exit 2, a generator defect, fails the script), and
-    the families that converge on every problem measured (docs/optimal_control.md) verified optimal."""
+    the families that converge on every problem measured (docs/measurements/optimal_control.md) verified optimal."""
     exe = os.environ.get("POINSOT_CLI")
     if not exe:
         pytest.fail("POINSOT_CLI is not set: run these tests through ctest")

@@ -4,7 +4,7 @@ chart of the control and the switching functions, read back from the page and ch
 Oracles: trajectory.csv (the torque drawn at a frame is R(q) u of that row, to round-off), control.csv (the
 chart's control is its columns exactly), summary.json (the switches marked are its switch times), the
 scenario (the bounds and the target), and Pontryagin's principle for a per-axis bound in minimum time,
-u_i = -u_max,i sign(sigma_i) (docs/optimal_control.md): every marked switch of axis i is a zero of sigma_i in
+u_i = -u_max,i sign(sigma_i) (docs/optimal_control_theory.md): every marked switch of axis i is a zero of sigma_i in
 the chart (its sign changes between the costate samples around it), and between switches the chart's control
 has the sign of -sigma_i. The Bilimoria & Wie slew takes 0.3 s to solve."""
 import csv
