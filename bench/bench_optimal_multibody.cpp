@@ -1,7 +1,7 @@
 // Optimal motions of coupled bodies: the rotation-matrix transcription against the minimal-coordinate one
-// (docs/optimal_control.md, "Multibody systems"). The argument "minimal" is 0 for the rotation-matrix
-// transcription, 1 for the minimal-coordinate one. Each benchmark runs once (Iterations(1)); its counters and
-// printed lines are the measurement:
+// (docs/optimal_control_multibody.md, "Multibody systems"). The argument "minimal" is 0 for the
+// rotation-matrix transcription, 1 for the minimal-coordinate one. Each benchmark runs once (Iterations(1));
+// its counters and printed lines are the measurement:
 // - BM_ArmRandomBoundaryConditions: 100 rest-to-rest motions of the two-link arm between
 //   random configurations (fixed seed), N = 6 intervals, T = 1.5 s, each from the naive guess (linear
 //   interpolation of every state coordinate, all else zero), at most 200 Ipopt iterations: the fraction
@@ -143,7 +143,7 @@ BENCHMARK(BM_ArmFineMesh)
 // The arm of the tests in R-coordinates from the naive guess, with MUMPS' scaling of the KKT matrix as
 // Ipopt chooses it by default (range(0) = 77, MultibodyOptions' default) and without it (0), on N = range(1)
 // intervals: Ipopt iterations and the process CPU time per iteration. Their ratio is the figure of
-// docs/optimal_control.md ("The cost of the R-coordinate transcription").
+// docs/measurements/optimal_multibody.md ("The cost of the R-coordinate transcription").
 void BM_ArmKktScaling(benchmark::State& state) {
   MultibodyOptions options;
   options.mumps_scaling = static_cast<int>(state.range(0));
@@ -175,8 +175,8 @@ BENCHMARK(BM_ArmKktScaling)
 // warm_start), up to N = range(0): per mesh and coordinates the cost (printed in full), Ipopt iterations and
 // the process CPU time; then the relative difference of the two costs and of the two trajectories at the
 // common collocation points: the largest angle between the two attitudes of a link (rad) and the largest
-// control difference relative to the peak control (docs/optimal_control.md, "Convergence on the arm and the
-// formulations at 1e-8").
+// control difference relative to the peak control (docs/measurements/optimal_multibody.md, "Convergence on
+// the arm and the formulations at 1e-8").
 void BM_ArmFormulationsAgree(benchmark::State& state) {
   const int finest = static_cast<int>(state.range(0));
   const double down = -0.5 * std::numbers::pi;

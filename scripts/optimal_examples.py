@@ -31,6 +31,8 @@ EXAMPLES = {
     "falling_cat": (("solution", "cost"), 0.243543547267, 1e-9),       # the 12-interval optimum
     # the active cone: the direct solution (mesh tolerance 1e-7) of the cone widened by 4e-6 rad
     "sun_avoidance_slew": (("direct", "final_time"), 28.0846451, 1e-6, 3),
+    # reaction wheels: the direct solution (mesh tolerance 1e-7), momentum bounds tightened by 2.75e-5
+    "reaction_wheel_slew": (("direct", "cost"), 0.0050589720215, 1e-6, 3),
 }
 
 

@@ -1,12 +1,12 @@
 // Side-by-side cost and accuracy of poinsot's RATTLE and the peer libraries (Bullet, ODE, MuJoCo, Simbody) on
 // the benchmark chain of N ball-jointed thin rods (1 m, 1 kg, radius 1 cm) released from horizontal under
 // gravity, dt = 1e-3 s, in one process. Each library is registered when CMake found it
-// (POINSOT_PEER_<LIBRARY>); what each is configured with: its chain_<library>.cpp and docs/benchmarks.md.
-// After the runs, the growth exponent p of each library's CPU time per step, t ≈ c N^p, fitted by least
-// squares on log t against log N over N >= 16, and the slope between the two largest sizes. (Google
-// Benchmark's BigO is not used: it only picks among N, N log N, N², ..., and the runs have fixed iteration
-// counts, one family per N; see chain_bench.hpp.) Counters: energy_err_rel, max_gap_m, tip_z_1s_m
-// (chain_bench.hpp). Run: bash scripts/bench-peers.sh, or
+// (POINSOT_PEER_<LIBRARY>); what each is configured with: its chain_<library>.cpp and
+// docs/measurements/peers.md. After the runs, the growth exponent p of each library's CPU time per step, t ≈
+// c N^p, fitted by least squares on log t against log N over N >= 16, and the slope between the two largest
+// sizes. (Google Benchmark's BigO is not used: it only picks among N, N log N, N², ..., and the runs have
+// fixed iteration counts, one family per N; see chain_bench.hpp.) Counters: energy_err_rel, max_gap_m,
+// tip_z_1s_m (chain_bench.hpp). Run: bash scripts/bench-peers.sh, or
 //   build/release/bench/peers/bench_multibody_peers --benchmark_counters_tabular=true
 //   --benchmark_repetitions=3
 #include <benchmark/benchmark.h>

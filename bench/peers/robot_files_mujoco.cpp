@@ -1,4 +1,4 @@
-// Robot files in poinsot and in MuJoCo 2.2, in one process (docs/benchmarks.md, "Robot files beside
+// Robot files in poinsot and in MuJoCo 2.2, in one process (docs/measurements/peers.md, "Robot files beside
 // MuJoCo"). For each MJCF model both can load — MuJoCo's own sample arm26.xml, and the test models
 // pendulum2.xml (a double pendulum under gravity) and joints.xml (a hinge, a slide, a ball, two hinges about
 // one point, three hinges about one point, welds and a free body) — with MuJoCo's contacts, limits, passive

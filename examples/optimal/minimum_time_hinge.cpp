@@ -1,7 +1,7 @@
 // Minimum time for a rod on a motor hinge (gravity off), rest to rest through Θ = 1 rad with |u| ≤ 1 N·m, in
 // both multibody transcriptions with a free final time, against the bang-bang time T* = 2 √(Θ I / ū): the
-// table of docs/optimal_control.md, "Minimum time". The rod: 1 kg, 1 m, radius 5 cm along body x, hinged at
-// its end about z (I = J_zz + m (ℓ/2)² about the hinge). Run:
+// table of docs/optimal_control_multibody.md, "Minimum time". The rod: 1 kg, 1 m, radius 5 cm along body x,
+// hinged at its end about z (I = J_zz + m (ℓ/2)² about the hinge). Run:
 // build/release/examples/example_minimum_time_hinge
 #include <cmath>
 #include <cstdio>

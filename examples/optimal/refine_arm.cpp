@@ -1,6 +1,6 @@
 // Mesh refinement of the two-link arm (minimal coordinates, the arm of examples/optimal/two_link_arm.toml):
 // from 8 equal intervals, every interval whose local error exceeds the tolerance is split, against equal
-// intervals of the same number (docs/optimal_control.md, "Mesh refinement"). Run:
+// intervals of the same number (docs/optimal_control_multibody.md, "Mesh refinement"). Run:
 // build/release/examples/example_refine_arm (seconds).
 #include <algorithm>
 #include <cstdio>

@@ -37,6 +37,9 @@ class DirectSolution:
     With keep-out or keep-in cones: ``pointing_multiplier`` (c, n), the NLP multiplier of each cone's row at
     each sample (≥ 0 on the active set, 0 off it), and ``pointing_widening`` rad, how much the cones imposed
     at the samples were widened so that the re-simulated control meets them between the samples.
+    With reaction wheels: ``torque_body`` holds the wheels' motor torques, ``wheel_momentum`` (n, 3) N·m·s their
+    angular momenta (None without wheels), and ``wheel_momentum_margin`` the relative tightening of the momentum
+    bounds imposed at the samples so that the re-simulated control meets them between the samples.
     """
 
     converged: bool
@@ -57,6 +60,8 @@ class DirectSolution:
     nlp_iterations: int
     pointing_multiplier: np.ndarray
     pointing_widening: float
+    wheel_momentum: np.ndarray | None
+    wheel_momentum_margin: float
 
 
 @dataclass(frozen=True)
@@ -184,13 +189,22 @@ def _solve_single_body(scenario: Any, out_dir: str) -> OptimalSolution:
         costate_t = direct.costate_time
         hamiltonian = np.full(len(costate_t), np.nan)
         sigma = direct.costate_omega @ np.linalg.inv(J).T
+    wheels = problem.reaction_wheels
+    if wheels is not None:
+        # The bus J_b = J − A diag(I) Aᵀ carries ω; L = R (J_b ω + A h); σ = −Aᵀ J_b⁻¹ p_ω per wheel torque.
+        A = np.asarray(wheels["axes"]).T
+        J_bus = J - A @ np.diag(wheels["spin_inertia"]) @ A.T
+        body_momentum = src["omega_body"] @ J_bus.T + direct.wheel_momentum @ A.T
+        sigma = -direct.costate_omega @ np.linalg.inv(J_bus).T @ A
+    else:
+        body_momentum = src["omega_body"] @ J.T
     interpretation = dict(summary.get("interpretation", {}))
     interpretation.update(raw["interpretation"])
     return OptimalSolution(
         kind="rigid_body", optimal=raw["optimal"], status=raw["status"], method=method,
         objective=problem.objective, final_time=src["final_time"], cost=src["cost"], t=src["t"], R=R,
         quaternion=quaternion, omega_body=src["omega_body"], torque_body=src["torque_body"],
-        L_space=np.einsum("nij,nj->ni", R, src["omega_body"] @ J.T), costate_t=costate_t,
+        L_space=np.einsum("nij,nj->ni", R, body_momentum), costate_t=costate_t,
         costate_attitude_body=src["costate_attitude_body"], costate_omega=src["costate_omega"],
         switching_function=sigma, hamiltonian=hamiltonian, switch_times=ind["switch_times"],
         switch_axes=list(ind["switch_axes"]), checks=summary["checks"], interpretation=interpretation,

@@ -76,7 +76,7 @@ class OptimalScenario:
 
 class ReorientationProblem:
     """The optimal reorientation of one rigid body by body torques: the data of the optimal-control problem, checked once, shared read-only by the direct (collocation) and indirect (shooting) methods."""
-    def __init__(self, *, inertia: numpy.typing.ArrayLike, torque_max: numpy.typing.ArrayLike, torque_bound: str = ..., rate_max: object = ..., objective: str = ..., final_time: object = ..., energy_weight: object = ..., attitude_initial: object = ..., attitude_final: object = ..., omega_initial: object = ..., omega_final: object = ..., free_final_attitude: bool = ..., keep_out: object = ..., keep_in: object = ...) -> None:
+    def __init__(self, *, inertia: numpy.typing.ArrayLike, torque_max: numpy.typing.ArrayLike, torque_bound: str = ..., rate_max: object = ..., objective: str = ..., final_time: object = ..., energy_weight: object = ..., attitude_initial: object = ..., attitude_final: object = ..., omega_initial: object = ..., omega_final: object = ..., free_final_attitude: bool = ..., keep_out: object = ..., keep_in: object = ..., reaction_wheels: object = ...) -> None:
         """A validated problem."""
     def __repr__(self) -> str:
         ...
@@ -104,6 +104,8 @@ class ReorientationProblem:
     def pointing(self) -> list: ...
     @property
     def rate_max(self) -> object: ...
+    @property
+    def reaction_wheels(self) -> object: ...
     @property
     def torque_bound(self) -> str: ...
     @property

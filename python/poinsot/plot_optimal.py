@@ -4,7 +4,9 @@ summary.json says ``"kind": "optimal"`` (so ``poinsot optimize --plot`` and ``py
 Reads ``trajectory.csv``, ``costates.csv`` and ``summary.json`` and writes into the folder:
 
 - ``torque.png``: the body torques u_i (N·m) against their bounds (per axis ±u_max,i, or ±u_max and ‖u‖ for a
-  norm bound), the switch times of the indirect solution as vertical lines;
+  norm bound), or with reaction wheels the wheels' motor torques, the switch times of the indirect solution as
+  vertical lines;
+- ``wheels.png`` (with reaction wheels): each wheel's angular momentum h_k (N·m·s) against its bound, if any;
 - ``switching.png``: the switching functions σ = J⁻¹p_ω (the minimising control is u_i = −u_max,i sign σ_i);
 - ``omega.png``: the body rates ω_i (rad/s) against the rate bound, if any;
 - ``attitude_error.png``: the angle (rad) from the attitude to the target R_f, log scale (with a free final
@@ -90,20 +92,36 @@ def plot_optimal_run(folder):
     colours = ("C0", "C1", "C2")
     fig, ax = plt.subplots(figsize=(8, 4.5))
     bound = problem.get("torque_max")
+    wheels = summary.get("reaction_wheels")
+    u_columns = ("u1", "u2", "u3") if wheels else ("ux", "uy", "uz")
     for i, c in enumerate(colours):
-        ax.plot(t, traj[f"u{'xyz'[i]}"], color=c, lw=1.2, label=f"u{i + 1}")
+        ax.plot(t, traj[u_columns[i]], color=c, lw=1.2, label=f"u{i + 1}")
         if problem.get("torque_bound") == "per_axis" and bound is not None:
             for sign in (1, -1):
                 ax.axhline(sign * bound[i], color=c, lw=0.7, ls="--")
     if problem.get("torque_bound") == "norm" and bound is not None:
-        norm = np.sqrt(traj["ux"] ** 2 + traj["uy"] ** 2 + traj["uz"] ** 2)
+        norm = np.sqrt(sum(traj[name] ** 2 for name in u_columns))
         ax.plot(t, norm, color="k", lw=1.0, label="‖u‖")
         for sign in (1, -1):
             ax.axhline(sign * bound, color="k", lw=0.7, ls="--")
     _switches(ax, summary)
-    ax.set(xlabel="t (s)", ylabel="body torque (N·m)", title=_title(summary, "torques and bounds"))
+    ax.set(xlabel="t (s)", ylabel="wheel motor torque (N·m)" if wheels else "body torque (N·m)",
+           title=_title(summary, "torques and bounds"))
     ax.legend(loc="best", fontsize=8)
     save(fig, "torque.png")
+
+    if wheels:
+        fig, ax = plt.subplots(figsize=(8, 4.5))
+        bounds = wheels.get("momentum_max") or [None] * 3
+        for i, c in enumerate(colours):
+            ax.plot(t, traj[f"h{i + 1}"], color=c, lw=1.2, label=f"h{i + 1}")
+            if bounds[i] is not None:
+                for sign in (1, -1):
+                    ax.axhline(sign * bounds[i], color=c, lw=0.7, ls="--")
+        ax.set(xlabel="t (s)", ylabel="wheel angular momentum (N·m·s)",
+               title=_title(summary, "reaction wheels (dashed: the bounds)"))
+        ax.legend(loc="best", fontsize=8)
+        save(fig, "wheels.png")
 
     fig, ax = plt.subplots(figsize=(8, 4.5))
     for i, c in enumerate(colours):

@@ -4,6 +4,7 @@
 #include <pybind11/stl.h>
 
 #include <numbers>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -84,13 +85,56 @@ void read_cones(const py::object& list, opt::PointingKind kind, std::vector<opt:
   }
 }
 
+/// The wheels from a dict {axes (3, 3: one wheel's spin axis a row, any non-zero length; default the body
+/// axes), spin_inertia (3,) kg·m², momentum_max (one number or (3,), N·m·s; optional), momentum_initial (3,)
+/// N·m·s (default 0)}; None: no wheels.
+std::optional<opt::ReactionWheels> read_wheels(const py::object& obj) {
+  if (obj.is_none()) return std::nullopt;
+  const std::string field = "optimal_control.reaction_wheels";
+  if (!py::isinstance<py::dict>(obj))
+    throw poinsot::InvalidInput(field +
+                                ": expected a dict with spin_inertia and optionally axes, "
+                                "momentum_max and momentum_initial");
+  const py::dict d = py::reinterpret_borrow<py::dict>(obj);
+  for (const auto& [k, v] : d) {
+    const std::string name = py::str(k);
+    if (name != "axes" && name != "spin_inertia" && name != "momentum_max" && name != "momentum_initial")
+      throw poinsot::InvalidInput(
+          field + "." + name +
+          ": unknown key; expected axes, spin_inertia, momentum_max or momentum_initial");
+  }
+  opt::ReactionWheels w;
+  if (d.contains("axes")) {
+    const Mat3 rows = to_mat3(d["axes"], "reaction_wheels.axes");
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = rows.row(k).transpose();
+      if (!(a.norm() > 0.0))
+        throw poinsot::InvalidInput(field + ".axes[" + std::to_string(k + 1) + "]: " + format_vector(a) +
+                                    "; expected a nonzero axis");
+      w.axes_body.col(k) = a.normalized();
+    }
+  }
+  if (!d.contains("spin_inertia"))
+    throw poinsot::InvalidInput(field + ".spin_inertia: missing; expected [I1, I2, I3] (kg·m²)");
+  w.spin_inertia = to_vec3(d["spin_inertia"], "reaction_wheels.spin_inertia");
+  if (d.contains("momentum_max")) {
+    const py::array a = py::array::ensure(d["momentum_max"]);
+    w.momentum_max = a && a.ndim() == 0 ? Vec3::Constant(d["momentum_max"].cast<double>())
+                                        : to_vec3(d["momentum_max"], "reaction_wheels.momentum_max");
+  }
+  if (d.contains("momentum_initial"))
+    w.momentum_initial = to_vec3(d["momentum_initial"], "reaction_wheels.momentum_initial");
+  return w;
+}
+
 opt::ReorientationProblem make_problem(const ArrayLike& inertia, const ArrayLike& torque_max,
                                        const std::string& torque_bound, const py::object& rate_max,
                                        const std::string& objective, const py::object& final_time,
                                        const py::object& energy_weight, const py::object& attitude_initial,
                                        const py::object& attitude_final, const py::object& omega_initial,
                                        const py::object& omega_final, bool free_final_attitude,
-                                       const py::object& keep_out, const py::object& keep_in) {
+                                       const py::object& keep_out, const py::object& keep_in,
+                                       const py::object& reaction_wheels) {
   opt::ReorientationProblem p;
   p.inertia_body = to_inertia(inertia.obj);
   if (torque_bound != "per_axis" && torque_bound != "norm")
@@ -132,6 +176,7 @@ opt::ReorientationProblem make_problem(const ArrayLike& inertia, const ArrayLike
   p.free_final_attitude = free_final_attitude;
   read_cones(keep_out, opt::PointingKind::keep_out, p.pointing);
   read_cones(keep_in, opt::PointingKind::keep_in, p.pointing);
+  p.wheels = read_wheels(reaction_wheels);
   opt::validate(p);
   return p;
 }
@@ -181,6 +226,8 @@ py::dict direct_dict(const opt::DirectSolution& d) {
       std::move(multipliers),
       {static_cast<py::ssize_t>(d.pointing_multiplier.size()), static_cast<py::ssize_t>(d.time.size())});
   o["pointing_widening"] = d.pointing_widening;
+  o["wheel_momentum"] = d.wheel_momentum.empty() ? py::object(py::none()) : stack_vec3(d.wheel_momentum);
+  o["wheel_momentum_margin"] = d.wheel_momentum_margin;
   o["mesh_error"] = as_array(d.mesh_error);
   o["max_mesh_error"] = d.max_mesh_error;
   o["mesh_iterations"] = d.mesh_iterations;
@@ -241,6 +288,7 @@ void bind_problem(py::module_& m) {
           py::arg("attitude_final") = py::none(), py::arg("omega_initial") = py::none(),
           py::arg("omega_final") = py::none(), py::arg("free_final_attitude") = false,
           py::arg("keep_out") = py::none(), py::arg("keep_in") = py::none(),
+          py::arg("reaction_wheels") = py::none(),
           "A validated problem. inertia: principal moments (3,) or J (3, 3) about the centre of mass, body "
           "frame (kg·m²); torque_max: (3,) per-axis bounds or one number with torque_bound=\"norm\" (N·m); "
           "rate_max: |ω_i| bound (rad/s) or None; objective: \"minimum_time\", \"minimum_energy\" (needs "
@@ -249,8 +297,12 @@ void bind_problem(py::module_& m) {
           "omega_final: body frame (rad/s), default 0; free_final_attitude: detumbling (no attitude_final); "
           "keep_out, keep_in: lists of cones, each a dict {boresight_body (body frame), direction_space "
           "(space frame), half_angle (rad) or half_angle_deg, name (optional)}: the boresight stays at least "
-          "(keep_out) or at most (keep_in) the half-angle from the direction. "
-          "Raises ValueError naming the field for invalid input (optimal::validate).")
+          "(keep_out) or at most (keep_in) the half-angle from the direction; reaction_wheels: a dict "
+          "{spin_inertia (3,) kg·m², axes (3, 3) one spin axis a row (default the body axes), momentum_max "
+          "(N·m·s, one number or (3,); optional), momentum_initial (3,) N·m·s}: the controls are then the "
+          "wheels' motor torques (torque_max per wheel) and inertia is the whole spacecraft's with the "
+          "wheels "
+          "locked. Raises ValueError naming the field for invalid input (optimal::validate).")
       .def_property_readonly(
           "inertia_body", [](const opt::ReorientationProblem& p) { return from_mat3(p.inertia_body); },
           POINSOT_DOC(optimal_ReorientationProblem_inertia_body))
@@ -302,6 +354,19 @@ void bind_problem(py::module_& m) {
             return out;
           },
           POINSOT_DOC(optimal_ReorientationProblem_pointing))
+      .def_property_readonly(
+          "reaction_wheels",
+          [](const opt::ReorientationProblem& p) -> py::object {
+            if (!p.wheels) return py::none();
+            py::dict d;
+            d["axes"] = from_mat3(p.wheels->axes_body.transpose());
+            d["spin_inertia"] = from_vec3(p.wheels->spin_inertia);
+            d["momentum_max"] = from_vec3(p.wheels->momentum_max);
+            d["momentum_initial"] = from_vec3(p.wheels->momentum_initial);
+            d["total_momentum_space"] = from_vec3(p.wheel_system_momentum());
+            return d;
+          },
+          POINSOT_DOC(optimal_ReorientationProblem_wheels))
       .def_property_readonly(
           "objective",
           [](const opt::ReorientationProblem& p) { return std::string(opt::objective_name(p.objective)); })

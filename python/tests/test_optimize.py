@@ -238,6 +238,16 @@ def test_converged_direct_is_its_own_outcome_never_optimal():
     (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1],
           keep_out=[{"boresight_body": [1, 0, 0], "direction_space": [0, 1, 0], "angle": 0.1}]),
      r"keep_out\[1\]\.angle: unknown key"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1], reaction_wheels={"momentum_max": 1.0}),
+     r"reaction_wheels\.spin_inertia: missing"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1], reaction_wheels={"spin_inertia": [0.1] * 3, "speed": 1}),
+     r"reaction_wheels\.speed: unknown key"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1],
+          reaction_wheels={"spin_inertia": [0.1] * 3, "axes": [[1, 0, 0], [0, 1, 0], [0, 1, 0]]}),
+     r"reaction_wheels\.axes: det A"),
+    (dict(inertia=[1, 1, 1], torque_max=[1, 1, 1], omega_initial=[0, 0, 1],
+          reaction_wheels={"spin_inertia": [0.1] * 3, "momentum_max": 0.5}),
+     r"reaction_wheels\.momentum_max: .* final state"),
 ])
 def test_bad_problems_raise_value_error_naming_the_field(kwargs, match):
     with pytest.raises(ValueError, match=match) as err:
@@ -262,6 +272,26 @@ def test_keep_out_cone_the_sphere_misses_leaves_the_verified_optimum():
     assert summary["indirect"]["margin"] == pytest.approx(0.05, abs=1e-6)
     assert r.direct.pointing_multiplier.shape == (1, len(r.direct.t))
     assert np.max(np.abs(r.direct.pointing_multiplier)) < 1e-9 and r.direct.pointing_widening == 0.0
+
+
+def test_reaction_wheel_slew_is_the_single_axis_closed_form():
+    """Three wheels on the axes of a bus J_b = diag(3, 4, 2) (the spacecraft's inertia less the wheels' axial
+    parts) turn it 1 rad about z in 10 s at minimum energy: u_z = −6 I Θ/T² (1 − 2t/T), cost 12 I² Θ² / T³,
+    h_z = −I θ̇, converged (direct) as the shooting does not model wheels (docs/reaction_wheels.md)."""
+    I, theta, T = 2.0, 1.0, 10.0
+    p = poinsot.optimal.ReorientationProblem(
+        inertia=[3.1, 4.1, I + 0.1], torque_max=[1, 1, 1], objective="minimum_energy", final_time=T,
+        attitude_final=[math.cos(theta / 2), 0.0, 0.0, math.sin(theta / 2)],
+        reaction_wheels={"spin_inertia": [0.1, 0.1, 0.1], "momentum_max": [1, 1, 1]})
+    assert p.reaction_wheels["total_momentum_space"].tolist() == [0, 0, 0]
+    r = poinsot.optimize(p, mesh_tolerance=1e-9)
+    assert r.outcome == "converged_direct" and not r.optimal and "reaction wheels" in r.status
+    assert r.cost == pytest.approx(12 * I**2 * theta**2 / T**3, rel=1e-8)
+    t = r.direct.t
+    np.testing.assert_allclose(r.direct.torque_body[:, 2], -6 * I * theta / T**2 * (1 - 2 * t / T), atol=1e-6)
+    np.testing.assert_allclose(r.direct.wheel_momentum[:, 2], -I * 6 * theta / T**2 * t * (1 - t / T), atol=1e-6)
+    assert np.abs(r.L_space).max() < 1e-12  # R (J_b ω + A h): zero total angular momentum throughout
+    assert r.summary["reaction_wheels"]["replay"]["momentum_drift"] < 1e-11
 
 
 def test_bad_scenarios_raise_value_error():

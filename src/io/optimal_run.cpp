@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "optimal_pointing_output.hpp"
+#include "optimal_wheel_output.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/io/summary.hpp"
@@ -111,6 +112,12 @@ void run_phased(OptimalRun& r) {
     r.phased_status = "not applicable: Ipopt did not solve the direct method's last mesh";
     return;
   }
+  if (p.wheels) {
+    r.phased_status =
+        "not applicable: reaction wheels (the indirect method that the re-solve prepares "
+        "does not handle them)";
+    return;
+  }
   if (!p.pointing.empty()) {
     // Its arcs are fixed by the mesh solution's switches, and nothing keeps a cone that this solution
     // grazes from becoming active on them: Ipopt can then spend thousands of iterations on the re-solve.
@@ -133,6 +140,12 @@ void run_phased(OptimalRun& r) {
 }  // namespace
 
 namespace {
+
+/// Whether the problem bounds its wheels' momenta (the replay must then meet those bounds).
+bool p_has_momentum_bound(const OptimalRun& r) {
+  const auto& w = r.scenario.problem.wheels;
+  return w && w->has_momentum_bound();
+}
 
 /// `status` without a leading "not applied: " or "not converged: " (it follows "not verified: ").
 std::string reason_of(const std::string& status) {
@@ -259,8 +272,10 @@ OptimalRun run_optimal(const OptimalScenario& sc,
           ? reason_of(r.indirect.status.empty() ? "indirect method not run" : r.indirect.status)
           : r.verification.failures.front();
   replay_direct_optimum(r, progress);
+  const bool wheels_held = !p_has_momentum_bound(r) ||
+                           r.direct_replay.wheel_momentum_excess <= optimal::wheel_momentum_replay_tolerance;
   if (r.direct_replayed && r.direct_replay.scaled_error() <= r.direct_replay_tolerance &&
-      r.direct_replay.pointing.worst() >= -optimal::pointing_replay_tolerance) {
+      r.direct_replay.pointing.worst() >= -optimal::pointing_replay_tolerance && wheels_held) {
     r.outcome = OptimalOutcome::converged_direct;
     r.status = fmt::format("converged (direct; minimum principle not verified: {})", reason);
   } else {
@@ -269,6 +284,11 @@ OptimalRun run_optimal(const OptimalScenario& sc,
     if (r.direct_replayed && r.direct_replay.pointing.worst() < -optimal::pointing_replay_tolerance)
       r.status = fmt::format("not converged: the direct control's re-simulation enters a cone by {} rad",
                              format_number(-r.direct_replay.pointing.worst(), 3));
+    if (r.direct_replayed && !wheels_held)
+      r.status = fmt::format(
+          "not converged: the direct control's re-simulation exceeds a wheel's momentum bound by {} "
+          "(relative)",
+          format_number(r.direct_replay.wheel_momentum_excess, 3));
   }
   explain_failure(r);
   return r;
@@ -288,6 +308,7 @@ std::string optimal_report(const OptimalRun& r) {
                                                   : "norm " + format_number(p.torque_max[0]))
     << " N·m";
   if (p.has_rate_bound()) o << "; rate bound " << format_number(p.rate_max) << " rad/s";
+  if (p.wheels) o << " (the wheels' motor torques)";
   for (const auto& c : p.pointing)
     o << fmt::format(
         "\n{}: boresight {} (body) {} {} deg of {} (space)", c.label(), format_vector(c.boresight_body),
@@ -313,6 +334,7 @@ std::string optimal_report(const OptimalRun& r) {
   if (r.direct_replayed && !p.pointing.empty())
     o << detail::pointing_lines("cones on the direct re-simulation (DOP853, steps ≤ 1/16 interval)", p,
                                 r.direct_replay.pointing);
+  o << detail::wheel_lines(r);
   if (direct_optimum(r).pointing_widening > 0.0)
     o << fmt::format("  cones widened by {} rad at the collocation points so that they hold between them\n",
                      format_number(direct_optimum(r).pointing_widening, 3));
@@ -436,6 +458,7 @@ std::string optimal_summary_json(const OptimalRun& r) {
     return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json();
   };
   j["pointing"] = detail::pointing_json(r);
+  j["reaction_wheels"] = detail::wheels_json(r);
   j["direct_replay"] = {{"run", r.direct_replayed},
                         {"attitude_error", finite_or_null(r.direct_replay.attitude_error)},
                         {"rate_error", finite_or_null(r.direct_replay.rate_error)},
@@ -507,7 +530,11 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
   const Mat3& J = r.scenario.problem.inertia_body;
   std::string traj = head, control = head, costates = head;
   const auto& cones = r.scenario.problem.pointing;
-  traj.append("t,qw,qx,qy,qz,wx,wy,wz,ux,uy,uz,Lx,Ly,Lz");
+  const auto& p = r.scenario.problem;
+  traj.append("t,qw,qx,qy,qz,wx,wy,wz,")
+      .append(detail::control_columns(p))
+      .append(",Lx,Ly,Lz")
+      .append(detail::wheel_momentum_columns(p));
   for (std::size_t c = 0; c < cones.size(); ++c)
     traj.append(",").append(detail::pointing_column(r.scenario.problem, c));
   traj += "\n";
@@ -518,7 +545,7 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
       out.append(",").append(format_number(c.angle(R)));
     return out;
   };
-  control.append("t,ux,uy,uz\n");
+  control.append("t,").append(detail::control_columns(p)).append("\n");
   costates.append(
       "t,p_theta_x,p_theta_y,p_theta_z,p_omega_x,p_omega_y,p_omega_z,sigma_x,sigma_y,sigma_z,H\n");
   const auto& s = r.indirect;
@@ -543,16 +570,28 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
     const auto& d = direct_optimum(r);
     for (std::size_t k = 0; k < d.time.size(); ++k) {
       const Quat& q = d.attitude[k];
-      traj += trajectory_row(d.time[k], q, d.omega_body[k], d.torque_body[k],
-                             q.toRotationMatrix() * (J * d.omega_body[k]));
+      // L: the body's angular momentum R J ω, or with wheels the whole spacecraft's R (J_b ω + A h).
+      const Vec3 L = p.wheels ? Vec3(q.toRotationMatrix() * (p.bus_inertia() * d.omega_body[k] +
+                                                             p.wheels->axes_body * d.wheel_momentum[k]))
+                              : Vec3(q.toRotationMatrix() * (J * d.omega_body[k]));
+      traj += trajectory_row(d.time[k], q, d.omega_body[k], d.torque_body[k], L);
+      if (p.wheels) {
+        std::string h;
+        for (int i = 0; i < 3; ++i)
+          h.append(",").append(format_number(d.wheel_momentum[k][i]));
+        traj.insert(traj.size() - 1, h);
+      }
       traj.insert(traj.size() - 1, angles(q.toRotationMatrix()));
       control += csv_row(d.time[k], {d.torque_body[k]});
     }
-    const Mat3 J_inv = J.inverse();
+    // σ = ∂H/∂u per unit of the control: J⁻¹ p_ω for body torques, −Aᵀ J_b⁻¹ p_ω for wheel torques.
+    const Mat3 sigma_of_p_omega =
+        p.wheels ? Mat3(-p.wheels->axes_body.transpose() * p.bus_inertia().inverse()) : Mat3(J.inverse());
     for (std::size_t k = 0; k < d.costate_time.size(); ++k)
-      costates += csv_row(d.costate_time[k],
-                          {d.costate_attitude_body[k], d.costate_omega[k], J_inv * d.costate_omega[k]},
-                          {std::nan("")});
+      costates +=
+          csv_row(d.costate_time[k],
+                  {d.costate_attitude_body[k], d.costate_omega[k], sigma_of_p_omega * d.costate_omega[k]},
+                  {std::nan("")});
   }
   write_file_atomic(dir + "/trajectory.csv", traj);
   write_file_atomic(dir + "/control.csv", control);

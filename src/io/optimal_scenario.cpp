@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
@@ -72,6 +73,32 @@ void read_pointing(const Source& src, const Section& oc, optimal::PointingKind k
   }
 }
 
+/// [optimal_control.reaction_wheels]: axes (three rows, one wheel's spin axis each, body frame, any
+/// non-zero length; default the body axes), spin_inertia (kg·m²), momentum_max (N·m·s, one number for every
+/// wheel or three; optional) and momentum_initial (N·m·s, default 0). Absent: no wheels.
+std::optional<optimal::ReactionWheels> read_wheels(const Source& src, const Section& oc) {
+  const Section s(src, oc.table("reaction_wheels"), "optimal_control.reaction_wheels",
+                  {"axes", "spin_inertia", "momentum_max", "momentum_initial"}, oc.node("reaction_wheels"));
+  if (!s.present()) return std::nullopt;
+  optimal::ReactionWheels w;
+  if (const auto rows = s.mat3("axes")) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 a = rows->row(k).transpose();
+      if (!(a.norm() > 0.0))
+        s.fail("axes", fmt::format("row {} is {}; expected a non-zero spin axis for wheel {}", k + 1,
+                                   format_vector(a), k + 1));
+      w.axes_body.col(k) = a.normalized();
+    }
+  }
+  s.require("spin_inertia", "[I1, I2, I3], each wheel's axial moment of inertia (kg·m²)");
+  w.spin_inertia = *s.vec3("spin_inertia");
+  if (s.has("momentum_max"))
+    w.momentum_max = s.node("momentum_max")->is_array() ? *s.vec3("momentum_max")
+                                                        : Vec3::Constant(*s.number("momentum_max"));
+  w.momentum_initial = s.vec3("momentum_initial").value_or(Vec3::Zero());
+  return w;
+}
+
 }  // namespace
 
 OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view source,
@@ -94,7 +121,7 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   const Section oc(src, root["optimal_control"].as_table(), "optimal_control",
                    {"objective", "torque_bound", "torque_max", "rate_max", "final_time", "energy_weight",
                     "mesh_tolerance", "initial_intervals", "max_mesh_iterations", "shooting_nodes", "phased",
-                    "phased_intervals_per_arc", "initial", "final", "keep_out", "keep_in"},
+                    "phased_intervals_per_arc", "initial", "final", "keep_out", "keep_in", "reaction_wheels"},
                    root.get("optimal_control"));
   if (!oc.present()) top.fail("optimal_control", "missing; expected an [optimal_control] section");
   auto& p = sc.problem;
@@ -135,6 +162,7 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   p.free_final_attitude = f.free_attitude;
   read_pointing(src, oc, optimal::PointingKind::keep_out, p.pointing);
   read_pointing(src, oc, optimal::PointingKind::keep_in, p.pointing);
+  p.wheels = read_wheels(src, oc);
   detail::located(src, root.get("optimal_control"), [&] { optimal::validate(p); });
 
   const Section out(src, root["output"].as_table(), "output", {"dir"});

@@ -61,7 +61,7 @@ ViewJson optimal_view_data(const std::string& dir, const ViewJson& summary, cons
     throw InvalidInput(
         fmt::format("view: \"{}\" has {} rows; expected at least 2", traj_path, f.values.size()));
   }
-  const Mat3& J = pb.inertia_body;
+  const Mat3 J = pb.bus_inertia();  // with reaction wheels the bus's: the energy ½ ωᵀ J_b ω of its rates
   const std::vector<double> omega = gather(f, {"wx", "wy", "wz"}, traj_path);
   std::vector<double> energy;
   energy.reserve(f.values.size());
@@ -112,9 +112,13 @@ ViewJson optimal_view_data(const std::string& dir, const ViewJson& summary, cons
   o["torque_max"] =
       pb.bound == optimal::TorqueBound::norm ? vec(Vec3::Constant(pb.torque_max[0])) : vec(pb.torque_max);
   o["torque_norm_limit"] = pb.torque_norm_limit();
-  o["u"] = gather(f, {"ux", "uy", "uz"}, traj_path);
+  // The control: body torques, or with reaction wheels the wheels' motor torques (u1, u2, u3).
+  const std::vector<std::string> u_columns =
+      pb.wheels ? std::vector<std::string>{"u1", "u2", "u3"} : std::vector<std::string>{"ux", "uy", "uz"};
+  o["control_kind"] = pb.wheels ? "wheel motor torques" : "body torques";
+  o["u"] = gather(f, u_columns, traj_path);
   o["control"] = {{"t", gather(control, {"t"}, control_path)},
-                  {"u", gather(control, {"ux", "uy", "uz"}, control_path)}};
+                  {"u", gather(control, u_columns, control_path)}};
   o["costates"] = {{"t", gather(costates, {"t"}, costates_path)},
                    {"sigma", gather(costates, {"sigma_x", "sigma_y", "sigma_z"}, costates_path)}};
   ViewJson switches = ViewJson::array();

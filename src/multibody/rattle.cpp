@@ -343,7 +343,7 @@ struct Rattle::Impl {
       // large reactions whose sums cannot cancel below ~1e-13. Stopping at a residual of ε of the terms
       // instead (a few ulps of Π, h|ω| times smaller in the energy) left the free body's energy drifting by
       // ~5e-20 a step (at 4ε by more): its signed mean over 100 members was +244 ± 34 ε after 10⁶ steps of 1
-      // ms, −52 ± 34 ε now (bench/brouwer_growth --signed; docs/benchmarks.md).
+      // ms, −52 ± 34 ε now (bench/brouwer_growth --signed; docs/measurements/integrators.md).
       const bool falling = err_body <= 0.25 * previous_err_body;
       if (err_joint <= tol &&
           (err_body <= kMomentumResidualNegligible || (err_body <= 1e3 * tol && !falling)))

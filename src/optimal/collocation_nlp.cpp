@@ -52,8 +52,18 @@ void CollocationNlp::set_up() {
       point_phase_.push_back(a);
       norm_row_.push_back(p == phase_first_point(a) ? -1 : row++);
     }
-  dyn_.J = problem_.inertia_body;
-  dyn_.J_inv = problem_.inertia_body.inverse();
+  if (problem_.wheels) {
+    const ReactionWheels& w = *problem_.wheels;
+    const Mat3 Jb = problem_.bus_inertia();
+    dyn_ = CollocationDynamics::wheels(Jb, w.axes_body, problem_.wheel_system_momentum());
+    const Mat3 A_inv = w.axes_body.inverse();
+    momentum_bounded_ = w.momentum_max.minCoeff() < std::numeric_limits<double>::infinity();
+    momentum_rate_rows_ = A_inv * Jb;
+    for (int k = 0; k < 3; ++k)
+      momentum_forms_[k] = A_inv(k, 0) * dyn_.M[0] + A_inv(k, 1) * dyn_.M[1] + A_inv(k, 2) * dyn_.M[2];
+  } else {
+    dyn_ = CollocationDynamics::body(problem_.inertia_body);
+  }
   // Left multiplication by a = q_f* = (w, −v): rows 1..3 of [[a0, −avᵀ], [av, a0 I + j(av)]].
   const Quat& qf = problem_.attitude_final;
   const double a0 = qf.w();
@@ -88,7 +98,7 @@ double CollocationNlp::final_time(const double* z) const {
 }
 
 int CollocationNlp::num_constraints() const {
-  return pointing_rows_begin() + pointing_count() * (points() - phases());
+  return momentum_rows_begin() + (momentum_bounded_ ? 3 * (points() - phases()) : 0);
 }
 
 double CollocationNlp::quadrature_weight(int p) const {
@@ -193,6 +203,12 @@ void CollocationNlp::constraint_bounds(std::vector<double>& lo, std::vector<doub
       lo[pointing_row(p, c)] = out ? -kInf : std::cos(pc.half_angle);
       up[pointing_row(p, c)] = out ? std::cos(pc.half_angle) : kInf;
     }
+  for (int p = 0; p < points(); ++p)
+    for (int k = 0; k < 3 && momentum_row(p, k) >= 0; ++k) {
+      const double hmax = problem_.wheels->momentum_max[k];
+      lo[momentum_row(p, k)] = std::isfinite(hmax) ? -hmax : -kInf;
+      up[momentum_row(p, k)] = std::isfinite(hmax) ? hmax : kInf;
+    }
 }
 
 double CollocationNlp::objective(const double* z) const {
@@ -244,13 +260,17 @@ void CollocationNlp::constraints(const double* z, double* g) const {
       const Vec4 q = point(z, p).head<4>();
       g[pointing_row(p, c)] = q.dot(pointing_forms_[c] * q);
     }
+  for (int p = 0; p < points(); ++p)
+    for (int k = 0; k < 3 && momentum_row(p, k) >= 0; ++k)
+      g[momentum_row(p, k)] = wheel_momentum(point(z, p), k);
 }
 
 int CollocationNlp::jacobian_nonzeros() const {
   const int per_interval = 14 * (3 * kPointVars + 1);
   const int torque = problem_.bound == TorqueBound::norm ? 3 * points() : 0;
   return intervals() * per_interval + 4 * (points() - phases()) + 14 * (phases() - 1) + 4 * final_rows() +
-         torque + 4 * pointing_count() * (points() - phases());
+         torque + 4 * pointing_count() * (points() - phases()) +
+         (momentum_bounded_ ? 3 * 7 * (points() - phases()) : 0);
 }
 
 void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
@@ -291,6 +311,12 @@ void CollocationNlp::jacobian_structure(int* rows, int* cols) const {
     for (int c = 0; c < pointing_count() && norm_row_[p] >= 0; ++c)
       for (int i = 0; i < 4; ++i) {
         rows[n] = pointing_row(p, c);
+        cols[n++] = kPointVars * p + i;
+      }
+  for (int p = 0; p < points(); ++p)
+    for (int k = 0; k < 3 && momentum_row(p, k) >= 0; ++k)
+      for (int i = 0; i < 7; ++i) {
+        rows[n] = momentum_row(p, k);
         cols[n++] = kPointVars * p + i;
       }
 }
@@ -342,6 +368,14 @@ void CollocationNlp::jacobian_values(const double* z, double* v) const {
       for (int i = 0; i < 4; ++i)
         v[n++] = grad[i];
     }
+  for (int p = 0; p < points(); ++p)
+    for (int k = 0; k < 3 && momentum_row(p, k) >= 0; ++k) {
+      const Vec4 grad = 2.0 * momentum_forms_[k] * point(z, p).head<4>();
+      for (int i = 0; i < 4; ++i)
+        v[n++] = grad[i];
+      for (int i = 0; i < 3; ++i)
+        v[n++] = -momentum_rate_rows_(k, i);
+    }
 }
 
 int CollocationNlp::hessian_nonzeros() const {
@@ -375,13 +409,15 @@ void CollocationNlp::hessian_values(const double* z, double sigma, const double*
     const double D = z[duration_index(point_phase_[p])];
     const Vec7 c_unit = defect_weight(p, y);  // yᵀg contains D (c_unit · f_p)
     const Vec11 zp = point(z, p);
-    Mat11 H = dyn_.weighted_hessian(D * c_unit);
+    Mat11 H = dyn_.weighted_hessian(D * c_unit, zp);
     if (norm_row_[p] >= 0)
       H.block<4, 4>(0, 0).diagonal().array() += 2.0 * y[norm_rows_begin() + norm_row_[p]];
     if (problem_.bound == TorqueBound::norm)
       H.block<3, 3>(7, 7).diagonal().array() += 2.0 * y[torque_norm_rows_begin() + p];
     for (int c = 0; c < pointing_count() && norm_row_[p] >= 0; ++c)
       H.block<4, 4>(0, 0) += 2.0 * y[pointing_row(p, c)] * pointing_forms_[c];
+    for (int k = 0; k < 3 && momentum_row(p, k) >= 0; ++k)
+      H.block<4, 4>(0, 0) += 2.0 * y[momentum_row(p, k)] * momentum_forms_[k];
     const double w = quadrature_weight(p);
     H.block<3, 3>(7, 7).diagonal().array() += sigma * 2.0 * a * w * D;
     for (int r = 0; r < kPointVars; ++r)

@@ -20,11 +20,15 @@
 ///   ‖u_p‖² ≤ u_max² for every point                              (norm bound only)
 ///   q_pᵀ A_c q_p ≤ cos θ_c (keep-out), ≥ cos θ_c (keep-in) for every pointing constraint c and every point
 ///   but the first of each phase, c fastest                       (pointing_constraint.hpp: A_c, exact)
+///   −h̄_k ≤ h_k(q_p, ω_p) = q_pᵀ N_k q_p − g_kᵀ ω_p ≤ h̄_k for every wheel k and every point but the first of
+///   each phase, k fastest (reaction wheels with momentum bounds: h = A⁻¹ (Rᵀ(q) L − J_b ω), N_k = Σ_i
+///   (A⁻¹)_ki M_i, g_k = row k of A⁻¹ J_b; exact)
 /// ν = 0 at the first point of each phase (q is unit there: given, or equal to the previous phase's last q).
 /// Objective: β T + α Σ_k h_k/6 (‖u_k‖² + 4‖u_m‖² + ‖u_{k+1}‖²) (Simpson's rule for ∫‖u‖²dt), with
 /// (β, α) = (1, 0), (0, 1), (1, ε) for minimum time, minimum energy, regularised minimum time.
 /// Costates: with the NLP Lagrangian f + yᵀg, the multipliers of D_k estimate −λ(t_k + h_k/2), λ the costate
 /// of the minimum principle (H = L + λᵀ f).
+#include <array>
 #include <vector>
 
 #include "collocation_dynamics.hpp"
@@ -101,6 +105,10 @@ class CollocationNlp final : public SparseNlp {
   int pointing_row(int p, int c) const {
     return norm_row_[p] < 0 ? -1 : pointing_rows_begin() + norm_row_[p] * pointing_count() + c;
   }
+  /// The row of wheel k's momentum bound at point p, or −1 (the first point of a phase, or no bound).
+  int momentum_row(int p, int k) const {
+    return norm_row_[p] < 0 || !momentum_bounded_ ? -1 : momentum_rows_begin() + 3 * norm_row_[p] + k;
+  }
 
  private:
   void set_up();
@@ -124,6 +132,12 @@ class CollocationNlp final : public SparseNlp {
     return torque_norm_rows_begin() + (problem_.bound == TorqueBound::norm ? points() : 0);
   }
   int pointing_count() const { return static_cast<int>(pointing_forms_.size()); }
+  int momentum_rows_begin() const { return pointing_rows_begin() + pointing_count() * (points() - phases()); }
+  /// h_k(q, ω) at a point's variables (N·m·s; wheels).
+  double wheel_momentum(const Vec11& zp, int k) const {
+    const Vec4 q = zp.head<4>();
+    return q.dot(momentum_forms_[k] * q) - momentum_rate_rows_.row(k).dot(zp.segment<3>(4));
+  }
   int phase_first_point(int a) const { return 2 * phase_first_interval_[a] + a; }
   int phase_last_point(int a) const { return phase_first_point(a + 1) - 1; }
 
@@ -137,6 +151,9 @@ class CollocationNlp final : public SparseNlp {
   CollocationDynamics dyn_;
   Eigen::Matrix<double, 3, 4> final_attitude_rows_;  // vec(q_f* ⊗ q) = final_attitude_rows_ q
   std::vector<Eigen::Matrix4d> pointing_forms_;      // A_c of every pointing constraint
+  bool momentum_bounded_ = false;                    // wheel momentum rows
+  std::array<Eigen::Matrix4d, 3> momentum_forms_{};  // N_k
+  Mat3 momentum_rate_rows_ = Mat3::Zero();           // A⁻¹ J_b (rows g_k)
 };
 
 /// The variables of one collocation point, the stride of the NLP vector z (CollocationNlp::kPointVars).

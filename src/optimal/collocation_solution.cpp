@@ -58,6 +58,9 @@ DirectSolution extract_solution(const CollocationNlp& nlp, const std::vector<dou
     s.attitude.push_back(Quat(zp[0], zp[1], zp[2], zp[3]).normalized());
     s.omega_body.emplace_back(zp[4], zp[5], zp[6]);
     s.torque_body.emplace_back(zp[7], zp[8], zp[9]);
+    if (const auto& p = nlp.problem(); p.wheels)
+      s.wheel_momentum.push_back(optimal::wheel_momentum(p.inertia_body, *p.wheels, p.wheel_system_momentum(),
+                                                         s.attitude.back(), s.omega_body.back()));
   }
   for (int k = 0; k < nlp.intervals(); ++k)
     s.node_time.push_back(t[nlp.interval_first_point(k)]);

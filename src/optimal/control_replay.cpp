@@ -206,21 +206,49 @@ std::vector<ReplayInterval> intervals_of(const DirectSolution& d) {
 
 }  // namespace
 
+namespace {
+
+/// The quadratic control through (u_left, u_mid, u_right) at s = 0, ½, 1 of an interval, and with reaction
+/// wheels the wheel momenta it integrates to: h(s) = h_left + Δ Σ_j P_j(s) u_j with the antiderivatives P_j
+/// of the three Lagrange basis polynomials (P_j(1) = 1/6, 4/6, 1/6: Simpson's rule), exact.
+struct ReplayedControl {
+  const DirectSolution& d;
+  ReplayInterval k;
+  Vec3 h_left = Vec3::Zero();
+
+  double fraction(double t) const { return (t - k.t_begin) / (k.t_end - k.t_begin); }
+  Vec3 control(double t) const {
+    const double s = fraction(t);
+    return 2 * (s - 0.5) * (s - 1) * d.torque_body[k.left] - 4 * s * (s - 1) * d.torque_body[k.left + 1] +
+           2 * s * (s - 0.5) * d.torque_body[k.left + 2];
+  }
+  Vec3 wheel_momentum(double t) const {
+    const double s = fraction(t), s2 = s * s, s3 = s2 * s;
+    return h_left + (k.t_end - k.t_begin) * ((2.0 / 3.0 * s3 - 1.5 * s2 + s) * d.torque_body[k.left] +
+                                             (-4.0 / 3.0 * s3 + 2.0 * s2) * d.torque_body[k.left + 1] +
+                                             (2.0 / 3.0 * s3 - 0.5 * s2) * d.torque_body[k.left + 2]);
+  }
+};
+
+}  // namespace
+
 DirectReplay replay_direct(const ReorientationProblem& p, const DirectSolution& d) {
   const std::vector<ReplayInterval> intervals = intervals_of(d);
-  // The quadratic through (u_left, u_mid, u_right) at s = 0, ½, 1 of the interval entered last.
-  auto current = std::make_shared<ReplayInterval>(intervals.front());
-  const auto torque = dynamics::TorqueModel::callback(
-      [current, &d](double t, const Mat3&, const Vec3&) -> Vec3 {
-        const ReplayInterval& k = *current;
-        const double s = (t - k.t_begin) / (k.t_end - k.t_begin);
-        const Vec3& u0 = d.torque_body[k.left];
-        const Vec3& u1 = d.torque_body[k.left + 1];
-        const Vec3& u2 = d.torque_body[k.left + 2];
-        return 2 * (s - 0.5) * (s - 1) * u0 - 4 * s * (s - 1) * u1 + 2 * s * (s - 0.5) * u2;
-      },
-      false, "direct collocation torque");
-  const auto body = dynamics::RigidBody::from_inertia(p.inertia_body);
+  auto current = std::make_shared<ReplayedControl>(ReplayedControl{d, intervals.front()});
+  if (p.wheels) current->h_left = p.wheels->momentum_initial;
+  // Without wheels the control is the body torque. With them the bus (inertia J_b) feels −A u and carries
+  // the wheels' momentum: J_b ω̇ + ω × (J_b ω + A h) = −A u, that is, a rigid body J_b under the torque
+  // −A u − ω × A h with h integrated exactly from h_0 (reaction_wheels.hpp), not taken from the conserved L.
+  const auto torque =
+      p.wheels ? dynamics::TorqueModel::callback(
+                     [current, A = p.wheels->axes_body](double t, const Mat3&, const Vec3& w) -> Vec3 {
+                       return -A * current->control(t) - w.cross(A * current->wheel_momentum(t));
+                     },
+                     true, "direct collocation wheel torques")
+               : dynamics::TorqueModel::callback(
+                     [current](double t, const Mat3&, const Vec3&) -> Vec3 { return current->control(t); },
+                     false, "direct collocation torque");
+  const auto body = dynamics::RigidBody::from_inertia(p.bus_inertia());
   dynamics::IntegratorOptions opt;
   opt.dt = d.final_time / 16.0;
   opt.rtol = opt.atol = 1e-13;
@@ -247,19 +275,41 @@ DirectReplay replay_direct(const ReorientationProblem& p, const DirectSolution& 
     w_prev = s.omega_body;
     t_prev = s.time;
   };
+  // With wheels: |h_k| / h̄_k and the drift of L = R (J_b ω + A h) at the end of every step.
+  const Mat3 Jb = p.bus_inertia();
+  const Vec3 L0 = p.wheel_system_momentum();
+  const auto check_wheels = [&](const dynamics::State& s) {
+    if (!p.wheels) return;
+    const Vec3 h = current->wheel_momentum(s.time);
+    for (int i = 0; i < 3; ++i) {
+      r.peak_wheel_momentum[i] = std::max(r.peak_wheel_momentum[i], std::abs(h[i]));
+      if (std::isfinite(p.wheels->momentum_max[i]))
+        r.wheel_momentum_excess =
+            std::max(r.wheel_momentum_excess, std::abs(h[i]) / p.wheels->momentum_max[i] - 1.0);
+    }
+    const Vec3 L = s.R_space_body * (Jb * s.omega_body + p.wheels->axes_body * h);
+    r.momentum_drift = std::max(r.momentum_drift, (L - L0).norm());
+  };
+  if (p.wheels) {
+    r.peak_wheel_momentum = p.wheels->momentum_initial.cwiseAbs();
+    r.wheel_momentum_excess = -std::numeric_limits<double>::infinity();
+  }
   double dt = opt.dt;
   try {
     for (const ReplayInterval& k : intervals) {
-      *current = k;
+      if (p.wheels && k.left != current->k.left) current->h_left = current->wheel_momentum(current->k.t_end);
+      current->k = k;
       state.time = k.t_begin;
-      const double max_step = cones > 0 ? (k.t_end - k.t_begin) / 16.0 : k.t_end - k.t_begin;
+      const double max_step = cones > 0 || p.wheels ? (k.t_end - k.t_begin) / 16.0 : k.t_end - k.t_begin;
       while (k.t_end - state.time > 1e-14 * d.final_time) {
         const auto step = integrator.step(state, std::min({dt, max_step, k.t_end - state.time}));
         dt = std::max(step.dt_next, 1e-12);
         check_pointing(state);
+        check_wheels(state);
       }
       state.time = k.t_end;
     }
+    if (p.wheels) r.final_wheel_momentum = current->wheel_momentum(current->k.t_end);
   } catch (const ComputationFailed&) {  // DOP853 gave up: nothing to compare
     r.attitude_error = r.rate_error = std::numeric_limits<double>::quiet_NaN();
     return r;

@@ -35,8 +35,12 @@ using detail::Vec7;
 void torque_free_motion(const CollocationNlp& nlp, double T, std::vector<Mat3>& R, std::vector<Vec3>& omega) {
   const auto& p = nlp.problem();
   const Mat3 J_inv = p.inertia_body.inverse();
-  const auto wdot = [&](const Vec3& v) { return Vec3(-J_inv * v.cross(p.inertia_body * v)); };
   Mat3 Rk = p.attitude_initial.toRotationMatrix();
+  // With reaction wheels the free motion of the gyrostat (u = 0): ω̇ = −J_b⁻¹ ω × Rᵀ L.
+  const auto wdot = [&](const Vec3& v) {
+    if (p.wheels) return Vec3(-nlp.dynamics().J_inv * v.cross(Rk.transpose() * p.wheel_system_momentum()));
+    return Vec3(-J_inv * v.cross(p.inertia_body * v));
+  };
   Vec3 wk = p.omega_initial;
   double tau_prev = 0.0;
   for (int pt = 0; pt < nlp.points(); ++pt) {
@@ -108,7 +112,8 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
     tau_prev = tau;
     if (dumping) {
       w = pt + 1 == nlp.points() ? p.omega_final : w_free;
-      const Vec3 u = dumping_torque(w);
+      // With reaction wheels, the wheel torques whose reaction on the bus is the dumping torque: −A u = τ.
+      const Vec3 u = p.wheels ? Vec3(-p.wheels->axes_body.inverse() * dumping_torque(w)) : dumping_torque(w);
       for (int i = 0; i < 3; ++i)
         z[kP * pt + 7 + i] = u[i];
     }
@@ -283,30 +288,51 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
   return best;
 }
 
-/// `problem` with every pointing constraint's cone widened by δ rad (PointingConstraint::widened).
-ReorientationProblem widened(const ReorientationProblem& problem, double delta) {
+/// What the path constraints imposed at the collocation points are tightened by so that they hold between
+/// them: every cone widened by δ (rad; PointingConstraint::widened), every wheel-momentum bound scaled by
+/// 1 − ε.
+struct PathMargins {
+  double cone = 0.0;      ///< δ (rad)
+  double momentum = 0.0;  ///< ε (relative)
+};
+
+PathMargins margins_of(const DirectSolution& s) {
+  return {s.pointing_widening, s.wheel_momentum_margin};
+}
+
+/// `problem` with its path constraints tightened by `m`.
+ReorientationProblem widened(const ReorientationProblem& problem, const PathMargins& m) {
   ReorientationProblem out = problem;
   for (PointingConstraint& c : out.pointing)
-    c = c.widened(delta);
+    c = c.widened(m.cone);
+  if (out.wheels) out.wheels->momentum_max *= 1.0 - m.momentum;
   return out;
 }
 
-/// The continuation of `previous`'s refinement on the problem whose cones are widened by δ (rad).
+/// The continuation of `previous`'s refinement on the problem tightened by `m`.
 DirectSolution continue_widened(const ReorientationProblem& problem, const DirectSolution& previous,
-                                const CollocationOptions& options, double delta);
+                                const CollocationOptions& options, const PathMargins& m);
 
-/// Pointing constraints between the collocation points: while the dense replay (direct_replay.hpp) of
-/// `solution`'s control violates a cone by more than pointing_replay_tolerance, the cones imposed at the
-/// points are widened by twice the violation more and the refinement continues from `solution`; at most
-/// four times. The widening stays in the result (DirectSolution::pointing_widening), unless the result is
-/// clear of every cone (active_pointing_constraint finds none), whose solution it then did not shape.
-DirectSolution meet_pointing_between_points(const ReorientationProblem& problem, DirectSolution solution,
-                                            const CollocationOptions& options) {
+/// Path constraints between the collocation points: while the dense replay (direct_replay.hpp) of
+/// `solution`'s control violates a cone by more than pointing_replay_tolerance, or a wheel-momentum bound
+/// by more than wheel_momentum_replay_tolerance (relative), the constraints imposed at the points are
+/// tightened by twice the violation more (cones widened, bounds scaled down) and the refinement continues
+/// from `solution`; at most four times. The margins stay in the result (DirectSolution::pointing_widening,
+/// wheel_momentum_margin); a cone widening is dropped when the result is clear of every cone
+/// (active_pointing_constraint finds none), whose solution it then did not shape.
+DirectSolution meet_path_constraints_between_points(const ReorientationProblem& problem,
+                                                    DirectSolution solution,
+                                                    const CollocationOptions& options) {
   constexpr int kMaxWidenings = 4;
-  if (problem.pointing.empty()) return solution;
+  const bool momentum = problem.wheels && problem.wheels->has_momentum_bound();
+  if (problem.pointing.empty() && !momentum) return solution;
   for (int k = 0; k < kMaxWidenings && solution.nlp_solved; ++k) {
-    const double violation = -replay_direct(problem, solution).pointing.worst();
-    if (!(violation > pointing_replay_tolerance)) {  // met, or NaN: nothing to widen by
+    const DirectReplay replay = replay_direct(problem, solution);
+    const double violation = -replay.pointing.worst();
+    const double excess = momentum ? replay.wheel_momentum_excess : 0.0;
+    const bool cones_met = !(violation > pointing_replay_tolerance);  // met, or NaN: nothing to widen by
+    const bool wheels_met = !(excess > wheel_momentum_replay_tolerance);
+    if (cones_met && wheels_met) {
       // A solution clear of every widened cone is a KKT point of the NLP with the cones as given (its rows
       // are inactive either way): the widening did not shape it. It comes from an earlier solution that
       // touched a cone, from which Ipopt moved on to one that does not.
@@ -314,12 +340,15 @@ DirectSolution meet_pointing_between_points(const ReorientationProblem& problem,
         solution.pointing_widening = 0.0;
       return solution;
     }
-    const double delta = solution.pointing_widening + 2.0 * violation;
-    DirectSolution next = continue_widened(problem, solution, options, delta);
+    PathMargins m = margins_of(solution);
+    if (!cones_met) m.cone += 2.0 * violation;
+    if (!wheels_met) m.momentum += 2.0 * excess;
+    DirectSolution next = continue_widened(problem, solution, options, m);
     if (!next.nlp_solved) {
       solution.status = fmt::format(
-          "{}; the cones widened by {} rad to hold between the collocation points could not be solved ({})",
-          solution.status, format_number(delta, 3), next.status);
+          "{}; the path constraints tightened (cones by {} rad, momentum bounds by {}) to hold between the "
+          "collocation points could not be solved ({})",
+          solution.status, format_number(m.cone, 3), format_number(m.momentum, 3), next.status);
       return solution;
     }
     solution = std::move(next);
@@ -347,7 +376,7 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
                     : dumping_is_optimal       ? minimum_duration_bound(problem)
                                                : 2.0 * minimum_duration_bound(problem);
   std::vector<double> z = initial_guess(*nlp, T0);
-  return meet_pointing_between_points(
+  return meet_path_constraints_between_points(
       problem, refine_mesh(problem, std::move(nlp), std::move(z), options, DirectSolution{}), options);
 }
 
@@ -355,15 +384,15 @@ DirectSolution continue_direct(const ReorientationProblem& problem, const Direct
                                const CollocationOptions& options) {
   validate(problem);
   validate(options);
-  return meet_pointing_between_points(
-      problem, continue_widened(problem, previous, options, previous.pointing_widening), options);
+  return meet_path_constraints_between_points(
+      problem, continue_widened(problem, previous, options, margins_of(previous)), options);
 }
 
 namespace {
 
 DirectSolution continue_widened(const ReorientationProblem& original, const DirectSolution& previous,
-                                const CollocationOptions& options, double delta) {
-  const ReorientationProblem problem = widened(original, delta);
+                                const CollocationOptions& options, const PathMargins& margins) {
+  const ReorientationProblem problem = widened(original, margins);
   const std::size_t n = previous.node_time.size();
   if (n < 2 || previous.time.size() != 2 * n - 1 || previous.attitude.size() != previous.time.size() ||
       !(previous.final_time > 0.0))
@@ -393,7 +422,8 @@ DirectSolution continue_widened(const ReorientationProblem& original, const Dire
   }
   z[nlp->time_index()] = previous.final_time;
   DirectSolution out = refine_mesh(problem, std::move(nlp), std::move(z), options, previous);
-  out.pointing_widening = delta;
+  out.pointing_widening = margins.cone;
+  out.wheel_momentum_margin = margins.momentum;
   return out;
 }
 

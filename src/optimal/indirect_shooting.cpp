@@ -57,7 +57,7 @@ Vec3 direct_costate_omega_at(const DirectSolution& d, double t) {
 /// node it would be evaluated from the previous segment's integrated end on one side and from the node's
 /// unknowns on the other, and a norm-bound reversal there (σ ≈ 0 at the node) makes the control's direction
 /// at the start of the segment depend on the node's p_ω components across σ's line, where −σ/‖σ‖ is not
-/// smooth: Newton stalls at 1e-9 … 1e-7 (docs/optimal_control.md, section 3).
+/// smooth: Newton stalls at 1e-9 … 1e-7 (docs/optimal_control_theory.md, section 3).
 std::vector<double> node_fractions(int M, const std::vector<double>& knots) {
   std::vector<double> out;
   const double segment = 1.0 / M;
@@ -81,8 +81,8 @@ std::vector<double> node_fractions(int M, const std::vector<double>& knots) {
 
 /// The least-squares polynomial of degree ≤ 2 in t/T through the space-frame switching vectors λ_k = R_k σ_k
 /// given at `times`, evaluated at `at` (a constant where fewer than 6 samples are given). Along an extremal
-/// with a free final attitude λ̇ = R J⁻¹(Jω × σ) (docs/optimal_control.md, section 3): constant where the
-/// torque opposes the angular momentum, slowly varying near it; the fit keeps that trend and averages out
+/// with a free final attitude λ̇ = R J⁻¹(Jω × σ) (docs/optimal_control_theory.md, section 3): constant where
+/// the torque opposes the angular momentum, slowly varying near it; the fit keeps that trend and averages out
 /// the scatter of the direct estimates (2.5e-3 of ‖λ‖ on the racket) and what Newton leaves in the node
 /// costates along the near-null directions.
 std::vector<Vec3> fitted_space_switching(const std::vector<double>& times, const std::vector<Vec3>& lambda,
@@ -175,6 +175,12 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   IndirectSolution out;
   out.bang_bang = p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis;
 
+  if (p.wheels) {
+    out.status =
+        "not applied: the actuators are reaction wheels (a gyrostat, whose costate equations the shooting "
+        "method does not have)";
+    return out;
+  }
   // An active pointing constraint: its arcs (or touch points) are not handled by the shooting; a cone the
   // direct solution stays clear of leaves the unconstrained extremal, whose margins the verification checks.
   if (const std::string active = active_pointing_constraint(p, d); !active.empty()) {
@@ -245,7 +251,8 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // Multiple shooting: the forward seed as well (reseed_forward, from the direct estimates of the space-frame
   // switching vector), whose nodes lie on one trajectory from the initial state; the seed with the smaller
   // residual is kept. The direct nodes carry the direct solution's phase errors, which an unstable tumble
-  // turns into near-null directions that Newton cannot correct (docs/optimal_control.md, "Scenario files").
+  // turns into near-null directions that Newton cannot correct (docs/measurements/optimal_shooting.md, "The
+  // tumbling racket").
   std::vector<double> lambda_time;
   std::vector<Vec3> lambda;
   if (M > 1) {

@@ -352,9 +352,9 @@ int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x,
     // the directions whose singular values are below 1e-8, 1e-10 or 1e-12 of the largest, and keep the best.
     // Such near-null directions are those of a family of extremals that the boundary conditions pin only
     // through an exponentially small sensitivity (stopping the tumbling racket: the phase of each flip,
-    // docs/optimal_control.md section 3); the central-difference Jacobian (relative error ~1e-8) cannot
-    // resolve them, and the full step along them is noise that throws the iterate out of the linear range.
-    // 1e-8 leaves out what that error cannot resolve; the smaller levels keep the directions that are
+    // docs/optimal_control_theory.md section 3); the central-difference Jacobian (relative error ~1e-8)
+    // cannot resolve them, and the full step along them is noise that throws the iterate out of the linear
+    // range. 1e-8 leaves out what that error cannot resolve; the smaller levels keep the directions that are
     // weakly determined but computed well enough (on the tumbling racket a single level of 1e-12 stalls at
     // a residual of 7e-6 where 1e-8 goes on to 1e-8).
     Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(jac), Eigen::ComputeThinU | Eigen::ComputeThinV);

@@ -40,9 +40,7 @@ double PointingConstraint::margin(const Mat3& R_space_body) const {
   return kind == PointingKind::keep_out ? phi - half_angle : half_angle - phi;
 }
 
-Eigen::Matrix4d PointingConstraint::quadratic_form() const {
-  const Vec3& b = boresight_body;
-  const Vec3& s = direction_space;
+Eigen::Matrix4d rotation_bilinear_form(const Vec3& b, const Vec3& s) {
   const double sb = s.dot(b);
   const Vec3 bxs = b.cross(s);
   Eigen::Matrix4d A;
@@ -51,6 +49,10 @@ Eigen::Matrix4d PointingConstraint::quadratic_form() const {
   A.block<1, 3>(0, 1) = bxs.transpose();
   A.block<3, 3>(1, 1) = b * s.transpose() + s * b.transpose() - sb * Mat3::Identity();
   return A;
+}
+
+Eigen::Matrix4d PointingConstraint::quadratic_form() const {
+  return rotation_bilinear_form(boresight_body, direction_space);
 }
 
 PointingConstraint PointingConstraint::widened(double delta) const {

@@ -61,7 +61,60 @@ double ReorientationProblem::torque_norm_limit() const {
   return bound == TorqueBound::per_axis ? torque_max.norm() : torque_max[0];
 }
 
+Mat3 ReorientationProblem::bus_inertia() const {
+  return wheels ? optimal::bus_inertia(inertia_body, *wheels) : inertia_body;
+}
+
+Vec3 ReorientationProblem::wheel_system_momentum() const {
+  return wheels ? total_momentum_space(inertia_body, *wheels, attitude_initial, omega_initial,
+                                       wheels->momentum_initial)
+                : Vec3::Zero();
+}
+
+namespace {
+
+/// minimum_duration_bound with reaction wheels: Θ λ_min(J_b) ≤ ∫ min(‖L‖ + m(t), c) dt with m = ‖A h‖,
+/// |ṁ| ≤ ‖A‖ ū, m capped by ‖A‖ ‖h̄‖, c = √3 ω_max λ_max(J_b).
+double wheel_duration_bound(const ReorientationProblem& p) {
+  const double theta = p.free_final_attitude ? 0.0 : so3::angle_between(p.attitude_initial, p.attitude_final);
+  const Mat3 Jb = p.bus_inertia();
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(Jb);
+  const ReactionWheels& w = *p.wheels;
+  const double sigma = w.axes_body.operatorNorm();
+  const double ubar = sigma * p.torque_max.norm();
+  const Vec3 L = p.wheel_system_momentum();
+  const double a = (w.axes_body * w.momentum_initial).norm();
+  // ‖A h_f‖: known with a final attitude; otherwise at least ‖L‖ − ‖J_b ω_f‖.
+  const double b =
+      p.free_final_attitude
+          ? std::max(0.0, L.norm() - (Jb * p.omega_final).norm())
+          : (w.axes_body * wheel_momentum(p.inertia_body, w, L, p.attitude_final, p.omega_final)).norm();
+  const double cap_m =
+      w.has_momentum_bound() ? sigma * w.momentum_max.norm() : std::numeric_limits<double>::infinity();
+  const double c = p.has_rate_bound() ? std::sqrt(3.0) * p.rate_max * eig.eigenvalues()[2]
+                                      : std::numeric_limits<double>::infinity();
+  const double t_momentum = (p.free_final_attitude ? std::max(0.0, b - a) : std::abs(a - b)) / ubar;
+  auto feasible = [&](double T) {
+    const double reach =
+        std::min(L.norm(), c) * T +
+        largest_momentum_integral(a, b, ubar, std::min(cap_m, std::max(c - L.norm(), 0.0)), T);
+    return T >= t_momentum && reach >= theta * eig.eigenvalues()[0];
+  };
+  double hi = std::max(1.0, t_momentum);
+  while (!feasible(hi))
+    hi *= 2.0;
+  double lo = 0.0;
+  while (hi - lo > 1e-12 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (feasible(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
+}  // namespace
+
 double minimum_duration_bound(const ReorientationProblem& p) {
+  if (p.wheels) return wheel_duration_bound(p);
   const double theta = p.free_final_attitude ? 0.0 : so3::angle_between(p.attitude_initial, p.attitude_final);
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(p.inertia_body);
   const double j_min = eig.eigenvalues()[0];
@@ -117,10 +170,32 @@ void validate_pointing(const ReorientationProblem& p) {
   }
 }
 
+/// The wheels well formed, bounded per wheel, and able to hold the final state's momenta.
+void validate_wheels(const ReorientationProblem& p) {
+  const ReactionWheels& w = *p.wheels;
+  validate(w, p.inertia_body);
+  if (p.bound != TorqueBound::per_axis)
+    throw InvalidInput(
+        "optimal_control.torque_bound: norm; expected per_axis with reaction wheels (each "
+        "wheel's motor torque has its own bound, torque_max)");
+  if (p.free_final_attitude) return;
+  const Vec3 hf =
+      wheel_momentum(p.inertia_body, w, p.wheel_system_momentum(), p.attitude_final, p.omega_final);
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(hf[k]) > w.momentum_max[k])
+      throw InvalidInput(fmt::format(
+          "optimal_control.reaction_wheels.momentum_max: {} N·m·s is below |h_{}| = {} N·m·s, the momentum "
+          "wheel {} must hold at the final state (the slew's total angular momentum {} N·m·s); expected "
+          "bounds the end meets",
+          format_vector(w.momentum_max), k + 1, format_number(std::abs(hf[k]), 6), k + 1,
+          format_vector(p.wheel_system_momentum())));
+}
+
 }  // namespace
 
 void validate(const ReorientationProblem& p) {
   inertia::require_valid_inertia(p.inertia_body, "optimal_control.inertia");
+  if (p.wheels) validate_wheels(p);
   const Eigen::SelfAdjointEigenSolver<Mat3> eig(p.inertia_body);
   if (!(eig.eigenvalues()[0] > 1e-12 * eig.eigenvalues()[2]))
     throw InvalidInput("optimal_control.inertia: principal moments " + format_vector(eig.eigenvalues()) +

@@ -1,8 +1,9 @@
 #pragma once
 /// @file rate_bound_shooting.hpp (internal)
 /// The indirect method for minimum time with per-axis torque bounds |u_i| ≤ u_max,i and an active rate bound
-/// |ω_i| ≤ r (docs/optimal_control.md, section 3, "Active rate bounds"): single shooting over arcs that are
-/// either bang-bang or boundary arcs on which one or more rates ride the bound, ω_k = s_k r (s_k = ±1).
+/// |ω_i| ≤ r (docs/measurements/optimal_shooting.md, section 3, "Active rate bounds"): single shooting over
+/// arcs that are either bang-bang or boundary arcs on which one or more rates ride the bound, ω_k = s_k r
+/// (s_k = ±1).
 ///
 /// The rate bound c_k = s_k ω_k − r ≤ 0 is a first-order state constraint (ċ_k = s_k ω̇_k holds u). It is
 /// adjoined directly: 𝓛 = H + Σ μ_k c_k with μ_k ≥ 0, zero off the boundary arcs, so that on an arc holding

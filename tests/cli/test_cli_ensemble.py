@@ -133,7 +133,12 @@ def test_ctrl_c_keeps_complete_rows(cli, tmp_path):
     proc = subprocess.Popen([os.environ["POINSOT_CLI"], "ensemble", str(scenario), "--samples", "3000000",
                              "--threads", "1", "--out", str(tmp_path / "c")],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(0.7)
+    # The handler is installed right after the output folder is made: wait for the folder (a loaded machine or
+    # the sanitizer build can take seconds to get there), then let some samples run.
+    deadline = time.monotonic() + 60
+    while not (tmp_path / "c").exists() and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.05)
+    time.sleep(0.5)
     proc.send_signal(signal.SIGINT)
     out, err = proc.communicate(timeout=60)
     assert proc.returncode == 130, err

@@ -2,7 +2,7 @@
 // methods with L_space preserved: dlm, rattle): over an ensemble of perturbed initial conditions the RMS
 // error of each kept invariant grows like a random walk, √N (Brouwer's law), not like N (a bias of the
 // rounding). The long measurement (10³ to 10⁹ steps) is bench/brouwer_growth.cpp; figures in
-// docs/benchmarks.md.
+// docs/measurements/integrators.md.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -84,7 +84,7 @@ TEST(MultibodyOptimalOptions, FileWithTheKeysGivesTheOptimumOfTheCppCall) {
     EXPECT_LT(std::abs(optimal::twist_residual(p.system, r.states[k], p.no_twist[0])), 1e-9) << k;
   }
   // The closed form of the planar turn: R-coordinates' Hermite–Simpson error at N = 8 (2e-5 relative for
-  // the hinge, docs/optimal_control.md), well inside 1e-4.
+  // the hinge, docs/optimal_control_multibody.md), well inside 1e-4.
   const double I = optimal::testing::single_hinge_inertia();
   EXPECT_NEAR(r.cost, 12.0 * I * I * 1.44 / 8.0, 1e-4 * r.cost);
   // The report and summary.json name the options.

@@ -2,7 +2,7 @@
 // ensemble of perturbed initial conditions: the rounding of the energy and of the momenta random-walks
 // (Brouwer's law, RMS ∝ √N, not ∝ N) under RATTLE and the projected RK4, and so does RᵀR − I under RATTLE,
 // which never projects; the projected RK4 keeps RᵀR = I bounded. The long measurement (10³ to 10⁹ steps) is
-// bench/brouwer_growth.cpp; figures in docs/benchmarks.md.
+// bench/brouwer_growth.cpp; figures in docs/measurements/integrators.md.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <random>
 #include <tuple>
 
@@ -147,6 +148,43 @@ TEST(CollocationPointing, JacobianAndHessianMatchCentralDifferences) {
   const CollocationNlp two(p, {0.0, 0.4, 1.0, 0.0, 1.0}, phases);
   EXPECT_EQ(two.pointing_row(two.interval_first_point(2), 0), -1);  // the second phase's first point
   expect_derivatives_match_central_differences(two);
+}
+
+// Reaction wheels (skewed axes, a bias momentum and a spinning start, so L ≠ 0 and the gyroscopic term
+// ω × Rᵀ(q) L is cubic): the dynamics' Jacobian and z-dependent Hessian, and the momentum-bound rows
+// h_k = qᵀN_k q − g_kᵀω; on one phase and on two.
+TEST(CollocationWheels, JacobianAndHessianMatchCentralDifferences) {
+  for (const Objective objective : {Objective::minimum_energy, Objective::minimum_time_regularised}) {
+    ReorientationProblem p = general_problem(TorqueBound::per_axis, objective, false);
+    ReactionWheels w;
+    w.axes_body.col(0) = Vec3(1.0, 0.2, -0.1).normalized();
+    w.axes_body.col(1) = Vec3(0.1, 1.0, 0.3).normalized();
+    w.axes_body.col(2) = Vec3(-0.2, 0.1, 1.0).normalized();
+    w.spin_inertia = Vec3(0.1, 0.2, 0.15);
+    w.momentum_initial = Vec3(0.4, -0.3, 0.8);
+    w.momentum_max = Vec3(5.0, std::numeric_limits<double>::infinity(), 4.0);
+    p.wheels = w;
+    p.omega_initial = Vec3(0.2, -0.1, 0.3);
+    const int without =
+        CollocationNlp(general_problem(TorqueBound::per_axis, objective, false), {0.0, 0.3, 0.55, 1.0})
+            .num_constraints();
+    const CollocationNlp one(p, {0.0, 0.3, 0.55, 1.0});
+    EXPECT_EQ(one.num_constraints(), without + 3 * (one.points() - 1));
+    EXPECT_GE(one.momentum_row(1, 2), 0);
+    EXPECT_EQ(one.momentum_row(0, 0), -1);
+    expect_derivatives_match_central_differences(one);
+  }
+  ReorientationProblem p = general_problem(TorqueBound::per_axis, Objective::minimum_time, false);
+  ReactionWheels w;
+  w.spin_inertia = Vec3(0.1, 0.2, 0.15);
+  w.momentum_initial = Vec3(0.4, -0.3, 0.8);
+  w.momentum_max = Vec3::Constant(3.0);
+  p.wheels = w;
+  CollocationPhases phases;
+  phases.intervals = {2, 1};
+  phases.torque_lower = {Vec3::Constant(-1), Vec3::Constant(-1)};
+  phases.torque_upper = {Vec3::Constant(1), Vec3::Constant(1)};
+  expect_derivatives_match_central_differences(CollocationNlp(p, {0.0, 0.4, 1.0, 0.0, 1.0}, phases));
 }
 
 TEST(CollocationPhases, RefusesInconsistentPhases) {

@@ -114,7 +114,7 @@ TEST(FallingCat, HalfTurnWithoutTwist) {
   // With the waist's no-twist condition as a path constraint: held at every collocation point to Ipopt's
   // tolerance. From the rigid turn the optimum is the symmetric one, which has no twist (the condition is
   // not active: the cost is that of the unconstrained solution from the same guess, 0.6308 N²·m²·s); the
-  // cheaper optimum from the naive guess twists (docs/optimal_control.md, "The falling cat").
+  // cheaper optimum from the naive guess twists (docs/measurements/optimal_multibody.md, "The falling cat").
   MultibodyProblem p = testing::falling_cat(kBend, kTurn, 1.0, kIntervals);
   p.no_twist = {testing::falling_cat_no_twist()};
   const MultibodyOptimum r = solve_half_turn(p);

@@ -110,7 +110,7 @@ TEST(IndirectShooting, NormBoundSphereReversesAtHalfTime) {
   p.bound = TorqueBound::norm;
   p.torque_max = Vec3::Constant(ubar);
   // About a body axis: about a generic axis the shooting stalls at a residual of 1e-5
-  // (docs/optimal_control.md) and says so.
+  // (docs/optimal_control_theory.md) and says so.
   const Vec3 n = Vec3::UnitX();
   p.attitude_final = Quat(Eigen::AngleAxisd(theta, n));
   CollocationOptions opt;

@@ -100,7 +100,7 @@ TEST(MultibodyDirect, TwoLinkArmBothFormulationsAgree) {
   // transcriptions of one continuous problem on the same coarse mesh (N = 8), with different errors: their
   // costs differ by about as much as each differs from the fine-mesh optimum (39.35276577 at N = 128 in
   // minimal coordinates; 38.52 minimal and 38.03 R-coordinates at N = 8), so the test asks for 5 %. The
-  // finer meshes are compared by bench/bench_optimal_multibody (docs/optimal_control.md).
+  // finer meshes are compared by bench/bench_optimal_multibody (docs/measurements/optimal_multibody.md).
   const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 8);
   const MultibodyOptimum r = testing::solve_in(p, MultibodyCoordinates::rotation_matrix);
   const MultibodyOptimum m = testing::solve_in(p, MultibodyCoordinates::minimal);

@@ -121,10 +121,10 @@ TEST(MultibodyFloatingBase, BoundedReactionWheelConvergesToTheSingleBody) {
   // |u| ≤ 0.1 N·m (active: the unbounded peak is 0.12 N·m) from the naive guess (the interpolated
   // quaternions are not unit: the projection R(e/|e|) makes them attitudes). The single body of the
   // effective inertia J_bus + diag(0.5, 0.5, 0) (direct_collocation.hpp, mesh refined to 1e-9; docs/
-  // optimal_control.md, "The measurement of the claim") costs 0.0483602207; the transcription's error falls
-  // with N (measured −5.6e-5 at N = 8, −2.5e-5 at N = 16, −4.6e-6 at N = 32 in bench_optimal_multibody: the
-  // bound's kinks at two instants slow Hermite–Simpson's h⁴ down), and the controls, re-simulated by the
-  // projected RK4, reach the target to the transcription's error.
+  // measurements/optimal_multibody.md, "The measurement of the claim") costs 0.0483602207; the
+  // transcription's error falls with N (measured −5.6e-5 at N = 8, −2.5e-5 at N = 16, −4.6e-6 at N = 32 in
+  // bench_optimal_multibody: the bound's kinks at two instants slow Hermite–Simpson's h⁴ down), and the
+  // controls, re-simulated by the projected RK4, reach the target to the transcription's error.
   const double single = 0.0483602207;
   double previous = 1.0;
   for (const int N : {8, 16}) {

@@ -100,9 +100,10 @@ TEST(MultibodyMinimalBall, FallingCatFromTheRigidTurn) {
   // The cat turned over (π about the spine in 1 s) in minimal coordinates, N = 6, from the cat turned rigidly
   // (falling_cat_rigid_turn): Ipopt converges (measured 21 iterations) to a local optimum whose cost tends to
   // that of the no-twist optimum the R-coordinate transcription finds from the same guess
-  // (docs/optimal_control.md, "The falling cat": 0.63116 N²·m²·s at N = 24): measured 0.62043 here, −1.7 %
-  // (0.62890 at N = 12, 0.63098 at N = 24: −2.9e-4); the test allows 3 %. Unlike that optimum, this motion
-  // twists (s·vee(M − Mᵀ) up to 0.87 of 2): the same cost, not the same trajectory (docs, "Not done").
+  // (docs/measurements/optimal_multibody.md, "The falling cat": 0.63116 N²·m²·s at N = 24): measured 0.62043
+  // here, −1.7 % (0.62890 at N = 12, 0.63098 at N = 24: −2.9e-4); the test allows 3 %. Unlike that optimum,
+  // this motion twists (s·vee(M − Mᵀ) up to 0.87 of 2): the same cost, not the same trajectory (docs, "Not
+  // done").
   const MultibodyProblem p = testing::falling_cat(0.5, std::numbers::pi, 1.0, 6);
   const MultibodyOptimum guess = testing::falling_cat_rigid_turn(0.5, std::numbers::pi, 1.0, 6);
   MultibodyOptions o;

@@ -223,9 +223,9 @@ namespace {
 // Stopping a tumble in minimum time under ‖u‖ ≤ ū with a free final attitude: T* = ‖Jω_0‖/ū exactly (the
 // duration bound, attained by u = −ū L/‖L‖ for any inertia), with the extremal p_θ ≡ 0,
 // σ = J⁻¹p_ω = L_body/(ū‖L‖). Brody's racket spun at 2 rad/s about the intermediate axis (T* = 3.28 s; at
-// the example's 6.28 rad/s the shooting stalls, docs/optimal_control.md): the direct method from the
-// momentum-dumping guess, then single and multiple shooting from its costates, must reach T* to 1e-10
-// (the shooting is exact up to RKF78 at 1e-13 and the Newton tolerance), with p_θ(0) = 0 and p_ω(0) the
+// the example's 6.28 rad/s the shooting stalls, docs/measurements/optimal_shooting.md): the direct method
+// from the momentum-dumping guess, then single and multiple shooting from its costates, must reach T* to
+// 1e-10 (the shooting is exact up to RKF78 at 1e-13 and the Newton tolerance), with p_θ(0) = 0 and p_ω(0) the
 // closed form to 1e-8 of its size, and pass the verification.
 TEST(MultipleShooting, DetumblingMeetsTheMomentumBound) {
 #if defined(__SANITIZE_ADDRESS__)

@@ -1,6 +1,6 @@
 // Norm-bounded minimum time (‖u‖ ≤ ū) on any body and about any axis, by the indirect method: the sphere's
 // closed form about a generic axis, and an asymmetric body checked by the minimum principle and an
-// independent re-simulation (docs/optimal_control.md, section 3, "Norm bound on any body").
+// independent re-simulation (docs/measurements/optimal_shooting.md, section 3, "Norm bound on any body").
 #include <gtest/gtest.h>
 
 #include <algorithm>

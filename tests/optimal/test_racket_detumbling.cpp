@@ -3,7 +3,7 @@
 // control stops the body before T* = ‖J ω_0‖/ū; u = −ū L/‖L‖ attains it (for any inertia), with the extremal
 // p_θ ≡ 0, σ = J⁻¹p_ω = L_body/(ū‖L‖). The seeds here are that extremal, integrated in its feedback form
 // (stable: the error stays at the integrator's 1e-13), and perturbed: the direct solution of the example
-// takes minutes (docs/optimal_control.md, "Scenario files"), far too long for a test.
+// takes minutes (docs/measurements/optimal_shooting.md, "The tumbling racket"), far too long for a test.
 #pragma GCC diagnostic ignored \
     "-Wmaybe-uninitialized"  // Boost.Odeint's steppers under GCC 12 (false positive)
 #pragma GCC diagnostic ignored "-Wrestrict"

@@ -53,8 +53,8 @@ ReorientationProblem TiltedPhaseAdvance::problem_;
 DirectSolution TiltedPhaseAdvance::direct_;
 IndirectSolution TiltedPhaseAdvance::indirect_;
 
-// Eight segments converge (section 3 of docs/optimal_control.md), but the open-loop dop853 replay misses the
-// target by radians (measured 2.7 rad): its local errors grow by ‖Φ(T, 0)‖ ≈ e^{λT}.
+// Eight segments converge (section 3 of docs/measurements/optimal_shooting.md), but the open-loop dop853
+// replay misses the target by radians (measured 2.7 rad): its local errors grow by ‖Φ(T, 0)‖ ≈ e^{λT}.
 // Replayed from each node to the next the control meets every node and the target to the smooth-control
 // threshold 1e-6 rad (measured 5.2e-8 rad, 7.1e-8 rad/s: the cubic interpolation of 64 samples per segment,
 // grown by e^{λT/8} = 28 over a segment), so the solution is verified on the split replay, and the report

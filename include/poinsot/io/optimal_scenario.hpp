@@ -52,7 +52,7 @@ struct OptimalScenario {
   optimal::ShootingOptions shooting;        ///< the indirect method's options (shooting_nodes from the file)
   /// The phase-per-arc re-solve after the mesh refinement (minimum time, where the switching structure
   /// allows it): on unless the file says `phased = false`; 64 intervals per arc unless it says otherwise
-  /// (Betts' t* then meets the indirect one to 1e-11, docs/optimal_control.md section 2b).
+  /// (Betts' t* then meets the indirect one to 1e-11, docs/optimal_control_theory.md section 2b).
   bool phased = true;
   optimal::PhasedOptions phased_options{.intervals_per_arc = 64};
   std::string out_dir;  ///< [output] dir; empty: the default

@@ -61,8 +61,12 @@ struct DirectSolution {
   double cost = 0.0;         ///< the objective (s, N²·m²·s, or s)
   std::vector<double> time;  ///< s
   std::vector<Quat> attitude;
-  std::vector<Vec3> omega_body;             ///< rad/s
-  std::vector<Vec3> torque_body;            ///< N·m
+  std::vector<Vec3> omega_body;  ///< rad/s
+  /// The control (N·m): the body torque (body frame), or with reaction wheels the wheels' motor torques u_k
+  /// (component k for wheel k).
+  std::vector<Vec3> torque_body;
+  /// With reaction wheels, the wheel momenta h_k (N·m·s) at every sample; empty otherwise.
+  std::vector<Vec3> wheel_momentum;
   std::vector<double> node_time;            ///< s, the mesh nodes
   std::vector<double> costate_time;         ///< s, interval centres
   std::vector<Vec3> costate_attitude_body;  ///< p_θ (N·m·s: H_kin = p_θ·ω is dimensionless for min time
@@ -79,6 +83,9 @@ struct DirectSolution {
   /// so that the control re-simulated between the points meets the cones themselves (solve_direct); 0 when
   /// none was needed.
   double pointing_widening = 0.0;
+  /// The relative tightening ε of the wheel-momentum bounds imposed at the collocation points (h̄ (1 − ε)),
+  /// so that the re-simulated control meets the bounds themselves (solve_direct); 0 when none was needed.
+  double wheel_momentum_margin = 0.0;
   double max_mesh_error = 0.0;
   int mesh_iterations = 0;
   int nlp_iterations = 0;  ///< Ipopt iterations, summed over the mesh iterations

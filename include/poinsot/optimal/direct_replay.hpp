@@ -18,6 +18,10 @@
 /// cubic Hermite interpolant of the quaternion between its ends: PointingMargins::lower_along); `pointing`
 /// holds the smallest margin of each and when it is reached. The cones of the problem given are checked (not
 /// the widened ones a DirectSolution was solved with).
+///
+/// With reaction wheels the replay integrates the gyrostat itself: the bus J_b under −A u − ω × A h, with the
+/// wheel momenta h(t) = h_0 + ∫ u dt integrated exactly from the quadratic control (not recovered from the
+/// conserved total angular momentum, as the transcription does), so the conservation of L is a check.
 #include <string>
 
 #include "poinsot/optimal/direct_collocation.hpp"
@@ -31,6 +35,14 @@ struct DirectReplay {
   double rate_error = 0.0;      ///< rad/s: ‖ω(T) − ω_f‖
   double final_time = 0.0;      ///< s, the T replayed
   PointingMargins pointing;     ///< the smallest margin of every pointing constraint along the replay
+  /// Reaction wheels (zero without): max_t |h_k(t)| (N·m·s) at the ends of the replay's steps (at most a
+  /// sixteenth of an interval); max_t,k (|h_k| / h̄_k − 1) over the bounded wheels (≤ 0 where the bounds
+  /// hold; −inf without bounds); h(T); and max_t ‖L(t) − L(0)‖ (N·m·s), the drift of the total angular
+  /// momentum.
+  Vec3 peak_wheel_momentum = Vec3::Zero();
+  double wheel_momentum_excess = 0.0;
+  Vec3 final_wheel_momentum = Vec3::Zero();
+  double momentum_drift = 0.0;
   /// max(attitude_error, T · rate_error) (rad, the scaled coordinates (δθ, T δω) of verification.hpp); NaN
   /// when DOP853 gave up.
   double scaled_error() const;
@@ -43,6 +55,10 @@ inline constexpr double direct_replay_tolerance = 1e-6;
 /// The largest violation of a pointing constraint accepted on the dense replay (rad): the cones hold to this
 /// between the collocation points (solve_direct widens them at the points until they do).
 inline constexpr double pointing_replay_tolerance = 1e-9;
+
+/// The largest relative excess of a wheel-momentum bound accepted on the dense replay (|h_k| ≤ h̄_k (1 +
+/// this) between the collocation points; solve_direct tightens the bounds at the points until it holds).
+inline constexpr double wheel_momentum_replay_tolerance = 1e-6;
 
 /// Replays `direct`'s control (see above). Throws InvalidInput when `direct` has no samples or its samples
 /// are not node, midpoint, node, ... in increasing time (a solve_direct or phased result).

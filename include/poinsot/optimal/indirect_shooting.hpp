@@ -2,7 +2,7 @@
 /// @file indirect_shooting.hpp
 /// The indirect method: Pontryagin's minimum principle in the coordinates of Vallée & Dumitriu, the rotation
 /// matrix R (RᵀR = I, body → space) and the body angular velocity ω, solved by shooting with Newton's method
-/// from the costates of the direct solution (docs/optimal_control.md derives every equation).
+/// from the costates of the direct solution (docs/optimal_control_theory.md derives every equation).
 ///
 /// Hamiltonian (minimum principle, costates P ∈ ℝ³ˣ³ of R and p_ω of ω):
 ///     H = L(u) + ⟨P, R j(ω)⟩ + p_ωᵀ J⁻¹ (u − ω × Jω),   L = 0, ‖u‖², 1 + ε‖u‖² (per objective; for minimum
@@ -116,7 +116,7 @@ struct IndirectSolution {
 /// re-seeding where its residual is smaller: the nodes integrated from the exact initial state with the
 /// switching vector carried through the space frame, λ = R σ fitted to the direct estimates; when Newton has
 /// not converged after 10 iterations, re-seeded that way from the iterate's own nodes every 3 iterations,
-/// the best iterate kept; docs/optimal_control.md, section 3). Throws InvalidInput
+/// the best iterate kept; docs/optimal_control_theory.md, section 3). Throws InvalidInput
 /// for an invalid problem, a direct solution without costates, or shooting_nodes outside 1 … 1000; failures
 /// are reported in converged/status with the last iterate.
 IndirectSolution solve_indirect(const ReorientationProblem& problem, const DirectSolution& direct,

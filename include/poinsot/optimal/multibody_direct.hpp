@@ -8,7 +8,7 @@
 ///   matrix blockdiag(m I, K ⊗ I), with the joint reactions λ, the orthogonality multipliers Λ and the
 ///   projection multipliers of the stabilised index-2 form as NLP variables. Every equation is a polynomial
 ///   of degree ≤ 2 (linear in the accelerations and the multipliers, quadratic constraints), so the
-///   derivatives are exact by construction (docs/optimal_control.md, "Multibody systems").
+///   derivatives are exact by construction (docs/optimal_control_multibody.md, "Multibody systems").
 /// - `minimal`: hinge angles θ and ball-joint quaternions of a tree rooted at the world or at a floating base
 ///   (its attitude quaternion and angular velocity, the translation eliminated by the centre of mass at
 ///   rest), with the inverse dynamics of the recursive Newton–Euler algorithm as the path equation M(q) ν̇ +
@@ -23,8 +23,8 @@
 /// coordinate linearly interpolated between the two boundary states, every other variable zero. A result is
 /// `converged` only when Ipopt reports success and no body turns by more than π/2 between neighbouring
 /// collocation points (an unresolved mesh, or in R-coordinates a spurious half-turn jump of the stabilised
-/// form: docs/optimal_control.md, "The falling cat"); otherwise `status` says what happened and the last
-/// iterate is kept, never presented as an optimum.
+/// form: docs/optimal_control_multibody.md, "The falling cat"); otherwise `status` says what happened and the
+/// last iterate is kept, never presented as an optimum.
 #include <string>
 #include <vector>
 
@@ -54,12 +54,12 @@ struct MultibodyOptions {
   /// stabilisation_step exceeds c/2 is reported as not converged (the bounds would shape it). 0: unbounded.
   double stabilisation_step = 0.0;
   /// MUMPS' scaling of Ipopt's KKT matrix (Ipopt's option mumps_scaling): 77, Ipopt's default, lets MUMPS
-  /// choose; 0, none beyond Ipopt's own NLP scaling. Neither is better everywhere (docs/optimal_control.md,
-  /// "The cost of the R-coordinate transcription"): in R-coordinates 0 takes the two-link arm at N = 32 and
-  /// 64 in 25 Ipopt iterations instead of 61 and 292 and the reaction wheel in 15 to 17 instead of 32 to 119,
-  /// but the unbounded falling cat 7.7 times the CPU time, and from the naive guess at N = 6 it ends 11 of
-  /// the benchmark's 100 random arm problems on a spurious jump (none with 77). Any of Ipopt's values -2, -1,
-  /// 0, 1, 3, 4, 7, 8, 77.
+  /// choose; 0, none beyond Ipopt's own NLP scaling. Neither is better everywhere
+  /// (docs/measurements/optimal_multibody.md, "The cost of the R-coordinate transcription"): in R-coordinates
+  /// 0 takes the two-link arm at N = 32 and 64 in 25 Ipopt iterations instead of 61 and 292 and the reaction
+  /// wheel in 15 to 17 instead of 32 to 119, but the unbounded falling cat 7.7 times the CPU time, and from
+  /// the naive guess at N = 6 it ends 11 of the benchmark's 100 random arm problems on a spurious jump (none
+  /// with 77). Any of Ipopt's values -2, -1, 0, 1, 3, 4, 7, 8, 77.
   int mumps_scaling = 77;
 };
 
@@ -81,7 +81,7 @@ struct MultibodyOptimum {
   /// Rotation-matrix coordinates: the largest step the stabilising variables carry at any point, h|S_kl| of
   /// a body, h|μ| of a joint (MultibodyOptions::stabilisation_step); 0 in minimal coordinates. They vanish on
   /// the continuous problem's solution: a step comparable to a body's turn per interval is the transcription
-  /// using them to move the body (docs/optimal_control.md, "The falling cat").
+  /// using them to move the body (docs/optimal_control_multibody.md, "The falling cat").
   double stabilisation_step = 0.0;
 };
 

@@ -24,6 +24,10 @@
 
 namespace poinsot::optimal {
 
+/// The 4×4 symmetric A with sᵀ R(q) b = qᵀ A q for any vectors b (body frame) and s (space frame) and any
+/// quaternion q = (w, x, y, z) (the form above; homogeneous of degree 2 in q, exact for unit q).
+Eigen::Matrix4d rotation_bilinear_form(const Vec3& b, const Vec3& s);
+
 enum class PointingKind { keep_out, keep_in };
 
 /// "keep_out" or "keep_in" (the scenario files' table names).
