@@ -1,4 +1,5 @@
-// RATTLE in rotation-matrix coordinates with a tree-order KKT solver (rattle.hpp, docs/multibody.md).
+// RATTLE in rotation-matrix coordinates with a tree-order KKT solver (rattle.hpp, docs/multibody_theory.md
+// §2).
 #include "poinsot/multibody/rattle.hpp"
 
 #include <algorithm>

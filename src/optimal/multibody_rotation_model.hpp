@@ -1,8 +1,8 @@
 #pragma once
 /// @file multibody_rotation_model.hpp (internal)
 /// The collocation point model of a multibody problem in rotation-matrix coordinates: the multibody layer's
-/// equations (docs/multibody.md (1)), with the constant mass matrix blockdiag(m I, K ⊗ I), written so that
-/// every function is a polynomial of degree ≤ 2 in the point's variables (QuadraticFunctions: exact
+/// equations (docs/multibody_theory.md (1)), with the constant mass matrix blockdiag(m I, K ⊗ I), written so
+/// that every function is a polynomial of degree ≤ 2 in the point's variables (QuadraticFunctions: exact
 /// derivatives by construction).
 ///
 /// Per body, states y = (x, R, v, V) (24: R and V = Ṙ column-major) and algebraic variables

@@ -13,7 +13,7 @@
 namespace poinsot::multibody::test {
 
 /// Long runs are shortened by this factor in sanitizer builds (Debug + ASan is ~100x slower than Release with
-/// Eigen); the full-length figures are in docs/multibody.md.
+/// Eigen); the full-length figures are in docs/measurements/multibody.md, "Long runs".
 #if defined(__SANITIZE_ADDRESS__)
 inline constexpr int kSlowdown = 5;
 #else

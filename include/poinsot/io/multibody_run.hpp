@@ -4,7 +4,7 @@
 /// `poinsot run` and of Python's `poinsot.multibody.run_scenario`. The loop is multibody::simulate; this
 /// file serialises what it hands over.
 ///
-/// Files (into RunOptions::out_dir; the layouts in docs/multibody.md §5):
+/// Files (into RunOptions::out_dir; the layouts in docs/multibody.md, "Output files"):
 ///   trajectory.csv   t, then per body NAME.x NAME.y NAME.z (centre of mass, m), NAME.qw .qx .qy .qz (the
 ///                    rotation body → space), NAME.vx .vy .vz (m/s), NAME.wx .wy .wz (ω, body frame, rad/s);
 ///                    one row at t₀, every `output_every` steps and at the last step, streamed in whole rows
@@ -61,7 +61,7 @@ MultibodyRunSummary run_multibody_scenario(const multibody::Scenario& scenario,
 /// tables being reactions.csv and multipliers.csv), the cost and the files. SI units on every line.
 std::string format_multibody_report(const multibody::Scenario& scenario, const MultibodyRunSummary& summary);
 
-/// summary.json of a multibody run (pretty-printed, keys in docs/multibody.md §5).
+/// summary.json of a multibody run (pretty-printed, keys in docs/multibody.md, "Output files").
 std::string multibody_summary_json(const multibody::Scenario& scenario, const MultibodyRunSummary& summary);
 
 }  // namespace poinsot::io

@@ -7,7 +7,7 @@
 ///
 /// with G the joint Jacobians (constraints.hpp). M is the constant mass matrix of the 12 coordinates
 /// restricted to the tangent space of RᵀR = I, where it is blockdiag(m I, J) with J = tr(K) I − K positive
-/// definite even when K is singular (docs/multibody.md).
+/// definite even when K is singular (docs/multibody_theory.md §3).
 ///
 /// Tree-structured systems (the graph of bodies and joints has no cycle, and each connected part has at most
 /// one joint to the world) are solved in O(N) by Baraff's block LDLᵀ factorisation in tree order (D. Baraff

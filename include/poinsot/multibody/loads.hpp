@@ -7,7 +7,7 @@
 /// work f·(δx + δR X): its generalized force on x is f and on R is F_R = f Xᵀ. Written in the body frame, Φ =
 /// RᵀF_R = (Rᵀf) Xᵀ, and the body torque is τ = 2 vee(skew Φ) = X × Rᵀf. A pure couple τ (body frame, N·m)
 /// has Φ = ½ j(τ) (its symmetric part is arbitrary and taken as zero). Φ's symmetric part enters the
-/// multiplier Λ = Rᵀ R̈ K − Φ (docs/multibody.md).
+/// multiplier Λ = Rᵀ R̈ K − Φ (docs/multibody_theory.md §1).
 
 #include <vector>
 

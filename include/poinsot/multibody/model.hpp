@@ -1,6 +1,6 @@
 #pragma once
 /// @file model.hpp
-/// The constant model of a multibody system in rotation-matrix coordinates (docs/multibody.md).
+/// The constant model of a multibody system in rotation-matrix coordinates (docs/multibody_theory.md §1).
 ///
 /// Each body has 12 coordinates: the position `x` of its centre of mass (space frame, m) and its rotation `R`
 /// (body → space, the nine entries are unknowns), with constant mass data: the mass `m` (kg) and the Poinsot

@@ -5,7 +5,7 @@
 /// blockdiag(m I, K ⊗ I) (model.hpp). It is symplectic, symmetric, second order, and conserves the linear and
 /// angular momentum of free systems exactly (up to the Newton tolerance).
 ///
-/// One step of size h, per body (docs/multibody.md for the derivation):
+/// One step of size h, per body (docs/multibody_theory.md §2 for the derivation):
 ///
 ///     position stage:  m (u − vₙ) = h/2 fₙ + Gₓᵀν,
 ///                      J w + σ w × J w = J ωₙ + h/2 τₙ + G_θᵀν,     σ = h / (1 + √(1 − h²|w|²)),
