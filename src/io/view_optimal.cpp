@@ -112,11 +112,20 @@ ViewJson optimal_view_data(const std::string& dir, const ViewJson& summary, cons
   o["torque_max"] =
       pb.bound == optimal::TorqueBound::norm ? vec(Vec3::Constant(pb.torque_max[0])) : vec(pb.torque_max);
   o["torque_norm_limit"] = pb.torque_norm_limit();
-  // The control: body torques, or with reaction wheels the wheels' motor torques (u1, u2, u3).
+  // The control: body torques, or with reaction wheels the wheels' motor torques u_k (u1, u2, u3); the arrow
+  // then draws their vector A u in the body frame (the bus feels −A u), the chart the u_k themselves.
   const std::vector<std::string> u_columns =
       pb.wheels ? std::vector<std::string>{"u1", "u2", "u3"} : std::vector<std::string>{"ux", "uy", "uz"};
-  o["control_kind"] = pb.wheels ? "wheel motor torques" : "body torques";
-  o["u"] = gather(f, u_columns, traj_path);
+  o["control_kind"] = pb.wheels ? "wheels" : "body";
+  std::vector<double> u = gather(f, u_columns, traj_path);
+  if (pb.wheels)
+    for (std::size_t i = 0; i + 2 < u.size(); i += 3) {
+      const Vec3 a = pb.wheels->axes_body * Vec3(u[i], u[i + 1], u[i + 2]);
+      u[i] = a[0];
+      u[i + 1] = a[1];
+      u[i + 2] = a[2];
+    }
+  o["u"] = u;
   o["control"] = {{"t", gather(control, {"t"}, control_path)},
                   {"u", gather(control, u_columns, control_path)}};
   o["costates"] = {{"t", gather(costates, {"t"}, costates_path)},

@@ -138,3 +138,60 @@ def test_cones_boresights_and_their_chart_as_drawn(sun_run, load):
     assert np.allclose(angle["values"], np.degrees(traj[:, col["angle_keep_out_1"]]), atol=1e-9)
     assert np.allclose(limit["values"], 50.0, atol=1e-12)
     assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]
+
+
+# Three reaction wheels on skewed axes (the rows of axes) turn a spacecraft 40° at minimum energy in 30 s.
+WHEELS = """
+[body]
+principal_moments = [3.0, 4.0, 2.0]
+[optimal_control]
+objective = "minimum_energy"
+torque_max = [0.1, 0.1, 0.1]
+final_time = 30.0
+[optimal_control.reaction_wheels]
+axes = [[1.0, 0.2, 0.0], [0.0, 1.0, 0.3], [0.2, 0.0, 1.0]]
+spin_inertia = [0.02, 0.02, 0.02]
+[optimal_control.final]
+orientation = { axis_angle = { axis = [1.0, 1.0, 1.0], angle = 40.0 }, degrees = true }
+"""
+
+
+@pytest.fixture(scope="module")
+def wheel_run(cli, tmp_path_factory):
+    """A reaction-wheel slew (exit 3: converged direct; about a second) and its page."""
+    folder = tmp_path_factory.mktemp("optimal")
+    scenario = folder / "wheels.toml"
+    scenario.write_text(WHEELS)
+    out = folder / "wheels"
+    r = cli("optimize", scenario, "--out", out, "--quiet")
+    assert r.returncode == 3, r.stdout + r.stderr
+    assert cli("view", out).returncode == 0
+    return out
+
+
+def test_wheel_torques_as_drawn(wheel_run, load):
+    """With reaction wheels the arrow is the wheels' torque vector A u in the body frame (drawn in space, R A u),
+    and the chart's control view holds the wheel torques u_k of control.csv, labelled as such."""
+    page = load(wheel_run / "view.html")
+    summary = json.loads((wheel_run / "summary.json").read_text())
+    A = np.array(summary["reaction_wheels"]["axes_body"]).T  # columns: the unit spin axes
+    names, traj = rows(wheel_run / "trajectory.csv")
+    col = {c: k for k, c in enumerate(names)}
+    n = page.js("return window.poinsotView.track.n")
+    idx = sorted(set(np.linspace(0, n - 1, 20).astype(int).tolist()))
+    drawn = page.js("""var v = window.poinsotView, out = [];
+        arguments[0].forEach(function (i) { v.moveTo(v.data.t[i]); out.push(v.optimal()); });
+        return out;""", idx)
+    for i, d in zip(idx, drawn):
+        R = rotation(traj[i, [col[c] for c in ("qw", "qx", "qy", "qz")]])
+        u = traj[i, [col["u1"], col["u2"], col["u3"]]]
+        assert np.linalg.norm(np.array(d["torque"]) - R @ A @ u) <= 1e-12, (i, d["torque"], R @ A @ u)
+    chart = page.js("var c = window.poinsotView.chart(); return {key: c.key, yLabel: c.yLabel, "
+                    "label: document.getElementById('chart-view').selectedOptions[0].textContent, "
+                    "series: c.series.map(function (s) { return s.values; }), "
+                    "names: c.series.map(function (s) { return s.label; })};")
+    assert chart["key"] == "control" and chart["label"] == "wheel torques u\u2096", chart["label"]
+    assert chart["yLabel"] == "u wheel (N\u00b7m)" and chart["names"] == ["u1", "u2", "u3"]
+    _, control = rows(wheel_run / "control.csv")
+    assert np.allclose(chart["series"][0], control[:, 1], atol=1e-15)
+    assert not [e for e in page.console() if e["level"] in ("SEVERE", "WARNING")]

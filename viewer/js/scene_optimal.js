@@ -5,14 +5,16 @@
 // the switches and the target quaternion (null for a free final attitude). Pointing constraints (o.cones):
 // each cone's edge on a sky sphere about the centre of mass (a circle at its half-angle about its axis, the
 // axis drawn faint), each boresight's path R(t) b over the whole manoeuvre on the same sphere, and the
-// boresight now as an arrow; keep-out in amber, keep-in in cyan.
+// boresight now as an arrow; keep-out in amber, keep-in in cyan. With reaction wheels (o.control_kind
+// 'wheels') the arrow is the wheels' torque vector A u (body frame; the bus feels −A u), the box the per-wheel
+// bounds (the bounds of A u for wheels on the body axes), and the chart the wheel torques u_k.
 PV.OptimalScene = (function () {
   'use strict';
   var M = PV.math, D = PV.draw;
   var TORQUE = 0xd62728;
 
   function OptimalScene(ctx, body) {
-    var data = ctx.data, o = data.optimal;
+    var data = ctx.data, o = data.optimal, wheels = o.control_kind === 'wheels';
     this.ctx = ctx; this.body = body; this.optimal = o;
     ctx.track.fields.u = { data: o.u, width: 3, kind: 'vec' };
     this.scale = 1.2 * body.length / o.torque_norm_limit;  // m per N·m: the largest torque allowed
@@ -88,7 +90,8 @@ PV.OptimalScene = (function () {
     ctx.scene.add(this.cones);
 
     this.overlays = [
-      { key: 'torque', label: 'control torque u', objects: [this.arrow], on: true },
+      { key: 'torque', label: wheels ? 'wheel torques A u (the bus feels \u2212A u)' : 'control torque u',
+        objects: [this.arrow], on: true },
       { key: 'bounds', label: 'torque bounds', objects: [this.bounds], on: true }
     ];
     if (this.ghostPose) {
@@ -100,9 +103,11 @@ PV.OptimalScene = (function () {
                            on: true });
     }
     var bound = o.bound === 'norm' ? '\u2016u\u2016 \u2264 ' + m[0] + ' N\u00b7m'
-                                   : '|u\u1d62| \u2264 (' + m.join(', ') + ') N\u00b7m';
+                                   : '|u\u1d62| \u2264 (' + m.join(', ') + ') N\u00b7m' +
+                                     (wheels ? ' per wheel' : '');
     this.legend = [
-      ['#d62728', 'torque u, N\u00b7m (1 m = ' + (1 / s).toPrecision(3) + ' N\u00b7m); bounds ' + bound],
+      ['#d62728', (wheels ? 'wheel torques A u' : 'torque u') + ', N\u00b7m (1 m = ' + (1 / s).toPrecision(3) +
+                  ' N\u00b7m); bounds ' + bound],
       ['#7f7f7f', o.target ? 'target attitude' : 'free final attitude (detumbling)'],
       ['#ffffff', o.objective + ': ' + o.status]
     ];
@@ -144,9 +149,9 @@ PV.OptimalScene = (function () {
   // functions (costates.csv), ω and, with pointing constraints, each boresight's angle to its cone's axis
   // beside the limit.
   OptimalScene.prototype.chartViews = function (omegaSeries) {
-    var o = this.optimal, c = ['#d62728', '#2ca02c', '#1f77b4'];
-    function series(t, flat, name) {
-      return ['x', 'y', 'z'].map(function (axis, k) {
+    var o = this.optimal, c = ['#d62728', '#2ca02c', '#1f77b4'], wheels = o.control_kind === 'wheels';
+    function series(t, flat, name) {  // wheels: u1, u2, u3 and σ1, σ2, σ3 (per wheel); else x, y, z
+      return (wheels ? ['1', '2', '3'] : ['x', 'y', 'z']).map(function (axis, k) {
         var v = [];
         for (var i = 0; i < t.length; i++) v.push(flat[3 * i + k]);
         return { label: name + axis, color: c[k], t: t, values: v };
@@ -167,9 +172,12 @@ PV.OptimalScene = (function () {
                     { label: name + ' limit', color: '#7f7f7f', values: limit });
     });
     var views = [
-      { key: 'control', label: 'control u', yLabel: 'u body (N\u00b7m)', marks: marks,
+      { key: 'control', label: wheels ? 'wheel torques u\u2096' : 'control u',
+        yLabel: wheels ? 'u wheel (N\u00b7m)' : 'u body (N\u00b7m)', marks: marks,
         series: series(o.control.t, o.control.u, 'u') },
-      { key: 'sigma', label: 'switching functions \u03c3', yLabel: '\u03c3 = J\u207b\u00b9p\u03c9', marks: marks,
+      { key: 'sigma', label: 'switching functions \u03c3',
+        yLabel: wheels ? '\u03c3 = \u2212A\u1d40J\u1d66\u207b\u00b9p\u03c9' : '\u03c3 = J\u207b\u00b9p\u03c9',
+        marks: marks,
         series: series(o.costates.t, o.costates.sigma, '\u03c3') },
       { key: 'omega', label: '\u03c9', yLabel: '\u03c9 body (rad/s)', marks: marks, series: omegaSeries }
     ];
