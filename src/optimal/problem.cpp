@@ -42,6 +42,21 @@ double largest_momentum_integral(double a, double b, double ubar, double c, doub
   return sum;
 }
 
+/// The smallest T ≥ 0 with feasible(T) (a monotone predicate, true for large T), by doubling from max(1,
+/// start) and bisection to 1e-12 relative.
+template <class Feasible>
+double smallest_feasible_time(double start, const Feasible& feasible) {
+  double hi = std::max(1.0, start);
+  while (!feasible(hi))
+    hi *= 2.0;
+  double lo = 0.0;
+  while (hi - lo > 1e-12 * hi) {
+    const double mid = 0.5 * (lo + hi);
+    (feasible(mid) ? hi : lo) = mid;
+  }
+  return hi;
+}
+
 }  // namespace
 
 std::string_view objective_name(Objective objective) {
@@ -100,15 +115,7 @@ double wheel_duration_bound(const ReorientationProblem& p) {
         largest_momentum_integral(a, b, ubar, std::min(cap_m, std::max(c - L.norm(), 0.0)), T);
     return T >= t_momentum && reach >= theta * eig.eigenvalues()[0];
   };
-  double hi = std::max(1.0, t_momentum);
-  while (!feasible(hi))
-    hi *= 2.0;
-  double lo = 0.0;
-  while (hi - lo > 1e-12 * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (feasible(mid) ? hi : lo) = mid;
-  }
-  return hi;
+  return smallest_feasible_time(t_momentum, feasible);
 }
 
 }  // namespace
@@ -127,15 +134,7 @@ double minimum_duration_bound(const ReorientationProblem& p) {
   auto feasible = [&](double T) {
     return T >= t_momentum && largest_momentum_integral(a, b, ubar, c, T) >= theta * j_min;
   };
-  double hi = std::max(1.0, t_momentum);
-  while (!feasible(hi))
-    hi *= 2.0;
-  double lo = 0.0;
-  while (hi - lo > 1e-12 * hi) {
-    const double mid = 0.5 * (lo + hi);
-    (feasible(mid) ? hi : lo) = mid;
-  }
-  return hi;
+  return smallest_feasible_time(t_momentum, feasible);
 }
 
 std::string pointing_field(const ReorientationProblem& p, std::size_t index) {
