@@ -57,7 +57,7 @@ void CollocationNlp::set_up() {
     const Mat3 Jb = problem_.bus_inertia();
     dyn_ = CollocationDynamics::wheels(Jb, w.axes_body, problem_.wheel_system_momentum());
     const Mat3 A_inv = w.axes_body.inverse();
-    momentum_bounded_ = w.momentum_max.minCoeff() < std::numeric_limits<double>::infinity();
+    momentum_bounded_ = w.has_momentum_bound();
     momentum_rate_rows_ = A_inv * Jb;
     for (int k = 0; k < 3; ++k)
       momentum_forms_[k] = A_inv(k, 0) * dyn_.M[0] + A_inv(k, 1) * dyn_.M[1] + A_inv(k, 2) * dyn_.M[2];

@@ -105,7 +105,7 @@ double wheel_duration_bound(const ReorientationProblem& p) {
           ? std::max(0.0, L.norm() - (Jb * p.omega_final).norm())
           : (w.axes_body * wheel_momentum(p.inertia_body, w, L, p.attitude_final, p.omega_final)).norm();
   const double cap_m =
-      w.has_momentum_bound() ? sigma * w.momentum_max.norm() : std::numeric_limits<double>::infinity();
+      w.momentum_max.allFinite() ? sigma * w.momentum_max.norm() : std::numeric_limits<double>::infinity();
   const double c = p.has_rate_bound() ? std::sqrt(3.0) * p.rate_max * eig.eigenvalues()[2]
                                       : std::numeric_limits<double>::infinity();
   const double t_momentum = (p.free_final_attitude ? std::max(0.0, b - a) : std::abs(a - b)) / ubar;

@@ -33,7 +33,10 @@ struct ReactionWheels {
   Vec3 momentum_max = Vec3::Constant(std::numeric_limits<double>::infinity());
   Vec3 momentum_initial = Vec3::Zero();  ///< h_k(0) (N·m·s)
 
-  bool has_momentum_bound() const { return momentum_max.allFinite(); }
+  /// At least one wheel's momentum is bounded (a finite h̄_k).
+  bool has_momentum_bound() const {
+    return momentum_max.minCoeff() < std::numeric_limits<double>::infinity();
+  }
 };
 
 /// J_b = J − Σ_k I_k a_k a_kᵀ (kg·m², body frame): the inertia the bus's rate ω carries (J with the wheels'
