@@ -141,12 +141,6 @@ void run_phased(OptimalRun& r) {
 
 namespace {
 
-/// Whether the problem bounds its wheels' momenta (the replay must then meet those bounds).
-bool p_has_momentum_bound(const OptimalRun& r) {
-  const auto& w = r.scenario.problem.wheels;
-  return w && w->has_momentum_bound();
-}
-
 /// `status` without a leading "not applied: " or "not converged: " (it follows "not verified: ").
 std::string reason_of(const std::string& status) {
   for (const std::string_view prefix : {"not applied: ", "not converged: "})
@@ -272,8 +266,7 @@ OptimalRun run_optimal(const OptimalScenario& sc,
           ? reason_of(r.indirect.status.empty() ? "indirect method not run" : r.indirect.status)
           : r.verification.failures.front();
   replay_direct_optimum(r, progress);
-  const bool wheels_held = !p_has_momentum_bound(r) ||
-                           r.direct_replay.wheel_momentum_excess <= optimal::wheel_momentum_replay_tolerance;
+  const bool wheels_held = detail::wheel_bounds_held(r);
   if (r.direct_replayed && r.direct_replay.scaled_error() <= r.direct_replay_tolerance &&
       r.direct_replay.pointing.worst() >= -optimal::pointing_replay_tolerance && wheels_held) {
     r.outcome = OptimalOutcome::converged_direct;
@@ -571,16 +564,11 @@ void write_optimal_files(const OptimalRun& r, const std::string& dir) {
     for (std::size_t k = 0; k < d.time.size(); ++k) {
       const Quat& q = d.attitude[k];
       // L: the body's angular momentum R J ω, or with wheels the whole spacecraft's R (J_b ω + A h).
-      const Vec3 L = p.wheels ? Vec3(q.toRotationMatrix() * (p.bus_inertia() * d.omega_body[k] +
-                                                             p.wheels->axes_body * d.wheel_momentum[k]))
-                              : Vec3(q.toRotationMatrix() * (J * d.omega_body[k]));
+      const Vec3 L =
+          p.wheels ? optimal::total_momentum_space(J, *p.wheels, q, d.omega_body[k], d.wheel_momentum[k])
+                   : Vec3(q.toRotationMatrix() * (J * d.omega_body[k]));
       traj += trajectory_row(d.time[k], q, d.omega_body[k], d.torque_body[k], L);
-      if (p.wheels) {
-        std::string h;
-        for (int i = 0; i < 3; ++i)
-          h.append(",").append(format_number(d.wheel_momentum[k][i]));
-        traj.insert(traj.size() - 1, h);
-      }
+      traj.insert(traj.size() - 1, detail::wheel_momentum_values(d, k));
       traj.insert(traj.size() - 1, angles(q.toRotationMatrix()));
       control += csv_row(d.time[k], {d.torque_body[k]});
     }

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/format.hpp"
+#include "poinsot/optimal/direct_replay.hpp"
 
 namespace poinsot::io::detail {
 
@@ -54,6 +55,19 @@ std::string control_columns(const optimal::ReorientationProblem& p) {
 
 std::string wheel_momentum_columns(const optimal::ReorientationProblem& p) {
   return p.wheels ? ",h1,h2,h3" : "";
+}
+
+std::string wheel_momentum_values(const optimal::DirectSolution& d, std::size_t k) {
+  std::string out;
+  for (int i = 0; i < 3 && k < d.wheel_momentum.size(); ++i)
+    out.append(",").append(format_number(d.wheel_momentum[k][i]));
+  return out;
+}
+
+bool wheel_bounds_held(const OptimalRun& r) {
+  const auto& w = r.scenario.problem.wheels;
+  return !(w && w->has_momentum_bound()) ||
+         r.direct_replay.wheel_momentum_excess <= optimal::wheel_momentum_replay_tolerance;
 }
 
 nlohmann::ordered_json wheels_json(const OptimalRun& r) {

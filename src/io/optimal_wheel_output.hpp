@@ -2,6 +2,7 @@
 /// @file optimal_wheel_output.hpp (internal)
 /// How `poinsot optimize` reports reaction wheels (optimal_run.hpp): the report's lines, the columns of
 /// trajectory.csv and control.csv, and summary.json's "reaction_wheels".
+#include <cstddef>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -19,6 +20,13 @@ std::string wheel_lines(const OptimalRun& run);
 /// without; the wheel-momentum columns of trajectory.csv: ",h1,h2,h3" (N·m·s) with wheels, "" without.
 std::string control_columns(const optimal::ReorientationProblem& problem);
 std::string wheel_momentum_columns(const optimal::ReorientationProblem& problem);
+
+/// ",h1,h2,h3" of sample k of a direct solution with wheels (N·m·s), "" without wheels.
+std::string wheel_momentum_values(const optimal::DirectSolution& direct, std::size_t k);
+
+/// Whether the direct re-simulation meets every finite wheel-momentum bound to
+/// wheel_momentum_replay_tolerance (true without bounds): a condition of "converged (direct …)".
+bool wheel_bounds_held(const OptimalRun& run);
 
 /// summary.json's "reaction_wheels" (null without wheels): axes (rows), spin inertias, bounds, the initial,
 /// final and peak momenta, the tightening of the bounds at the collocation points, the replay's excess and
