@@ -3,6 +3,7 @@
 // two outcomes: success, or a poinsot::Error whose message is one line. Anything else — another exception,
 // a message with a line break, a sanitizer report, a crash, a hang — is a finding: the process aborts so
 // that libFuzzer (or the replay driver of replay_main.cpp) reports it.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <unistd.h>
 
@@ -37,10 +39,25 @@ void expect_clean(F&& f) {
   }
 }
 
+/// The files input_file wrote in this process, removed when it exits.
+struct InputFiles {
+  std::vector<std::string> paths;
+  InputFiles() = default;
+  InputFiles(const InputFiles&) = delete;
+  InputFiles& operator=(const InputFiles&) = delete;
+  ~InputFiles() {
+    for (const auto& p : paths)
+      std::remove(p.c_str());
+  }
+};
+
 /// The input written to a file of this process with extension `ext` (the mesh reader takes a path and picks
-/// the format by extension); the same path each call.
+/// the format by extension); the same path each call for one extension, removed when the process exits.
 inline std::string input_file(const std::uint8_t* data, std::size_t size, const char* ext) {
+  static InputFiles written;
   const std::string path = "/tmp/poinsot_fuzz_" + std::to_string(::getpid()) + ext;
+  if (std::find(written.paths.begin(), written.paths.end(), path) == written.paths.end())
+    written.paths.push_back(path);
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));  // NOLINT: bytes
   return path;

@@ -408,11 +408,19 @@ void BM_Mujoco(benchmark::State& state, Model md, int integrator) {
   mj_deleteModel(m);
 }
 
+/// MuJoCo's warnings (an unstable step, a near-singular inertia) on stderr, instead of its default handler's
+/// MUJOCO_LOG.TXT in the working folder.
+void print_mujoco_warning(const char* message) {
+  std::fprintf(stderr, "MuJoCo warning: %s\n", message);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
-  for (const Model& md : models()) {
+  mju_user_warning = print_mujoco_warning;
+  const std::vector<Model> all = models();
+  for (const Model& md : all) {
     try {
       compare_inertias(md);
       compare_trajectories(md);
@@ -429,5 +437,7 @@ int main(int argc, char** argv) {
   std::printf("\n");
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
+  for (const Model& md : all)
+    if (md.path.rfind("/tmp/poinsot_humanoid_", 0) == 0) std::remove(md.path.c_str());
   return 0;
 }

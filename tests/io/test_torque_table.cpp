@@ -95,10 +95,9 @@ TEST(TorqueTable, ScenarioTypeTableNeedsFileAndTakesInterpolation) {
 }
 
 TEST(TorqueTable, ReplayOfBettsOptimumReachesTheTarget) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "0.6 s in release (the optimisation), far longer under ASan; the sphere replays of "
-                  "tests/dynamics/test_tabulated_torque.cpp cover the same code there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "0.6 s in release (the optimisation), far longer under ASan; the sphere replays of "
+                    "tests/dynamics/test_tabulated_torque.cpp cover the same code there";
   OptimalScenario osc =
       load_optimal_scenario(std::string(POINSOT_SOURCE_DIR) + "/examples/optimal/betts.toml");
   // A coarse mesh is enough to seed the shooting, whose switch times are exact whatever the mesh (fast test).

@@ -9,16 +9,15 @@
 #include "poinsot/multibody/model.hpp"
 #include "poinsot/multibody/state.hpp"
 #include "poinsot/so3/hat.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::multibody::test {
 
-/// Long runs are shortened by this factor in sanitizer builds (Debug + ASan is ~100x slower than Release with
-/// Eigen); the full-length figures are in docs/measurements/multibody.md, "Long runs".
-#if defined(__SANITIZE_ADDRESS__)
-inline constexpr int kSlowdown = 5;
-#else
-inline constexpr int kSlowdown = 1;
-#endif
+/// Long runs are shortened by this factor under the sanitizers (the instrumented library is many times
+/// slower); the full-length figures are in docs/measurements/multibody.md, "Long runs".
+inline int slowdown() {
+  return ::poinsot::test::sanitized() ? 5 : 1;
+}
 
 /// prefix + index (avoids GCC 12's false -Wrestrict on "literal" + std::to_string).
 inline std::string indexed(const char* prefix, int index) {

@@ -192,7 +192,7 @@ TEST(PrismaticJoint, BeadOnRotatingRodMatchesLagrangesEquations) {
   const Bead bead;
   const double T = 2.0;
   // RK4 error ~(ωh)⁴: below 1e-13 (1e-12 with the sanitizers' 5 times larger step)
-  const Eigen::Vector4d y = bead.lagrange(T, 1e-4 * test::kSlowdown);
+  const Eigen::Vector4d y = bead.lagrange(T, 1e-4 * test::slowdown());
   const Vec3 e(std::cos(y(0)), std::sin(y(0)), 0.0);
   const auto error = [&](const State& s) {
     return std::max((s.bodies[1].x_space - y(2) * e).norm(),
@@ -288,7 +288,7 @@ struct CardanLink {
 TEST(UniversalJoint, CardanLinkMatchesLagrangesEquations) {
   const CardanLink link;
   const double T = 2.0;
-  const Eigen::Vector4d y = link.lagrange(T, 1e-4 * test::kSlowdown);
+  const Eigen::Vector4d y = link.lagrange(T, 1e-4 * test::slowdown());
   const Mat3 R_exact = CardanLink::attitude(y(0), y(1));
   const Vec3 omega_exact = CardanLink::E(y(1)) * y.tail<2>();
   const auto error = [&](const State& s) {

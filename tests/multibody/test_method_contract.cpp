@@ -122,7 +122,7 @@ TEST_P(MethodContract, MeasuredOrderIsTheDeclaredOrder) {
 // the joints closed to the methods' tolerance (1e-13 relative to the 1 m length scale, with margin).
 TEST_P(MethodContract, KeepsRotationsAndJoints) {
   const auto [sys, s0] = double_pendulum();
-  const State s = run(sys, s0, 0.005, 400 / kSlowdown);
+  const State s = run(sys, s0, 0.005, 400 / test::slowdown());
   const ConstraintViolation v = constraint_violation(sys, s);
   if (info().preserves.orthogonality) {
     EXPECT_LT(v.orthogonality, 3e-14);
@@ -137,7 +137,7 @@ TEST_P(MethodContract, KeepsRotationsAndJoints) {
 TEST_P(MethodContract, ConservesMomentumWhenDeclared) {
   if (!info().preserves.momentum) GTEST_SKIP() << info().name << " does not declare momentum conservation";
   const auto [sys, s0] = free_pair();
-  const State s = run(sys, s0, 0.01, 200 / kSlowdown);
+  const State s = run(sys, s0, 0.01, 200 / test::slowdown());
   const Vec3 P0 = linear_momentum(sys, s0);
   const Vec3 L0 = angular_momentum(sys, s0);
   POINSOT_EXPECT_MATRIX_REL_NEAR(linear_momentum(sys, s), P0, 1e-11);

@@ -39,7 +39,7 @@ TEST(Multipliers, ConicalPendulumStageReactionsTrackTheClosedFormAtSecondOrder) 
     Rattle rattle(s, h);
     Vec3 previous_velocity_stage = Vec3::Zero();
     double err = 0.0;
-    for (int n = 0; n < static_cast<int>(std::lround(2.0 / h / test::kSlowdown)); ++n) {
+    for (int n = 0; n < static_cast<int>(std::lround(2.0 / h / test::slowdown())); ++n) {
       const Vec3 x = st.bodies[0].x_space;
       rattle.step(st);
       if (n > 0) {  // at t_n: mean of the velocity stage of step n−1 and the position stage of step n

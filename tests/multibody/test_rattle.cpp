@@ -172,7 +172,7 @@ TEST(Rattle, DoublePendulumEnergyBoundedAndConstraintsAtRoundOff) {
   st.bodies[1].omega_body = Vec3(0, 0, 3.0);  // out-of-plane motion: a 3-D chaotic double pendulum
   st.bodies[1].v_space = Vec3(0, 1.5, 0);
   const double released = 2 * kG;  // m g l N²/2 with m = l = 1, N = 2
-  const RunStats a = run_and_watch(s, st, 1e-3, 20000 / test::kSlowdown);
+  const RunStats a = run_and_watch(s, st, 1e-3, 20000 / test::slowdown());
   // The energy error of a symplectic method oscillates at O(h²) without drift: both halves of the run share
   // the same bound (measured 4.0e-5 and 4.3e-5 of the released energy; 5e-4 at h = 4e-3, i.e. order 2).
   EXPECT_LT(a.max_energy_error, 1e-4 * released);
@@ -185,7 +185,7 @@ TEST(Rattle, ChainFallingFromHorizontalKeepsEnergyAndJoints) {
   const int n = 8;
   const System s = test::rod_chain(n);
   const double released = kG * n * n / 2.0;
-  const RunStats a = run_and_watch(s, test::rod_chain_state(n), 1e-3, 4000 / test::kSlowdown);
+  const RunStats a = run_and_watch(s, test::rod_chain_state(n), 1e-3, 4000 / test::slowdown());
   // Measured 7e-5 of the released energy over 4 s (the tip of a chain falling from horizontal whips fast).
   EXPECT_LT(a.max_energy_error, 2e-4 * released);
   EXPECT_LT(a.max_gap, 1e-12);
@@ -219,7 +219,7 @@ TEST(Rattle, FourthOrderKeepsTheFallingChainsEnergyHundredsOfTimesBetter) {
   const int n = 8;
   const System s = test::rod_chain(n);
   const double released = kG * n * n / 2.0;
-  const int steps = 4000 / test::kSlowdown;
+  const int steps = 4000 / test::slowdown();
   const RunStats two = run_and_watch(s, test::rod_chain_state(n), 1e-3, steps, 2);
   const RunStats four = run_and_watch(s, test::rod_chain_state(n), 1e-3, steps, 4);
   // The whip of the tip dominates both; order 4 cuts the peak error by O((ωh)²): measured 7.1e-5 -> 2.5e-7 of
@@ -331,7 +331,7 @@ TEST(Rattle, FreeSystemConservesMomentaExactly) {
     Rattle rattle(s, 2e-3, options);
     const Vec3 P0 = linear_momentum(s, st), L0 = angular_momentum(s, st);
     const double E0 = total_energy(s, st);
-    for (int n = 0; n < 3000 / test::kSlowdown; ++n)
+    for (int n = 0; n < 3000 / test::slowdown(); ++n)
       rattle.step(st);
     // Exact up to the Newton tolerance (1e-13 of the positions per step) and round-off.
     EXPECT_LT((linear_momentum(s, st) - P0).norm(), 1e-11 * P0.norm()) << "order " << order;
@@ -348,7 +348,7 @@ TEST(Rattle, ClosedLoopFallsBackToSparseLuAndHolds) {
   const auto [s, st] = test::four_bar_loop();
   check_consistent(s, st);
   EXPECT_FALSE(Rattle(s, 1e-3).uses_tree_solver());
-  const RunStats a = run_and_watch(s, st, 1e-3, 3000 / test::kSlowdown);
+  const RunStats a = run_and_watch(s, st, 1e-3, 3000 / test::slowdown());
   EXPECT_LT(a.max_energy_error, 1e-5 * kG);
   EXPECT_LT(a.max_gap, 1e-12);
   EXPECT_LT(a.max_orthogonality, 1e-12);
@@ -380,7 +380,7 @@ TEST(Rattle, SpringOscillatorPeriodAndDampedPairMomentum) {
   double E = total_energy(pair, ps);
   const double E0 = E;
   double max_rise = 0.0;
-  for (int n = 0; n < 2000 / test::kSlowdown; ++n) {
+  for (int n = 0; n < 2000 / test::slowdown(); ++n) {
     pr.step(ps);
     const double E1 = total_energy(pair, ps);
     max_rise = std::max(max_rise, E1 - E);

@@ -7,6 +7,7 @@
 
 #include "optimal_test_problems.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -21,10 +22,10 @@ double sphere_cost() {
 // O(h⁴), the same order as the mesh error it is driven by). Started from the generic guess (eigenaxis
 // attitude, constant rate plus a transverse bump, zero torque).
 TEST(DirectCollocation, SphereMinimumEnergyIsTheEigenaxisCubic) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "245 intervals after refinement: about 1.5 s in release, slow under ASan; the coarse-mesh "
-                  "convergence test below runs everywhere";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "245 intervals after refinement: about 1.5 s in release, slow under ASan; the coarse-mesh "
+           "convergence test below runs everywhere";
   CollocationOptions opt;
   opt.initial_intervals = 8;
   opt.mesh_tolerance = 1e-10;
@@ -73,10 +74,9 @@ TEST(DirectCollocation, CostatesFromDefectMultipliers) {
 // error of 1e-5 to one at 1e-9, whose cost meets the eigenaxis cubic as a direct solve at 1e-9 does (the cost
 // error is of the order of the mesh error), with the counts carried on.
 TEST(DirectCollocation, ContinuesTheRefinementOfAPreviousSolution) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "refinement to a mesh error of 1e-9: about 0.7 s in release, slow under ASan; the direct "
-                  "replay's tests run the same refinement loop everywhere";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "refinement to a mesh error of 1e-9: about 0.7 s in release, slow under ASan; the direct "
+                    "replay's tests run the same refinement loop everywhere";
   const auto p = testing::sphere_energy_problem(kJ, kTheta, Vec3(0.0, 1.0, 1.0), kT);
   CollocationOptions opt;
   opt.initial_intervals = 8;
@@ -103,11 +103,10 @@ TEST(DirectCollocation, ContinuesTheRefinementOfAPreviousSolution) {
 // needed): the restarts bring it to the same optimum as the unlimited solve, to the digits the mesh
 // tolerance gives both; with 4 iterations every attempt fails, the status says so, and nothing is solved.
 TEST(DirectCollocation, RestartsIpoptWhereItFails) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "three refinements of Bilimoria & Wie's slew: about 1.5 s of CPU in release, slow under ASan; "
-         "the direct replay's tests run the same refinement loop everywhere";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "three refinements of Bilimoria & Wie's slew: about 1.5 s of CPU in release, slow under ASan; "
+           "the direct replay's tests run the same refinement loop everywhere";
   ReorientationProblem p;
   p.inertia_body = Mat3::Identity();
   p.torque_max = Vec3::Ones();

@@ -8,6 +8,7 @@
 #include "optimal_test_problems.hpp"
 #include "poinsot/optimal/interpretation.hpp"
 #include "poinsot/optimal/verification.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -17,10 +18,9 @@ namespace {
 // ±5e-8 in its last digit) to 5e-8 relative; the switching times are checked against the symmetry of the
 // problem (none) and against the switching functions (σ_i(t_s) = 0 is a Newton equation).
 TEST(IndirectShooting, BettsMinimumTimeMatchesThePublishedOptimum) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "about 4 s in release, minutes under ASan; the sanitizer build runs the smaller slews below";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "about 4 s in release, minutes under ASan; the sanitizer build runs the smaller slews below";
   CollocationOptions opt;
   opt.initial_intervals = 10;
   opt.mesh_tolerance = 1e-5;  // enough for the switching structure and the costates the shooting needs
@@ -54,10 +54,9 @@ TEST(IndirectShooting, BettsMinimumTimeMatchesThePublishedOptimum) {
 // eigenaxis manoeuvre 2√(Θ j/u) = 2√π. The optimum found here (T* = 3.2430832774 s, five switches) is
 // symmetric in time: t_s + t_{6−s} = T*, a property the solver is not told.
 TEST(IndirectShooting, PerAxisSphereSlewBeatsTheEigenaxisManoeuvre) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "about 1 s in release, a minute under ASan; the Betts and sphere-energy cases cover the code";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "about 1 s in release, a minute under ASan; the Betts and sphere-energy cases cover the code";
   ReorientationProblem p;
   p.attitude_final = Quat(0.0, 1.0, 0.0, 0.0);
   CollocationOptions opt;
@@ -100,10 +99,9 @@ TEST(IndirectShooting, SphereMinimumEnergyCost) {
 // at T/2, where u reverses: the reversal time is a Newton unknown, so the optimum comes out to the shooting's
 // accuracy (1e-12 relative) and the reversal at T/2. Checked by the verification like any other optimum.
 TEST(IndirectShooting, NormBoundSphereReversesAtHalfTime) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 2 s in release, 11 s under ASan; PhasedCollocation.NormBoundSphereReversalOnANode "
-                  "covers the reversal there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "about 2 s in release, 11 s under ASan; PhasedCollocation.NormBoundSphereReversalOnANode "
+                    "covers the reversal there";
   const double j = 1.5, ubar = 0.8, theta = 2.5;
   ReorientationProblem p;
   p.inertia_body = j * Mat3::Identity();

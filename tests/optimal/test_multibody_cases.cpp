@@ -13,6 +13,7 @@
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
 #include "poinsot/so3/distance.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -51,10 +52,9 @@ TEST(MultibodyCases, ReactionWheelUnboundedIsTheSingleAxisClosedForm) {
 }
 
 TEST(MultibodyCases, FreeElbowAngleInMinimalCoordinates) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "about 2 s in release, 12 s under ASan; the other arm tests cover the minimal transcription there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "about 2 s in release, 12 s under ASan; the other arm tests cover the minimal transcription there";
   // The arm with the elbow's final angle left free (its rate still zero at T): a relaxation of the fixed
   // problem, so its optimum costs no more; the shoulder reaches its target and both rates vanish (NLP rows,
   // to Ipopt's tolerance), and the elbow ends elsewhere than the fixed problem's target.

@@ -16,6 +16,7 @@
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
 #include "poinsot/so3/distance.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -94,9 +95,8 @@ TEST(MultibodyMinimalBall, ForwardDynamicsIsTheProjectedRk4s) {
 }
 
 TEST(MultibodyMinimalBall, FallingCatFromTheRigidTurn) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "a 2 s solve in release; the model's derivatives and dynamics are tested above";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "a 2 s solve in release; the model's derivatives and dynamics are tested above";
   // The cat turned over (π about the spine in 1 s) in minimal coordinates, N = 6, from the cat turned rigidly
   // (falling_cat_rigid_turn): Ipopt converges (measured 21 iterations) to a local optimum whose cost tends to
   // that of the no-twist optimum the R-coordinate transcription finds from the same guess

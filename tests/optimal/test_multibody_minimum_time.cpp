@@ -12,6 +12,7 @@
 #include "multibody_test_problems.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -34,10 +35,10 @@ double bang_bang_time() {
 }
 
 TEST(MultibodyMinimumTime, AnOddMeshBlursTheSwitchByOrderHSquared) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "three meshes: 0.4 s in release, 27 s under ASan; the even-mesh and R-coordinate tests run "
-                  "the same transcription there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "three meshes: 0.4 s in release, 27 s under ASan; the even-mesh and R-coordinate tests run "
+           "the same transcription there";
   // With N odd the switch at T/2 falls on the midpoint of the middle interval, where the control is a
   // quadratic through the node values ±ū: the mesh cannot jump, and the transcription's T exceeds T* by
   // about 0.19/N² s (measured 3.95e-3, 8.57e-4, 2.00e-4 s at N = 7, 15, 31: the ratios 4.6 and 4.3 of an
@@ -88,10 +89,9 @@ TEST(MultibodyMinimumTime, RotationMatrixTranscriptionAgreesAndItsControlReaches
 }
 
 TEST(MultibodyMinimumTime, EnergyRegularisationTradesTimeForEffort) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "0.3 s in release, 13 s under ASan; the even-mesh and R-coordinate tests run the same "
-                  "transcription there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "0.3 s in release, 13 s under ASan; the even-mesh and R-coordinate tests run the same "
+                    "transcription there";
   // T + ε ∫u²dt: the regularised optimum is slower than the pure one and uses less than ū² T of effort.
   const MultibodyOptimum pure = testing::solve_in(fastest_turn(15), MultibodyCoordinates::minimal);
   const MultibodyOptimum soft = testing::solve_in(fastest_turn(15, 1.0), MultibodyCoordinates::minimal);

@@ -12,6 +12,7 @@
 #include "multibody_test_problems.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -103,10 +104,9 @@ TEST(MultibodyRateBounds, BoundedTurnRotationMatrixCoordinates) {
 }
 
 TEST(MultibodyRateBounds, ArmShoulderBoundIsActiveAndRespected) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 2 s in release, 12 s under ASan; BoundedTurnMinimalCoordinatesAreExact covers the "
-                  "rate rows there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "about 2 s in release, 12 s under ASan; BoundedTurnMinimalCoordinatesAreExact covers the "
+                    "rate rows there";
   // The arm of the tests, minimal coordinates, 8 intervals: the shoulder's rate bounded at 80 % of its
   // unconstrained peak. The bound is active and respected at every point, and the cost rises.
   MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 8);

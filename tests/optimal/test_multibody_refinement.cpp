@@ -11,6 +11,7 @@
 
 #include "multibody_test_problems.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -41,10 +42,9 @@ TEST(MultibodyRefinement, UnequalMeshIsExactForTheCubicMotion) {
 }
 
 TEST(MultibodyRefinement, ArmIntervalsAreSplitUntilTheLocalErrorMeetsTheTolerance) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "3.6 s in release, 142 s under ASan; the unequal-mesh test runs the same transcription there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "3.6 s in release, 142 s under ASan; the unequal-mesh test runs the same transcription there";
   // The arm (minimal coordinates) from 8 equal intervals, tolerance 1e-3 rad on each interval's local error.
   // Measured: N = 8, 16, 20, 22 with largest local errors 1.4e-1, 2.8e-2, 1.7e-2, 6.7e-4 rad; on 22 equal
   // intervals the largest is 5.1e-3 and the re-simulation misses the target by 1.6e-1 rad against 2.0e-2 on

@@ -10,6 +10,7 @@
 #include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/verification.hpp"
 #include "poinsot/so3/exp_log.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -28,9 +29,9 @@ DirectSolution coarse_betts_direct(const ReorientationProblem& p) {
 // Newton tolerance (1e-12 on the scaled residual) with RKF78 at 1e-13, so t* and the switches agree far
 // below 1e-10 (measured: 1e-14 relative, 1e-12 s); both meet the published t* (8 digits) to 5e-8.
 TEST(MultipleShooting, BettsAgreesWithSingleShooting) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "0.5 s in release, tens of seconds under ASan; the Jacobian test runs the same code there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "0.5 s in release, tens of seconds under ASan; the Jacobian test runs the same code there";
   const auto p = testing::betts_problem();
   const DirectSolution d = coarse_betts_direct(p);
   ASSERT_TRUE(d.converged) << d.status;
@@ -142,9 +143,8 @@ TEST(MultipleShooting, JacobianMatchesCentralDifferences) {
 // segments (growth e^{3.3} each) converge in 2 iterations to the closed form to 1e-10 (measured 3e-12: the
 // Newton tolerance 1e-12 and RKF78 at 1e-13) and pass every check, the dop853 re-simulation included.
 TEST(MultipleShooting, UnstableSpinNeedsNodes) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "0.8 s in release, tens of seconds under ASan; the sphere and Jacobian tests run there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "0.8 s in release, tens of seconds under ASan; the sphere and Jacobian tests run there";
   const double w = 1.0, T = 30.0, delta = 0.5, J_y = 0.01638;
   const auto p = testing::racket_spin_phase_problem(w, T, delta);
   const double closed_form = 12.0 * J_y * J_y * delta * delta / (T * T * T);
@@ -228,9 +228,8 @@ namespace {
 // 1e-10 (the shooting is exact up to RKF78 at 1e-13 and the Newton tolerance), with p_θ(0) = 0 and p_ω(0) the
 // closed form to 1e-8 of its size, and pass the verification.
 TEST(MultipleShooting, DetumblingMeetsTheMomentumBound) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "1.3 s in release, tens of seconds under ASan; the sphere and Jacobian tests run there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "1.3 s in release, tens of seconds under ASan; the sphere and Jacobian tests run there";
   ReorientationProblem p;
   p.inertia_body = Vec3(0.00121, 0.01638, 0.01748).asDiagonal();
   p.bound = TorqueBound::norm;

@@ -16,6 +16,7 @@
 #include "poinsot/optimal/direct_replay.hpp"
 #include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/verification.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -71,10 +72,10 @@ DirectSolution solve_sun(double half_angle) {
 // A cone the free optimum stays 0.05 rad clear of: the indirect method runs, the verification passes with a
 // positive margin, and the optimum is the free one to the shooting's accuracy.
 TEST(PointingConstraint, AConeTheFreeOptimumMissesLeavesItUnchanged) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "two solves on 212 intervals, 4 s in release and 37 s under ASan; the command-line test of "
-                  "the same slew (tests/cli/test_cli_optimize_pointing.py) runs the whole pipeline there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "two solves on 212 intervals, 4 s in release and 37 s under ASan; the command-line test of "
+           "the same slew (tests/cli/test_cli_optimize_pointing.py) runs the whole pipeline there";
   const ReorientationProblem p = sun_problem(kAlpha - 0.05);
   const DirectSolution d = solve_sun(kAlpha - 0.05);
   ASSERT_TRUE(d.converged) << d.status;
@@ -103,11 +104,10 @@ TEST(PointingConstraint, AConeTheFreeOptimumMissesLeavesItUnchanged) {
 // replay to 1e-9 rad; the indirect method refuses the active arc, so nothing is called optimal; the
 // multipliers are positive on the active set and zero off it.
 TEST(PointingConstraint, AConeAcrossThePathForcesADetourWhoseCostRisesContinuously) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP()
-      << "three solves, 4 s in release and a minute under ASan; AConeTheFreeOptimumMissesLeavesItUnchanged "
-         "runs the same code there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP()
+        << "three solves, 4 s in release and a minute under ASan; AConeTheFreeOptimumMissesLeavesItUnchanged "
+           "runs the same code there";
   double previous_rise = 0.0;
   double rises[3] = {0, 0, 0};
   const double intrusions[3] = {0.01, 0.05, 0.15};

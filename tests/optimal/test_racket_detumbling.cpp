@@ -19,6 +19,7 @@
 #include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/verification.hpp"
 #include "poinsot/so3/hat.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -120,9 +121,8 @@ DirectSolution phase_shifted_extremal(const ReorientationProblem& p, int n, doub
 // rank-revealing step) the same seed took 19 iterations, and 16 segments stalled at a residual of 5e-6
 // (4.6e-10 with it: still short of 1e-12, so 16 segments are not asserted).
 TEST(RacketDetumbling, MultipleShootingMeetsTheMomentumBound) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "0.5 s in release, far longer under ASan; the flip-phase test below runs there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "0.5 s in release, far longer under ASan; the flip-phase test below runs there";
   const ReorientationProblem p = tumbling_racket();
   const double T_star = momentum_bound_time(p);
   const DirectSolution d = perturbed_extremal(p, 2000, 1e-4);
@@ -221,9 +221,8 @@ TEST(RacketDetumbling, FlipPhasesAreTheNearNullDirectionsOfTheShooting) {
 // accepted at the residual's round-off floor, 4.2e-12). Before the re-seeding the same seed stalled at a
 // residual of 5.6e-6 after 40 iterations.
 TEST(RacketDetumbling, ShootingFromAPhaseShiftedSeedMeetsTheMomentumBound) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "seconds in release, far longer under ASan; the flip-phase test above runs there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "seconds in release, far longer under ASan; the flip-phase test above runs there";
   const ReorientationProblem p = tumbling_racket(kPhaseShiftedTorqueBound);
   const double T_star = momentum_bound_time(p);
   const DirectSolution d = phase_shifted_extremal(p, 400, -5e-5, 0.01, 1e-3);

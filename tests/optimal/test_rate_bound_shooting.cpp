@@ -6,6 +6,7 @@
 
 #include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/verification.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -23,9 +24,8 @@ ReorientationProblem diagonal_sphere(double j, double ubar, double r, double the
 }
 
 TEST(RateBoundShooting, DiagonalSphereAcceleratesCoastsAndBrakes) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 1 s in release (the direct phase), a minute under ASan";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "about 1 s in release (the direct phase), a minute under ASan";
   const double j = 1.5, ubar = 0.8, r = 0.4, theta = 2.5;
   const ReorientationProblem p = diagonal_sphere(j, ubar, r, theta);
   CollocationOptions opt;

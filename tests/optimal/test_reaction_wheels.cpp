@@ -19,6 +19,7 @@
 #include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
 #include "poinsot/so3/distance.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -119,9 +120,8 @@ TEST(ReactionWheels, OneBoundedWheelIsHeldBetweenThePoints) {
 // |ω_k| ≤ r = h̄/j. Slewed through Θ about the cube diagonal with |u_k| ≤ ū, by symmetry the three axes move
 // alike: accelerate to r, coast, brake; T = Θ/(√3 r) + r j/ū (the coast exists: Θ/√3 > r² j/ū).
 TEST(ReactionWheels, MomentumBoundedDiagonalSlewAcceleratesCoastsAndBrakes) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 1 s in release (mesh refinement to the junctions), a minute under ASan";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "about 1 s in release (mesh refinement to the junctions), a minute under ASan";
   const double j = 1.5, ubar = 0.8, hbar = 0.6, theta = 2.5;
   ReorientationProblem p = wheel_problem(j * Mat3::Identity(), Vec3::Constant(0.1), ubar);
   p.wheels->momentum_max = Vec3::Constant(hbar);
@@ -154,9 +154,8 @@ TEST(ReactionWheels, MomentumBoundedDiagonalSlewAcceleratesCoastsAndBrakes) {
 // same optimum (the single body J_bus + diag(0.5, 0.5, 0) solved with body torques is a third formulation),
 // the multibody one within its transcription's error at N = 32 (measured 4.6e-6 relative).
 TEST(ReactionWheels, MatchTheMultibodyWheelModelAndTheSingleBody) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 2 s in release (the multibody solve at N = 32), minutes under ASan";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "about 2 s in release (the multibody solve at N = 32), minutes under ASan";
   ReorientationProblem p =
       wheel_problem(testing::reaction_wheel_effective_inertia(), Vec3(0.1, 0.1, 0.9), 0.1);
   p.objective = Objective::minimum_energy;
@@ -185,9 +184,7 @@ TEST(ReactionWheels, MatchTheMultibodyWheelModelAndTheSingleBody) {
 // controls held at each step's midpoint (second order): the bus reaches the target to that integrator's
 // error, which falls by 4 when its steps are halved, and the wheels end with the gyrostat's momenta.
 TEST(ReactionWheels, ThreeDimensionalSlewReplaysOnTheMultibodyModel) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 1 s in release, a minute under ASan";
-#endif
+  if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release, a minute under ASan";
   Mat3 J_bus;
   J_bus << 3.0, 0.1, 0.0, 0.1, 4.0, 0.2, 0.0, 0.2, 2.0;
   ReactionWheels w;

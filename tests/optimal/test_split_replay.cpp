@@ -9,6 +9,7 @@
 
 #include "optimal_test_problems.hpp"
 #include "poinsot/optimal/verification.hpp"
+#include "poinsot_test.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -24,9 +25,7 @@ bool mentions(const VerificationReport& v, const std::string& what) {
 class TiltedPhaseAdvance : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-#if defined(__SANITIZE_ADDRESS__)
-    return;  // the tests skip there (SetUp): do not solve
-#endif
+    if (::poinsot::test::sanitized()) return;  // the tests skip there (SetUp): do not solve
     problem_ = testing::racket_spin_phase_problem(1.0, 30.0, 0.5);
     problem_.attitude_final = problem_.attitude_final * Quat(Eigen::AngleAxisd(0.05, Vec3::UnitX()));
     CollocationOptions opt;
@@ -38,10 +37,9 @@ class TiltedPhaseAdvance : public ::testing::Test {
     if (direct_.converged) indirect_ = solve_indirect(problem_, direct_, o);
   }
   void SetUp() override {
-#if defined(__SANITIZE_ADDRESS__)
-    GTEST_SKIP() << "1 s in release (the direct solve on 80 intervals), far longer under ASan; the sphere "
-                    "tests below run there";
-#endif
+    if (::poinsot::test::sanitized())
+      GTEST_SKIP() << "1 s in release (the direct solve on 80 intervals), far longer under ASan; the sphere "
+                      "tests below run there";
     ASSERT_TRUE(direct_.converged) << direct_.status;
     ASSERT_TRUE(indirect_.converged) << indirect_.status;
   }
@@ -100,10 +98,9 @@ TEST_F(TiltedPhaseAdvance, SplitReplayFailsWhenANodeIsOffTheMotion) {
 // the attitude part is a rotation, whose blocks are no larger; RKF78 at 1e-10 gives it to about 1e-9.
 // A node that is not finite fails the split replay, and samples the replay cannot interpolate fail it too.
 TEST(SplitReplay, StableProblemsKeepTheOpenLoopCheck) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 1 s in release, 17 s under ASan; DirectReplay and the other split-replay tests "
-                  "cover the code there";
-#endif
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "about 1 s in release, 17 s under ASan; DirectReplay and the other split-replay tests "
+                    "cover the code there";
   const auto p = testing::sphere_energy_problem(2.5, 2.0, Vec3(1.0, -2.0, 0.5), 3.0);
   CollocationOptions opt;
   opt.initial_intervals = 10;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
@@ -13,7 +14,10 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <system_error>
+#include <vector>
 
+#include <dlfcn.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -23,10 +27,45 @@
 
 namespace poinsot::test {
 
+namespace detail {
+/// The paths that temp_path handed out in this process; each is removed (file or folder, with its content)
+/// when the process exits, unless POINSOT_KEEP_TEST_FILES is set (to look at a failed test's output).
+struct TempPaths {
+  std::vector<std::filesystem::path> paths;
+  TempPaths() = default;
+  TempPaths(const TempPaths&) = delete;
+  TempPaths& operator=(const TempPaths&) = delete;
+  ~TempPaths() {
+    if (std::getenv("POINSOT_KEEP_TEST_FILES") != nullptr) return;
+    for (const auto& p : paths) {
+      std::error_code ignored;
+      std::filesystem::remove_all(p, ignored);
+    }
+  }
+};
+inline TempPaths& temp_paths() {
+  static TempPaths registry;
+  return registry;
+}
+}  // namespace detail
+
 /// A path in the temporary folder that no other test process uses at the same time: NAME followed by this
-/// process's id (tests of two build trees, or two CTest jobs, may run side by side on one machine).
+/// process's id (tests of two build trees, or two CTest jobs, may run side by side on one machine). What the
+/// test writes there is removed when the test process exits (detail::TempPaths).
 inline std::filesystem::path temp_path(const std::string& name) {
-  return std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+  auto path = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(::getpid()));
+  auto& paths = detail::temp_paths().paths;
+  if (std::find(paths.begin(), paths.end(), path) == paths.end()) paths.push_back(path);
+  return path;
+}
+
+/// Whether this test process runs under AddressSanitizer (its runtime is loaded), asked at run time: the CI's
+/// sanitizer tree may link test objects compiled without it (tests/CMakeLists.txt,
+/// POINSOT_TEST_OBJECTS_FROM). The tests that take minutes there skip with `if (sanitized()) GTEST_SKIP() <<
+/// why;`.
+inline bool sanitized() {
+  static const bool loaded = ::dlsym(RTLD_DEFAULT, "__asan_init") != nullptr;
+  return loaded;
 }
 
 /// The whole content of a text file ("" when it cannot be read: the test's comparison then fails).
