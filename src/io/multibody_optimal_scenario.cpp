@@ -214,10 +214,7 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
        "replay_steps", "target_tolerance", "actuators", "rate_bounds", "final", "stabilisation_step",
        "no_twist", "warm_start", "final_time_bounds", "energy_weight"},
       root.get("optimal_control"));
-  if (!oc.present()) {
-    throw InvalidInput(detail::location(src, nullptr) +
-                       "[top level] optimal_control: missing; expected an [optimal_control] section");
-  }
+  detail::require_optimal_control_section(src, root);
 
   auto& p = sc.problem;
   p.system = sc.model.system;

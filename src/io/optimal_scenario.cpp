@@ -105,6 +105,7 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
                                        std::string_view base_dir) {
   const toml::table root = detail::parse_toml(text, source);
   const Source src{std::string(source)};
+  detail::require_optimal_control_section(src, root);
   const Section top(src, &root, "top level", {"title", "body", "optimal_control", "output"});
   OptimalScenario sc;
   sc.source = std::string(source);
@@ -123,7 +124,6 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
                     "mesh_tolerance", "initial_intervals", "max_mesh_iterations", "shooting_nodes", "phased",
                     "phased_intervals_per_arc", "initial", "final", "keep_out", "keep_in", "reaction_wheels"},
                    root.get("optimal_control"));
-  if (!oc.present()) top.fail("optimal_control", "missing; expected an [optimal_control] section");
   auto& p = sc.problem;
   if (const auto o = oc.string("objective"))
     p.objective =

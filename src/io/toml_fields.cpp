@@ -81,6 +81,14 @@ constexpr std::pair<std::string_view, std::string_view> kSectionReaders[] = {
 
 }  // namespace
 
+void require_optimal_control_section(const Source& source, const toml::table& root) {
+  if (root.get("optimal_control") != nullptr) return;
+  throw InvalidInput(
+      fmt::format("{}[top level] optimal_control: missing; expected an [optimal_control] section (a "
+                  "scenario without one is simulated by `poinsot run {}`)",
+                  location(source, nullptr), source.name));
+}
+
 Section::Section(const Source& source, const toml::table* table, std::string name,
                  std::initializer_list<std::string_view> valid, const toml::node* position)
     : source_(source), table_(table), name_(std::move(name)), position_(position ? position : table) {

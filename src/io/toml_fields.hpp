@@ -34,6 +34,12 @@ std::string read_text_file(const std::string& path);
 /// "SOURCE:LINE:COLUMN: " for a node (or "SOURCE: " when the node has no position).
 std::string location(const Source& source, const toml::node* node);
 
+/// Throws InvalidInput `SOURCE: [top level] optimal_control: missing; expected an [optimal_control] section
+/// (a scenario without one is simulated by `poinsot run SOURCE`)` when the file has no [optimal_control]:
+/// checked before its other keys, so that a run scenario given to `poinsot optimize` is answered with its
+/// sub-command rather than with its first key that an optimal-control file does not have.
+void require_optimal_control_section(const Source& source, const toml::table& root);
+
 /// One table of the file ("body", "initial.orientation", ...), with the keys it accepts.
 class Section {
  public:

@@ -6,11 +6,11 @@
 
 #include <fmt/format.h>
 #include <Eigen/SparseCore>
-#include <Eigen/SparseLU>
 
 #include "ball_chain_solver.hpp"
 #include "poinsot/core/assert.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/core/linear_solvers.hpp"
 
 namespace poinsot::multibody {
 namespace {
@@ -71,7 +71,7 @@ void eliminate(const Eigen::Matrix<double, 6, 6>& D_inv, const Eigen::Matrix<dou
 struct KktSolver::Sparse {
   Eigen::SparseMatrix<double> H;
   std::vector<Eigen::Triplet<double>> triplets;
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> lu;
+  SparseLu lu;
   Eigen::VectorXd rhs;
   bool analysed = false;
 };
@@ -283,11 +283,10 @@ void KktSolver::factor(const std::vector<JointJacobian>& G_a, const std::vector<
     const auto nnz_before = sp.H.nonZeros();
     sp.H.setFromTriplets(sp.triplets.begin(), sp.triplets.end());
     if (!sp.analysed || sp.H.nonZeros() != nnz_before) {
-      sp.lu.analyzePattern(sp.H);
+      sp.lu.analyse_pattern(sp.H);
       sp.analysed = true;
     }
-    sp.lu.factorize(sp.H);
-    if (sp.lu.info() != Eigen::Success) {
+    if (!sp.lu.factorise(sp.H)) {
       throw ComputationFailed(
           "multibody: the constraint matrix is singular (redundant or degenerate joints)");
     }

@@ -12,6 +12,7 @@
 #include "pmp_system.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/core/linear_solvers.hpp"
 #include "rate_bound_shooting.hpp"
 #include "switching_structure.hpp"
 
@@ -95,7 +96,7 @@ std::vector<Vec3> fitted_space_switching(const std::vector<double>& times, const
       A(k, i) = std::pow(times[static_cast<std::size_t>(k)] / T, i);
     B.row(k) = lambda[static_cast<std::size_t>(k)].transpose();
   }
-  const Eigen::MatrixXd C = A.colPivHouseholderQr().solve(B);
+  const Eigen::MatrixXd C = solve_col_piv_qr(A, B);
   std::vector<Vec3> out;
   for (const double t : at) {
     Eigen::RowVectorXd a(degree + 1);

@@ -4,8 +4,8 @@
 #include <algorithm>
 
 #include <Eigen/Geometry>
-#include <Eigen/SVD>
 
+#include "poinsot/core/linear_solvers.hpp"
 #include "poinsot/multibody/observables.hpp"
 
 namespace poinsot::optimal::detail {
@@ -48,13 +48,13 @@ multibody::State turn_hinge(const multibody::System& system, const multibody::St
 
 Eigen::MatrixXd null_space(const Eigen::MatrixXd& M) {
   if (M.rows() == 0) return Eigen::MatrixXd::Identity(M.cols(), M.cols());
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(M, Eigen::ComputeFullV);
-  const auto& s = svd.singularValues();
+  const RightSingularVectors svd = right_singular_vectors(M);
+  const Eigen::VectorXd& s = svd.singular_values;
   const double tol = 1e-10 * std::max(1.0, s.size() > 0 ? s(0) : 0.0);
   Eigen::Index rank = 0;
   while (rank < s.size() && s(rank) > tol)
     ++rank;
-  return svd.matrixV().rightCols(M.cols() - rank);
+  return svd.V.rightCols(M.cols() - rank);
 }
 
 Eigen::MatrixXd final_condition_rows(const Eigen::MatrixXd& F, const Eigen::MatrixXd& T,

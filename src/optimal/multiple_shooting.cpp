@@ -9,11 +9,12 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
-#include <Eigen/SparseLU>
+#include <Eigen/SparseCore>
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
 
+#include "poinsot/core/linear_solvers.hpp"
 #include "poinsot/so3/exp_log.hpp"
 
 namespace poinsot::optimal::detail {
@@ -333,12 +334,10 @@ int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x,
     std::vector<Shooter::SegmentEnd> ends;
     Eigen::SparseMatrix<double> jac;
     if (!shooter.segment_ends(x, ends) || !shooter.jacobian(x, ends, F, jac)) break;
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(jac);
+    SparseLu lu;
     // A numerically singular Jacobian (SparseLU does not pivot for rank): the least-squares step instead.
-    const Eigen::VectorXd step = lu.info() == Eigen::Success
-                                     ? Eigen::VectorXd(lu.solve(-F))
-                                     : Eigen::VectorXd(Eigen::MatrixXd(jac).colPivHouseholderQr().solve(-F));
+    const Eigen::VectorXd step =
+        lu.compute(jac) ? lu.solve(-F) : solve_col_piv_qr(Eigen::MatrixXd(jac), Eigen::VectorXd(-F));
     Eigen::VectorXd x_lu = x, F_lu = F;
     double norm_lu = norm;
     const bool lu_ok = shooting_line_search(shooter, step, x_lu, F_lu, norm_lu);

@@ -15,6 +15,7 @@
 
 #include "pmp_system.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/core/linear_solvers.hpp"
 #include "poinsot/so3/exp_log.hpp"
 
 namespace poinsot::optimal::detail {
@@ -61,7 +62,7 @@ void arc_control(const ReorientationProblem& p, const Mat3& J_inv, const ArcMode
     b[a] = gyro[k] - free_part;
     c[a] = Jg[k];
   }
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(M);
+  const DenseLu lu(M);
   const Eigen::VectorXd uA = lu.solve(b), ms = lu.solve(c);
   for (Eigen::Index a = 0; a < n; ++a) {
     const int k = A[static_cast<std::size_t>(a)];
@@ -227,7 +228,7 @@ int rate_newton(const RateBoundShooter& sh, double tolerance, int max_iterations
         ok = false;
     }
     if (!ok) break;
-    const Eigen::VectorXd step = jac.colPivHouseholderQr().solve(-F);
+    const Eigen::VectorXd step = solve_col_piv_qr(jac, Eigen::VectorXd(-F));
     bool accepted = false;
     double alpha = 1.0;
     for (int ls = 0; ls < 30 && step.allFinite(); ++ls, alpha *= 0.5) {

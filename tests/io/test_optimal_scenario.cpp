@@ -72,6 +72,11 @@ TEST(OptimalScenario, LocatedErrors) {
   expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "phased_intervals_per_arc = 2001"),
                "phased_intervals_per_arc");
   expect_error("[body]\nprincipal_moments = [1.0, 1.0, 1.0]\n", "optimal_control");
+  // A run scenario (its [initial] is no key of an optimal-control file) is answered with its sub-command.
+  expect_error(
+      "[body]\nprincipal_moments = [1.0, 2.0, 3.0]\n[initial]\nomega_body = [0.0, 1.0, 0.0]\n",
+      "[top level] optimal_control: missing; expected an [optimal_control] section (a scenario without "
+      "one is simulated by `poinsot run s.toml`)");
 }
 
 TEST(OptimalScenario, FreeFinalAttitude) {

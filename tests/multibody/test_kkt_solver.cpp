@@ -6,6 +6,7 @@
 #include <Eigen/Dense>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/core/linear_solvers.hpp"
 
 #include "multibody_fixtures.hpp"
 #include "poinsot_test.hpp"
@@ -72,7 +73,7 @@ double solve_both(const System& s, KktMethod expected, KktMethod forced = KktMet
     body[static_cast<std::size_t>(i)] = rhs.segment<6>(6 * i);
   Eigen::VectorXd joint = rhs.tail(s.constraint_rows());
   solver.solve(body, joint);
-  const Eigen::VectorXd dense = p.H.partialPivLu().solve(rhs);
+  const Eigen::VectorXd dense = DenseLu(p.H).solve(rhs);
   double err = 0.0;
   for (int i = 0; i < nb; ++i) {
     err = std::max(err, (body[static_cast<std::size_t>(i)] - dense.segment<6>(6 * i)).cwiseAbs().maxCoeff());
