@@ -47,8 +47,10 @@ MjcfCompiler read_mjcf_compiler(const XmlSource& xml) {
   return c;
 }
 
-Mat3 mjcf_orientation(const XmlSource& xml, const XMLElement& e, const MjcfCompiler& c,
-                      const MjcfNumbers& numbers) {
+namespace {
+
+Mat3 orientation_as_written(const XmlSource& xml, const XMLElement& e, const MjcfCompiler& c,
+                            const MjcfNumbers& numbers) {
   if (auto q = numbers("quat", 4)) {
     const Quat quat((*q)[0], (*q)[1], (*q)[2], (*q)[3]);
     if (!(quat.norm() > 0.0))
@@ -91,6 +93,20 @@ Mat3 mjcf_orientation(const XmlSource& xml, const XMLElement& e, const MjcfCompi
     return so3::rotation_from_axis_angle(k / s, std::atan2(s, to.z()));
   }
   return Mat3::Identity();
+}
+
+}  // namespace
+
+Mat3 mjcf_orientation(const XmlSource& xml, const XMLElement& e, const MjcfCompiler& c,
+                      const MjcfNumbers& numbers) {
+  const Mat3 R = orientation_as_written(xml, e, c, numbers);
+  if (!R.allFinite()) {
+    throw InvalidInput(
+        fmt::format("{}: its orientation is not a finite rotation; expected finite numbers (angles "
+                    "of moderate size) in quat, axisangle, euler, xyaxes or zaxis",
+                    xml.where(e)));
+  }
+  return R;
 }
 
 Mat3 mjcf_orientation(const XmlSource& xml, const XMLElement& e, const MjcfCompiler& compiler) {

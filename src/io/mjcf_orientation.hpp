@@ -34,7 +34,8 @@ using MjcfNumbers = std::function<std::optional<std::vector<double>>(const char*
 
 /// The orientation an element writes, read through `numbers` (its own attributes, or with its default
 /// class's: MjcfAttributes::numbers); identity when none. `e` names the element in messages. Throws
-/// InvalidInput for a zero quaternion or axis, and for an eulerseq that mixes rotating and fixed axes.
+/// InvalidInput for a zero quaternion or axis, for an eulerseq that mixes rotating and fixed axes, and for
+/// numbers whose rotation is not finite (`FILE:LINE: <body>: its orientation is not a finite rotation; ...`).
 Mat3 mjcf_orientation(const XmlSource& xml, const tinyxml2::XMLElement& e, const MjcfCompiler& compiler,
                       const MjcfNumbers& numbers);
 /// The same, from the element's own attributes.

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/core/format.hpp"
 #include "poinsot/core/text_file.hpp"
 #include "poinsot/inertia/mass_properties.hpp"
 #include "poinsot/so3/euler_angles.hpp"
@@ -62,9 +63,16 @@ Mat3 tensor_from_entries(double ixx, double iyy, double izz, double ixy, double 
   return J;
 }
 
-Mat3 rotation_from_rpy(const Vec3& roll_pitch_yaw) {
-  return so3::rotation_from_euler(so3::EulerSequence::ZYX(),
-                                  Vec3(roll_pitch_yaw.z(), roll_pitch_yaw.y(), roll_pitch_yaw.x()));
+Mat3 rotation_from_rpy(const Vec3& roll_pitch_yaw, std::string_view where) {
+  const auto refuse = [&] {
+    return InvalidInput(fmt::format("{}: got {}, expected angles (rad) whose rotation is finite", where,
+                                    format_vector(roll_pitch_yaw)));
+  };
+  if (!roll_pitch_yaw.allFinite()) throw refuse();
+  const Mat3 R = so3::rotation_from_euler(so3::EulerSequence::ZYX(),
+                                          Vec3(roll_pitch_yaw.z(), roll_pitch_yaw.y(), roll_pitch_yaw.x()));
+  if (!R.allFinite()) throw refuse();
+  return R;
 }
 
 std::string resolve_mesh_path(const std::string& uri, const std::string& base_dir) {

@@ -3,6 +3,7 @@
 // helpers they share. Each reader walks the tinyxml2 tree of an XmlSource and fills RobotModel::links.
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "poinsot/io/robot_model.hpp"
 #include "xml_source.hpp"
@@ -15,8 +16,11 @@ void read_sdf(const XmlSource& xml, const std::string& base_dir, RobotModel& mod
 
 /// The symmetric J from its entries (kg·m²).
 Mat3 tensor_from_entries(double ixx, double iyy, double izz, double ixy, double ixz, double iyz);
-/// R = R_z(yaw) R_y(pitch) R_x(roll): the fixed-axis roll-pitch-yaw of URDF and SDF (radians).
-Mat3 rotation_from_rpy(const Vec3& roll_pitch_yaw);
+/// R = R_z(yaw) R_y(pitch) R_x(roll): the fixed-axis roll-pitch-yaw of URDF and SDF (radians). Throws
+/// InvalidInput `WHERE: got [r, p, y], expected angles (rad) whose rotation is finite` when the angles are
+/// not finite or so large that the rotation is not (`where` locates the attribute: "FILE:LINE: <origin>
+/// rpy").
+Mat3 rotation_from_rpy(const Vec3& roll_pitch_yaw, std::string_view where);
 /// A mesh reference as a file path: relative paths against `base_dir`; `package://P/rest` and
 /// `model://P/rest` as `base_dir/rest` or `base_dir/../rest` when one exists; `file://` stripped. Empty
 /// when it cannot be resolved to an existing file.

@@ -34,7 +34,7 @@ RigidPose pose_of(const XmlSource& xml, const XMLElement& e) {
     pose.R = so3::rotation_from_quaternion(so3::quaternion_wxyz(v[6], v[3], v[4], v[5]));
   } else {
     const double unit = p->BoolAttribute("degrees", false) ? std::numbers::pi / 180.0 : 1.0;
-    pose.R = rotation_from_rpy(unit * Vec3(v[3], v[4], v[5]));
+    pose.R = rotation_from_rpy(unit * Vec3(v[3], v[4], v[5]), xml.where(*p) + " roll, pitch, yaw");
   }
   return pose;
 }

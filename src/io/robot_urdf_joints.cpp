@@ -77,7 +77,8 @@ RobotTree read_urdf_tree(const XmlSource& xml, const RobotModel& model) {
       if (auto xyz = xml.numbers_attribute(*origin, "xyz", 3))
         j.parent_child.p = Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]);
       if (auto rpy = xml.numbers_attribute(*origin, "rpy", 3))
-        j.parent_child.R = rotation_from_rpy(Vec3((*rpy)[0], (*rpy)[1], (*rpy)[2]));
+        j.parent_child.R =
+            rotation_from_rpy(Vec3((*rpy)[0], (*rpy)[1], (*rpy)[2]), xml.where(*origin) + " rpy");
     }
     const char* type_attr = e->Attribute("type");
     const std::string type = type_attr != nullptr ? type_attr : "";

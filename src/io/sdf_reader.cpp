@@ -42,7 +42,7 @@ bool read_pose(const XmlSource& xml, const XMLElement& parent, const std::string
   } else {
     const bool degrees = pose->BoolAttribute("degrees", false);
     const double unit = degrees ? std::numbers::pi / 180.0 : 1.0;
-    R = rotation_from_rpy(unit * Vec3(v[3], v[4], v[5]));
+    R = rotation_from_rpy(unit * Vec3(v[3], v[4], v[5]), xml.where(*pose) + " roll, pitch, yaw");
   }
   return true;
 }

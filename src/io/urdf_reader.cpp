@@ -17,7 +17,7 @@ void read_origin(const XmlSource& xml, const XMLElement& parent, Mat3& R, Vec3& 
   if (origin == nullptr) return;
   if (auto xyz = xml.numbers_attribute(*origin, "xyz", 3)) p = Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]);
   if (auto rpy = xml.numbers_attribute(*origin, "rpy", 3))
-    R = rotation_from_rpy(Vec3((*rpy)[0], (*rpy)[1], (*rpy)[2]));
+    R = rotation_from_rpy(Vec3((*rpy)[0], (*rpy)[1], (*rpy)[2]), xml.where(*origin) + " rpy");
 }
 
 double required_number(const XmlSource& xml, const XMLElement& e, const char* attribute) {

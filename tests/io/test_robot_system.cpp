@@ -480,6 +480,19 @@ const std::string kSdfMissingParent =
     "<sdf version=\"1.6\"><model name=\"m\">\n<link name=\"a\"/>\n"
     "<joint name=\"j\" type=\"revolute\"><parent>ghost</parent><child>a</child>\n"
     "<axis><xyz>0 0 1</xyz></axis></joint></model></sdf>\n";
+const std::string kHugeInertialRpy =
+    "<robot name=\"r\">\n<link name=\"a\">\n<inertial>\n<origin xyz=\"0 0 0\" rpy=\"1e300 0 0\"/>\n"
+    "<mass value=\"1\"/><inertia ixx=\"1\" ixy=\"0\" ixz=\"0\" iyy=\"1\" iyz=\"0\" izz=\"1\"/>"
+    "</inertial></link>\n</robot>\n";
+const std::string kHugeJointRpy = urdf(
+    "<joint name=\"j\" type=\"revolute\"><parent link=\"a\"/><child link=\"b\"/>\n<origin rpy=\"0 "
+    "1e300 0\"/></joint>\n");
+const std::string kSdfHugePose =
+    "<sdf version=\"1.6\"><model name=\"m\">\n<link name=\"a\">\n<pose>0 0 0 0 0 1e300</pose></link>\n"
+    "</model></sdf>\n";
+const std::string kMjcfHugeEuler =
+    "<mujoco>\n<worldbody>\n<body name=\"b\" euler=\"1e300 0 0\">\n<joint name=\"j\"/>"
+    "<geom type=\"sphere\" size=\"0.1\"/></body></worldbody></mujoco>\n";
 const std::string kSdfScrew =
     "<sdf version=\"1.6\"><model name=\"m\">\n<link name=\"a\"/>\n"
     "<joint name=\"j\" type=\"screw\"><parent>world</parent><child>a</child></joint></model></sdf>\n";
@@ -487,6 +500,17 @@ const std::string kSdfScrew =
 INSTANTIATE_TEST_SUITE_P(
     Files, RobotSystemBadFile,
     ::testing::Values(
+        BadFile{
+            "rpy.urdf",
+            kHugeInertialRpy.c_str(),
+            {"rpy.urdf:4: <origin> rpy: got (1e+300, 0, 0), expected angles (rad) whose rotation is finite"}},
+        BadFile{
+            "joint_rpy.urdf", kHugeJointRpy.c_str(), {"joint_rpy.urdf:5: <origin> rpy: got (0, 1e+300, 0)"}},
+        BadFile{
+            "pose.sdf", kSdfHugePose.c_str(), {"pose.sdf:3: <pose> roll, pitch, yaw: got (0, 0, 1e+300)"}},
+        BadFile{"euler.xml",
+                kMjcfHugeEuler.c_str(),
+                {"euler.xml:3: <body>: its orientation is not a finite rotation"}},
         BadFile{"parent.urdf",
                 kMissingParent.c_str(),
                 {"parent.urdf:4: <joint> name=\"j\": <parent link=\"c\">: no such link"}},
