@@ -17,7 +17,7 @@ void read_sdf(const XmlSource& xml, const std::string& base_dir, RobotModel& mod
 /// The symmetric J from its entries (kg·m²).
 Mat3 tensor_from_entries(double ixx, double iyy, double izz, double ixy, double ixz, double iyz);
 /// R = R_z(yaw) R_y(pitch) R_x(roll): the fixed-axis roll-pitch-yaw of URDF and SDF (radians). Throws
-/// InvalidInput `WHERE: got [r, p, y], expected angles (rad) whose rotation is finite` when the angles are
+/// InvalidInput `WHERE: got (r, p, y), expected angles (rad) whose rotation is finite` when the angles are
 /// not finite or so large that the rotation is not (`where` locates the attribute: "FILE:LINE: <origin>
 /// rpy").
 Mat3 rotation_from_rpy(const Vec3& roll_pitch_yaw, std::string_view where);
