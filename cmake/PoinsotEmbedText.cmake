@@ -1,5 +1,5 @@
 # Script mode (cmake -P): writes OUT, a C++ source that holds text files as string literals, for the viewer's
-# self-contained page (src/io/view_page.cpp reads them through io/view_assets.hpp).
+# self-contained page (src/io/view/view_page.cpp reads them through io/view/view_assets.hpp).
 #   -DOUT=file.cpp -DASSETS="name1=path1|name2=path2|..."
 # Each file becomes an array of raw string literals of at most 60000 bytes (below -Woverlength-strings'
 # limit), joined when asked for. The literals carry their length (the `sv` suffix), so no compiler evaluates a

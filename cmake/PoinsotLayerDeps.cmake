@@ -36,8 +36,8 @@ set_source_files_properties(${_poinsot_ensemble_kernels} PROPERTIES COMPILE_OPTI
 set_source_files_properties(${CMAKE_CURRENT_SOURCE_DIR}/ensemble/batch_rk4.cpp
                             PROPERTIES COMPILE_OPTIONS "-ffp-contract=off;-fno-math-errno")
 # --- end ensemble
-# --- io: tinyxml2 reads the robot description files (URDF, MJCF, SDF) of io/robot_model.cpp. Debian 12:
+# --- io/robot: tinyxml2 reads the robot description files (URDF, MJCF, SDF) of io/robot/robot_model.cpp. Debian 12:
 # libtinyxml2-dev (target tinyxml2::tinyxml2).
 find_package(tinyxml2 REQUIRED)
 target_link_libraries(poinsot PRIVATE tinyxml2::tinyxml2)
-# --- end io
+# --- end io/robot

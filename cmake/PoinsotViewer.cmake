@@ -1,6 +1,6 @@
 # The viewer's page (viewer/: template, style, scripts) and three.js (Debian's libjs-three, r111, a plain
 # script that defines THREE) are compiled into the library as text (cmake/PoinsotEmbedText.cmake), so that
-# io/view_page.hpp writes a self-contained view.html with no file to find at run time. Without libjs-three the
+# io/view/view_page.hpp writes a self-contained view.html with no file to find at run time. Without libjs-three the
 # library still builds; writing a page then throws InvalidInput saying what to install.
 set(POINSOT_THREE_JS "/usr/share/javascript/three/three.min.js" CACHE FILEPATH
     "three.js (non-module build) inlined into view.html; Debian package libjs-three")
@@ -25,4 +25,4 @@ add_custom_command(OUTPUT ${_out}
   DEPENDS ${_deps} ${PROJECT_SOURCE_DIR}/cmake/PoinsotEmbedText.cmake
   COMMENT "Embedding the viewer's page and three.js" VERBATIM)
 target_sources(poinsot PRIVATE ${_out})
-set_source_files_properties(${_out} PROPERTIES INCLUDE_DIRECTORIES ${PROJECT_SOURCE_DIR}/src/io)
+set_source_files_properties(${_out} PROPERTIES INCLUDE_DIRECTORIES ${PROJECT_SOURCE_DIR}/src/io/view)

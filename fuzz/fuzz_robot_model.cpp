@@ -1,11 +1,11 @@
-// Fuzz harness: the robot-model readers (io/robot_model.hpp: URDF, MJCF, SDF by the root element), the check
-// of every link, its JSON and text reports, and both in-place repairs.
+// Fuzz harness: the robot-model readers (io/robot/robot_model.hpp: URDF, MJCF, SDF by the root element), the
+// check of every link, its JSON and text reports, and both in-place repairs.
 #include <string>
 
 #include "fuzz_support.hpp"
-#include "poinsot/io/model_check.hpp"
-#include "poinsot/io/model_repair.hpp"
-#include "poinsot/io/robot_model.hpp"
+#include "poinsot/io/robot/model_check.hpp"
+#include "poinsot/io/robot/model_repair.hpp"
+#include "poinsot/io/robot/robot_model.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string text(reinterpret_cast<const char*>(data), size);  // NOLINT: bytes as text

@@ -1,11 +1,11 @@
-// Fuzz harness: robot files as multibody systems (io/robot_system.hpp): the readers of robot_model.hpp, the
-// kinematic trees of URDF, MJCF and SDF, the bodies, joints and initial state, and a few steps of each
+// Fuzz harness: robot files as multibody systems (io/robot/robot_system.hpp): the readers of robot_model.hpp,
+// the kinematic trees of URDF, MJCF and SDF, the bodies, joints and initial state, and a few steps of each
 // integrator on what was built.
 #include <string>
 
 #include "fuzz_support.hpp"
-#include "poinsot/io/robot_model.hpp"
-#include "poinsot/io/robot_system.hpp"
+#include "poinsot/io/robot/robot_model.hpp"
+#include "poinsot/io/robot/robot_system.hpp"
 #include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"
 

@@ -21,9 +21,9 @@
 #include "ensemble_hdf5.hpp"
 #include "ensemble_mpi.hpp"
 #include "poinsot/core/error.hpp"
-#include "poinsot/io/ensemble.hpp"
-#include "poinsot/io/run.hpp"
-#include "poinsot/io/summary.hpp"
+#include "poinsot/io/run/ensemble_output.hpp"
+#include "poinsot/io/run/run.hpp"
+#include "poinsot/io/run/summary.hpp"
 
 namespace poinsot::cli {
 namespace {

@@ -21,8 +21,8 @@
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/inertia/shapes.hpp"
 #include "poinsot/inertia/validity.hpp"
-#include "poinsot/io/inertia_report.hpp"
-#include "poinsot/io/robot_model.hpp"
+#include "poinsot/io/robot/inertia_report.hpp"
+#include "poinsot/io/robot/robot_model.hpp"
 
 namespace poinsot::cli {
 namespace {
@@ -58,7 +58,7 @@ std::string num(double x) {
   return format_number(x);
 }
 
-/// Prints the report in the form the options ask for (io/inertia_report.hpp composes it fully first).
+/// Prints the report in the form the options ask for (io/robot/inertia_report.hpp composes it fully first).
 void print_report(const InertiaOptions& o, Report r) {
   if (o.json && !o.format.empty())
     throw InvalidInput("inertia: got --json and --format; expected at most one");

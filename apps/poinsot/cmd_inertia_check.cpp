@@ -1,7 +1,8 @@
 // `poinsot inertia check MODEL`: the inertia of every link of a URDF, MJCF or SDF file — validity with the
 // inertia layer's explanation, plausibility against the link's geometry — and, with --repair or
-// --from-geometry, a copy of the file with the tensors replaced in place (io/model_repair.hpp). Everything is
-// computed and the copy written before anything is printed, so bad input leaves stdout empty and no file.
+// --from-geometry, a copy of the file with the tensors replaced in place (io/robot/model_repair.hpp).
+// Everything is computed and the copy written before anything is printed, so bad input leaves stdout empty
+// and no file.
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,10 +12,10 @@
 
 #include "commands.hpp"
 #include "poinsot/core/error.hpp"
-#include "poinsot/io/model_check.hpp"
-#include "poinsot/io/model_repair.hpp"
-#include "poinsot/io/robot_model.hpp"
-#include "poinsot/io/summary.hpp"
+#include "poinsot/io/robot/model_check.hpp"
+#include "poinsot/io/robot/model_repair.hpp"
+#include "poinsot/io/robot/robot_model.hpp"
+#include "poinsot/io/run/summary.hpp"
 
 namespace poinsot::cli {
 namespace {

@@ -1,7 +1,7 @@
 // `poinsot lambda`: runs a rigid body and checks the theorems of Vallée & Dumitriu (2002) on the Lagrange
 // multipliers Λ along the run (analysis::analyse_lambda), printing a report or, with --json, one object
-// (io/lambda_json.hpp, keys in docs/lambda.md; the same text Python's poinsot.analysis.lambda_report reads).
-// The body, initial state, torque and integrator come from a scenario file
+// (io/run/lambda_json.hpp, keys in docs/lambda.md; the same text Python's poinsot.analysis.lambda_report
+// reads). The body, initial state, torque and integrator come from a scenario file
 // (`poinsot lambda SCENARIO.toml`, docs/scenario.md), or from flags: principal moments or axisymmetric (A, C,
 // k) and --omega0. Explicit --method, --dt, --t-end, --sample-dt override the scenario's values.
 #include <memory>
@@ -16,8 +16,8 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/dynamics/methods.hpp"
-#include "poinsot/io/lambda_json.hpp"
-#include "poinsot/io/scenario.hpp"
+#include "poinsot/io/run/lambda_json.hpp"
+#include "poinsot/io/scenario/scenario.hpp"
 
 namespace poinsot::cli {
 namespace {

@@ -1,11 +1,12 @@
 // `poinsot optimize SCENARIO.toml`: the optimal reorientation of [optimal_control] (docs/optimal_control.md):
 // prints the report (or with --json summary.json) and writes report.txt, trajectory.csv, control.csv,
 // costates.csv and summary.json into the output folder, and with --plot the figures
-// (python/poinsot/plot_optimal.py). Exit status (io/optimal_run.hpp): 0 optimal (verified), 3 converged
+// (python/poinsot/plot_optimal.py). Exit status (io/run/optimal_run.hpp): 0 optimal (verified), 3 converged
 // (direct; minimum principle not verified: ...), 1 not converged (the files are written and say which), 2 bad
 // input (nothing written). While it runs, a progress line on stderr when stderr is a terminal (never in the
 // files), unless --quiet. A multibody scenario with an [optimal_control] section
-// (io/multibody_optimal_scenario.hpp) is solved by the multibody transcriptions (exit status 0 or 1).
+// (io/scenario/multibody_optimal_scenario.hpp) is solved by the multibody transcriptions (exit status 0 or
+// 1).
 #include <unistd.h>
 
 #include <chrono>
@@ -17,9 +18,9 @@
 
 #include "commands.hpp"
 #include "poinsot/core/error.hpp"
-#include "poinsot/io/multibody_optimal_run.hpp"
-#include "poinsot/io/optimal_run.hpp"
-#include "poinsot/io/scenario_file.hpp"
+#include "poinsot/io/run/multibody_optimal_run.hpp"
+#include "poinsot/io/run/optimal_run.hpp"
+#include "poinsot/io/scenario/scenario_file.hpp"
 #include "progress_line.hpp"
 
 namespace poinsot::cli {
@@ -67,7 +68,7 @@ class OptimizeProgress {
 };
 
 /// A multibody scenario (a `[[bodies]]` array): the direct transcription and its re-simulation
-/// (io/multibody_optimal_run.hpp); no figures are drawn for it yet.
+/// (io/run/multibody_optimal_run.hpp); no figures are drawn for it yet.
 void optimize_multibody(const OptimizeOptions& o) {
   const io::MultibodyOptimalScenario sc = io::load_multibody_optimal_scenario(o.scenario);  // exit 2
   if (o.plot)

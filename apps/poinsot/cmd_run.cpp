@@ -22,14 +22,14 @@
 #include "commands.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/methods.hpp"
-#include "poinsot/io/multibody_run.hpp"
-#include "poinsot/io/multibody_scenario.hpp"
-#include "poinsot/io/report.hpp"
-#include "poinsot/io/run.hpp"
-#include "poinsot/io/scenario.hpp"
-#include "poinsot/io/scenario_file.hpp"
-#include "poinsot/io/summary.hpp"
-#include "poinsot/io/view_page.hpp"
+#include "poinsot/io/run/multibody_run.hpp"
+#include "poinsot/io/run/report.hpp"
+#include "poinsot/io/run/run.hpp"
+#include "poinsot/io/run/summary.hpp"
+#include "poinsot/io/scenario/multibody_scenario.hpp"
+#include "poinsot/io/scenario/scenario.hpp"
+#include "poinsot/io/scenario/scenario_file.hpp"
+#include "poinsot/io/view/view_page.hpp"
 #include "poinsot/multibody/methods.hpp"
 #include "poinsot/multibody/scenario.hpp"
 #include "progress_line.hpp"
@@ -181,7 +181,8 @@ void make_plots(const std::string& dir, bool stdout_is_json) {
 namespace {
 
 /// Runs `run(options)` with the progress bar and the SIGINT/SIGTERM handlers: a signal makes
-/// options.stop_requested true, and the run stops at its next sample (io/run.hpp, io/multibody_run.hpp).
+/// options.stop_requested true, and the run stops at its next sample (io/run/run.hpp,
+/// io/run/multibody_run.hpp).
 template <class Options, class Run>
 auto run_guarded(const RunCliOptions& o, double t_end, Options& options, Run&& run) {
   Progress progress(!o.quiet, t_end);
@@ -215,8 +216,8 @@ void finish(const RunCliOptions& o, const std::string& dir, const std::string& j
 }
 
 /// A multibody scenario (a `[[bodies]]` array, docs/multibody.md): RATTLE or the projected RK4 on the
-/// constrained system, its files (io/multibody_run.hpp) and with --plot the figures paths.png, energy.png and
-/// constraints.png.
+/// constrained system, its files (io/run/multibody_run.hpp) and with --plot the figures paths.png, energy.png
+/// and constraints.png.
 void run_multibody(const RunCliOptions& o, const io::ScenarioOverrides& ov, multibody::Scenario mb) {
   io::apply_overrides(mb, ov);
   io::MultibodyRunOptions ro;

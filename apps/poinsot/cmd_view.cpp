@@ -1,12 +1,12 @@
 // `poinsot view OUT_DIR`: writes OUT_DIR/view.html, the self-contained 3-D page of a finished run (see
-// docs/viewer.md and io/view_page.hpp). Bad input (no finished run, --frames out of range, a run too large
-// for the frames asked for) is one line on stderr, status 2, and nothing written.
+// docs/viewer.md and io/view/view_page.hpp). Bad input (no finished run, --frames out of range, a run too
+// large for the frames asked for) is one line on stderr, status 2, and nothing written.
 #include <string>
 
 #include <fmt/format.h>
 
 #include "commands.hpp"
-#include "poinsot/io/view_page.hpp"
+#include "poinsot/io/view/view_page.hpp"
 
 namespace poinsot::cli {
 

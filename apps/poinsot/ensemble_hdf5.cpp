@@ -7,7 +7,7 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
-#include "poinsot/io/ensemble_table.hpp"
+#include "poinsot/io/run/ensemble_table.hpp"
 
 #ifdef POINSOT_HAVE_HDF5
 #include <hdf5.h>
@@ -55,7 +55,7 @@ void write_ensemble_hdf5(const std::string& path, const ensemble::EnsembleResult
   try {
     const hid_t group = H5Gcreate2(file, "samples", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
     const std::size_t n = r.rows.size();
-    // One dataset per column group of io/ensemble_table.hpp: n rows of its width.
+    // One dataset per column group of io/run/ensemble_table.hpp: n rows of its width.
     for (const io::SampleColumn& c : io::sample_columns()) {
       const std::size_t width = c.csv_names.size();
       if (c.kind == io::SampleColumn::Kind::unsigned_integer) {

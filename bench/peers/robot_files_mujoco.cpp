@@ -28,8 +28,8 @@
 #include <string>
 #include <vector>
 
-#include "poinsot/io/robot_model.hpp"
-#include "poinsot/io/robot_system.hpp"
+#include "poinsot/io/robot/robot_model.hpp"
+#include "poinsot/io/robot/robot_system.hpp"
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"

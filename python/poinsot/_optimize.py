@@ -1,6 +1,6 @@
 """poinsot.optimize: the optimal reorientation of a rigid body from Python (``poinsot optimize`` as a function).
 
-The C++ run (io/optimal_run.hpp: direct method, indirect method from its costates, verification,
+The C++ run (io/run/optimal_run.hpp: direct method, indirect method from its costates, verification,
 interpretation) runs with the GIL released; its samples come back as NumPy arrays.
 
 What ``optimize`` accepts is decided by the recognisers in ``_SOLVERS``, tried in order: each is a pair

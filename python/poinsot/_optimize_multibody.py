@@ -1,5 +1,5 @@
 """poinsot.optimize on coupled bodies: a multibody scenario file with an ``[optimal_control]`` section, or a
-``poinsot.optimal.MultibodyProblem`` built around a ``poinsot.multibody.System`` (io/multibody_optimal_run.hpp:
+``poinsot.optimal.MultibodyProblem`` built around a ``poinsot.multibody.System`` (io/run/multibody_optimal_run.hpp:
 the direct transcription in rotation-matrix or minimal coordinates, and the re-simulation of its control by the
 multibody projected RK4). Registered in ``_optimize._SOLVERS`` before the single-body pair.
 """

@@ -246,7 +246,7 @@ def run(scenario: Any, out_dir: str | os.PathLike | None = None, *, method: str 
         dt: float | None = None, t_end: float | None = None, sample_dt: float | None = None,
         plot: bool = False) -> RunResult:
     """Runs a scenario as ``poinsot run SCENARIO [--out DIR] [--method ...]`` does, through the same engine
-    (io/run.hpp, io/multibody_run.hpp): the same summary (the dict of summary.json) and text report, and with
+    (io/run/run.hpp, io/run/multibody_run.hpp): the same summary (the dict of summary.json) and text report, and with
     ``out_dir`` the same files (for ``poinsot.plot``; ``plot=True`` draws the figures there, as ``--plot`` does,
     and lists them in ``figures``). ``scenario``: a path (a single-body or a multibody file), a dict with the
     single-body file's layout, a poinsot.Scenario or a poinsot.multibody.Scenario."""

@@ -17,7 +17,7 @@
 #include "poinsot/analysis/lambda_tracker.hpp"
 #include "poinsot/analysis/multipliers.hpp"
 #include "poinsot/analysis/stress.hpp"
-#include "poinsot/io/lambda_json.hpp"
+#include "poinsot/io/run/lambda_json.hpp"
 
 namespace poinsot::python {
 
@@ -26,7 +26,7 @@ using dynamics::State;
 
 namespace {
 
-/// The JSON text of io/lambda_json.hpp as Python objects: the same keys and values as `poinsot lambda
+/// The JSON text of io/run/lambda_json.hpp as Python objects: the same keys and values as `poinsot lambda
 /// --json`.
 py::dict from_json(const std::string& text) {
   return py::module_::import("json").attr("loads")(text).cast<py::dict>();
@@ -169,7 +169,8 @@ void bind_analysis(py::module_& parent) {
       },
       py::arg("tensor"),
       (std::string(POINSOT_DOC(analysis_StressSummary)) +
-       "\n\nReturns a dict (io/lambda_json.hpp): tensor, principal (ascending), principal_axes (columns), "
+       "\n\nReturns a dict (io/run/lambda_json.hpp): tensor, principal (ascending), principal_axes "
+       "(columns), "
        "tresca, von_mises, trace; arrays as lists.")
           .c_str());
   m.def(

@@ -8,7 +8,7 @@
 
 #include "bindings.hpp"
 #include "docstrings.hpp"
-#include "poinsot/io/ensemble.hpp"
+#include "poinsot/io/run/ensemble_output.hpp"
 
 namespace poinsot::python {
 

@@ -17,11 +17,11 @@
 #include "poinsot/inertia/principal_axes.hpp"
 #include "poinsot/inertia/shapes.hpp"
 #include "poinsot/inertia/validity.hpp"
-#include "poinsot/io/inertia_report.hpp"
-#include "poinsot/io/model_check.hpp"
-#include "poinsot/io/model_repair.hpp"
-#include "poinsot/io/robot_model.hpp"
-#include "poinsot/io/summary.hpp"
+#include "poinsot/io/robot/inertia_report.hpp"
+#include "poinsot/io/robot/model_check.hpp"
+#include "poinsot/io/robot/model_repair.hpp"
+#include "poinsot/io/robot/robot_model.hpp"
+#include "poinsot/io/run/summary.hpp"
 
 namespace poinsot::python {
 
@@ -413,7 +413,7 @@ void bind_inertia(py::module_& parent) {
        POINSOT_DOC(file_io_model_check))
           .c_str());
   // The report of `poinsot inertia --json` and the inertial elements of `--format`, from
-  // io/inertia_report.hpp.
+  // io/robot/inertia_report.hpp.
   m.def(
       "report",
       [](const MassProperties& props, const py::object& about, double symmetry_tolerance) {

@@ -7,12 +7,12 @@
 #include "bindings.hpp"
 #include "convert.hpp"
 #include "docstrings.hpp"
-#include "poinsot/io/multibody_run.hpp"
-#include "poinsot/io/multibody_scenario.hpp"
-#include "poinsot/io/report.hpp"
-#include "poinsot/io/run.hpp"
-#include "poinsot/io/scenario.hpp"
-#include "poinsot/io/summary.hpp"
+#include "poinsot/io/run/multibody_run.hpp"
+#include "poinsot/io/run/report.hpp"
+#include "poinsot/io/run/run.hpp"
+#include "poinsot/io/run/summary.hpp"
+#include "poinsot/io/scenario/multibody_scenario.hpp"
+#include "poinsot/io/scenario/scenario.hpp"
 
 namespace poinsot::python {
 

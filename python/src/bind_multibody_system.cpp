@@ -10,7 +10,7 @@
 #include "docstrings.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/inertia/mass_properties.hpp"
-#include "poinsot/io/robot_system.hpp"
+#include "poinsot/io/robot/robot_system.hpp"
 #include "poinsot/multibody/loads.hpp"
 #include "poinsot/multibody/model.hpp"
 

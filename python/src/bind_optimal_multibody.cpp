@@ -10,8 +10,8 @@
 #include "convert.hpp"
 #include "docstrings.hpp"
 #include "poinsot/core/error.hpp"
-#include "poinsot/io/multibody_optimal_run.hpp"
-#include "poinsot/io/multibody_optimal_scenario.hpp"
+#include "poinsot/io/run/multibody_optimal_run.hpp"
+#include "poinsot/io/scenario/multibody_optimal_scenario.hpp"
 
 namespace poinsot::python {
 

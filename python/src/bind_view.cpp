@@ -1,10 +1,10 @@
-// Bindings of view.html (io/view_page.hpp): the same writer as `poinsot view` and `poinsot run --html`;
+// Bindings of view.html (io/view/view_page.hpp): the same writer as `poinsot view` and `poinsot run --html`;
 // python/poinsot/_view.py wraps it as poinsot.view. Docstrings from the header.
 #include <string>
 
 #include "bindings.hpp"
 #include "docstrings.hpp"
-#include "poinsot/io/view_page.hpp"
+#include "poinsot/io/view/view_page.hpp"
 
 namespace poinsot::python {
 

@@ -91,7 +91,7 @@ def test_lambda_report_is_the_engine_of_poinsot_lambda():
 
 @pytest.mark.parametrize("moments, method", [([1.0, 1.0, 1.6], "rattle"), ([2.0, 3.0, 4.0], "rk4")])
 def test_lambda_report_has_the_keys_and_values_of_the_command_line(cli_exe, moments, method):
-    """`poinsot lambda --json` and analysis.lambda_report are one serialiser (io/lambda_json.hpp): the same
+    """`poinsot lambda --json` and analysis.lambda_report are one serialiser (io/run/lambda_json.hpp): the same
     keys and the same values, bit for bit (the run is deterministic, and JSON round-trips doubles); the
     Python dict adds only `text`, the report the command prints without --json."""
     import json

@@ -147,7 +147,7 @@ position = [0.5, 0.5, 0.5]
 
 
 def test_report_and_inertial_elements_are_those_of_the_command_line(cli_exe):
-    # One serialiser (io/inertia_report.hpp) behind `poinsot inertia --json / --format` and these functions:
+    # One serialiser (io/robot/inertia_report.hpp) behind `poinsot inertia --json / --format` and these functions:
     # the same text for the same body, and the box's closed form m/12 (b² + c², a² + c², a² + b²) in it.
     import json
     import subprocess

@@ -97,7 +97,7 @@ def test_run_in_process_gives_the_command_line_summary(tennis_racket, tmp_path):
 
 
 def test_run_of_a_multibody_file_gives_the_command_line_files(cli_exe, source_dir, tmp_path):
-    """poinsot.run on a multibody file is `poinsot run`: the same engine (io/multibody_run.hpp), the same
+    """poinsot.run on a multibody file is `poinsot run`: the same engine (io/run/multibody_run.hpp), the same
     overrides, the same report and summary.json (but for the folder's name and the cpu time), and files."""
     import subprocess
 

@@ -1,6 +1,7 @@
 #pragma once
-// The JSON forms of the io layer's values, shared by every serialiser (summary.json of both kinds of run, the
-// Λ report): vectors as arrays, matrices row by row, a non-finite number as null (JSON has none).
+// The JSON forms of the io layer's values, shared by the serialisers of every room (the robot files' check
+// and inertia reports, summary.json of each kind of run, the Λ report, the view page's data): vectors as
+// arrays, matrices row by row, a non-finite number as null (JSON has none).
 #include <cmath>
 #include <optional>
 #include <string>
@@ -8,10 +9,6 @@
 #include <nlohmann/json.hpp>
 
 #include "poinsot/core/types.hpp"
-
-namespace poinsot::analysis {
-struct LambdaProperties;
-}
 
 namespace poinsot::io::detail {
 
@@ -42,13 +39,5 @@ inline json opt(const std::optional<double>& x) {
 inline json text_or_null(const std::string& s) {
   return s.empty() ? json(nullptr) : json(s);
 }
-
-/// The `status` of a run: "failed", "interrupted" or "completed".
-inline const char* run_status(const std::string& failure, bool interrupted) {
-  return !failure.empty() ? "failed" : (interrupted ? "interrupted" : "completed");
-}
-
-/// The properties of Λ along a run (the object of io::lambda_properties_json; lambda_json.cpp).
-json lambda_properties_value(const analysis::LambdaProperties& properties);
 
 }  // namespace poinsot::io::detail

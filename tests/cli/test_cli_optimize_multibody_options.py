@@ -2,7 +2,7 @@
 `no_twist`) and with `objective = "minimum_time"` in a multibody file: a rod on a ball joint against the
 closed form of its planar turn, the rod on a hinge against the bang-bang time, the options in report.txt and
 summary.json, and bad values (one line, exit 2, nothing written). That the file's keys give the optimum of the
-same call in C++: tests/io/test_multibody_optimal_options.cpp."""
+same call in C++: tests/io/run/test_multibody_optimal_options.cpp."""
 import json
 import math
 

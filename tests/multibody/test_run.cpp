@@ -1,6 +1,6 @@
 // The scenario loop (multibody::simulate): the rows it hands over, checked on the compound pendulum example
 // against the period of the large-amplitude pendulum; its measurements, stop and failure. The files of a run
-// are tested in tests/io/test_multibody_run.cpp.
+// are tested in tests/io/run/test_multibody_run.cpp.
 #include <cmath>
 #include <numbers>
 #include <string>

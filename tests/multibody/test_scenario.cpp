@@ -1,5 +1,5 @@
 // scenario.hpp: the projection of initial velocities onto the joints (the files are read in the io layer,
-// tests/io/test_multibody_scenario.cpp; the run driver is tests/multibody/test_run.cpp).
+// tests/io/scenario/test_multibody_scenario.cpp; the run driver is tests/multibody/test_run.cpp).
 #include "poinsot/multibody/scenario.hpp"
 
 #include "multibody_fixtures.hpp"

@@ -24,7 +24,7 @@ method = "exact"
 [output]
 t_end = 1.0
 """
-SEGMENTS = 48  # io's kSurfaceSegments
+SEGMENTS = 48  # inertia::kDrawnSurfaceSegments (inertia/tessellation.hpp)
 
 SHAPES = """var v = window.poinsotView; return v.bodyShapes().map(function (s) {
   return {shown: s.shown, order: s.order, vertices: s.surface ? Array.from(s.surface.geometry.attributes.position.array)

@@ -22,6 +22,10 @@ TriangleMesh revolve(const std::vector<Eigen::Vector2d>& profile, int segments, 
 /// those and for bad sizes.
 TriangleMesh tessellate(const ShapeSpec& spec, int segments);
 
+/// Segments around the axis of a curved shape's drawn surface (a scenario's body, a robot file's link): the
+/// inertia comes from the closed forms, the tessellation is only drawn.
+inline constexpr int kDrawnSurfaceSegments = 48;
+
 /// A box of the given size (m) centred at the origin: 12 triangles.
 TriangleMesh box_mesh(const Vec3& size);
 

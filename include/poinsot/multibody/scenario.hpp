@@ -2,8 +2,8 @@
 /// @file scenario.hpp
 /// A multibody scenario (a System, its initial State, the step and the output rate) and the loop that runs
 /// it, handing every output row to an observer. The files are read and written in the io layer
-/// (io/multibody_scenario.hpp, io/multibody_run.hpp; the format in docs/multibody.md, examples in
-/// examples/multibody/): this layer computes, io serialises. Units SI throughout.
+/// (io/scenario/multibody_scenario.hpp, io/run/multibody_run.hpp; the format in docs/multibody.md, examples
+/// in examples/multibody/): this layer computes, io serialises. Units SI throughout.
 
 #include <functional>
 #include <memory>

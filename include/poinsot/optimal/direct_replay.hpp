@@ -2,7 +2,7 @@
 /// @file direct_replay.hpp
 /// The independent re-simulation of a direct (collocation) solution's control: what decides "converged
 /// (direct; minimum principle not verified: ...)" where the indirect method cannot verify the optimum
-/// (io/optimal_run.hpp; docs/optimal_control.md, "Scenario files and `poinsot optimize`").
+/// (io/run/optimal_run.hpp; docs/optimal_control.md, "Scenario files and `poinsot optimize`").
 ///
 /// The replayed torque is the transcription's own control: on each interval the quadratic through the node,
 /// midpoint and node values (Hermite–Simpson; a phase boundary's duplicated node starts the next interval),
