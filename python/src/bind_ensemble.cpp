@@ -88,7 +88,7 @@ void bind_ensemble(py::module_& m) {
                      "rate_error, peak_torque, peak_feedback_torque, peak_wheel_momentum, "
                      "meets_requirement), quaternion_final (N, 4), omega_final "
                      "(N, 3); and 'summary', the dict of summary.json. Nothing is written to disk.\n\n") +
-         POINSOT_DOC(file_io_ensemble))
+         POINSOT_DOC(file_io_scenario_ensemble_scenario))
             .c_str());
 }
 

@@ -410,7 +410,7 @@ void bind_inertia(py::module_& parent) {
       (std::string(POINSOT_DOC(io_check_model)) +
        "\n\nReads the model file `path` (robot_model.hpp) and returns the report as a dict (the keys of "
        "model_check_json).\n\n" +
-       POINSOT_DOC(file_io_model_check))
+       POINSOT_DOC(file_io_robot_model_check))
           .c_str());
   // The report of `poinsot inertia --json` and the inertial elements of `--format`, from
   // io/robot/inertia_report.hpp.
@@ -461,7 +461,7 @@ void bind_inertia(py::module_& parent) {
        "\n\nWrites the repaired copy of the model file `path` to `out` (atomically) and returns a dict: "
        "edits "
        "(link, inertia_before, inertia_after, distance) and skipped.\n\n" +
-       POINSOT_DOC(file_io_model_repair))
+       POINSOT_DOC(file_io_robot_model_repair))
           .c_str());
 }
 

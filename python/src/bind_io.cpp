@@ -34,7 +34,7 @@ io::ScenarioOverrides overrides_of(const std::string& method, const py::object& 
 }  // namespace
 
 void bind_io(py::module_& m) {
-  py::class_<Scenario>(m, "Scenario", POINSOT_DOC(file_io_scenario))
+  py::class_<Scenario>(m, "Scenario", POINSOT_DOC(file_io_scenario_scenario))
       .def_readonly("name", &Scenario::name, POINSOT_DOC(io_Scenario_name))
       .def_readonly("source", &Scenario::source, POINSOT_DOC(io_Scenario_source))
       .def_readonly("title", &Scenario::title, POINSOT_DOC(io_Scenario_title))
@@ -117,7 +117,7 @@ void bind_io(py::module_& m) {
         return py::make_tuple(io::summary_json(summary), io::format_report(summary));
       },
       py::arg("scenario"), py::arg("out_dir"),
-      (std::string(POINSOT_DOC(io_run_scenario)) + "\n\n" + POINSOT_DOC(file_io_run)).c_str());
+      (std::string(POINSOT_DOC(io_run_scenario)) + "\n\n" + POINSOT_DOC(file_io_run_run)).c_str());
 
   m.def(
       "_run_multibody_scenario",
@@ -137,7 +137,7 @@ void bind_io(py::module_& m) {
       },
       py::arg("scenario"), py::arg("out_dir"), py::kw_only(), py::arg("method") = "",
       py::arg("dt") = py::none(), py::arg("t_end") = py::none(), py::arg("sample_dt") = py::none(),
-      (std::string(POINSOT_DOC(io_run_multibody_scenario)) + "\n\n" + POINSOT_DOC(file_io_multibody_run))
+      (std::string(POINSOT_DOC(io_run_multibody_scenario)) + "\n\n" + POINSOT_DOC(file_io_run_multibody_run))
           .c_str());
 }
 

@@ -388,7 +388,7 @@ void bind_problem(py::module_& m) {
 }
 
 void bind_optimal_scenario(py::module_& m) {
-  py::class_<io::OptimalScenario>(m, "OptimalScenario", POINSOT_DOC(file_io_optimal_scenario))
+  py::class_<io::OptimalScenario>(m, "OptimalScenario", POINSOT_DOC(file_io_scenario_optimal_scenario))
       .def(py::init(&scenario_of), py::arg("problem"),
            "A scenario around a problem given in Python (default collocation options, no output folder).")
       .def_readonly("name", &io::OptimalScenario::name, POINSOT_DOC(io_OptimalScenario_name))
@@ -468,7 +468,7 @@ void bind_optimal(py::module_& parent) {
         return o;
       },
       py::arg("scenario"), py::arg("out_dir"),
-      (std::string(POINSOT_DOC(io_run_optimal)) + "\n\n" + POINSOT_DOC(file_io_optimal_run)).c_str());
+      (std::string(POINSOT_DOC(io_run_optimal)) + "\n\n" + POINSOT_DOC(file_io_run_optimal_run)).c_str());
 }
 
 }  // namespace poinsot::python

@@ -211,7 +211,7 @@ py::dict run_dict(const io::MultibodyOptimalRun& run) {
 void bind_optimal_multibody(py::module_& parent) {
   py::module_ m = parent.attr("optimal").cast<py::module_>();
   py::class_<io::MultibodyOptimalScenario>(m, "MultibodyProblem",
-                                           POINSOT_DOC(file_io_multibody_optimal_scenario))
+                                           POINSOT_DOC(file_io_scenario_multibody_optimal_scenario))
       .def(py::init(&make_scenario), py::kw_only(), py::arg("system"), py::arg("initial_state"),
            py::arg("final_state"), py::arg("final_time"), py::arg("actuators"), py::arg("intervals") = 20,
            py::arg("coordinates") = "rotation_matrix", py::arg("rate_bounds") = py::list(),
@@ -341,7 +341,7 @@ void bind_optimal_multibody(py::module_& parent) {
       },
       py::arg("scenario"), py::arg("out_dir"),
       (std::string(POINSOT_DOC(io_run_multibody_optimal)) + "\n\n" +
-       POINSOT_DOC(file_io_multibody_optimal_run))
+       POINSOT_DOC(file_io_run_multibody_optimal_run))
           .c_str());
 }
 

@@ -21,7 +21,7 @@ void bind_view(pybind11::module_& m) {
         return io::write_view_page(run_dir, o);
       },
       py::arg("run_dir"), py::arg("frames") = io::kViewFramesDefault, py::arg("scenario") = "",
-      (std::string(POINSOT_DOC(io_write_view_page)) + "\n\n" + POINSOT_DOC(file_io_view_page)).c_str());
+      (std::string(POINSOT_DOC(io_write_view_page)) + "\n\n" + POINSOT_DOC(file_io_view_view_page)).c_str());
   m.def(
       "view_data_json",
       [](const std::string& run_dir, int frames, const std::string& scenario) {
