@@ -133,6 +133,22 @@ void bind_multibody_system(py::module_& m) {
           py::kw_only(), py::arg("stiffness"), py::arg("damping") = 0.0, py::arg("rest_length") = 0.0,
           POINSOT_DOC(multibody_Spring))
       .def(
+          "add_joint_spring",
+          [](mb::System& s, int joint, double stiffness, double damping, double rest_position,
+             const py::object& R_b_a_zero, double offset) {
+            mb::JointSpring sp;
+            sp.joint = joint;
+            sp.stiffness = stiffness;
+            sp.damping = damping;
+            sp.rest_position = rest_position;
+            if (!R_b_a_zero.is_none()) sp.R_b_a_zero = to_mat3(R_b_a_zero, "R_b_a_zero");
+            sp.offset = offset;
+            return s.add_joint_spring(sp);
+          },
+          py::arg("joint"), py::kw_only(), py::arg("stiffness") = 0.0, py::arg("damping") = 0.0,
+          py::arg("rest_position") = 0.0, py::arg("R_b_a_zero") = py::none(), py::arg("offset") = 0.0,
+          POINSOT_DOC(multibody_System_add_joint_spring))
+      .def(
           "add_force",
           [](mb::System& s, const py::object& body, ArrayLike f, ArrayLike p) {
             mb::ConstantForce c;

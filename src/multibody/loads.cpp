@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/so3/hat.hpp"
 
@@ -14,6 +16,46 @@ void add_point_force(BodyLoads& loads, const BodyState& s, const Vec3& f_space, 
   loads.force_space += f_space;
   loads.torque_body += X_body.cross(f_body);
   loads.phi_body += f_body * X_body.transpose();
+}
+
+void add_couple(BodyLoads& loads, const Vec3& tau_body) {
+  loads.torque_body += tau_body;
+  loads.phi_body += 0.5 * so3::hat(tau_body);
+}
+
+/// The deflection q − q_rest of a joint spring and the rate q̇ (model.hpp, JointSpring). Hinge: the relative
+/// rotation S = R_bᵀR_a is S_rest·Rot(axis_a, δ) with S_rest = R_b_a_zero·Rot(axis_a, q_rest), so δ =
+/// atan2(axis_a·vee(P − Pᵀ)/2, (tr P − 1)/2) with P = S_restᵀS, and q̇ = axis_a·(ω_a − Sᵀω_b) (body frames).
+/// Prismatic: q = (x_a + R_a A − x_b − R_b B)·s + offset along the axis s = R_b axis_b, q̇ its rate along s.
+struct JointDeflection {
+  double deflection = 0.0;  ///< q − q_rest, rad or m
+  double rate = 0.0;        ///< q̇, rad/s or m/s
+};
+
+Vec3 hinge_axis_a(const Joint& j) {
+  return j.p_a[0].cross(j.p_a[1]);
+}
+
+Vec3 slide_axis_space(const Joint& j, const BodyState& b) {
+  return b.R_space_body * j.n_b[0].cross(j.n_b[1]);
+}
+
+JointDeflection joint_deflection(const Joint& j, const JointSpring& s, const BodyState& a,
+                                 const BodyState& b) {
+  if (j.type == JointType::hinge) {
+    const Vec3 n = hinge_axis_a(j);
+    const Mat3 S = b.R_space_body.transpose() * a.R_space_body;
+    const Mat3 S_rest = s.R_b_a_zero * Eigen::AngleAxisd(s.rest_position, n).toRotationMatrix();
+    const Mat3 P = S_rest.transpose() * S;
+    const Vec3 sin_n(P(2, 1) - P(1, 2), P(0, 2) - P(2, 0), P(1, 0) - P(0, 1));
+    return {std::atan2(0.5 * n.dot(sin_n), 0.5 * (P.trace() - 1.0)),
+            n.dot(a.omega_body - S.transpose() * b.omega_body)};
+  }
+  const Vec3 axis = slide_axis_space(j, b);
+  const Vec3 d = a.x_space + a.R_space_body * j.point_a - b.x_space - b.R_space_body * j.point_b;
+  const Vec3 d_dot = a.v_space + a.R_space_body * a.omega_body.cross(j.point_a) - b.v_space -
+                     b.R_space_body * b.omega_body.cross(j.point_b);
+  return {d.dot(axis) + s.offset - s.rest_position, d_dot.dot(axis)};
 }
 
 }  // namespace
@@ -31,9 +73,7 @@ void applied_loads(const System& system, const std::vector<BodyState>& bodies, s
   }
   for (const ConstantTorque& t : system.torques()) {
     const auto i = static_cast<std::size_t>(t.body);
-    const Vec3 tau_body = t.in_body_frame ? t.torque : Vec3(bodies[i].R_space_body.transpose() * t.torque);
-    out[i].torque_body += tau_body;
-    out[i].phi_body += 0.5 * so3::hat(tau_body);
+    add_couple(out[i], t.in_body_frame ? t.torque : Vec3(bodies[i].R_space_body.transpose() * t.torque));
   }
   for (const Spring& s : system.springs()) {
     const BodyState& a = side_state(bodies, s.body_a);
@@ -54,6 +94,26 @@ void applied_loads(const System& system, const std::vector<BodyState>& bodies, s
     add_point_force(out[static_cast<std::size_t>(s.body_a)], a, f_a, s.point_a);
     if (s.body_b != kWorld) add_point_force(out[static_cast<std::size_t>(s.body_b)], b, -f_a, s.point_b);
   }
+  for (const JointSpring& s : system.joint_springs()) {
+    const Joint& j = system.joints()[static_cast<std::size_t>(s.joint)];
+    const BodyState& a = side_state(bodies, j.body_a);
+    const BodyState& b = side_state(bodies, j.body_b);
+    const JointDeflection q = joint_deflection(j, s, a, b);
+    const double Q = -s.stiffness * q.deflection - s.damping * q.rate;
+    BodyLoads& on_a = out[static_cast<std::size_t>(j.body_a)];
+    if (j.type == JointType::hinge) {
+      const Vec3 tau_a = Q * hinge_axis_a(j);
+      add_couple(on_a, tau_a);
+      if (j.body_b != kWorld) {
+        const Vec3 tau_b = -(b.R_space_body.transpose() * (a.R_space_body * tau_a));
+        add_couple(out[static_cast<std::size_t>(j.body_b)], tau_b);
+      }
+    } else {
+      const Vec3 f_a = Q * slide_axis_space(j, b);
+      add_point_force(on_a, a, f_a, j.point_a);
+      if (j.body_b != kWorld) add_point_force(out[static_cast<std::size_t>(j.body_b)], b, -f_a, j.point_b);
+    }
+  }
 }
 
 double potential_energy(const System& system, const std::vector<BodyState>& bodies) {
@@ -71,6 +131,12 @@ double potential_energy(const System& system, const std::vector<BodyState>& bodi
     const double length =
         (a.x_space + a.R_space_body * s.point_a - b.x_space - b.R_space_body * s.point_b).norm();
     V += 0.5 * s.stiffness * (length - s.rest_length) * (length - s.rest_length);
+  }
+  for (const JointSpring& s : system.joint_springs()) {
+    const Joint& j = system.joints()[static_cast<std::size_t>(s.joint)];
+    const double q =
+        joint_deflection(j, s, side_state(bodies, j.body_a), side_state(bodies, j.body_b)).deflection;
+    V += 0.5 * s.stiffness * q * q;
   }
   return V;
 }

@@ -11,6 +11,7 @@
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/multibody/joint_types.hpp"
 #include "poinsot/so3/rotation_check.hpp"
 
 namespace poinsot::multibody {
@@ -192,6 +193,37 @@ int System::add_spring(const Spring& spring) {
   require_finite(what + ": point b", spring.point_b);
   springs_.push_back(spring);
   return static_cast<int>(springs_.size()) - 1;
+}
+
+int System::add_joint_spring(const JointSpring& spring) {
+  if (spring.joint < 0 || spring.joint >= joint_count()) {
+    throw InvalidInput(fmt::format("multibody joint spring: joint {} does not exist; expected 0 to {}",
+                                   spring.joint, joint_count() - 1));
+  }
+  const Joint& j = joints_[static_cast<std::size_t>(spring.joint)];
+  const std::string what = fmt::format("multibody joint '{}': spring", j.name);
+  if (j.type != JointType::hinge && j.type != JointType::prismatic) {
+    throw InvalidInput(fmt::format("{}: the joint is a {}; expected a hinge or a prismatic joint", what,
+                                   joint_type_info(j.type).name));
+  }
+  const bool hinge = j.type == JointType::hinge;
+  require_non_negative(what + ": stiffness", spring.stiffness, hinge ? "N·m/rad" : "N/m");
+  require_non_negative(what + ": damping", spring.damping, hinge ? "N·m·s/rad" : "N·s/m");
+  require_finite(what + ": rest position", spring.rest_position);
+  require_finite(what + ": offset", spring.offset);
+  if (hinge) {
+    require_finite(what + ": zero rotation", spring.R_b_a_zero);
+    const Vec3 axis_a = j.p_a[0].cross(j.p_a[1]);
+    if (!so3::is_rotation(spring.R_b_a_zero) || (spring.R_b_a_zero * axis_a - j.u_b[0]).norm() > 1e-6) {
+      throw InvalidInput(
+          fmt::format("{}: zero rotation {} does not carry the axis of body a onto the axis of body b; "
+                      "expected a rotation "
+                      "R_b_a with R_b_a·axis_a = axis_b",
+                      what, format_matrix(spring.R_b_a_zero)));
+    }
+  }
+  joint_springs_.push_back(spring);
+  return static_cast<int>(joint_springs_.size()) - 1;
 }
 
 void System::add_force(const ConstantForce& force) {

@@ -103,6 +103,12 @@ void validate(const MultibodyProblem& p) {
                     "control transcriptions; expected none",
                     p.system.springs()[0].name));
   }
+  if (!p.system.joint_springs().empty()) {
+    throw InvalidInput(fmt::format(
+        "optimal control: joint '{}': joint springs and dampers are not supported by the optimal control "
+        "transcriptions; expected none",
+        p.system.joints()[static_cast<std::size_t>(p.system.joint_springs()[0].joint)].name));
+  }
   for (const multibody::Joint& j : p.system.joints()) {
     if (j.sliding) {
       throw InvalidInput(

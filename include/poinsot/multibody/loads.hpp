@@ -1,7 +1,7 @@
 #pragma once
 /// @file loads.hpp
-/// The applied loads of a multibody system (gravity, constant forces and torques, spring-dampers) in the
-/// rotation-matrix coordinates, and their potential energy.
+/// The applied loads of a multibody system (gravity, constant forces and torques, spring-dampers between
+/// points and on joint coordinates) in the rotation-matrix coordinates, and their potential energy.
 ///
 /// A force f (space frame, N) at the body point X (body frame, m, from the centre of mass) does the virtual
 /// work f·(δx + δR X): its generalized force on x is f and on R is F_R = f Xᵀ. Written in the body frame, Φ =
@@ -26,7 +26,8 @@ struct BodyLoads {
 /// resized to the body count; nothing else is allocated.
 void applied_loads(const System& system, const std::vector<BodyState>& bodies, std::vector<BodyLoads>& out);
 
-/// Potential energy (J) of gravity (−Σ m g·x), of the springs (Σ ½ k (ℓ − ℓ₀)²) and of the constant forces
+/// Potential energy (J) of gravity (−Σ m g·x), of the springs (Σ ½ k (ℓ − ℓ₀)²), of the joint springs
+/// (Σ ½ k (q − q_rest)², model.hpp) and of the constant forces
 /// (−Σ f·(x + R X)). Constant torques have no potential and are left out.
 double potential_energy(const System& system, const std::vector<BodyState>& bodies);
 

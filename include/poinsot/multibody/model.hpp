@@ -24,8 +24,8 @@
 /// Body b may be the world (index `kWorld`; its point B is then given in the space frame).
 ///
 /// Loads: uniform gravity, constant forces at body points, constant torques, linear spring-dampers between
-/// points. Like Pinocchio and MuJoCo, the model is built once and validated, then read by the integrator; the
-/// mutable State lives apart (state.hpp).
+/// points and along the coordinate of a hinge or prismatic joint. Like Pinocchio and MuJoCo, the model is
+/// built once and validated, then read by the integrator; the mutable State lives apart (state.hpp).
 
 #include <array>
 #include <string>
@@ -80,6 +80,22 @@ struct Spring {
   double rest_length = 0.0;     ///< ℓ₀, m
 };
 
+/// A linear spring-damper along the coordinate q of a hinge or prismatic joint (joint_coordinates.hpp): the
+/// generalized force Q = −k (q − q_rest) − c q̇ acts on body a (a torque Q about the hinge axis, N·m, or a
+/// force Q along the sliding axis at point a, N) and −Q on body b. Its potential is ½ k (q − q_rest)². A
+/// hinge's deflection q − q_rest is measured within half a turn, (−π, π]: like a torsion spring about its
+/// rest angle, the spring does not count the turns.
+struct JointSpring {
+  int joint = 0;               ///< index of a hinge or prismatic joint
+  double stiffness = 0.0;      ///< k: N·m/rad (hinge) or N/m (prismatic)
+  double damping = 0.0;        ///< c: N·m·s/rad (hinge) or N·s/m (prismatic)
+  double rest_position = 0.0;  ///< q_rest: rad or m
+  /// Hinge: the relative rotation R_bᵀR_a at which q = 0; it must carry the axis of a onto the axis of b.
+  Mat3 R_b_a_zero = Mat3::Identity();
+  /// Prismatic: q when point a is at point b (m); q grows as point a moves along the axis.
+  double offset = 0.0;
+};
+
 /// A constant force (space frame, N) applied at a point of a body (body frame, m from the centre of mass).
 struct ConstantForce {
   int body = 0;
@@ -129,6 +145,10 @@ class System {
                     const Vec3& point_b, const Mat3& R_b_a);
 
   int add_spring(const Spring& spring);
+  /// Adds a spring-damper on the coordinate of a hinge or a prismatic joint (its index `joint`). Throws
+  /// InvalidInput for another joint type, a negative stiffness or damping, a non-finite value, or a hinge's
+  /// R_b_a_zero that is not a rotation carrying axis a onto axis b (to 1e-6).
+  int add_joint_spring(const JointSpring& spring);
   void add_force(const ConstantForce& force);
   void add_torque(const ConstantTorque& torque);
   /// Uniform gravitational acceleration, space frame, m/s² (e.g. (0, 0, −9.81)).
@@ -139,6 +159,7 @@ class System {
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<Joint>& joints() const { return joints_; }
   const std::vector<Spring>& springs() const { return springs_; }
+  const std::vector<JointSpring>& joint_springs() const { return joint_springs_; }
   const std::vector<ConstantForce>& forces() const { return forces_; }
   const std::vector<ConstantTorque>& torques() const { return torques_; }
   const Vec3& gravity() const { return gravity_; }
@@ -157,6 +178,7 @@ class System {
   std::vector<Body> bodies_;
   std::vector<Joint> joints_;
   std::vector<Spring> springs_;
+  std::vector<JointSpring> joint_springs_;
   std::vector<ConstantForce> forces_;
   std::vector<ConstantTorque> torques_;
   Vec3 gravity_ = Vec3::Zero();

@@ -43,6 +43,15 @@ struct RobotDof {
   int line = 0;                      ///< line of its element
   Vec3 axis_child = Vec3::UnitZ();   ///< unit axis, child frame (hinge, slide)
   Vec3 anchor_child = Vec3::Zero();  ///< m, child frame
+  /// The coordinate (rad or m) at which the child has its pose in the file (MJCF `ref`, else 0): the
+  /// joint positions given by name are in the file's coordinates, and the motion above is by q − reference.
+  double reference = 0.0;
+  /// A hinge's or slide's spring-damper, as the file states it (MJCF stiffness, damping, springref; URDF
+  /// <dynamics damping>; SDF <axis><dynamics>): Q = −stiffness (q − spring_reference) − damping q̇, in N·m
+  /// and rad for a hinge, N and m for a slide.
+  double stiffness = 0.0;
+  double damping = 0.0;
+  double spring_reference = 0.0;
 };
 
 /// How a link is attached to its parent.

@@ -29,7 +29,7 @@ struct MjcfReader {
   RobotTree tree;
   std::vector<const XMLElement*> body_elements;  // per link
   std::map<std::string, int, std::less<>> body_index;
-  std::vector<std::string> limited, damped, sprung, armatured;  // joint names, for the not-modelled lines
+  std::vector<std::string> limited, damped, rubbing, armatured;  // joint names, for the not-modelled lines
 
   MjcfReader(const XmlSource& x, const RobotModel& m)
       : xml(x), model(m), compiler(read_mjcf_compiler(x)), defaults(x) {}
@@ -57,12 +57,6 @@ struct MjcfReader {
       throw InvalidInput(fmt::format("{} {} type=\"{}\": expected hinge, slide, ball or free", xml.where(j),
                                      element_label(j), type));
     }
-    if (auto ref = a.numbers("ref", 1); ref && (*ref)[0] != 0.0) {
-      throw InvalidInput(
-          fmt::format("{} {} ref=\"{}\": a reference position other than 0 is not supported; "
-                      "expected 0 (the body's pose in the file)",
-                      xml.where(j), element_label(j), (*ref)[0]));
-    }
     const auto nonzero = [&](const char* key) {
       auto v = a.numbers(key, 1);
       return v && (*v)[0] != 0.0;
@@ -71,8 +65,18 @@ struct MjcfReader {
     if ((lim != nullptr && std::string_view(lim) == "true") ||
         (lim == nullptr && a.get("range").text != nullptr && !free))
       limited.push_back(d.name);
-    if (nonzero("damping") || nonzero("frictionloss")) damped.push_back(d.name);
-    if (nonzero("stiffness")) sprung.push_back(d.name);
+    if (type == "hinge" || type == "slide") {
+      if (auto v = a.numbers("stiffness", 1)) d.stiffness = (*v)[0];
+      if (auto v = a.numbers("damping", 1)) d.damping = (*v)[0];
+      // ref and springref are in the compiler's angle unit for a hinge (as MuJoCo compiles qpos0 and
+      // qpos_spring), m for a slide.
+      const double unit = type == "hinge" ? compiler.angle_unit : 1.0;
+      if (auto v = a.numbers("ref", 1)) d.reference = (*v)[0] * unit;
+      if (auto v = a.numbers("springref", 1)) d.spring_reference = (*v)[0] * unit;
+    } else if (nonzero("damping") || nonzero("stiffness")) {
+      damped.push_back(d.name);
+    }
+    if (nonzero("frictionloss")) rubbing.push_back(d.name);
     if (nonzero("armature")) armatured.push_back(d.name);
     return d;
   }
@@ -240,8 +244,8 @@ RobotTree read_mjcf_tree(const XmlSource& xml, const RobotModel& model) {
   }
   if (!r.tree.has_gravity) r.tree.has_gravity = true;  // MuJoCo's default, (0, 0, −9.81)
   r.list(r.limited, "limits");
-  r.list(r.damped, "damping and friction loss");
-  r.list(r.sprung, "stiffness (joint springs)");
+  r.list(r.damped, "damping and stiffness of a ball or free joint");
+  r.list(r.rubbing, "friction loss");
   r.list(r.armatured, "armature");
   for (const char* other : {"actuator", "tendon", "contact"}) {
     if (const XMLElement* t = xml.root()->FirstChildElement(other);

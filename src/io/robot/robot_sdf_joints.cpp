@@ -2,6 +2,7 @@
 // every <joint type><parent><child><pose><axis><axis2>, <world><gravity>.
 #include <map>
 #include <numbers>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -199,8 +200,23 @@ struct SdfReader {
       if (a->FirstChildElement("limit") != nullptr)
         tree.not_modelled.push_back(
             fmt::format("{} line {}: <{}><limit> (joint limits)", spec.element, spec.line, which));
-      if (a->FirstChildElement("dynamics") != nullptr)
-        tree.not_modelled.push_back(fmt::format("{} line {}: <{}><dynamics> (damping, friction, spring)",
+      const XMLElement* dyn = a->FirstChildElement("dynamics");
+      if (dyn == nullptr) continue;
+      // <dynamics> of the axis: its damper and spring act on that axis's coordinate; friction is not
+      // modelled.
+      const std::size_t k = std::string_view(which) == "axis" ? 0 : 1;
+      if (k < spec.dofs.size() && spec.dofs[k].kind != RobotDof::Kind::ball) {
+        RobotDof& d = spec.dofs[k];
+        const auto value = [&](const char* key, double& out) {
+          if (const XMLElement* v = dyn->FirstChildElement(key)) out = xml.numbers_text(*v, 1)[0];
+        };
+        value("damping", d.damping);
+        value("spring_stiffness", d.stiffness);
+        value("spring_reference", d.spring_reference);
+      }
+      if (const XMLElement* f = dyn->FirstChildElement("friction");
+          f != nullptr && xml.numbers_text(*f, 1)[0] != 0.0)
+        tree.not_modelled.push_back(fmt::format("{} line {}: <{}><dynamics><friction> (joint friction)",
                                                 spec.element, spec.line, which));
     }
   }

@@ -247,6 +247,8 @@ struct Builder {
             for (double& x : v)
               x /= norm;
           }
+          // A position is kept as the displacement from the file's pose (q − reference).
+          if (!velocity && d->kind != RobotDof::Kind::ball) v[0] -= d->reference;
           (velocity ? qd : q)[d] = std::move(v);
         }
       }
@@ -453,17 +455,45 @@ struct Builder {
                                         [](const RobotDof& d) { return d.kind == RobotDof::Kind::hinge; });
     const Vec3 pa = anchor - c_a;
     const Vec3 pb = b_before * anchor - c_b;
+    // A hinge's or slide's spring-damper acts on its displacement from the file's configuration, where the
+    // child's frame is b_before; a slide's points coincide at its initial displacement.
+    const auto add_spring = [&](int joint) {
+      const RobotDof& d = dofs[0];
+      if (d.stiffness == 0.0 && d.damping == 0.0) return;
+      if (!options.joint_springs) {
+        sc.not_modelled.push_back(
+            fmt::format("{}: the spring and damper of \"{}\" (left out by the options)", where(j), d.name));
+        return;
+      }
+      multibody::JointSpring s;
+      s.joint = joint;
+      s.stiffness = d.stiffness;
+      s.damping = d.damping;
+      s.rest_position = d.spring_reference - d.reference;
+      s.R_b_a_zero = b_before.R;
+      s.offset = coordinate(d, false)[0];
+      located([&] { return sc.system.add_joint_spring(s); });
+    };
     if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::hinge) {
-      located([&] {
+      add_spring(located([&] {
         return sc.system.add_hinge(name, a, pa, dofs[0].axis_child, b, pb, b_before.R * dofs[0].axis_child);
-      });
+      }));
       return;
     }
     if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::slide) {
-      located([&] {
+      add_spring(located([&] {
         return sc.system.add_prismatic(name, a, pa, dofs[0].axis_child, b, b_child * anchor - c_b, b_child.R);
-      });
+      }));
       return;
+    }
+    std::string sprung;
+    for (const RobotDof& d : dofs) {
+      if (d.stiffness != 0.0 || d.damping != 0.0) sprung += (sprung.empty() ? "\"" : ", \"") + d.name + "\"";
+    }
+    if (!sprung.empty()) {
+      sc.not_modelled.push_back(fmt::format(
+          "{}: the springs and dampers of {} (joints of one body merged into a universal or ball joint)",
+          where(j), sprung));
     }
     if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::ball) {
       located([&] { return sc.system.add_ball(name, a, pa, b, pb); });

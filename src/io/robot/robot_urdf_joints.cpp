@@ -107,9 +107,14 @@ RobotTree read_urdf_tree(const XmlSource& xml, const RobotModel& model) {
                       "prismatic, fixed or floating",
                       xml.where(*e), element_label(*e), type));
     }
-    if (e->FirstChildElement("dynamics") != nullptr) {
-      tree.not_modelled.push_back(
-          fmt::format("{} line {}: <dynamics> (joint damping and friction)", j.element, j.line));
+    if (const XMLElement* dyn = e->FirstChildElement("dynamics")) {
+      // <dynamics damping> of a revolute or prismatic joint is a joint damper (N·m·s/rad or N·s/m); its
+      // Coulomb friction is not modelled.
+      if (auto damping = xml.numbers_attribute(*dyn, "damping", 1); damping && !j.dofs.empty())
+        j.dofs.front().damping = (*damping)[0];
+      if (auto friction = xml.numbers_attribute(*dyn, "friction", 1); friction && (*friction)[0] != 0.0)
+        tree.not_modelled.push_back(
+            fmt::format("{} line {}: <dynamics friction> (joint friction)", j.element, j.line));
     }
     if (e->FirstChildElement("mimic") != nullptr)
       tree.not_modelled.push_back(fmt::format("{} line {}: <mimic> (joint coupling)", j.element, j.line));

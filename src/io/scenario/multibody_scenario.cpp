@@ -167,7 +167,8 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
   if (joints == nullptr) return;
   for (std::size_t j = 0; j < joints->size(); ++j) {
     const Section f(r.src, (*joints)[j].as_table(), fmt::format("joints[{}]", j),
-                    {"name", "type", "body_a", "point_a", "body_b", "point_b", "axis_a", "axis_b"},
+                    {"name", "type", "body_a", "point_a", "body_b", "point_b", "axis_a", "axis_b",
+                     "stiffness", "damping", "rest_position"},
                     &(*joints)[j]);
     const std::string name = f.string("name").value_or(fmt::format("joint{}", j));
     f.require("type", multibody::joint_type_names());
@@ -200,7 +201,13 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
       f.require("axis_b",
                 "[x, y, z]: the cross-pin axis in body b's frame, perpendicular to axis_a at t = 0");
     const Vec3 axis_a = f.vec3("axis_a").value_or(Vec3::Zero());
-    located(f, "type", [&] {
+    const bool has_coordinate =
+        info->type == multibody::JointType::hinge || info->type == multibody::JointType::prismatic;
+    for (const char* key : {"stiffness", "damping", "rest_position"}) {
+      if (!has_coordinate && f.has(key))
+        f.fail(key, fmt::format("given for a {} joint; only hinge and prismatic joints take a spring", type));
+    }
+    const int joint = located(f, "type", [&] {
       switch (info->type) {
         case multibody::JointType::ball:
           return r.sc.system.add_ball(name, a, pa, b, pb);
@@ -217,6 +224,20 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
       }
       return -1;
     });
+    // A spring-damper on the joint's coordinate: a hinge's angle from its relative rotation at t = 0, a
+    // prismatic joint's displacement of point_a from point_b along the axis.
+    if (f.has("stiffness") || f.has("damping")) {
+      multibody::JointSpring s;
+      s.joint = joint;
+      s.stiffness = f.number("stiffness").value_or(0.0);
+      s.damping = f.number("damping").value_or(0.0);
+      s.rest_position = f.number("rest_position").value_or(0.0);
+      s.R_b_a_zero = R_b_a;
+      located(f, f.has("stiffness") ? "stiffness" : "damping",
+              [&] { return r.sc.system.add_joint_spring(s); });
+    } else if (f.has("rest_position")) {
+      f.fail("rest_position", "given without stiffness; expected stiffness (and damping) with it");
+    }
   }
 }
 

@@ -95,6 +95,18 @@ TEST(RobotSystem, DoublePendulumOfEachFormatIsTheHandWrittenScenarioBitForBit) {
         EXPECT_EQ(ja.u_b[static_cast<std::size_t>(k)], jb.u_b[static_cast<std::size_t>(k)]);
       }
     }
+    // The joints' dampers (each file's, the scenario's `damping` keys), with the same zero.
+    ASSERT_EQ(sc.system.joint_springs().size(), 2u);
+    ASSERT_EQ(ref.system.joint_springs().size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const multibody::JointSpring& a = sc.system.joint_springs()[k];
+      const multibody::JointSpring& b = ref.system.joint_springs()[k];
+      EXPECT_EQ(a.joint, b.joint);
+      EXPECT_EQ(a.stiffness, b.stiffness);
+      EXPECT_EQ(a.damping, b.damping);
+      EXPECT_EQ(a.rest_position, b.rest_position);
+      EXPECT_EQ(a.R_b_a_zero, b.R_b_a_zero);
+    }
     // The same system from the same state: RATTLE's trajectories are the same bits.
     multibody::Rattle ra(sc.system, 1e-3), rb(ref.system, 1e-3);
     multibody::State sa = sc.initial, sb = ref.initial;
@@ -119,8 +131,8 @@ TEST(RobotSystem, NotModelledFeaturesAreListed) {
   std::string all;
   for (const std::string& line : mjcf.not_modelled)
     all += line + "\n";
-  expect_has(all,
-             {"contacts between the links' shapes (1 shapes)", "damping", "shoulder", "<actuator> line 16"});
+  expect_has(all, {"contacts between the links' shapes (1 shapes)", "friction loss", "shoulder",
+                   "<actuator> line 16"});
 }
 
 TEST(RobotSystem, UrdfJointKinds) {
@@ -207,8 +219,15 @@ TEST(RobotSystem, MjcfJointKinds) {
   std::string all;
   for (const std::string& line : sc.not_modelled)
     all += line + "\n";
-  expect_has(all, {"<joint> damping and friction loss: 8 joint(s)",
-                   "<joint> stiffness (joint springs): 1 joint(s) (crank_hinge)"});
+  // The crank's spring is modelled; the damper of gimbal_x, merged into a universal joint, is listed.
+  expect_has(all, {"<joint> friction loss: 8 joint(s)",
+                   "the springs and dampers of \"gimbal_x\" (joints of one body merged into a universal or "
+                   "ball joint)"});
+  EXPECT_EQ(all.find("crank_hinge\""), std::string::npos) << all;
+  ASSERT_EQ(sc.system.joint_springs().size(), 1u);
+  EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(sc.system.joint_springs()[0].joint)].name,
+            "crank_hinge");
+  EXPECT_EQ(sc.system.joint_springs()[0].stiffness, 2.0);
   double de = 0.0, gap = 0.0;
   run_rk4(sc, 300, &de, &gap);
   EXPECT_LT(gap, 1e-12);

@@ -16,6 +16,7 @@
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/inertia/mesh_io.hpp"
 #include "poinsot/inertia/shapes.hpp"
+#include "poinsot/multibody/loads.hpp"
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/rattle.hpp"
 #include "poinsot_test.hpp"
@@ -109,8 +110,8 @@ axis_a = [0, 0, 1]
   expect_has(sc.body_descriptions[1], {"box", "mass 1 kg"});
 }
 
-TEST(MultibodyScenario, ParsesUniversalAndPrismaticJoints) {
-  const std::string bodies = R"(
+/// Two bodies for the joint tests: a, turned 0.4 rad about z and moving, and b at rest at y = 1 m.
+constexpr const char* kTwoBodies = R"(
 [[bodies]]
 name = "a"
 mass = 1
@@ -124,6 +125,9 @@ mass = 2
 inertia = [0.2, 0.2, 0.3]
 position = [0, 1, 0]
 )";
+
+TEST(MultibodyScenario, ParsesUniversalAndPrismaticJoints) {
+  const std::string bodies = kTwoBodies;
   const multibody::Scenario sc = parse_multibody_scenario(bodies + R"(
 [[joints]]
 type = "universal"
@@ -152,6 +156,48 @@ axis_a = [0, 0, 1]
   expect_has(multibody_error_of(a + "type = \"prismatic\"\n"), {"[joints[0]] axis_a: missing"});
   expect_has(multibody_error_of(a + "type = \"prismatic\"\naxis_a = [1, 0, 0]\naxis_b = [1, 0, 0]\n"),
              {"[joints[0]] axis_b: given for a prismatic joint; only hinge or universal joints take axis_b"});
+}
+
+TEST(MultibodyScenario, JointSpringsOnHingesAndPrismaticJoints) {
+  // Body a is turned 0.4 rad about z at t = 0: the hinge's zero is that relative rotation; the prismatic
+  // joint's coordinate is the displacement of point_a from point_b (0 with the default point_b).
+  const std::string bodies = kTwoBodies;
+  const multibody::Scenario sc = parse_multibody_scenario(bodies + R"(
+[[joints]]
+type = "hinge"
+body_a = "a"
+axis_a = [0, 0, 1]
+stiffness = 3
+damping = 0.1
+rest_position = -0.2
+[[joints]]
+type = "prismatic"
+body_a = "b"
+axis_a = [1, 0, 0]
+damping = 0.5
+)",
+                                                          "t.toml");
+  ASSERT_EQ(sc.system.joint_springs().size(), 2u);
+  const multibody::JointSpring& hinge = sc.system.joint_springs()[0];
+  EXPECT_EQ(hinge.joint, 0);
+  EXPECT_EQ(hinge.stiffness, 3.0);
+  EXPECT_EQ(hinge.damping, 0.1);
+  EXPECT_EQ(hinge.rest_position, -0.2);
+  EXPECT_EQ(hinge.R_b_a_zero, sc.initial.bodies[0].R_space_body);
+  // At t = 0 the hinge sits at its zero: the spring's energy is ½ k (0 − (−0.2))².
+  EXPECT_NEAR(multibody::potential_energy(sc.system, sc.initial.bodies), 0.5 * 3.0 * 0.04, 1e-15);
+  const multibody::JointSpring& slide = sc.system.joint_springs()[1];
+  EXPECT_EQ(slide.joint, 1);
+  EXPECT_EQ(slide.stiffness, 0.0);
+  EXPECT_EQ(slide.damping, 0.5);
+  const std::string a = bodies + "[[joints]]\nbody_a = \"a\"\n";
+  expect_has(
+      multibody_error_of(a + "type = \"ball\"\nstiffness = 1\n"),
+      {"[joints[0]] stiffness: given for a ball joint; only hinge and prismatic joints take a spring"});
+  expect_has(multibody_error_of(a + "type = \"hinge\"\naxis_a = [0, 0, 1]\nrest_position = 1\n"),
+             {"[joints[0]] rest_position: given without stiffness"});
+  expect_has(multibody_error_of(a + "type = \"hinge\"\naxis_a = [0, 0, 1]\ndamping = -1\n"),
+             {"[joints[0]] damping: multibody joint", "damping: got -1"});
 }
 
 TEST(MultibodyScenario, ErrorsNameTheFileTheEntryTheFieldTheValueAndTheExpectation) {

@@ -47,11 +47,15 @@ enum class RobotInertiaSource {
 /// The initial state and the choices a scenario makes about a robot file.
 struct RobotSystemOptions {
   RobotInertiaSource inertia = RobotInertiaSource::file;
-  bool floating_base = false;   ///< URDF: the root link is a free body instead of fixed to the world
+  bool floating_base = false;  ///< URDF: the root link is a free body instead of fixed to the world
+  /// The files' joint springs and dampers on hinges and slides (multibody::JointSpring); false leaves them
+  /// out and lists them as not modelled (as a peer with its passive forces switched off).
+  bool joint_springs = true;
   std::optional<Vec3> gravity;  ///< m/s², space frame; default: the file's (MJCF <option>, SDF <world>),
                                 ///< else (0, 0, −9.81)
-  /// Joint positions by the file's joint names: hinge rad, slide m (1 number), SDF universal (2: about axis,
-  /// then axis2), ball (a unit quaternion w x y z of the child relative to its file pose). Default 0.
+  /// Joint positions by the file's joint names, in the file's coordinates: hinge rad, slide m (1 number), SDF
+  /// universal (2: about axis, then axis2), ball (a unit quaternion w x y z of the child relative to its file
+  /// pose). Default: the file's pose (an MJCF joint's `ref`, else 0).
   std::map<std::string, std::vector<double>> positions;
   /// Joint velocities: hinge rad/s, slide m/s (1), universal (2), ball (ω, rad/s, child frame: 3).
   std::map<std::string, std::vector<double>> velocities;

@@ -1,0 +1,174 @@
+// Spring-dampers on the coordinate of a hinge or a prismatic joint (model.hpp JointSpring, loads.cpp) against
+// the damped oscillator's closed form, the integrators' convergence orders, the conservation of angular
+// momentum under internal torques and of energy without damping.
+#include <cmath>
+
+#include "poinsot/core/error.hpp"
+#include "poinsot/multibody/loads.hpp"
+#include "poinsot/multibody/model.hpp"
+#include "poinsot/multibody/observables.hpp"
+#include "poinsot/multibody/projected_rk4.hpp"
+#include "poinsot/multibody/rattle.hpp"
+#include "poinsot_test.hpp"
+
+namespace poinsot::multibody {
+namespace {
+
+using test::expect_has;
+using test::message_of;
+
+Mat3 rot_z(double a) {
+  return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
+}
+
+/// x(t) of ẍ + 2ζω ẋ + ω² x = 0 from x(0) = x0 at rest, underdamped (ζ < 1).
+double damped_oscillator(double x0, double omega, double zeta, double t) {
+  const double omega_d = omega * std::sqrt(1.0 - zeta * zeta);
+  return x0 * std::exp(-zeta * omega * t) *
+         (std::cos(omega_d * t) + zeta * omega / omega_d * std::sin(omega_d * t));
+}
+
+// Two bodies with their centres of mass at the hinge, about their common principal axis z, in zero gravity.
+// The spring's zero is the relative rotation R_z(−0.05) and its rest position 0.1 rad, so it rests at a
+// relative angle of 0.05 rad. The deflection δ = θ_a − θ_b − 0.05 obeys I δ̈ = −k δ − c δ̇ with 1/I = 1/I_a +
+// 1/I_b for any δ in (−π, π) (the torque is linear in the angle), and the total angular momentum stays zero.
+constexpr double kIa = 0.5, kIb = 0.25, kRest = 0.05;
+
+struct HingedPair {
+  System system;
+  State initial;
+  double omega = 0.0, zeta = 0.0;  ///< of the relative angle's oscillator
+};
+
+HingedPair hinged_pair(double k, double c, double delta0) {
+  HingedPair p;
+  p.system.add_body_from_inertia("a", 2.0, Vec3(0.3, 0.4, kIa).asDiagonal());
+  p.system.add_body_from_inertia("b", 1.0, Vec3(0.1, 0.2, kIb).asDiagonal());
+  JointSpring s;
+  s.joint = p.system.add_hinge("h", 0, Vec3::Zero(), Vec3::UnitZ(), 1, Vec3::Zero(), Vec3::UnitZ());
+  s.stiffness = k;
+  s.damping = c;
+  s.rest_position = 0.1;
+  s.R_b_a_zero = rot_z(-0.05);
+  p.system.add_joint_spring(s);
+  p.initial.bodies.resize(2);
+  p.initial.bodies[0].R_space_body = rot_z(kRest + delta0);
+  const double I = 1.0 / (1.0 / kIa + 1.0 / kIb);
+  p.omega = std::sqrt(k / I);
+  p.zeta = c / (2.0 * std::sqrt(k * I));
+  return p;
+}
+
+double deflection(const State& s) {
+  const Mat3 S = s.bodies[1].R_space_body.transpose() * s.bodies[0].R_space_body;
+  return std::atan2(S(1, 0), S(0, 0)) - kRest;
+}
+
+/// |δ(T) − closed form| after T = 3 s at step dt with the integrator `I`.
+template <class Integrator>
+double hinge_error(const HingedPair& p, double dt, double delta0, double* momentum = nullptr) {
+  Integrator integrator(p.system, dt);
+  State s = p.initial;
+  const int steps = static_cast<int>(std::lround(3.0 / dt));
+  for (int n = 0; n < steps; ++n)
+    integrator.step(s);
+  if (momentum != nullptr) *momentum = multibody::angular_momentum(p.system, s).norm();
+  return std::abs(deflection(s) - damped_oscillator(delta0, p.omega, p.zeta, s.time));
+}
+
+TEST(JointSprings, HingedPairIsTheDampedOscillatorAtFourthOrderWithRk4) {
+  // δ0 = 2.5 rad: far from small angles, where a spring linear in the angle keeps the closed form exact.
+  const double delta0 = 2.5;
+  const HingedPair p = hinged_pair(3.0, 0.2, delta0);
+  const double e1 = hinge_error<ProjectedRk4>(p, 0.02, delta0);
+  const double e2 = hinge_error<ProjectedRk4>(p, 0.01, delta0);
+  // ω h ≈ 0.085 and 0.042: RK4's global error ~ (ωh)⁴ ωT/100 ≈ 7e-6 at the larger step; halving it divides
+  // the error by 2⁴ = 16 (the 12 to 20 band leaves room for the next order's term).
+  EXPECT_LT(e1, 3e-5);
+  EXPECT_GT(e1 / e2, 12.0);
+  EXPECT_LT(e1 / e2, 20.0);
+}
+
+TEST(JointSprings, HingedPairIsTheDampedOscillatorAtSecondOrderWithRattleAndKeepsZeroMomentum) {
+  const double delta0 = 1.0;
+  const HingedPair p = hinged_pair(3.0, 0.2, delta0);
+  double L = 1.0;
+  const double e1 = hinge_error<Rattle>(p, 0.01, delta0);
+  const double e2 = hinge_error<Rattle>(p, 0.005, delta0, &L);
+  // RATTLE's phase error (ωh)²ωT/24 ≈ 1e-3 at h = 0.01; halving the step divides it by 4 (the dampers see
+  // extrapolated velocities, which keeps the second order).
+  EXPECT_LT(e1, 3e-3);
+  EXPECT_GT(e1 / e2, 3.5);
+  EXPECT_LT(e1 / e2, 4.5);
+  // The spring's torques on a and b are equal and opposite: L stays 0 to round-off (|ω| ~ 10 rad/s, J ~ 0.5).
+  EXPECT_LT(L, 1e-12);
+}
+
+TEST(JointSprings, WithoutDampingRattleKeepsTheEnergyOfTheSpringBounded) {
+  const HingedPair p = hinged_pair(3.0, 0.0, 2.0);
+  State s = p.initial;
+  const double e0 = total_energy(p.system, s);
+  // All the energy starts in the spring: ½ k δ0².
+  EXPECT_NEAR(e0, 0.5 * 3.0 * 4.0, 1e-14);
+  const double h = 0.01;
+  Rattle rattle(p.system, h);
+  double worst = 0.0;
+  for (int n = 0; n < 20000; ++n) {  // 200 s, about 130 periods
+    rattle.step(s);
+    worst = std::max(worst, std::abs(total_energy(p.system, s) - e0));
+  }
+  // A symplectic method's energy error stays of order (ωh)² without drift: (ωh)² ≈ 1.8e-3 of e0.
+  EXPECT_LT(worst / e0, (p.omega * h) * (p.omega * h));
+}
+
+TEST(JointSprings, SliderIsTheDampedOscillatorAlongItsAxis) {
+  // A 2 kg body on a prismatic joint along space x, in zero gravity. The coordinate is 0.1 m (the offset)
+  // when its point is at the world's point, the spring rests at −0.2 m: the deflection starts at 0.3 m.
+  System system;
+  system.add_body_from_inertia("cart", 2.0, Vec3(0.1, 0.1, 0.1).asDiagonal());
+  JointSpring s;
+  s.joint =
+      system.add_prismatic("track", 0, Vec3::Zero(), Vec3::UnitX(), kWorld, Vec3(1, 0, 0), Mat3::Identity());
+  s.stiffness = 5.0;
+  s.damping = 0.4;
+  s.rest_position = -0.2;
+  s.offset = 0.1;
+  system.add_joint_spring(s);
+  State st;
+  st.bodies.resize(1);
+  st.bodies[0].x_space = Vec3(1, 0, 0);
+  EXPECT_NEAR(total_energy(system, st), 0.5 * 5.0 * 0.09, 1e-15);
+  ProjectedRk4 rk4(system, 1e-3);
+  for (int n = 0; n < 2000; ++n)
+    rk4.step(st);
+  const double omega = std::sqrt(5.0 / 2.0), zeta = 0.4 / (2.0 * std::sqrt(5.0 * 2.0));
+  // q = x − 1 + 0.1; RK4 at ωh = 1.6e-3 over 2 s: error ~ (ωh)⁴ ~ 1e-11 of the amplitude.
+  EXPECT_NEAR(st.bodies[0].x_space.x() - 1.0 + 0.1, -0.2 + damped_oscillator(0.3, omega, zeta, st.time),
+              1e-10);
+  EXPECT_LT(std::abs(st.bodies[0].x_space.y()) + std::abs(st.bodies[0].x_space.z()), 1e-14);
+}
+
+TEST(JointSprings, RefusesOtherJointsNegativeValuesAndAZeroOffTheAxis) {
+  System s;
+  s.add_body_from_inertia("a", 1.0, Mat3::Identity());
+  const int ball = s.add_ball("b", 0, Vec3::Zero(), kWorld, Vec3::Zero());
+  const int hinge = s.add_hinge("h", 0, Vec3::Zero(), Vec3::UnitZ(), kWorld, Vec3::Zero(), Vec3::UnitZ());
+  JointSpring bad;
+  bad.joint = ball;
+  bad.stiffness = 1.0;
+  expect_has(message_of([&] { s.add_joint_spring(bad); }),
+             {"joint 'b': spring", "ball", "expected a hinge or a prismatic joint"});
+  bad.joint = 7;
+  expect_has(message_of([&] { s.add_joint_spring(bad); }), {"joint 7 does not exist"});
+  bad.joint = hinge;
+  bad.damping = -1.0;
+  expect_has(message_of([&] { s.add_joint_spring(bad); }), {"damping", "-1", "N·m·s/rad"});
+  bad.damping = 0.0;
+  bad.R_b_a_zero = Eigen::AngleAxisd(0.3, Vec3::UnitX()).toRotationMatrix();  // tilts the axis
+  expect_has(message_of([&] { s.add_joint_spring(bad); }),
+             {"zero rotation", "does not carry the axis of body a onto the axis of body b"});
+  EXPECT_TRUE(s.joint_springs().empty());
+}
+
+}  // namespace
+}  // namespace poinsot::multibody
