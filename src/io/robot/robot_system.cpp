@@ -17,41 +17,20 @@
 #include "poinsot/so3/axis_angle.hpp"
 #include "poinsot/so3/quaternion.hpp"
 #include "robot_kinematics.hpp"
+#include "robot_system_builder.hpp"
 
 namespace poinsot::io {
 namespace {
 
+using detail::LinkInertia;
+using detail::LinkPlace;
 using detail::RigidPose;
 using detail::RobotDof;
 using detail::RobotJointKind;
 using detail::RobotJointSpec;
 using detail::RobotTree;
+using detail::Twist;
 using multibody::kWorld;
-
-/// A link's place in the system: the body it belongs to (or the world) and its frame in that body's link
-/// frame (the identity for a link that is its own body).
-struct LinkPlace {
-  int body = kWorld;
-  RigidPose in_body;
-  bool own = false;  ///< the link is the body (not a frame of another body or of the world)
-};
-
-/// The velocity field of a rigid motion: v(x) = v0 + ω × x (space frame).
-struct Twist {
-  Vec3 omega = Vec3::Zero();
-  Vec3 v0 = Vec3::Zero();
-  Vec3 at(const Vec3& x) const { return v0 + omega.cross(x); }
-};
-
-std::string line_of(const std::string& source, int line, const std::string& element) {
-  return fmt::format("{}:{}: {}", source, line, element);
-}
-
-/// The mass properties of a link in its own frame, and how they were obtained.
-struct LinkInertia {
-  inertia::MassProperties props;
-  std::string how;
-};
 
 LinkInertia link_inertia(const RobotModel& model, const RobotTree& tree, std::size_t k,
                          RobotInertiaSource source) {
@@ -139,461 +118,250 @@ RigidPose dof_motion(const RobotDof& d, const double* q) {
   return m;
 }
 
-struct Builder {
-  const RobotModel& model;
-  const RobotSystemOptions& options;
-  RobotTree tree;
-  multibody::Scenario sc;
-  std::vector<LinkPlace> place;
-  std::vector<LinkInertia> inertia;
-  std::vector<RigidPose> pose;            ///< per link, space, at the initial coordinates
-  std::vector<RigidPose> pose0;           ///< per link, space, at the file's configuration
-  std::vector<Twist> twist;               ///< per link, at the initial coordinates
-  std::vector<int> order;                 ///< links, parents first
-  std::vector<std::size_t> link_of_body;  ///< per body, its link
-  std::map<std::string, std::vector<const RobotDof*>> dofs_by_name;
-  std::map<const RobotDof*, std::vector<double>> q, qd;  // per dof, the initial coordinates
-  int floating_bases = 0;
+}  // namespace
 
-  Builder(const RobotModel& m, const RobotSystemOptions& o, RobotTree t)
-      : model(m), options(o), tree(std::move(t)) {}
+namespace detail {
 
-  const RobotJointSpec* spec_of(std::size_t k) const {
-    const int j = tree.joint_of_link[k];
-    return j < 0 ? nullptr : &tree.joints[static_cast<std::size_t>(j)];
+/// Parents before children; a cycle of joints is a kinematic loop.
+void RobotSystemBuilder::sort_links() {
+  const std::size_t n = model.links.size();
+  std::vector<int> state(n, 0);  // 0 new, 1 on the path, 2 done
+  for (std::size_t start = 0; start < n; ++start) {
+    std::vector<int> path;
+    int k = static_cast<int>(start);
+    while (k >= 0 && state[static_cast<std::size_t>(k)] == 0) {
+      state[static_cast<std::size_t>(k)] = 1;
+      path.push_back(k);
+      const RobotJointSpec* j = spec_of(static_cast<std::size_t>(k));
+      k = j == nullptr ? -1 : j->parent;
+    }
+    if (k >= 0 && state[static_cast<std::size_t>(k)] == 1) {
+      const RobotJointSpec& j = *spec_of(static_cast<std::size_t>(path.back()));
+      throw InvalidInput(
+          fmt::format("{}: its parents lead back to link \"{}\": a kinematic loop; expected "
+                      "a tree (close loops with MJCF <equality>)",
+                      where(j), model.links[static_cast<std::size_t>(k)].name));
+    }
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+      state[static_cast<std::size_t>(*it)] = 2;
+      order.push_back(*it);
+    }
   }
-  std::string where(const RobotJointSpec& j) const { return line_of(model.source, j.line, j.element); }
-  std::string where_link(std::size_t k) const {
-    return line_of(model.source, model.links[k].line,
-                   fmt::format("<{} name=\"{}\">", model.format == RobotFormat::mjcf ? "body" : "link",
-                               model.links[k].name));
-  }
+}
 
-  /// Parents before children; a cycle of joints is a kinematic loop.
-  void sort_links() {
-    const std::size_t n = model.links.size();
-    std::vector<int> state(n, 0);  // 0 new, 1 on the path, 2 done
-    for (std::size_t start = 0; start < n; ++start) {
-      std::vector<int> path;
-      int k = static_cast<int>(start);
-      while (k >= 0 && state[static_cast<std::size_t>(k)] == 0) {
-        state[static_cast<std::size_t>(k)] = 1;
-        path.push_back(k);
-        const RobotJointSpec* j = spec_of(static_cast<std::size_t>(k));
-        k = j == nullptr ? -1 : j->parent;
+void RobotSystemBuilder::read_coordinates() {
+  for (const RobotJointSpec& j : tree.joints)
+    for (const RobotDof& d : j.dofs)
+      dofs_by_name[d.name].push_back(&d);
+  const auto expected = [&](const std::string& name, std::size_t count, bool velocity) {
+    const RobotDof& d = *dofs_by_name.at(name).front();
+    if (d.kind == RobotDof::Kind::ball) {
+      return velocity ? std::string("[wx, wy, wz] (rad/s, the child's frame) for a ball joint")
+                      : std::string("[w, x, y, z] (a unit quaternion) for a ball joint");
+    }
+    if (count == 2) return std::string("[a, b] (rad, about axis then axis2) for a universal joint");
+    return fmt::format(
+        "a number ({}) for a {} joint",
+        d.kind == RobotDof::Kind::slide ? (velocity ? "m/s" : "m") : (velocity ? "rad/s" : "rad"),
+        d.kind == RobotDof::Kind::slide ? "prismatic" : "hinge");
+  };
+  for (const auto* given : {&options.positions, &options.velocities}) {
+    const bool velocity = given == &options.velocities;
+    const char* key = velocity ? "velocities" : "positions";
+    for (const auto& [name, values] : *given) {
+      const auto it = dofs_by_name.find(name);
+      if (it == dofs_by_name.end()) {
+        std::string names;
+        for (const auto& [n, d] : dofs_by_name)
+          names += (names.empty() ? "\"" : ", \"") + n + "\"";
+        throw InvalidInput(fmt::format("{}.{}: no moving joint of that name in {}; expected one of {}", key,
+                                       name, model.source, names.empty() ? "(none)" : names));
       }
-      if (k >= 0 && state[static_cast<std::size_t>(k)] == 1) {
-        const RobotJointSpec& j = *spec_of(static_cast<std::size_t>(path.back()));
-        throw InvalidInput(
-            fmt::format("{}: its parents lead back to link \"{}\": a kinematic loop; expected "
-                        "a tree (close loops with MJCF <equality>)",
-                        where(j), model.links[static_cast<std::size_t>(k)].name));
+      const auto [np, nv] = value_counts(it->second);
+      const std::size_t count = velocity ? nv : np;
+      if (values.size() != count) {
+        throw InvalidInput(fmt::format("{}.{}: got {} value(s), expected {}", key, name, values.size(),
+                                       expected(name, count, velocity)));
       }
-      for (auto it = path.rbegin(); it != path.rend(); ++it) {
-        state[static_cast<std::size_t>(*it)] = 2;
-        order.push_back(*it);
+      std::size_t offset = 0;
+      for (const RobotDof* d : it->second) {
+        const std::size_t m =
+            velocity ? (d->kind == RobotDof::Kind::ball ? 3 : 1) : (d->kind == RobotDof::Kind::ball ? 4 : 1);
+        std::vector<double> v(values.begin() + static_cast<std::ptrdiff_t>(offset),
+                              values.begin() + static_cast<std::ptrdiff_t>(offset + m));
+        offset += m;
+        if (!velocity && d->kind == RobotDof::Kind::ball) {
+          const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
+          if (!(norm > 1e-12))
+            throw InvalidInput(
+                fmt::format("{}.{}: got a zero quaternion, expected [w, x, y, z] with a "
+                            "non-zero norm",
+                            key, name));
+          for (double& x : v)
+            x /= norm;
+        }
+        // A position is kept as the displacement from the file's pose (q − reference).
+        if (!velocity && d->kind != RobotDof::Kind::ball) v[0] -= d->reference;
+        (velocity ? qd : q)[d] = std::move(v);
       }
     }
   }
+}
 
-  void read_coordinates() {
-    for (const RobotJointSpec& j : tree.joints)
-      for (const RobotDof& d : j.dofs)
-        dofs_by_name[d.name].push_back(&d);
-    const auto expected = [&](const std::string& name, std::size_t count, bool velocity) {
-      const RobotDof& d = *dofs_by_name.at(name).front();
-      if (d.kind == RobotDof::Kind::ball) {
-        return velocity ? std::string("[wx, wy, wz] (rad/s, the child's frame) for a ball joint")
-                        : std::string("[w, x, y, z] (a unit quaternion) for a ball joint");
-      }
-      if (count == 2) return std::string("[a, b] (rad, about axis then axis2) for a universal joint");
-      return fmt::format(
-          "a number ({}) for a {} joint",
-          d.kind == RobotDof::Kind::slide ? (velocity ? "m/s" : "m") : (velocity ? "rad/s" : "rad"),
-          d.kind == RobotDof::Kind::slide ? "prismatic" : "hinge");
-    };
-    for (const auto* given : {&options.positions, &options.velocities}) {
-      const bool velocity = given == &options.velocities;
-      const char* key = velocity ? "velocities" : "positions";
-      for (const auto& [name, values] : *given) {
-        const auto it = dofs_by_name.find(name);
-        if (it == dofs_by_name.end()) {
-          std::string names;
-          for (const auto& [n, d] : dofs_by_name)
-            names += (names.empty() ? "\"" : ", \"") + n + "\"";
-          throw InvalidInput(fmt::format("{}.{}: no moving joint of that name in {}; expected one of {}", key,
-                                         name, model.source, names.empty() ? "(none)" : names));
-        }
-        const auto [np, nv] = value_counts(it->second);
-        const std::size_t count = velocity ? nv : np;
-        if (values.size() != count) {
-          throw InvalidInput(fmt::format("{}.{}: got {} value(s), expected {}", key, name, values.size(),
-                                         expected(name, count, velocity)));
-        }
-        std::size_t offset = 0;
-        for (const RobotDof* d : it->second) {
-          const std::size_t m = velocity ? (d->kind == RobotDof::Kind::ball ? 3 : 1)
-                                         : (d->kind == RobotDof::Kind::ball ? 4 : 1);
-          std::vector<double> v(values.begin() + static_cast<std::ptrdiff_t>(offset),
-                                values.begin() + static_cast<std::ptrdiff_t>(offset + m));
-          offset += m;
-          if (!velocity && d->kind == RobotDof::Kind::ball) {
-            const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2] + v[3] * v[3]);
-            if (!(norm > 1e-12))
-              throw InvalidInput(
-                  fmt::format("{}.{}: got a zero quaternion, expected [w, x, y, z] with a "
-                              "non-zero norm",
-                              key, name));
-            for (double& x : v)
-              x /= norm;
-          }
-          // A position is kept as the displacement from the file's pose (q − reference).
-          if (!velocity && d->kind != RobotDof::Kind::ball) v[0] -= d->reference;
-          (velocity ? qd : q)[d] = std::move(v);
-        }
-      }
+/// Poses (at the initial and at the file's coordinates) and twists of every link.
+void RobotSystemBuilder::pose_links() {
+  const std::size_t n = model.links.size();
+  pose.assign(n, {});
+  pose0.assign(n, {});
+  twist.assign(n, {});
+  for (const int k : order) {
+    const std::size_t u = static_cast<std::size_t>(k);
+    const RobotJointSpec* j = spec_of(u);
+    if (j == nullptr) {  // a URDF root: at the origin of space
+      pose[u] = pose0[u] = RigidPose{};
+      if (options.floating_base) set_base(u);
+      continue;
     }
-  }
-
-  const double* coordinate(const RobotDof& d, bool velocity) const {
-    static const double zero_q[4] = {1.0, 0.0, 0.0, 0.0};  // the identity quaternion for a ball
-    static const double zeros[4] = {0.0, 0.0, 0.0, 0.0};
-    const auto& map = velocity ? qd : q;
-    const auto it = map.find(&d);
-    if (it != map.end()) return it->second.data();
-    return (!velocity && d.kind == RobotDof::Kind::ball) ? zero_q : zeros;
-  }
-
-  /// Poses (at the initial and at the file's coordinates) and twists of every link.
-  void pose_links() {
-    const std::size_t n = model.links.size();
-    pose.assign(n, {});
-    pose0.assign(n, {});
-    twist.assign(n, {});
-    for (const int k : order) {
-      const std::size_t u = static_cast<std::size_t>(k);
-      const RobotJointSpec* j = spec_of(u);
-      if (j == nullptr) {  // a URDF root: at the origin of space
-        pose[u] = pose0[u] = RigidPose{};
-        if (options.floating_base) set_base(u);
-        continue;
-      }
-      const RigidPose parent = j->parent < 0 ? RigidPose{} : pose[static_cast<std::size_t>(j->parent)];
-      const RigidPose parent0 = j->parent < 0 ? RigidPose{} : pose0[static_cast<std::size_t>(j->parent)];
-      const Twist parent_twist = j->parent < 0 ? Twist{} : twist[static_cast<std::size_t>(j->parent)];
-      pose0[u] = parent0 * j->parent_child;
-      if (j->kind == RobotJointKind::free) {
-        pose[u] = parent * j->parent_child;
-        if (model.format != RobotFormat::urdf) set_base(u);  // a URDF floating joint: at rest
-        continue;
-      }
-      RigidPose f = parent * j->parent_child;
-      Twist t = parent_twist;
-      for (const RobotDof& d : j->dofs) {
-        const double* qv = coordinate(d, false);
-        const double* wv = coordinate(d, true);
-        const RigidPose after = f * dof_motion(d, qv);
-        const Vec3 anchor = f * d.anchor_child;
-        switch (d.kind) {
-          case RobotDof::Kind::hinge: {
-            const Vec3 w = (f.R * d.axis_child) * wv[0];
-            t.omega += w;
-            t.v0 -= w.cross(anchor);
-            break;
-          }
-          case RobotDof::Kind::slide:
-            t.v0 += (f.R * d.axis_child) * wv[0];
-            break;
-          case RobotDof::Kind::ball: {
-            const Vec3 w = after.R * Vec3(wv[0], wv[1], wv[2]);
-            t.omega += w;
-            t.v0 -= w.cross(anchor);
-            break;
-          }
-        }
-        f = after;
-      }
-      pose[u] = f;
-      twist[u] = t;
+    const RigidPose parent = j->parent < 0 ? RigidPose{} : pose[static_cast<std::size_t>(j->parent)];
+    const RigidPose parent0 = j->parent < 0 ? RigidPose{} : pose0[static_cast<std::size_t>(j->parent)];
+    const Twist parent_twist = j->parent < 0 ? Twist{} : twist[static_cast<std::size_t>(j->parent)];
+    pose0[u] = parent0 * j->parent_child;
+    if (j->kind == RobotJointKind::free) {
+      pose[u] = parent * j->parent_child;
+      if (model.format != RobotFormat::urdf) set_base(u);  // a URDF floating joint: at rest
+      continue;
     }
-  }
-
-  /// The floating base: the URDF root with floating_base, or a free body of MJCF or SDF.
-  void set_base(std::size_t u) {
-    ++floating_bases;
-    if (options.base_position) pose[u].p = *options.base_position;
-    if (options.base_rotation) pose[u].R = *options.base_rotation;
-    Twist t;
-    t.omega = pose[u].R * options.base_omega_body.value_or(Vec3::Zero());
-    t.v0 = options.base_velocity.value_or(Vec3::Zero()) - t.omega.cross(pose[u].p);
+    RigidPose f = parent * j->parent_child;
+    Twist t = parent_twist;
+    for (const RobotDof& d : j->dofs) {
+      const double* qv = coordinate(d, false);
+      const double* wv = coordinate(d, true);
+      const RigidPose after = f * dof_motion(d, qv);
+      const Vec3 anchor = f * d.anchor_child;
+      switch (d.kind) {
+        case RobotDof::Kind::hinge: {
+          const Vec3 w = (f.R * d.axis_child) * wv[0];
+          t.omega += w;
+          t.v0 -= w.cross(anchor);
+          break;
+        }
+        case RobotDof::Kind::slide:
+          t.v0 += (f.R * d.axis_child) * wv[0];
+          break;
+        case RobotDof::Kind::ball: {
+          const Vec3 w = after.R * Vec3(wv[0], wv[1], wv[2]);
+          t.omega += w;
+          t.v0 -= w.cross(anchor);
+          break;
+        }
+      }
+      f = after;
+    }
+    pose[u] = f;
     twist[u] = t;
   }
+}
 
-  /// Bodies: every link with mass, except those fixed to the world; links without mass attached by a fixed
-  /// joint become frames of their parent's body (or of the world).
-  void place_links() {
-    const std::size_t n = model.links.size();
-    place.assign(n, {});
-    inertia.resize(n);
-    for (std::size_t k = 0; k < n; ++k)
-      inertia[k] = link_inertia(model, tree, k, options.inertia);
-    for (const int k : order) {
-      const std::size_t u = static_cast<std::size_t>(k);
-      const RobotJointSpec* j = spec_of(u);
-      const bool root = j == nullptr;
-      const bool moves = root ? options.floating_base : j->kind != RobotJointKind::fixed;
-      const bool massive = inertia[u].props.mass > 0.0;
-      if (!moves && !massive) {  // a frame of its parent (or of the world)
-        if (root || j->parent < 0) {
-          place[u] = {kWorld, pose0[u], false};
-        } else {
-          const LinkPlace& p = place[static_cast<std::size_t>(j->parent)];
-          place[u] = {p.body, p.in_body * j->parent_child, false};
-        }
-        continue;
-      }
-      if (root && !moves) {  // a URDF root fixed to the world: the world itself when it has no mass
-        place[u] = {kWorld, RigidPose{}, false};
-        if (!massive) continue;
-      }
-      if (!massive) {
-        throw InvalidInput(fmt::format("{}: mass {} kg on a link that moves ({}); expected a mass > 0",
-                                       where_link(u), format_number(inertia[u].props.mass),
-                                       root ? "the floating base" : j->element));
-      }
-      add_body(u);
-    }
-  }
+/// The floating base: the URDF root with floating_base, or a free body of MJCF or SDF.
+void RobotSystemBuilder::set_base(std::size_t u) {
+  ++floating_bases;
+  if (options.base_position) pose[u].p = *options.base_position;
+  if (options.base_rotation) pose[u].R = *options.base_rotation;
+  Twist t;
+  t.omega = pose[u].R * options.base_omega_body.value_or(Vec3::Zero());
+  t.v0 = options.base_velocity.value_or(Vec3::Zero()) - t.omega.cross(pose[u].p);
+  twist[u] = t;
+}
 
-  void add_body(std::size_t u) {
-    const RobotLink& link = model.links[u];
-    const LinkInertia& li = inertia[u];
-    try {
-      sc.system.add_body(link.name, li.props.mass, inertia::poinsot_from_inertia(li.props.inertia_com));
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(fmt::format("{}: {}", where_link(u), e.what()));
-    }
-    place[u] = {sc.system.body_count() - 1, RigidPose{}, true};
-    link_of_body.push_back(u);
-    multibody::BodyState s;
-    s.R_space_body = pose[u].R;
-    s.x_space = pose[u] * li.props.com;
-    s.v_space = twist[u].at(s.x_space);
-    s.omega_body = pose[u].R.transpose() * twist[u].omega;
-    sc.initial.bodies.push_back(s);
-    sc.body_descriptions.push_back(fmt::format("line {} of the file, inertia {}", link.line, li.how));
-    sc.body_surfaces.push_back(nullptr);
-  }
-
-  /// The body frame (from the centre of mass) coordinates of a point given in link k's frame.
-  Vec3 body_point(std::size_t k, const Vec3& x_link) const {
-    const LinkPlace& p = place[k];
-    const Vec3 x = p.in_body * x_link;
-    if (p.body == kWorld) return x;
-    return x - inertia[body_link(p.body)].props.com;
-  }
-  /// The link of body b.
-  std::size_t body_link(int b) const { return link_of_body[static_cast<std::size_t>(b)]; }
-  /// Link k's frame in its body's link frame at the initial state (space for the world).
-  RigidPose body_frame(int b) const {
-    if (b == kWorld) return RigidPose{};
-    return pose[body_link(b)];
-  }
-  RigidPose body_frame0(int b) const {
-    if (b == kWorld) return RigidPose{};
-    return pose0[body_link(b)];
-  }
-
-  void add_joints() {
-    for (const int k : order) {
-      const std::size_t u = static_cast<std::size_t>(k);
-      const RobotJointSpec* j = spec_of(u);
-      const LinkPlace& child = place[u];
-      if (!child.own) continue;  // a frame of another body or of the world
-      if (j != nullptr && j->kind == RobotJointKind::free) continue;
-      if (j == nullptr && options.floating_base) continue;
-      const int a = child.body;
-      // The parent's body b and the child's frame in b's link frame, at the file's and the initial pose.
-      const int b = j == nullptr || j->parent < 0 ? kWorld : place[static_cast<std::size_t>(j->parent)].body;
-      const RigidPose b_frame = body_frame(b);
-      const RigidPose b_child = b_frame.inverse() * pose[u];  // the child's frame in b's, now
-      const Vec3 c_b = b == kWorld ? Vec3::Zero() : inertia[body_link(b)].props.com;
-      const Vec3 c_a = inertia[u].props.com;
-      const std::string name = j == nullptr ? model.links[u].name : j->name;
-      const auto located = [&](auto&& f) {
-        try {
-          return f();
-        } catch (const InvalidInput& e) {
-          throw InvalidInput(fmt::format("{}: {}", j != nullptr ? where(*j) : where_link(u), e.what()));
-        }
-      };
-      if (j == nullptr || j->kind == RobotJointKind::fixed) {
-        located([&] { return sc.system.add_weld(name, a, -c_a, b, b_child.p - c_b, b_child.R); });
-        continue;
+/// Bodies: every link with mass, except those fixed to the world; links without mass attached by a fixed
+/// joint become frames of their parent's body (or of the world).
+void RobotSystemBuilder::place_links() {
+  const std::size_t n = model.links.size();
+  place.assign(n, {});
+  inertia.resize(n);
+  for (std::size_t k = 0; k < n; ++k)
+    inertia[k] = link_inertia(model, tree, k, options.inertia);
+  for (const int k : order) {
+    const std::size_t u = static_cast<std::size_t>(k);
+    const RobotJointSpec* j = spec_of(u);
+    const bool root = j == nullptr;
+    const bool moves = root ? options.floating_base : j->kind != RobotJointKind::fixed;
+    const bool massive = inertia[u].props.mass > 0.0;
+    if (!moves && !massive) {  // a frame of its parent (or of the world)
+      if (root || j->parent < 0) {
+        place[u] = {kWorld, pose0[u], false};
+      } else {
+        const LinkPlace& p = place[static_cast<std::size_t>(j->parent)];
+        place[u] = {p.body, p.in_body * j->parent_child, false};
       }
-      add_moving_joint(*j, a, b, b_child, c_a, c_b, located);
+      continue;
     }
+    if (root && !moves) {  // a URDF root fixed to the world: the world itself when it has no mass
+      place[u] = {kWorld, RigidPose{}, false};
+      if (!massive) continue;
+    }
+    if (!massive) {
+      throw InvalidInput(fmt::format("{}: mass {} kg on a link that moves ({}); expected a mass > 0",
+                                     where_link(u), format_number(inertia[u].props.mass),
+                                     root ? "the floating base" : j->element));
+    }
+    add_body(u);
   }
+}
 
-  template <class Located>
-  void add_moving_joint(const RobotJointSpec& j, int a, int b, const RigidPose& b_child, const Vec3& c_a,
-                        const Vec3& c_b, Located&& located) {
-    // The frame before the joint's motions, in b's link frame: the anchors and the first axis are fixed in
-    // it.
-    const std::size_t parent_link = static_cast<std::size_t>(j.parent);
-    const RigidPose b_before = j.parent < 0 ? j.parent_child : place[parent_link].in_body * j.parent_child;
-    const auto& dofs = j.dofs;
-    std::string name;
-    for (const RobotDof& d : dofs)
-      if (name.find(d.name) == std::string::npos) name += (name.empty() ? "" : "+") + d.name;
-    const Vec3 anchor = dofs.front().anchor_child;
-    const double scale = std::max(1.0, anchor.norm());
-    const bool same_anchor = std::all_of(dofs.begin(), dofs.end(), [&](const RobotDof& d) {
-      return (d.anchor_child - anchor).norm() <= 1e-12 * scale;
-    });
-    const bool all_hinges = std::all_of(dofs.begin(), dofs.end(),
-                                        [](const RobotDof& d) { return d.kind == RobotDof::Kind::hinge; });
-    const Vec3 pa = anchor - c_a;
-    const Vec3 pb = b_before * anchor - c_b;
-    // A hinge's or slide's spring-damper acts on its displacement from the file's configuration, where the
-    // child's frame is b_before; a slide's points coincide at its initial displacement.
-    const auto add_spring = [&](int joint) {
-      const RobotDof& d = dofs[0];
-      if (d.stiffness == 0.0 && d.damping == 0.0) return;
-      if (!options.joint_springs) {
-        sc.not_modelled.push_back(
-            fmt::format("{}: the spring and damper of \"{}\" (left out by the options)", where(j), d.name));
-        return;
-      }
-      multibody::JointSpring s;
-      s.joint = joint;
-      s.stiffness = d.stiffness;
-      s.damping = d.damping;
-      s.rest_position = d.spring_reference - d.reference;
-      s.R_b_a_zero = b_before.R;
-      s.offset = coordinate(d, false)[0];
-      located([&] { return sc.system.add_joint_spring(s); });
-    };
-    if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::hinge) {
-      add_spring(located([&] {
-        return sc.system.add_hinge(name, a, pa, dofs[0].axis_child, b, pb, b_before.R * dofs[0].axis_child);
-      }));
-      return;
-    }
-    if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::slide) {
-      add_spring(located([&] {
-        return sc.system.add_prismatic(name, a, pa, dofs[0].axis_child, b, b_child * anchor - c_b, b_child.R);
-      }));
-      return;
-    }
-    std::string sprung;
-    for (const RobotDof& d : dofs) {
-      if (d.stiffness != 0.0 || d.damping != 0.0) sprung += (sprung.empty() ? "\"" : ", \"") + d.name + "\"";
-    }
-    if (!sprung.empty()) {
-      sc.not_modelled.push_back(fmt::format(
-          "{}: the springs and dampers of {} (joints of one body merged into a universal or ball joint)",
-          where(j), sprung));
-    }
-    if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::ball) {
-      located([&] { return sc.system.add_ball(name, a, pa, b, pb); });
-      return;
-    }
-    if (same_anchor && all_hinges && dofs.size() == 2 &&
-        std::abs(dofs[0].axis_child.dot(dofs[1].axis_child)) <= 1e-12) {
-      located([&] {
-        return sc.system.add_universal(name, a, pa, dofs[1].axis_child, b, pb,
-                                       b_before.R * dofs[0].axis_child);
-      });
-      return;
-    }
-    if (same_anchor && all_hinges && dofs.size() == 3) {
-      Mat3 axes;
-      axes << dofs[0].axis_child, dofs[1].axis_child, dofs[2].axis_child;
-      if (std::abs(axes.determinant()) > 1e-9) {
-        located([&] { return sc.system.add_ball(name, a, pa, b, pb); });
-        return;
-      }
-    }
-    std::string list;
-    for (const RobotDof& d : dofs)
-      list += fmt::format("{}{} \"{}\" (line {})", list.empty() ? "" : ", ",
-                          d.kind == RobotDof::Kind::hinge   ? "hinge"
-                          : d.kind == RobotDof::Kind::slide ? "slide"
-                                                            : "ball",
-                          d.name, d.line);
-    throw InvalidInput(fmt::format(
-        "{}: the joints {} of one body are not supported together{}; expected one hinge, slide or ball, two "
-        "perpendicular hinges about one point (a universal joint) or three hinges about one point (a ball "
-        "joint)",
-        where(j), list, same_anchor ? "" : " (their anchors differ)"));
+void RobotSystemBuilder::add_body(std::size_t u) {
+  const RobotLink& link = model.links[u];
+  const LinkInertia& li = inertia[u];
+  try {
+    sc.system.add_body(link.name, li.props.mass, inertia::poinsot_from_inertia(li.props.inertia_com));
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(fmt::format("{}: {}", where_link(u), e.what()));
   }
+  place[u] = {sc.system.body_count() - 1, RigidPose{}, true};
+  link_of_body.push_back(u);
+  multibody::BodyState s;
+  s.R_space_body = pose[u].R;
+  s.x_space = pose[u] * li.props.com;
+  s.v_space = twist[u].at(s.x_space);
+  s.omega_body = pose[u].R.transpose() * twist[u].omega;
+  sc.initial.bodies.push_back(s);
+  sc.body_descriptions.push_back(fmt::format("line {} of the file, inertia {}", link.line, li.how));
+  sc.body_surfaces.push_back(nullptr);
+}
 
-  /// Each body's drawn surface (view.html): the shapes of its link and of the frames merged into it, about
-  /// its centre of mass in its frame; meshes are not drawn.
-  void add_surfaces() {
-    std::vector<inertia::TriangleMesh> surfaces(static_cast<std::size_t>(sc.system.body_count()));
-    for (std::size_t k = 0; k < place.size(); ++k) {
-      if (place[k].body == kWorld) continue;
-      const std::size_t b = static_cast<std::size_t>(place[k].body);
-      const Vec3 com = inertia[link_of_body[b]].props.com;
-      for (const LinkGeometry& g : model.links[k].geometry) {
-        if (g.shape.kind == "mesh") continue;
-        inertia::TriangleMesh part;
-        try {
-          part = inertia::tessellate(g.shape, inertia::kDrawnSurfaceSegments);
-        } catch (const InvalidInput&) {
-          continue;  // a shape too degenerate to draw; its mass is already accounted for or refused
-        }
-        inertia::TriangleMesh& m = surfaces[b];
-        const auto offset = static_cast<std::int32_t>(m.vertices.size());
-        for (const Vec3& v : part.vertices)
-          m.vertices.push_back(place[k].in_body * (g.R_link_geometry * v + g.position_link) - com);
-        for (const auto& t : part.triangles)
-          m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
-      }
-    }
-    for (std::size_t b = 0; b < surfaces.size(); ++b) {
-      if (!surfaces[b].triangles.empty())
-        sc.body_surfaces[b] = std::make_shared<const inertia::TriangleMesh>(std::move(surfaces[b]));
-    }
-  }
-
-  void add_loops() {
-    for (const detail::RobotLoopSpec& loop : tree.loops) {
-      const std::size_t l1 = static_cast<std::size_t>(loop.body1);
-      int b1 = place[l1].body;
-      // body1's anchor in space at the file's configuration.
-      const Vec3 anchor_space = pose0[l1] * loop.anchor1;
-      int b2 = loop.body2 < 0 ? kWorld : place[static_cast<std::size_t>(loop.body2)].body;
-      const auto frame0 = [&](int b) { return body_frame0(b); };
-      const auto com = [&](int b) { return b == kWorld ? Vec3::Zero() : inertia[body_link(b)].props.com; };
-      if (b1 == kWorld) std::swap(b1, b2);
-      if (b1 == kWorld || b1 == b2) {
-        throw InvalidInput(
-            fmt::format("{}:{}: {}: both sides are fixed to the same body; expected two bodies "
-                        "that move relative to each other",
-                        model.source, loop.line, loop.element));
-      }
-      const Vec3 pa = frame0(b1).inverse() * anchor_space - com(b1);
-      const Vec3 pb = frame0(b2).inverse() * anchor_space - com(b2);
+/// Each body's drawn surface (view.html): the shapes of its link and of the frames merged into it, about
+/// its centre of mass in its frame; meshes are not drawn.
+void RobotSystemBuilder::add_surfaces() {
+  std::vector<inertia::TriangleMesh> surfaces(static_cast<std::size_t>(sc.system.body_count()));
+  for (std::size_t k = 0; k < place.size(); ++k) {
+    if (place[k].body == kWorld) continue;
+    const std::size_t b = static_cast<std::size_t>(place[k].body);
+    const Vec3 com = inertia[link_of_body[b]].props.com;
+    for (const LinkGeometry& g : model.links[k].geometry) {
+      if (g.shape.kind == "mesh") continue;
+      inertia::TriangleMesh part;
       try {
-        if (loop.weld) {
-          const Mat3 R_b_a = frame0(b2).R.transpose() * frame0(b1).R;
-          sc.system.add_weld(loop.name, b1, pa, b2, pb, R_b_a);
-        } else {
-          sc.system.add_ball(loop.name, b1, pa, b2, pb);
-        }
-      } catch (const InvalidInput& e) {
-        throw InvalidInput(fmt::format("{}:{}: {}: {}", model.source, loop.line, loop.element, e.what()));
+        part = inertia::tessellate(g.shape, inertia::kDrawnSurfaceSegments);
+      } catch (const InvalidInput&) {
+        continue;  // a shape too degenerate to draw; its mass is already accounted for or refused
       }
-    }
-    if (!tree.loops.empty()) {
-      sc.not_modelled.push_back(
-          "<equality> softness (solref, solimp): the loops are closed exactly, as joints");
+      inertia::TriangleMesh& m = surfaces[b];
+      const auto offset = static_cast<std::int32_t>(m.vertices.size());
+      for (const Vec3& v : part.vertices)
+        m.vertices.push_back(place[k].in_body * (g.R_link_geometry * v + g.position_link) - com);
+      for (const auto& t : part.triangles)
+        m.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
     }
   }
-};
+  for (std::size_t b = 0; b < surfaces.size(); ++b) {
+    if (!surfaces[b].triangles.empty())
+      sc.body_surfaces[b] = std::make_shared<const inertia::TriangleMesh>(std::move(surfaces[b]));
+  }
+}
+
+}  // namespace detail
+
+namespace {
 
 detail::RobotTree read_tree(const RobotModel& model) {
   const detail::XmlSource xml(model.text, model.source);
@@ -611,7 +379,7 @@ detail::RobotTree read_tree(const RobotModel& model) {
 }  // namespace
 
 multibody::Scenario robot_scenario(const RobotModel& model, const RobotSystemOptions& options) {
-  Builder bld(model, options, read_tree(model));
+  detail::RobotSystemBuilder bld(model, options, read_tree(model));
   bld.sc.source = model.source;
   bld.sc.title = fmt::format("{} model ({} links)", to_string(model.format), model.links.size());
   bld.sort_links();
