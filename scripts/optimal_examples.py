@@ -28,6 +28,7 @@ EXAMPLES = {
     "racket_spin_phase": (("indirect", "cost"), 12 * 0.01638**2 * 0.5**2 / 30.0**3, 1e-10),  # closed form
     "tennis_racket_stop": (("indirect", "final_time"), 10.292254477563144, 1e-12),  # ‖J ω_0‖/ū
     "two_link_arm": (("solution", "cost"), 39.3527635152, 1e-9),       # the 64-interval optimum
+    "two_link_arm_urdf": (("solution", "cost"), 39.3527635152, 1e-9),  # the same arm from its URDF
     "falling_cat": (("solution", "cost"), 0.243543547267, 1e-9),       # the 12-interval optimum
     # the active cone: the direct solution (mesh tolerance 1e-7) of the cone widened by 4e-6 rad
     "sun_avoidance_slew": (("direct", "final_time"), 28.0846451, 1e-6, 3),

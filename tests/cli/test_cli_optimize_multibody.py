@@ -1,6 +1,7 @@
 """`poinsot optimize` on multibody scenarios: closed-form problems in both coordinates (with and without a
 rate bound), the files and --json, re-simulation of the reported control, bad input (exit 2, nothing
-written), non-convergence (exit 1, files marked "not converged") and bit-identical reruns. The arm example is
+written), non-convergence (exit 1, files marked "not converged"), bit-identical reruns, and a robot file planned by its
+joints' names. The arm example is
 solved by python/tests/test_optimize_multibody.py (its minimal-coordinate solve takes seconds, far more under
 the sanitizers, which run these files too)."""
 import json
@@ -132,6 +133,49 @@ def test_rate_bound_meets_the_closed_form(cli, tmp_path):
     assert r * (1 - 1e-8) < peak["peak_rate"] < r + 2e-8  # active, and respected to Ipopt's relaxation
     assert "rate bound: |q̇ motor| ≤ 0.75 rad/s" in res.stdout
     assert summary["replay"]["target_reached"] is True
+
+
+# The rod of HINGE as a URDF link on a revolute joint whose limits the plan leaves out (and lists).
+URDF_ROD = """<robot name="rod"><link name="base"/>
+<joint name="motor" type="revolute"><parent link="base"/><child link="rod"/><axis xyz="0 0 1"/>
+  <limit lower="-3" upper="3" effort="50" velocity="5"/></joint>
+<link name="rod"><inertial><origin xyz="0.5 0 0"/><mass value="1"/>
+  <inertia ixx="0.00125" iyy="{j!r}" izz="{j!r}" ixy="0" ixz="0" iyz="0"/></inertial></link>
+</robot>
+"""
+URDF_ROD_SCENARIO = """[simulation]
+gravity = [0, 0, 0]
+[model]
+file = "rod.urdf"
+[optimal_control]
+final_time = 2.0
+coordinates = "minimal"
+intervals = 4
+actuators = [{{ joint = "motor", torque_max = 50 }}]
+final_positions = {{ motor = {theta} }}
+"""
+
+
+def test_a_robot_file_is_planned_by_its_joint_names(cli, tmp_path):
+    # The closed form of the hinged rod, with the actuator and the target named by the file's joint; the
+    # report and summary.json list what the file states and the plan leaves out.
+    (tmp_path / "rod.urdf").write_text(URDF_ROD.format(j=(3 * 0.05**2 + 1.0) / 12))
+    scenario = tmp_path / "rod.toml"
+    scenario.write_text(URDF_ROD_SCENARIO.format(theta=THETA))
+    out = tmp_path / "out"
+    r = cli("optimize", scenario, "--out", out)
+    assert r.returncode == 0, r.stderr + r.stdout
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["solution"]["cost"] == pytest.approx(12 * I_HINGE**2 * THETA**2 / T**3, rel=1e-9)
+    assert summary["problem"]["not_modelled"] == ['<joint name="motor"> line 2: joint limits']
+    report = (out / "report.txt").read_text()
+    assert ("not modelled (the file states them; the plan leaves them out):\n"
+            '    - <joint name="motor"> line 2: joint limits\n') in report
+    scenario.write_text(URDF_ROD_SCENARIO.format(theta=THETA).replace("motor = ", "elbow = "))
+    r = cli("optimize", scenario, "--out", tmp_path / "bad")
+    assert r.returncode == 2 and r.stderr.count("\n") == 1
+    assert "[optimal_control] final_positions: final_positions.elbow: no moving joint of that name" in r.stderr
+    assert not (tmp_path / "bad").exists()
 
 
 @pytest.mark.parametrize("extra, fragment", [

@@ -72,7 +72,7 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
     if (d.stiffness == 0.0 && d.damping == 0.0) return;
     if (!options.joint_springs) {
       sc.not_modelled.push_back(
-          fmt::format("{}: the spring and damper of \"{}\" (left out by the options)", where(j), d.name));
+          fmt::format("{}: the spring and damper of \"{}\" (left out: joint_springs = false)", where(j), d.name));
       return;
     }
     multibody::JointSpring s;

@@ -134,6 +134,7 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
   if (!sc.title.empty()) out << "  " << sc.title << "\n";
   out << fmt::format("system: {} bodies, {} joints, gravity {} m/s²\n", p.system.body_count(),
                      p.system.joint_count(), format_vector(p.system.gravity()));
+  out << detail::not_modelled_block(sc.model.not_modelled, "plan");
   if (p.objective == optimal::MultibodyObjective::minimum_energy) {
     out << fmt::format("objective: minimum_energy (∫ Σ u² dt) at T = {} s", report_number(p.final_time, 12));
   } else {
@@ -253,7 +254,8 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
                   {"stabilisation_step", sc.options.stabilisation_step},
                   {"final_time_bounds", {p.final_time_min, p.final_time_max}},
                   {"energy_weight", p.energy_weight},
-                  {"mesh_sequence", meshes}};
+                  {"mesh_sequence", meshes},
+                  {"not_modelled", sc.model.not_modelled}};
   j["solution"] = {{"converged", o.converged},
                    {"final_time", o.time.empty() ? p.final_time : o.time.back()},
                    {"status", o.status},

@@ -107,11 +107,7 @@ std::string format_multibody_report(const multibody::Scenario& sc, const Multibo
     }
     i = j;
   }
-  if (!sc.not_modelled.empty()) {
-    fmt::format_to(o, "  not modelled (the file states them; the run leaves them out):\n");
-    for (const std::string& line : sc.not_modelled)
-      fmt::format_to(o, "    - {}\n", line);
-  }
+  fmt::format_to(o, "{}", detail::not_modelled_block(sc.not_modelled, "run"));
 
   fmt::format_to(o, "\nrun\n  method: {}\n", method_description(sc));
   fmt::format_to(o, "  dt = {} s, duration = {} s, a row every {} steps ({} rows)\n", report_number(sc.dt),

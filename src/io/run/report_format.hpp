@@ -4,6 +4,8 @@
 /// significant digits (6 unless stated), a vector as "(x, y, z)" of such numbers.
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -21,6 +23,17 @@ inline std::string report_number(double x, int digits = 6) {
 inline std::string report_vector(const Vec3& v, int digits = 6) {
   return fmt::format("({}, {}, {})", report_number(v[0], digits), report_number(v[1], digits),
                      report_number(v[2], digits));
+}
+
+/// The report's block of what a robot file states and the model leaves out (multibody::Scenario::
+/// not_modelled), one indented line each, under "not modelled (the file states them; the `who` leaves them
+/// out):"; empty when there is none.
+inline std::string not_modelled_block(const std::vector<std::string>& lines, std::string_view who) {
+  if (lines.empty()) return {};
+  std::string out = fmt::format("  not modelled (the file states them; the {} leaves them out):\n", who);
+  for (const std::string& line : lines)
+    out += fmt::format("    - {}\n", line);
+  return out;
 }
 
 }  // namespace poinsot::io::detail

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
@@ -21,14 +22,27 @@ namespace {
 using detail::Section;
 using detail::Source;
 
+/// The system's part of the file, and the robot file and its options when a `[model]` table names one.
+struct ModelRead {
+  multibody::Scenario scenario;
+  std::optional<detail::RobotFileTable> robot;
+};
+
 /// The system's part of the file: the same table less the two sections that only `poinsot optimize` reads.
 /// (The text is parsed a second time rather than the table copied: a copied toml++ node loses its position
 /// in the file, which every message reports.)
-multibody::Scenario read_model(std::string_view text, std::string_view source, std::string_view base_dir) {
+ModelRead read_model(std::string_view text, std::string_view source, std::string_view base_dir) {
   toml::table root = detail::parse_toml(text, source);
   root.erase("optimal_control");
   root.erase("output");
-  return detail::multibody_scenario_from_table(root, source, base_dir);
+  ModelRead out;
+  if (root.get("model") != nullptr) {
+    out.robot.emplace();
+    out.scenario = detail::robot_scenario_from_table(root, source, base_dir, &*out.robot);
+  } else {
+    out.scenario = detail::multibody_scenario_from_table(root, source, base_dir);
+  }
+  return out;
 }
 
 std::vector<optimal::Actuator> read_actuators(const Source& src, const Section& oc,
@@ -193,6 +207,46 @@ multibody::State read_target(const Source& src, const Section& oc, const multibo
   return target;
 }
 
+/// The target of a robot model by its joints: `final_positions` and `final_velocities` by joint name, the
+/// floating base's `final_base`, as the `[model]` table gives the initial state (joints not named at the
+/// file's pose and at rest).
+multibody::State read_joint_target(const Source& src, const Section& oc, const detail::RobotFileTable& file) {
+  RobotSystemOptions options = file.options;
+  options.positions = detail::read_joint_coordinates(src, oc, "final_positions");
+  options.velocities = detail::read_joint_coordinates(src, oc, "final_velocities");
+  options.base_position.reset();
+  options.base_rotation.reset();
+  options.base_velocity.reset();
+  options.base_omega_body.reset();
+  detail::read_robot_base(src, oc, "final_base", options);
+  return detail::robot_scenario_located(oc, file.robot, options,
+                                        {"final_positions", "final_velocities", "final_base"})
+      .initial;
+}
+
+/// The target: one `[[final]]` per body, or, for a robot model, its joints' coordinates.
+multibody::State read_final_state(const Source& src, const Section& oc, const ModelRead& model,
+                                  const multibody::System& system) {
+  const char* by_joint = nullptr;
+  for (const char* key : {"final_positions", "final_velocities", "final_base"})
+    if (by_joint == nullptr && oc.has(key)) by_joint = key;
+  if (by_joint == nullptr) {
+    if (model.robot && !oc.has("final"))
+      oc.fail("final",
+              "missing; expected final_positions = { JOINT = q, ... } (the target by the robot file's "
+              "joint names), or one [[optimal_control.final]] table per body");
+    return read_target(src, oc, system);
+  }
+  if (!model.robot)
+    oc.fail(by_joint,
+            "given without a [model] robot file; expected one [[optimal_control.final]] table per body "
+            "(the target by joint names is for robot files)");
+  if (oc.has("final"))
+    oc.fail("final",
+            fmt::format("given with {}; expected the target either by joints or by bodies", by_joint));
+  return read_joint_target(src, oc, *model.robot);
+}
+
 }  // namespace
 
 std::string_view coordinates_name(optimal::MultibodyCoordinates c) {
@@ -202,23 +256,32 @@ std::string_view coordinates_name(optimal::MultibodyCoordinates c) {
 MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text, std::string_view source,
                                                           std::string_view base_dir) {
   MultibodyOptimalScenario sc;
-  sc.model = read_model(text, source, base_dir);
+  const ModelRead model = read_model(text, source, base_dir);
+  sc.model = model.scenario;
   sc.source = std::string(source);
   sc.title = sc.model.title;
   const toml::table root = detail::parse_toml(text, source);
   const Source src{std::string(source)};
   // The other top-level keys were checked by the system's reader (read_model).
-  const Section oc(
-      src, root["optimal_control"].as_table(), "optimal_control",
-      {"objective", "final_time", "coordinates", "intervals", "nlp_tolerance", "max_nlp_iterations",
-       "replay_steps", "target_tolerance", "actuators", "rate_bounds", "final", "stabilisation_step",
-       "no_twist", "warm_start", "final_time_bounds", "energy_weight"},
-      root.get("optimal_control"));
+  const Section oc(src, root["optimal_control"].as_table(), "optimal_control",
+                   {"objective", "final_time", "coordinates", "intervals", "nlp_tolerance",
+                    "max_nlp_iterations", "replay_steps", "target_tolerance", "actuators", "rate_bounds",
+                    "final", "stabilisation_step", "no_twist", "warm_start", "final_time_bounds",
+                    "energy_weight", "final_positions", "final_velocities", "final_base"},
+                   root.get("optimal_control"));
   detail::require_optimal_control_section(src, root);
 
   auto& p = sc.problem;
   p.system = sc.model.system;
   p.initial_state = sc.model.initial;
+  if (model.robot && !p.system.joint_springs().empty()) {
+    const auto joint = static_cast<std::size_t>(p.system.joint_springs()[0].joint);
+    throw InvalidInput(fmt::format(
+        "{}[model] joint_springs: the file gives joint '{}' a spring or damper, which the optimal control "
+        "transcriptions do not handle; expected joint_springs = false (the plan is then made without them, "
+        "and the report lists them as not modelled)",
+        detail::location(src, root.get("model")), p.system.joints()[joint].name));
+  }
   const optimal::Objective objective =
       oc.has("objective")
           ? detail::located(
@@ -277,7 +340,7 @@ MultibodyOptimalScenario parse_multibody_optimal_scenario(std::string_view text,
   sc.options.stabilisation_step = oc.number("stabilisation_step").value_or(0.0);
   sc.mesh_sequence = read_mesh_sequence(oc);
   p.actuators = read_actuators(src, oc, p.system);
-  p.final_state = read_target(src, oc, p.system);
+  p.final_state = read_final_state(src, oc, model, p.system);
   p.rate_bounds = read_rate_bounds(src, oc, p.system);
   p.no_twist = read_no_twist(src, oc, p.system);
   detail::located(src, root.get("optimal_control"), [&] {

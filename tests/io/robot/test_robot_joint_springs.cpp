@@ -172,7 +172,7 @@ TEST(RobotJointSprings, SdfAxisDynamicsAndWhatStaysUnmodelled) {
   all.clear();
   for (const std::string& line : without.not_modelled)
     all += line + "\n";
-  expect_has(all, {"the spring and damper of \"pivot\" (left out by the options)"});
+  expect_has(all, {"the spring and damper of \"pivot\" (left out: joint_springs = false)"});
 }
 
 }  // namespace

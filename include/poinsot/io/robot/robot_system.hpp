@@ -20,8 +20,9 @@
 ///    MuJoCo integrates); <equality><connect> → ball and <weld> → weld joints closing loops, at the file's
 ///    configuration. SDF: revolute/continuous, prismatic, ball, fixed, universal (axis fixed in the parent,
 ///    axis2 in the child); a link without a joint is free, parent `world` is the world.
-///  * Not modelled (contacts, limits, joint damping and springs, friction, armature, actuators, tendons,
-///    transmissions): listed one line each in Scenario::not_modelled, which the run report prints.
+///  * A hinge's or slide's spring and damper → multibody::JointSpring (RobotSystemOptions::joint_springs).
+///  * Not modelled (contacts, limits, friction, armature, actuators, tendons, transmissions, the springs of
+///    merged MJCF joints): listed one line each in Scenario::not_modelled, which the run report prints.
 /// Scenario::body_surfaces draws each body as its link's shapes (not its meshes).
 /// Bodies carry their link's name and joints their file joint's name (two or three MJCF hinges merged into
 /// one joint: their names joined by '+'), so reactions and Λ are reported per link.
