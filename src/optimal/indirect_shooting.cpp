@@ -140,6 +140,182 @@ void node_space_switching(const ReorientationProblem& p, const Shooter& shooter,
   }
 }
 
+/// A shooting problem's set-up besides its unknowns: the nodes' fractions of T, their attitude references
+/// and the rate scale the Shooter is built with, and the direct solution's space-frame switching vectors that
+/// the forward re-seeding fits (multiple shooting).
+struct ShootingSetup {
+  ShootingSetup(const ReorientationProblem& problem, const SwitchGuess& guess, bool bang)
+      : p(problem), sw(guess), bang_bang(bang) {}
+  const ReorientationProblem& p;
+  const SwitchGuess& sw;
+  bool bang_bang = false;
+  std::vector<double> tau;
+  std::vector<Mat3> node_R;
+  double omega_scale = 1.0;
+  std::vector<double> lambda_time;
+  std::vector<Vec3> lambda;
+
+  Shooter shooter(const ShootingOptions& o) const {
+    return Shooter(p, o, sw, bang_bang, node_R, omega_scale, tau);
+  }
+};
+
+/// The first shot from the direct solution, into x and F; returns the residual's max norm (infinity when no
+/// seed is admissible). Initial costates: R p_θ is constant, so p_θ(t) = R(t)ᵀ · mean_k(R_k p_θ,k); p_ω
+/// linear between the direct estimates (extrapolated to t = 0). Multiple shooting: R and ω at the nodes from
+/// the direct samples, and the forward seed as well (reseed_forward, from the direct estimates of the
+/// space-frame switching vector), whose nodes lie on one trajectory from the initial state; the seed with the
+/// smaller residual is kept. The direct nodes carry the direct solution's phase errors, which an unstable
+/// tumble turns into near-null directions that Newton cannot correct (docs/measurements/optimal_shooting.md,
+/// "The tumbling racket").
+double seed_from_direct(const DirectSolution& d, const ShootingOptions& o, ShootingSetup& s,
+                        Eigen::VectorXd& x, Eigen::VectorXd& F) {
+  const ReorientationProblem& p = s.p;
+  Vec3 pi_space = Vec3::Zero();
+  for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
+    // attitude at the costate time: nearest sample (interval centres coincide with midpoints)
+    const auto it = std::lower_bound(d.time.begin(), d.time.end(), d.costate_time[k]);
+    const std::size_t j = std::min<std::size_t>(it - d.time.begin(), d.time.size() - 1);
+    pi_space += d.attitude[j].toRotationMatrix() * d.costate_attitude_body[k];
+  }
+  pi_space /= static_cast<double>(d.costate_time.size());
+  if (p.free_final_attitude) pi_space.setZero();  // p_θ ≡ 0: R p_θ is constant and p_θ(T) = 0
+  const int M = o.shooting_nodes;
+  std::vector<double> knot_fraction;
+  for (const double t : s.sw.times)
+    knot_fraction.push_back(t / d.final_time);
+  for (const double t : s.sw.reversals)
+    knot_fraction.push_back(t / d.final_time);
+  s.tau = node_fractions(M, knot_fraction);
+  s.node_R.resize(static_cast<std::size_t>(M - 1));
+  std::vector<Vec3> node_omega(s.node_R.size());
+  s.omega_scale = std::max(p.omega_initial.norm(), p.omega_final.norm());
+  for (int m = 1; m < M; ++m) {
+    direct_state_at(d, d.final_time * s.tau[m - 1], s.node_R[m - 1], node_omega[m - 1]);
+    s.omega_scale = std::max(s.omega_scale, node_omega[m - 1].norm());
+  }
+  if (!(s.omega_scale > 0.0)) s.omega_scale = 1.0;
+  const Shooter shooter = s.shooter(o);
+  x.resize(shooter.size());
+  x.segment<3>(0) = p.attitude_initial.toRotationMatrix().transpose() * pi_space;
+  x.segment<3>(3) = direct_costate_omega_at(d, 0.0);
+  if (p.free_final_time()) x[6] = d.final_time;
+  for (std::size_t k = 0; k < s.sw.times.size(); ++k)
+    x[shooter.knot_base() + static_cast<int>(k)] = s.sw.times[k];
+  for (std::size_t k = 0; k < s.sw.reversals.size(); ++k)
+    x[shooter.knot_base() + static_cast<int>(k)] = s.sw.reversals[k];
+  for (int m = 1; m < M; ++m) {
+    const Mat3& R = s.node_R[m - 1];
+    shooter.set_node(x, m, R, node_omega[m - 1], R.transpose() * pi_space,
+                     direct_costate_omega_at(d, d.final_time * s.tau[m - 1]));
+  }
+  double norm = shooter.residual(x, F) ? F.cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
+  if (M > 1) {
+    const Mat3 J_inv = p.inertia_body.inverse();
+    for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
+      Mat3 R;
+      Vec3 w;
+      direct_state_at(d, d.costate_time[k], R, w);
+      s.lambda_time.push_back(d.costate_time[k]);
+      s.lambda.push_back(R * (J_inv * d.costate_omega[k]));
+    }
+    Shooter forward = s.shooter(o);
+    Eigen::VectorXd x_fw = x, F_fw;
+    const double norm_fw = reseed_forward(p, forward, x_fw, F_fw, s.lambda_time, s.lambda);
+    if (norm_fw < norm) {
+      x = x_fw;
+      F = F_fw;
+      norm = norm_fw;
+      s.node_R = forward.node_references();
+    }
+  }
+  return norm;
+}
+
+/// Multiple shooting not converged after the first Newton iterations: re-seed forward from the iterate's own
+/// space-frame switching vectors (fitted: the fit averages out the scatter Newton leaves along the near-null
+/// directions), Newton again, and so on while iterations are left; x, F, norm and the node references become
+/// the best iterate's. Returns the Newton iterations spent; `stalled` says whether the best missed the
+/// tolerance.
+int reseed_until_converged(const ShootingOptions& o, ShootingSetup& s, Eigen::VectorXd& x, Eigen::VectorXd& F,
+                           double& norm, int iterations, bool& stalled) {
+  Eigen::VectorXd x_best = x, F_best = F;
+  double best = norm;
+  std::vector<Mat3> best_R = s.node_R;
+  ShootingOptions cycle = o;
+  int it = iterations;
+  while (best > o.tolerance && it < o.max_iterations) {
+    Shooter work = s.shooter(o);
+    node_space_switching(s.p, work, x, s.lambda_time, s.lambda);
+    Eigen::VectorXd x_r = x, F_r;
+    double norm_r = reseed_forward(s.p, work, x_r, F_r, s.lambda_time, s.lambda);
+    if (!std::isfinite(norm_r)) break;
+    cycle.max_iterations = std::min(kNewtonPerReseeding, o.max_iterations - it);
+    it += std::max(1, newton(work, cycle, x_r, F_r, norm_r, stalled));
+    x = x_r;
+    F = F_r;
+    norm = norm_r;
+    s.node_R = work.node_references();
+    if (norm < best) {
+      x_best = x;
+      F_best = F;
+      best = norm;
+      best_R = s.node_R;
+    }
+  }
+  x = x_best;
+  F = F_best;
+  norm = best;
+  s.node_R = best_R;
+  stalled = norm > o.tolerance;
+  return it - iterations;
+}
+
+/// The solution's samples, switching times (ascending, with their axes), nodes and bang-bang arcs from the
+/// converged (or best) shot x.
+void fill_solution(const ReorientationProblem& p, const SwitchGuess& sw, const Shooter& shooter,
+                   const Eigen::VectorXd& x, IndirectSolution& out) {
+  out.final_time = shooter.final_time(x);
+  out.costate_attitude_initial = x.segment<3>(0);
+  out.costate_omega_initial = x.segment<3>(3);
+  std::vector<std::size_t> idx(shooter.knot_count());
+  for (std::size_t k = 0; k < idx.size(); ++k)
+    idx[k] = k;
+  std::sort(idx.begin(), idx.end(),
+            [&](auto a, auto b) { return shooter.switch_time(x, a) < shooter.switch_time(x, b); });
+  for (const std::size_t k : idx) {
+    out.switch_times.push_back(shooter.switch_time(x, k));
+    out.switch_axes.push_back(out.bang_bang ? sw.axes[k] : -1);
+  }
+  const Mat3 J_inv = p.inertia_body.inverse();
+  shooter.propagate(x, [&](double t, const PmpState& y, const Vec3& u) {
+    const detail::PmpView v = detail::unpack(y);
+    out.time.push_back(t);
+    out.attitude.push_back(v.R);
+    out.omega_body.push_back(v.omega);
+    out.torque_body.push_back(u);
+    out.costate_attitude.push_back(v.P);
+    out.costate_attitude_body.push_back(detail::attitude_costate_body(v.R, v.P));
+    out.costate_omega.push_back(v.p_omega);
+    out.switching_function.push_back(J_inv * v.p_omega);
+    out.hamiltonian.push_back(detail::hamiltonian(p, J_inv, v, u));
+    out.cost = v.cost;
+  });
+  for (int m = 1; m < shooter.nodes(); ++m) {
+    const detail::PmpView v = detail::unpack(shooter.node_state(x, m));
+    out.node_time.push_back(shooter.node_time(x, m));
+    out.node_attitude.push_back(v.R);
+    out.node_omega_body.push_back(v.omega);
+  }
+  if (out.bang_bang) {
+    std::vector<double> knots{0.0};
+    knots.insert(knots.end(), out.switch_times.begin(), out.switch_times.end());
+    knots.push_back(out.final_time);
+    for (std::size_t a = 0; a + 1 < knots.size(); ++a)
+      out.arcs.push_back({knots[a], knots[a + 1], shooter.arc_torque(x, 0.5 * (knots[a] + knots[a + 1]))});
+  }
+}
+
 }  // namespace
 
 Vec3 minimising_control(const ReorientationProblem& p, const Vec3& costate_omega) {
@@ -205,125 +381,27 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     out.status = "not applied: " + sw.singular + "; singular arcs are not handled by the shooting method";
     return out;
   }
-  // Initial costates: R p_θ is constant, so p_θ(t) = R(t)ᵀ · mean_k(R_k p_θ,k); p_ω linear between the
-  // direct estimates (extrapolated to t = 0). Multiple shooting: R and ω at the nodes from the direct
-  // samples.
-  Vec3 pi_space = Vec3::Zero();
-  for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
-    // attitude at the costate time: nearest sample (interval centres coincide with midpoints)
-    const auto it = std::lower_bound(d.time.begin(), d.time.end(), d.costate_time[k]);
-    const std::size_t j = std::min<std::size_t>(it - d.time.begin(), d.time.size() - 1);
-    pi_space += d.attitude[j].toRotationMatrix() * d.costate_attitude_body[k];
-  }
-  pi_space /= static_cast<double>(d.costate_time.size());
-  if (p.free_final_attitude) pi_space.setZero();  // p_θ ≡ 0: R p_θ is constant and p_θ(T) = 0
-  const int M = o.shooting_nodes;
-  std::vector<double> knot_fraction;
-  for (const double t : sw.times)
-    knot_fraction.push_back(t / d.final_time);
-  for (const double t : sw.reversals)
-    knot_fraction.push_back(t / d.final_time);
-  const std::vector<double> tau = node_fractions(M, knot_fraction);
-  std::vector<Mat3> node_R(static_cast<std::size_t>(M - 1));
-  std::vector<Vec3> node_omega(node_R.size());
-  double omega_scale = std::max(p.omega_initial.norm(), p.omega_final.norm());
-  for (int m = 1; m < M; ++m) {
-    direct_state_at(d, d.final_time * tau[m - 1], node_R[m - 1], node_omega[m - 1]);
-    omega_scale = std::max(omega_scale, node_omega[m - 1].norm());
-  }
-  if (!(omega_scale > 0.0)) omega_scale = 1.0;
-  const Shooter shooter(p, o, sw, out.bang_bang, node_R, omega_scale, tau);
-  Eigen::VectorXd x(shooter.size());
-  x.segment<3>(0) = p.attitude_initial.toRotationMatrix().transpose() * pi_space;
-  x.segment<3>(3) = direct_costate_omega_at(d, 0.0);
-  if (p.free_final_time()) x[6] = d.final_time;
-  for (std::size_t k = 0; k < sw.times.size(); ++k)
-    x[shooter.knot_base() + static_cast<int>(k)] = sw.times[k];
-  for (std::size_t k = 0; k < sw.reversals.size(); ++k)
-    x[shooter.knot_base() + static_cast<int>(k)] = sw.reversals[k];
-  for (int m = 1; m < M; ++m) {
-    const Mat3& R = node_R[m - 1];
-    shooter.set_node(x, m, R, node_omega[m - 1], R.transpose() * pi_space,
-                     direct_costate_omega_at(d, d.final_time * tau[m - 1]));
-  }
 
-  Eigen::VectorXd F;
-  double norm = shooter.residual(x, F) ? F.cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
-  // Multiple shooting: the forward seed as well (reseed_forward, from the direct estimates of the space-frame
-  // switching vector), whose nodes lie on one trajectory from the initial state; the seed with the smaller
-  // residual is kept. The direct nodes carry the direct solution's phase errors, which an unstable tumble
-  // turns into near-null directions that Newton cannot correct (docs/measurements/optimal_shooting.md, "The
-  // tumbling racket").
-  std::vector<double> lambda_time;
-  std::vector<Vec3> lambda;
-  if (M > 1) {
-    const Mat3 J_inv = p.inertia_body.inverse();
-    for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
-      Mat3 R;
-      Vec3 w;
-      direct_state_at(d, d.costate_time[k], R, w);
-      lambda_time.push_back(d.costate_time[k]);
-      lambda.push_back(R * (J_inv * d.costate_omega[k]));
-    }
-    Shooter forward(p, o, sw, out.bang_bang, node_R, omega_scale, tau);
-    Eigen::VectorXd x_fw = x, F_fw;
-    const double norm_fw = reseed_forward(p, forward, x_fw, F_fw, lambda_time, lambda);
-    if (norm_fw < norm) {
-      x = x_fw;
-      F = F_fw;
-      norm = norm_fw;
-      node_R = forward.node_references();
-    }
-  }
+  ShootingSetup setup(p, sw, out.bang_bang);
+  Eigen::VectorXd x, F;
+  double norm = seed_from_direct(d, o, setup, x, F);
   if (!std::isfinite(norm)) {
     out.status = "not converged: the direct solution's costates give no admissible initial shot";
     return out;
   }
+  const bool multiple = o.shooting_nodes > 1;
   bool stalled = false;
   ShootingOptions first = o;
-  if (M > 1) first.max_iterations = std::min(o.max_iterations, kNewtonBeforeReseeding);
-  int it = newton(Shooter(p, o, sw, out.bang_bang, node_R, omega_scale, tau), first, x, F, norm, stalled);
-  // Not converged: re-seed forward from the iterate's own space-frame switching vectors (fitted: the fit
-  // averages out the scatter Newton leaves along the near-null directions), Newton again, and so on while
-  // iterations are left; the best iterate is kept.
-  if (M > 1 && norm > o.tolerance) {
-    Eigen::VectorXd x_best = x, F_best = F;
-    double best = norm;
-    std::vector<Mat3> best_R = node_R;
-    ShootingOptions cycle = o;
-    cycle.max_iterations = kNewtonPerReseeding;
-    while (best > o.tolerance && it < o.max_iterations) {
-      Shooter work(p, o, sw, out.bang_bang, node_R, omega_scale, tau);
-      node_space_switching(p, work, x, lambda_time, lambda);
-      Eigen::VectorXd x_r = x, F_r;
-      double norm_r = reseed_forward(p, work, x_r, F_r, lambda_time, lambda);
-      if (!std::isfinite(norm_r)) break;
-      cycle.max_iterations = std::min(kNewtonPerReseeding, o.max_iterations - it);
-      it += std::max(1, newton(work, cycle, x_r, F_r, norm_r, stalled));
-      x = x_r;
-      F = F_r;
-      norm = norm_r;
-      node_R = work.node_references();
-      if (norm < best) {
-        x_best = x;
-        F_best = F;
-        best = norm;
-        best_R = node_R;
-      }
-    }
-    x = x_best;
-    F = F_best;
-    norm = best;
-    node_R = best_R;
-    stalled = norm > o.tolerance;
-  }
+  if (multiple) first.max_iterations = std::min(o.max_iterations, kNewtonBeforeReseeding);
+  int it = newton(setup.shooter(o), first, x, F, norm, stalled);
+  if (multiple && norm > o.tolerance) it += reseed_until_converged(o, setup, x, F, norm, it, stalled);
   // The residual's floor is the integration's error: when Newton stalls just above the tolerance, polish
   // once with a tenfold tighter integration (e.g. the reversal of a sphere's slew: 3.5e-12 at 1e-13).
   ShootingOptions used = o;
   if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
     ShootingOptions tight = o;
     tight.integration_tolerance = o.integration_tolerance / 10.0;
-    const Shooter polish(p, tight, sw, out.bang_bang, node_R, omega_scale, tau);
+    const Shooter polish = setup.shooter(tight);
     if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
       F = Fp;
       norm = Fp.cwiseAbs().maxCoeff();
@@ -334,7 +412,6 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // Still stalled within 10× the tolerance with the tighter integration: the residual's round-off floor.
   const bool floor = norm > o.tolerance && stalled && used.integration_tolerance < o.integration_tolerance &&
                      norm <= 10.0 * o.tolerance;
-  const Shooter result_shooter(p, used, sw, out.bang_bang, node_R, omega_scale, tau);
   out.iterations = it;
   out.residual = norm;
   out.converged = norm <= o.tolerance || floor;
@@ -342,56 +419,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
                : out.converged ? "converged"
                                : "not converged: shooting residual " + format_number(norm, 3) + " after " +
                                      std::to_string(it) + " Newton iterations";
-  out.final_time = result_shooter.final_time(x);
-  out.costate_attitude_initial = x.segment<3>(0);
-  out.costate_omega_initial = x.segment<3>(3);
-  for (std::size_t k = 0; k < result_shooter.knot_count(); ++k) {
-    out.switch_times.push_back(result_shooter.switch_time(x, k));
-    out.switch_axes.push_back(out.bang_bang ? sw.axes[k] : -1);
-  }
-  {  // ascending switching times
-    std::vector<std::size_t> idx(out.switch_times.size());
-    for (std::size_t k = 0; k < idx.size(); ++k)
-      idx[k] = k;
-    std::sort(idx.begin(), idx.end(),
-              [&](auto a, auto b) { return out.switch_times[a] < out.switch_times[b]; });
-    std::vector<double> t;
-    std::vector<int> a;
-    for (auto k : idx) {
-      t.push_back(out.switch_times[k]);
-      a.push_back(out.switch_axes[k]);
-    }
-    out.switch_times = t;
-    out.switch_axes = a;
-  }
-  const Mat3 J_inv = p.inertia_body.inverse();
-  result_shooter.propagate(x, [&](double t, const PmpState& y, const Vec3& u) {
-    const detail::PmpView v = detail::unpack(y);
-    out.time.push_back(t);
-    out.attitude.push_back(v.R);
-    out.omega_body.push_back(v.omega);
-    out.torque_body.push_back(u);
-    out.costate_attitude.push_back(v.P);
-    out.costate_attitude_body.push_back(detail::attitude_costate_body(v.R, v.P));
-    out.costate_omega.push_back(v.p_omega);
-    out.switching_function.push_back(J_inv * v.p_omega);
-    out.hamiltonian.push_back(detail::hamiltonian(p, J_inv, v, u));
-    out.cost = v.cost;
-  });
-  for (int m = 1; m < result_shooter.nodes(); ++m) {
-    const detail::PmpView v = detail::unpack(result_shooter.node_state(x, m));
-    out.node_time.push_back(result_shooter.node_time(x, m));
-    out.node_attitude.push_back(v.R);
-    out.node_omega_body.push_back(v.omega);
-  }
-  if (out.bang_bang) {
-    std::vector<double> knots{0.0};
-    knots.insert(knots.end(), out.switch_times.begin(), out.switch_times.end());
-    knots.push_back(out.final_time);
-    for (std::size_t a = 0; a + 1 < knots.size(); ++a)
-      out.arcs.push_back(
-          {knots[a], knots[a + 1], result_shooter.arc_torque(x, 0.5 * (knots[a] + knots[a + 1]))});
-  }
+  fill_solution(p, sw, setup.shooter(used), x, out);
   return out;
 }
 
