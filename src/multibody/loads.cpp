@@ -32,18 +32,14 @@ struct JointDeflection {
   double rate = 0.0;        ///< q̇, rad/s or m/s
 };
 
-Vec3 hinge_axis_a(const Joint& j) {
-  return j.p_a[0].cross(j.p_a[1]);
-}
-
 Vec3 slide_axis_space(const Joint& j, const BodyState& b) {
-  return b.R_space_body * j.n_b[0].cross(j.n_b[1]);
+  return b.R_space_body * j.slide_axis_b();
 }
 
 JointDeflection joint_deflection(const Joint& j, const JointSpring& s, const BodyState& a,
                                  const BodyState& b) {
   if (j.type == JointType::hinge) {
-    const Vec3 n = hinge_axis_a(j);
+    const Vec3 n = j.hinge_axis_a();
     const Mat3 S = b.R_space_body.transpose() * a.R_space_body;
     const Mat3 S_rest = s.R_b_a_zero * Eigen::AngleAxisd(s.rest_position, n).toRotationMatrix();
     const Mat3 P = S_rest.transpose() * S;
@@ -102,7 +98,7 @@ void applied_loads(const System& system, const std::vector<BodyState>& bodies, s
     const double Q = -s.stiffness * q.deflection - s.damping * q.rate;
     BodyLoads& on_a = out[static_cast<std::size_t>(j.body_a)];
     if (j.type == JointType::hinge) {
-      const Vec3 tau_a = Q * hinge_axis_a(j);
+      const Vec3 tau_a = Q * j.hinge_axis_a();
       add_couple(on_a, tau_a);
       if (j.body_b != kWorld) {
         const Vec3 tau_b = -(b.R_space_body.transpose() * (a.R_space_body * tau_a));

@@ -213,7 +213,7 @@ int System::add_joint_spring(const JointSpring& spring) {
   require_finite(what + ": offset", spring.offset);
   if (hinge) {
     require_finite(what + ": zero rotation", spring.R_b_a_zero);
-    const Vec3 axis_a = j.p_a[0].cross(j.p_a[1]);
+    const Vec3 axis_a = j.hinge_axis_a();
     if (!so3::is_rotation(spring.R_b_a_zero) || (spring.R_b_a_zero * axis_a - j.u_b[0]).norm() > 1e-6) {
       throw InvalidInput(
           fmt::format("{}: zero rotation {} does not carry the axis of body a onto the axis of body b; "

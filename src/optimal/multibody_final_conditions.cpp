@@ -35,7 +35,7 @@ multibody::State turn_hinge(const multibody::System& system, const multibody::St
   const multibody::Joint& j = system.joints()[static_cast<std::size_t>(joint)];
   multibody::State out = state;
   multibody::BodyState& a = out.bodies[static_cast<std::size_t>(j.body_a)];
-  const Vec3 axis = j.p_a[0].cross(j.p_a[1]);
+  const Vec3 axis = j.hinge_axis_a();
   const Vec3 point = a.x_space + a.R_space_body * j.point_a;
   const Vec3 omega_space = a.R_space_body * a.omega_body;
   const Vec3 point_velocity = a.v_space + omega_space.cross(a.R_space_body * j.point_a);

@@ -292,7 +292,7 @@ MultibodyMinimalModel::MultibodyMinimalModel(const MultibodyProblem& problem) {
     const bool a_side = j.body_a == i;
     L.parent = a_side ? j.body_b : j.body_a;
     L.ball = j.type == multibody::JointType::ball;
-    L.axis = a_side ? Vec3(j.p_a[0].cross(j.p_a[1])) : j.u_b[0];
+    L.axis = a_side ? j.hinge_axis_a() : j.u_b[0];
     L.motor_sign = a_side ? 1.0 : -1.0;
     const Mat3 Rp = L.parent == multibody::kWorld ? Mat3::Identity()
                                                   : s0[static_cast<std::size_t>(L.parent)].R_space_body;

@@ -47,7 +47,7 @@ void check_state(const MultibodyProblem& p, const multibody::State& s, const std
                       what, j.name, multibody::joint_residual(j, gdot, L) / speed));
     }
     if (j.type == multibody::JointType::hinge) {
-      const Vec3 ua = j.p_a[0].cross(j.p_a[1]);
+      const Vec3 ua = j.hinge_axis_a();
       if ((a.R_space_body * ua).dot(b.R_space_body * j.u_b[0]) < 0.0) {
         throw InvalidInput(
             fmt::format("optimal control: {}: hinge '{}' has axis_a opposite to axis_b; expected "
@@ -292,7 +292,7 @@ double hinge_rate(const multibody::System& system, const multibody::State& state
   const multibody::Joint& j = system.joints()[static_cast<std::size_t>(joint)];
   const auto& a = multibody::side_state(state.bodies, j.body_a);
   const auto& b = multibody::side_state(state.bodies, j.body_b);
-  const Vec3 axis_a = j.p_a[0].cross(j.p_a[1]);
+  const Vec3 axis_a = j.hinge_axis_a();
   return axis_a.dot(a.omega_body - a.R_space_body.transpose() * b.R_space_body * b.omega_body);
 }
 

@@ -40,7 +40,7 @@ QuadraticFunctions rotation_rate_rows(const MultibodyProblem& problem, const Mul
   for (const RateBound& b : problem.rate_bounds) {
     const multibody::Joint& j = problem.system.joints()[static_cast<std::size_t>(b.joint)];
     const int row = out.add_row();
-    add_axis_rate(out, row, model, j.body_a, j.p_a[0].cross(j.p_a[1]), 1.0);
+    add_axis_rate(out, row, model, j.body_a, j.hinge_axis_a(), 1.0);
     if (j.body_b != multibody::kWorld) add_axis_rate(out, row, model, j.body_b, j.u_b[0], -1.0);
   }
   // s·vee(M − Mᵀ) = Σ_ij c_ij M_ij with c_ij = −Σ_m ε_ijm s_m, M = Cᵀ R_aᵀ R_b: M_ij = Σ_kl C_li R_a(k, l)

@@ -19,7 +19,7 @@ multibody::System system_with_controls(const MultibodyProblem& problem, const Ei
   for (const Actuator& a : problem.actuators) {
     if (a.kind == ActuatorKind::hinge_torque) {
       const multibody::Joint& j = system.joints()[static_cast<std::size_t>(a.index)];
-      const Vec3 axis_a = j.p_a[0].cross(j.p_a[1]);
+      const Vec3 axis_a = j.hinge_axis_a();
       const Vec3 axis_b = j.u_b[0];
       system.add_torque({j.body_a, u(k) * axis_a, true});
       if (j.body_b != multibody::kWorld) system.add_torque({j.body_b, -u(k) * axis_b, true});
@@ -71,7 +71,7 @@ MultibodyReplay replay_controls(const MultibodyProblem& problem, const Multibody
     const multibody::BodyState& f = problem.final_state.bodies[i];
     if (free_axle[i] >= 0) {
       const multibody::Joint& j = problem.system.joints()[static_cast<std::size_t>(free_axle[i])];
-      const Vec3 axis = j.p_a[0].cross(j.p_a[1]);
+      const Vec3 axis = j.hinge_axis_a();
       const Vec3 ab = b.R_space_body * axis, af = f.R_space_body * axis;
       out.attitude_error = std::max(out.attitude_error, std::atan2(ab.cross(af).norm(), ab.dot(af)));
       out.position_error =

@@ -255,7 +255,7 @@ void MultibodyRotationModel::build_path(QuadraticFunctions& out, bool first_node
     };
     if (act.kind == ActuatorKind::hinge_torque) {
       const multibody::Joint& j = sys.joints()[static_cast<std::size_t>(act.index)];
-      couple(j.body_a, j.p_a[0].cross(j.p_a[1]), 1.0);
+      couple(j.body_a, j.hinge_axis_a(), 1.0);
       if (j.body_b != multibody::kWorld) couple(j.body_b, j.u_b[0], -1.0);
     } else if (act.kind == ActuatorKind::ball_torque) {
       const multibody::Joint& j = sys.joints()[static_cast<std::size_t>(act.index)];

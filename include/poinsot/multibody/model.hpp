@@ -65,6 +65,11 @@ struct Joint {
   std::array<Vec3, 3> u_b{};    ///< unit vectors fixed in body b (space frame for the world)
   int translation_rows() const { return sliding ? 2 : 3; }
   int rows() const { return translation_rows() + perpendicular_count; }
+  /// A hinge's axis in body a's frame (unit): p_a[0] × p_a[1], the two unit vectors that the hinge's rows
+  /// keep perpendicular to its axis in body b (p_a[1] = axis × p_a[0]). Hinges only.
+  Vec3 hinge_axis_a() const { return p_a[0].cross(p_a[1]); }
+  /// A sliding joint's line direction in body b's frame (space frame for the world; unit): n_b[0] × n_b[1].
+  Vec3 slide_axis_b() const { return n_b[0].cross(n_b[1]); }
 };
 
 /// A linear spring-damper between a point of body a and a point of body b (or of the world):

@@ -79,7 +79,7 @@ TEST(RobotOptimalScenario, UrdfArmIsTheHandWrittenArm) {
     EXPECT_EQ(ja.body_b, jb.body_b);
     EXPECT_LT((ja.point_a - jb.point_a).norm(), 1e-15) << ja.name;
     EXPECT_LT((ja.point_b - jb.point_b).norm(), 1e-15) << ja.name;
-    EXPECT_LT((ja.p_a[0].cross(ja.p_a[1]) - jb.p_a[0].cross(jb.p_a[1])).norm(), 1e-15) << ja.name;
+    EXPECT_LT((ja.hinge_axis_a() - jb.hinge_axis_a()).norm(), 1e-15) << ja.name;
   }
   EXPECT_EQ(a.gravity(), b.gravity());
   ASSERT_EQ(urdf.problem.actuators.size(), 2u);
