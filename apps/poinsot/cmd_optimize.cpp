@@ -6,7 +6,7 @@
 // input (nothing written). While it runs, a progress line on stderr when stderr is a terminal (never in the
 // files), unless --quiet. A multibody scenario with an [optimal_control] section
 // (io/scenario/multibody_optimal_scenario.hpp) is solved by the multibody transcriptions (exit status 0 or
-// 1).
+// 1), with the same progress line.
 #include <unistd.h>
 
 #include <chrono>
@@ -33,7 +33,8 @@ struct OptimizeOptions {
 };
 
 /// One progress line on stderr, redrawn at most ten times a second after the first second, only when
-/// stderr is a terminal: the phase and, in the direct method, the mesh and Ipopt's iteration.
+/// stderr is a terminal: the phase and, in the direct method, the mesh and Ipopt's iteration; in the indirect
+/// one, Newton's iteration and residual.
 class OptimizeProgress {
  public:
   explicit OptimizeProgress(bool enabled) : line_(enabled) {}
@@ -53,7 +54,10 @@ class OptimizeProgress {
     else if (p.phase == "phased")
       what = "direct method: the phase-per-arc re-solve";
     else if (p.phase == "indirect")
-      what = "indirect method: shooting (Newton)";
+      what = p.newton_iteration == 0
+                 ? std::string("indirect method: shooting (Newton)")
+                 : fmt::format("indirect method: shooting, Newton iteration {}, residual {:.1e}",
+                               p.newton_iteration, p.newton_residual);
     else if (p.phase == "verification")
       what = "verification: the necessary conditions and the DOP853 re-simulation";
     else
@@ -74,7 +78,10 @@ void optimize_multibody(const OptimizeOptions& o) {
   if (o.plot)
     throw InvalidInput("--plot: figures are drawn for single-body problems only; expected no --plot");
   const std::string dir = !o.out.empty() ? o.out : !sc.out_dir.empty() ? sc.out_dir : sc.name + "-optimize";
-  const io::MultibodyOptimalRun run = io::run_multibody_optimal(sc);
+  OptimizeProgress progress(!o.quiet);
+  const io::MultibodyOptimalRun run =
+      io::run_multibody_optimal(sc, [&](const io::OptimalProgress& p) { progress.update(p); });
+  progress.finish();
   io::write_multibody_optimal_files(run, dir);
   fmt::print("{}", o.json ? io::multibody_optimal_summary_json(run) : io::multibody_optimal_report(run));
   if (!run.optimal) std::exit(1);

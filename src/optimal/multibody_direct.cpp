@@ -83,6 +83,11 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   settings.max_iterations = options.max_nlp_iterations;
   settings.print_level = options.print_level;
   settings.mumps_scaling = options.mumps_scaling;
+  if (options.progress) {
+    settings.on_iteration = [&](int iteration, double objective, double infeasibility) {
+      options.progress(DirectProgress{1, problem.intervals, 0, iteration, objective, infeasibility});
+    };
+  }
   const detail::NlpSolution sol = detail::solve_with_ipopt(nlp, guess, settings);
   MultibodyOptimum out;
   out.converged = sol.solved;

@@ -324,6 +324,68 @@ bool shooting_line_search(const Shooter& shooter, const Eigen::VectorXd& step, E
   return false;
 }
 
+/// How one Newton iteration ended: the iterate moved, the Jacobian could not be formed (a segment not
+/// integrable), or no step decreased the residual.
+enum class NewtonStep { moved, no_jacobian, stalled };
+
+/// One iteration of newton() (below) from x; x, F and norm become the accepted iterate when it moved.
+NewtonStep newton_step(const Shooter& shooter, Eigen::VectorXd& x, Eigen::VectorXd& F, double& norm) {
+  std::vector<Shooter::SegmentEnd> ends;
+  Eigen::SparseMatrix<double> jac;
+  if (!shooter.segment_ends(x, ends) || !shooter.jacobian(x, ends, F, jac)) return NewtonStep::no_jacobian;
+  SparseLu lu;
+  // A numerically singular Jacobian (SparseLU does not pivot for rank): the least-squares step instead.
+  const Eigen::VectorXd step =
+      lu.compute(jac) ? lu.solve(-F) : solve_col_piv_qr(Eigen::MatrixXd(jac), Eigen::VectorXd(-F));
+  Eigen::VectorXd x_lu = x, F_lu = F;
+  double norm_lu = norm;
+  const bool lu_ok = shooting_line_search(shooter, step, x_lu, F_lu, norm_lu);
+  if (lu_ok && norm_lu < 0.5 * norm) {
+    x = x_lu;
+    F = F_lu;
+    norm = norm_lu;
+    return NewtonStep::moved;
+  }
+  // The Newton step does not halve the residual: try the rank-revealing steps as well, which leave out
+  // the directions whose singular values are below 1e-8, 1e-10 or 1e-12 of the largest, and keep the best.
+  // Such near-null directions are those of a family of extremals that the boundary conditions pin only
+  // through an exponentially small sensitivity (stopping the tumbling racket: the phase of each flip,
+  // docs/optimal_control_theory.md section 3); the central-difference Jacobian (relative error ~1e-8)
+  // cannot resolve them, and the full step along them is noise that throws the iterate out of the linear
+  // range. 1e-8 leaves out what that error cannot resolve; the smaller levels keep the directions that are
+  // weakly determined but computed well enough (on the tumbling racket a single level of 1e-12 stalls at
+  // a residual of 7e-6 where 1e-8 goes on to 1e-8).
+  Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(jac), Eigen::ComputeThinU | Eigen::ComputeThinV);
+  Eigen::VectorXd x_svd = x, F_svd = F;
+  double norm_svd = lu_ok ? norm_lu : norm;
+  bool svd_ok = false;
+  for (const double threshold : {1e-8, 1e-10, 1e-12}) {
+    svd.setThreshold(threshold);
+    Eigen::VectorXd x_t = x, F_t = F;
+    double norm_t = norm;
+    if (shooting_line_search(shooter, Eigen::VectorXd(svd.solve(-F)), x_t, F_t, norm_t) &&
+        norm_t < norm_svd) {
+      x_svd = x_t;
+      F_svd = F_t;
+      norm_svd = norm_t;
+      svd_ok = true;
+    }
+  }
+  if (svd_ok) {
+    x = x_svd;
+    F = F_svd;
+    norm = norm_svd;
+    return NewtonStep::moved;
+  }
+  if (lu_ok) {
+    x = x_lu;
+    F = F_lu;
+    norm = norm_lu;
+    return NewtonStep::moved;
+  }
+  return NewtonStep::stalled;
+}
+
 }  // namespace
 
 int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x, Eigen::VectorXd& F,
@@ -331,61 +393,10 @@ int newton(const Shooter& shooter, const ShootingOptions& o, Eigen::VectorXd& x,
   int it = 0;
   stalled = false;
   for (; it < o.max_iterations && norm > o.tolerance; ++it) {
-    std::vector<Shooter::SegmentEnd> ends;
-    Eigen::SparseMatrix<double> jac;
-    if (!shooter.segment_ends(x, ends) || !shooter.jacobian(x, ends, F, jac)) break;
-    SparseLu lu;
-    // A numerically singular Jacobian (SparseLU does not pivot for rank): the least-squares step instead.
-    const Eigen::VectorXd step =
-        lu.compute(jac) ? lu.solve(-F) : solve_col_piv_qr(Eigen::MatrixXd(jac), Eigen::VectorXd(-F));
-    Eigen::VectorXd x_lu = x, F_lu = F;
-    double norm_lu = norm;
-    const bool lu_ok = shooting_line_search(shooter, step, x_lu, F_lu, norm_lu);
-    if (lu_ok && norm_lu < 0.5 * norm) {
-      x = x_lu;
-      F = F_lu;
-      norm = norm_lu;
-      continue;
-    }
-    // The Newton step does not halve the residual: try the rank-revealing steps as well, which leave out
-    // the directions whose singular values are below 1e-8, 1e-10 or 1e-12 of the largest, and keep the best.
-    // Such near-null directions are those of a family of extremals that the boundary conditions pin only
-    // through an exponentially small sensitivity (stopping the tumbling racket: the phase of each flip,
-    // docs/optimal_control_theory.md section 3); the central-difference Jacobian (relative error ~1e-8)
-    // cannot resolve them, and the full step along them is noise that throws the iterate out of the linear
-    // range. 1e-8 leaves out what that error cannot resolve; the smaller levels keep the directions that are
-    // weakly determined but computed well enough (on the tumbling racket a single level of 1e-12 stalls at
-    // a residual of 7e-6 where 1e-8 goes on to 1e-8).
-    Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(jac), Eigen::ComputeThinU | Eigen::ComputeThinV);
-    Eigen::VectorXd x_svd = x, F_svd = F;
-    double norm_svd = lu_ok ? norm_lu : norm;
-    bool svd_ok = false;
-    for (const double threshold : {1e-8, 1e-10, 1e-12}) {
-      svd.setThreshold(threshold);
-      Eigen::VectorXd x_t = x, F_t = F;
-      double norm_t = norm;
-      if (shooting_line_search(shooter, Eigen::VectorXd(svd.solve(-F)), x_t, F_t, norm_t) &&
-          norm_t < norm_svd) {
-        x_svd = x_t;
-        F_svd = F_t;
-        norm_svd = norm_t;
-        svd_ok = true;
-      }
-    }
-    if (svd_ok) {
-      x = x_svd;
-      F = F_svd;
-      norm = norm_svd;
-      continue;
-    }
-    if (lu_ok) {
-      x = x_lu;
-      F = F_lu;
-      norm = norm_lu;
-      continue;
-    }
-    stalled = true;
-    break;
+    const NewtonStep step = newton_step(shooter, x, F, norm);
+    stalled = step == NewtonStep::stalled;
+    if (step != NewtonStep::moved) break;
+    if (o.on_newton_iteration) o.on_newton_iteration(norm);
   }
   return it;
 }

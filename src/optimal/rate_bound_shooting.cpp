@@ -200,9 +200,12 @@ class RateBoundShooter {
 
 /// Central-difference Jacobian (steps 1e-6 of the unknown or of its group's size: p_θ and p_ω/T, p_ω and
 /// p_θ T, times T) and Newton with a backtracking line search on the max norm; least squares where the
-/// Jacobian is singular. Returns the iterations; `stalled` when no step decreased the residual.
-int rate_newton(const RateBoundShooter& sh, double tolerance, int max_iterations, Eigen::VectorXd& x,
-                Eigen::VectorXd& F, double& norm, bool& stalled) {
+/// Jacobian is singular. Returns the iterations; `stalled` when no step decreased the residual. Calls
+/// o.on_newton_iteration, when set, after each iteration with the residual.
+int rate_newton(const RateBoundShooter& sh, const ShootingOptions& o, Eigen::VectorXd& x, Eigen::VectorXd& F,
+                double& norm, bool& stalled) {
+  const double tolerance = o.tolerance;
+  const int max_iterations = o.max_iterations;
   stalled = false;
   int it = 0;
   const int n = sh.size();
@@ -245,6 +248,7 @@ int rate_newton(const RateBoundShooter& sh, double tolerance, int max_iterations
       stalled = true;
       break;
     }
+    if (o.on_newton_iteration) o.on_newton_iteration(norm);
   }
   return it;
 }
@@ -404,7 +408,7 @@ IndirectSolution solve_rate_bounded(const ReorientationProblem& p, const DirectS
     return out;
   }
   bool stalled = false;
-  int it = rate_newton(shooter, o.tolerance, o.max_iterations, x, F, norm, stalled);
+  int it = rate_newton(shooter, o, x, F, norm, stalled);
   double used_tolerance = o.integration_tolerance;
   if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
     used_tolerance = o.integration_tolerance / 10.0;
@@ -412,7 +416,7 @@ IndirectSolution solve_rate_bounded(const ReorientationProblem& p, const DirectS
     if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
       F = Fp;
       norm = Fp.cwiseAbs().maxCoeff();
-      it += rate_newton(polish, o.tolerance, o.max_iterations, x, F, norm, stalled);
+      it += rate_newton(polish, o, x, F, norm, stalled);
     }
   }
   const bool floor =

@@ -1,6 +1,8 @@
 """Fixtures for the command-line tests: `cli(*args)` runs the built poinsot binary."""
 import os
+import signal
 import subprocess
+import time
 from pathlib import Path
 
 import pytest
@@ -42,3 +44,34 @@ def cli():
 @pytest.fixture
 def source_dir():
     return SOURCE_DIR
+
+
+def tty_run(exe, args, stop_after=None, shows=b"\r["):
+    """Runs the tool with stderr on a pseudo-terminal; with `stop_after` (s), sends SIGTERM once `shows` (by
+    default the start of `poinsot run`'s progress bar) is on the terminal or that time has passed. Returns
+    (returncode, stderr text)."""
+    import pty
+    import select
+
+    master, slave = pty.openpty()
+    p = subprocess.Popen([exe, *map(str, args)], stdout=subprocess.DEVNULL, stderr=slave)
+    os.close(slave)
+    chunks, start, signalled = [], time.time(), False
+    while True:
+        ready, _, _ = select.select([master], [], [], 0.1)
+        if ready:
+            try:
+                data = os.read(master, 4096)
+            except OSError:  # the child closed the terminal
+                break
+            if not data:
+                break
+            chunks.append(data)
+        if stop_after is not None and not signalled and (
+                shows in b"".join(chunks) or time.time() - start > stop_after):
+            p.send_signal(signal.SIGTERM)
+            signalled = True
+        if p.poll() is not None and not ready:
+            break
+    os.close(master)
+    return p.wait(timeout=120), b"".join(chunks).decode("utf-8", "replace")

@@ -6,9 +6,13 @@ solved by python/tests/test_optimize_multibody.py (its minimal-coordinate solve 
 the sanitizers, which run these files too)."""
 import json
 import math
+import os
+import signal
 from pathlib import Path
 
 import pytest
+
+from conftest import tty_run
 
 # One rod (1 kg, 1 m, radius 5 cm, along body x) on a motor hinge at its end, no gravity, turned from rest at 0
 # to rest at THETA about z in T. Minimum ∫u²dt for I θ̈ = u (I = J_zz + m (ℓ/2)² about the hinge):
@@ -239,3 +243,17 @@ def test_reruns_are_bit_identical(cli, tmp_path):
         assert cli("optimize", p, "--out", tmp_path / d).returncode == 0
     for name in ("trajectory.csv", "control.csv", "reactions.csv", "multipliers.csv", "summary.json"):
         assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes()
+
+
+def test_progress_line_on_a_terminal_only(source_dir, tmp_path):
+    """A long solve (the falling cat) shows the direct method's mesh and Ipopt iteration on a terminal from its
+    first second on (stopped by SIGTERM once the line shows, or after 30 s: nothing written); --quiet draws
+    nothing."""
+    exe = os.environ["POINSOT_CLI"]
+    cat = source_dir / "examples" / "optimal" / "falling_cat.toml"
+    rc, err = tty_run(exe, ["optimize", cat, "--out", tmp_path / "a"], stop_after=30, shows=b"infeasibility")
+    assert rc == -signal.SIGTERM, err
+    assert "\rdirect method: mesh 1 (6 intervals), Ipopt iteration " in err, err
+    assert not (tmp_path / "a").exists()
+    rc, err = tty_run(exe, ["optimize", cat, "--out", tmp_path / "b", "--quiet"], stop_after=2.5)
+    assert rc == -signal.SIGTERM and err == "", err

@@ -9,6 +9,8 @@ from pathlib import Path
 
 import pytest
 
+from conftest import tty_run
+
 EXAMPLES = sorted((Path(__file__).resolve().parents[2] / "examples").glob("*.toml"))
 
 MINIMAL = """
@@ -212,48 +214,18 @@ def test_plot_writes_the_figures(cli, source_dir, tmp_path):
     assert "plot: wrote" in r.stdout
 
 
-def _tty_run(exe, args, stop_after=None):
-    """Runs the tool with stderr on a pseudo-terminal; with `stop_after` (s), sends SIGTERM once the progress bar
-    shows or that time has passed. Returns (returncode, stderr text)."""
-    import pty
-    import select
-
-    master, slave = pty.openpty()
-    p = subprocess.Popen([exe, *map(str, args)], stdout=subprocess.DEVNULL, stderr=slave)
-    os.close(slave)
-    chunks, start, signalled = [], time.time(), False
-    while True:
-        ready, _, _ = select.select([master], [], [], 0.1)
-        if ready:
-            try:
-                data = os.read(master, 4096)
-            except OSError:  # the child closed the terminal
-                break
-            if not data:
-                break
-            chunks.append(data)
-        if stop_after is not None and not signalled and (
-                b"\r[" in b"".join(chunks) or time.time() - start > stop_after):
-            p.send_signal(signal.SIGTERM)
-            signalled = True
-        if p.poll() is not None and not ready:
-            break
-    os.close(master)
-    return p.wait(timeout=120), b"".join(chunks).decode("utf-8", "replace")
-
-
 def test_progress_bar_only_on_a_terminal_for_long_runs(tmp_path):
     exe = os.environ["POINSOT_CLI"]
     long_run = write(tmp_path, MINIMAL.replace('"exact"', '"rk4"\ndt = 1e-5').replace("t_end = 5.0", "t_end = 1e3")
                      .replace("sample_dt = 0.5", "sample_dt = 0.01"))
     # The bar appears after the first second (the run is stopped as soon as it shows, or after 30 s).
-    rc, err = _tty_run(exe, ["run", long_run, "--out", tmp_path / "a"], stop_after=30)
+    rc, err = tty_run(exe, ["run", long_run, "--out", tmp_path / "a"], stop_after=30)
     assert rc == 128 + signal.SIGTERM, err
     assert "\r[" in err and "% " in err and "elapsed" in err, err
-    rc, err = _tty_run(exe, ["run", long_run, "--out", tmp_path / "b", "--quiet"], stop_after=2.5)
+    rc, err = tty_run(exe, ["run", long_run, "--out", tmp_path / "b", "--quiet"], stop_after=2.5)
     assert rc == 128 + signal.SIGTERM and "\r[" not in err, err
     fast = write(tmp_path, MINIMAL, "fast.toml")
-    rc, err = _tty_run(exe, ["run", fast, "--out", tmp_path / "c"])
+    rc, err = tty_run(exe, ["run", fast, "--out", tmp_path / "c"])
     assert rc == 0 and err == "", err  # under a second: no bar
 
 

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include "optimal_test_problems.hpp"
 #include "poinsot/optimal/interpretation.hpp"
@@ -92,6 +93,31 @@ TEST(IndirectShooting, SphereMinimumEnergyCost) {
   EXPECT_NEAR(s.cost / (12.0 * j * j * theta * theta / (T * T * T)), 1.0, 1e-11);
   const VerificationReport v = verify(p, d, s);
   EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+}
+
+// The Newton progress callback: called once per iteration (single shooting: as many times as the solution's
+// iteration count) with the accepted residual, which only decreases and ends at the solution's; the solution
+// is the same bit for bit without it.
+TEST(IndirectShooting, NewtonProgressReportsEachIteration) {
+  const auto p = testing::sphere_energy_problem(2.5, 2.0, Vec3(1.0, -2.0, 0.5), 3.0);
+  CollocationOptions opt;
+  opt.initial_intervals = 10;
+  opt.mesh_tolerance = 1e-6;
+  const DirectSolution d = solve_direct(p, opt);
+  ASSERT_TRUE(d.converged) << d.status;
+  std::vector<double> residuals;
+  ShootingOptions watched;
+  watched.on_newton_iteration = [&](double residual) { residuals.push_back(residual); };
+  const IndirectSolution s = solve_indirect(p, d, watched);
+  ASSERT_TRUE(s.converged) << s.status;
+  ASSERT_EQ(static_cast<int>(residuals.size()), s.iterations);
+  ASSERT_GE(residuals.size(), 1u);
+  for (std::size_t k = 1; k < residuals.size(); ++k)
+    EXPECT_LT(residuals[k], residuals[k - 1]) << "iteration " << k;
+  EXPECT_EQ(residuals.back(), s.residual);
+  const IndirectSolution plain = solve_indirect(p, d);
+  EXPECT_EQ(plain.cost, s.cost);
+  EXPECT_EQ(plain.iterations, s.iterations);
 }
 
 // The norm-bound sphere (‖u‖ ≤ ū, J = j I, rest to rest through Θ) in minimum time: the eigenaxis bang-bang

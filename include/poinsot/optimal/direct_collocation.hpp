@@ -22,19 +22,10 @@
 #include <vector>
 
 #include "poinsot/core/types.hpp"
+#include "poinsot/optimal/direct_progress.hpp"
 #include "poinsot/optimal/problem.hpp"
 
 namespace poinsot::optimal {
-
-/// Where a direct solve stands, for a progress display: the mesh, its intervals, and Ipopt's iteration on it.
-struct DirectProgress {
-  int mesh_iteration = 0;  ///< 1, 2, ... (the first mesh is 1)
-  int intervals = 0;
-  int restart = 0;  ///< 0: the first attempt on this mesh; 1, 2: Ipopt restarted with other settings
-  int nlp_iteration = 0;
-  double objective = 0.0;
-  double infeasibility = 0.0;  ///< Ipopt's constraint violation
-};
 
 struct CollocationOptions {
   int initial_intervals = 10;

@@ -41,6 +41,7 @@
 /// boundary arcs for minimum time with per-axis bounds (rate_bound_shooting.hpp, single shooting; the other
 /// objectives and bounds are reported "not applied"). Not handled: singular arcs (|u_i| strictly inside its
 /// bound over an interval of the direct solution, off the rate bound).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,9 @@ struct ShootingOptions {
   /// state and costates at the M − 1 interior nodes are unknowns too, started from the direct solution, and
   /// the continuity of (R, ω, p_θ, p_ω) at each node is a Newton equation (multiple shooting).
   int shooting_nodes = 1;
+  /// Called after every Newton iteration with the scaled residual's max norm (the terminal progress of
+  /// `poinsot optimize`); empty: not called. It does not change the solution.
+  std::function<void(double residual)> on_newton_iteration;
 };
 
 /// A time interval on which the torque is constant (bang-bang solutions).

@@ -25,11 +25,13 @@
 /// collocation points (an unresolved mesh, or in R-coordinates a spurious half-turn jump of the stabilised
 /// form: docs/optimal_control_multibody.md, "The falling cat"); otherwise `status` says what happened and the
 /// last iterate is kept, never presented as an optimum.
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "poinsot/multibody/multipliers.hpp"
 #include "poinsot/multibody/state.hpp"
+#include "poinsot/optimal/direct_progress.hpp"
 #include "poinsot/optimal/multibody_problem.hpp"
 
 namespace poinsot::optimal {
@@ -61,6 +63,9 @@ struct MultibodyOptions {
   /// the naive guess at N = 6 it ends 11 of the benchmark's 100 random arm problems on a spurious jump (none
   /// with 77). Any of Ipopt's values -2, -1, 0, 1, 3, 4, 7, 8, 77.
   int mumps_scaling = 77;
+  /// Called after every Ipopt iteration (mesh_iteration 1, this problem's intervals, restart 0; the terminal
+  /// progress of `poinsot optimize`); empty: not called. It does not change the solution.
+  std::function<void(const DirectProgress&)> progress;
 };
 
 struct MultibodyOptimum {

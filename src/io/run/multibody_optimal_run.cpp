@@ -89,20 +89,32 @@ double peak_rate(const MultibodyOptimalRun& r, int joint) {
 
 }  // namespace
 
-MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& sc) {
+MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& sc,
+                                          const std::function<void(const OptimalProgress&)>& progress) {
   MultibodyOptimalRun r;
   r.scenario = sc;
   optimal::MultibodyOptions options = sc.options;
   optimal::MultibodyOptimum previous;
   options.warm_start = nullptr;
+  int mesh = 0;  // the place of the mesh being solved in the sequence (1, 2, ...)
+  if (progress) {
+    options.progress = [&](const optimal::DirectProgress& d) {
+      optimal::DirectProgress at = d;
+      at.mesh_iteration = mesh;
+      progress({"direct", at});
+    };
+  }
   for (const int n : sc.mesh_sequence) {
     optimal::MultibodyProblem coarse = sc.problem;
     coarse.intervals = n;
+    ++mesh;
     previous = optimal::solve_multibody(coarse, options);
     r.mesh_stages.push_back({n, previous.status, previous.nlp_iterations, previous.cost});
     options.warm_start = &previous;
   }
+  ++mesh;
   r.optimum = optimal::solve_multibody(sc.problem, options);
+  if (progress) progress({"replay", {}});
   std::string failure = r.optimum.converged ? "" : r.optimum.status.substr(r.optimum.status.find(':') + 2);
   try {
     r.replay = optimal::replay_controls(sc.problem, r.optimum, sc.replay_steps);

@@ -242,8 +242,14 @@ OptimalRun run_optimal(const OptimalScenario& sc,
   if (progress) progress({"phased", {}});
   run_phased(r);
   if (progress) progress({"indirect", {}});
-  if (r.direct.costate_time.size() >= 2)
-    r.indirect = optimal::solve_indirect(sc.problem, r.direct, sc.shooting);
+  optimal::ShootingOptions shooting = sc.shooting;
+  int newton_iterations = 0;
+  if (progress) {
+    shooting.on_newton_iteration = [&](double residual) {
+      progress({"indirect", {}, ++newton_iterations, residual});
+    };
+  }
+  if (r.direct.costate_time.size() >= 2) r.indirect = optimal::solve_indirect(sc.problem, r.direct, shooting);
   if (progress) progress({"verification", {}});
   if (!r.indirect.time.empty()) {
     r.verification = optimal::verify(sc.problem, direct_optimum(r), r.indirect);

@@ -97,6 +97,38 @@ TEST(MultibodyOptimalOptions, FileWithTheKeysGivesTheOptimumOfTheCppCall) {
     EXPECT_NE(summary.find(key), std::string::npos) << key;
 }
 
+// The progress of a run with a mesh sequence: every Ipopt iteration of each mesh in order (the mesh's place
+// and intervals, the iterations counting up to the mesh's own count), then the re-simulation; the result is
+// the same bit for bit without it.
+TEST(MultibodyOptimalOptions, ProgressFollowsTheMeshSequence) {
+  const MultibodyOptimalScenario sc =
+      parse_multibody_optimal_scenario(ball_rod(kBallRodOptions), "<string>", "");
+  std::vector<OptimalProgress> seen;
+  const MultibodyOptimalRun run =
+      run_multibody_optimal(sc, [&](const OptimalProgress& p) { seen.push_back(p); });
+  ASSERT_TRUE(run.optimal) << run.status;
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.back().phase, "replay");
+  std::vector<int> last_iteration(2, -1);
+  for (std::size_t k = 0; k + 1 < seen.size(); ++k) {
+    const OptimalProgress& p = seen[k];
+    ASSERT_EQ(p.phase, "direct") << k;
+    ASSERT_TRUE(p.direct.mesh_iteration == 1 || p.direct.mesh_iteration == 2) << k;
+    if (k > 0) {
+      EXPECT_GE(p.direct.mesh_iteration, seen[k - 1].direct.mesh_iteration) << k;
+    }
+    EXPECT_EQ(p.direct.intervals, p.direct.mesh_iteration == 1 ? 4 : 8) << k;
+    int& last = last_iteration[static_cast<std::size_t>(p.direct.mesh_iteration - 1)];
+    EXPECT_EQ(p.direct.nlp_iteration, last + 1) << k;
+    last = p.direct.nlp_iteration;
+  }
+  EXPECT_EQ(last_iteration[0], run.mesh_stages[0].nlp_iterations);
+  EXPECT_EQ(last_iteration[1], run.optimum.nlp_iterations);
+  const MultibodyOptimalRun plain = run_multibody_optimal(sc);
+  EXPECT_EQ(plain.optimum.cost, run.optimum.cost);
+  EXPECT_EQ(multibody_optimal_summary_json(plain), multibody_optimal_summary_json(run));
+}
+
 // The rod on a hinge with |u| ≤ 1 N·m, turned through 1 rad in minimum time: T* = 2 √(Θ I / ū).
 std::string hinge_rod(const std::string& options) {
   return "[[bodies]]\nname = \"rod\"\nmass = 1.0\nshape = { type = \"rod\", length = 1.0, radius = 0.05 }\n"

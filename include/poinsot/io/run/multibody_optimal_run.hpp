@@ -19,9 +19,11 @@
 /// Every CSV starts with a `# status: ...` line. The result is "optimal" only when Ipopt converged and the
 /// re-simulated control reaches the target within the scenario's tolerance; otherwise the status says
 /// "not converged: ..." everywhere and the last iterate is kept.
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "poinsot/io/run/optimal_progress.hpp"
 #include "poinsot/io/scenario/multibody_optimal_scenario.hpp"
 #include "poinsot/optimal/multibody_direct.hpp"
 
@@ -48,7 +50,10 @@ struct MultibodyOptimalRun {
 /// Solves on each mesh of the scenario's mesh sequence, then on its intervals (each from the previous
 /// optimum), and re-simulates; never throws for a solver failure (the status says it). A mesh of the
 /// sequence that does not converge only gives its last iterate as the next guess: the last mesh decides.
-MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& scenario);
+/// `progress`, when given, is called after every Ipopt iteration (phase "direct", the mesh's place in the
+/// sequence) and before the re-simulation ("replay").
+MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& scenario,
+                                          const std::function<void(const OptimalProgress&)>& progress = {});
 
 std::string multibody_optimal_report(const MultibodyOptimalRun& run);
 std::string multibody_optimal_summary_json(const MultibodyOptimalRun& run);

@@ -28,6 +28,7 @@
 #include <functional>
 #include <string>
 
+#include "poinsot/io/run/optimal_progress.hpp"
 #include "poinsot/io/scenario/optimal_scenario.hpp"
 #include "poinsot/optimal/direct_replay.hpp"
 #include "poinsot/optimal/indirect_shooting.hpp"
@@ -43,13 +44,6 @@ enum class OptimalOutcome { optimal, converged_direct, not_converged };
 const char* outcome_name(OptimalOutcome outcome);
 /// The exit status of `poinsot optimize` for an outcome: 0, 3, 1 (2 is bad input, before any run).
 int outcome_exit_code(OptimalOutcome outcome);
-
-/// The progress of a run, for a terminal display: the phase ("direct", "phased", "indirect",
-/// "verification", "replay") and, during the direct method, where Ipopt is.
-struct OptimalProgress {
-  std::string phase;
-  optimal::DirectProgress direct;  ///< meaningful while phase is "direct"
-};
 
 struct OptimalRun {
   OptimalScenario scenario;

@@ -1,0 +1,19 @@
+#pragma once
+/// @file direct_progress.hpp
+/// Where a direct solve stands, for a progress display (the terminal line of `poinsot optimize`): the
+/// single-body collocation (direct_collocation.hpp) and the multibody transcriptions (multibody_direct.hpp)
+/// report it after every Ipopt iteration.
+
+namespace poinsot::optimal {
+
+/// Where a direct solve stands: the mesh, its intervals, and Ipopt's iteration on it.
+struct DirectProgress {
+  int mesh_iteration = 0;  ///< 1, 2, ... (the first mesh is 1)
+  int intervals = 0;
+  int restart = 0;  ///< 0: the first attempt on this mesh; 1, 2: Ipopt restarted with other settings
+  int nlp_iteration = 0;
+  double objective = 0.0;
+  double infeasibility = 0.0;  ///< Ipopt's constraint violation
+};
+
+}  // namespace poinsot::optimal
