@@ -1,6 +1,9 @@
-// The SDF kinematic tree of robot_kinematics.hpp: the links' poses in their model (nested models composed),
-// every <joint type><parent><child><pose><axis><axis2>, <world><gravity>.
+// The SDF kinematic tree of robot_kinematics.hpp: the links' poses in their model (nested models composed;
+// poses `relative_to` the model's links, joints and <frame>s), every <joint type><parent><child><pose><axis>
+// <axis2>, <world><gravity>.
+#include <algorithm>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <string_view>
 
@@ -16,35 +19,107 @@ namespace {
 
 using tinyxml2::XMLElement;
 
-/// The <pose> child of `e`, relative to the frame the format implies; `relative_to` another frame is refused.
-RigidPose pose_of(const XmlSource& xml, const XMLElement& e) {
-  RigidPose pose;
-  const XMLElement* p = e.FirstChildElement("pose");
-  if (p == nullptr || p->GetText() == nullptr) return pose;
-  if (const char* rel = p->Attribute("relative_to"); rel != nullptr && *rel != '\0') {
-    throw InvalidInput(
-        fmt::format("{} relative_to=\"{}\": not supported; expected a pose in the frame SDF "
-                    "implies (a link's in its model, a joint's in its child link)",
-                    xml.where(*p), rel));
-  }
-  const char* format = p->Attribute("rotation_format");
-  const bool quat = format != nullptr && std::string_view(format) == "quat_xyzw";
-  const std::vector<double> v = xml.numbers_text(*p, quat ? 7 : 6);
-  pose.p = Vec3(v[0], v[1], v[2]);
-  if (quat) {
-    pose.R = so3::rotation_from_quaternion(so3::quaternion_wxyz(v[6], v[3], v[4], v[5]));
-  } else {
-    const double unit = p->BoolAttribute("degrees", false) ? std::numbers::pi / 180.0 : 1.0;
-    pose.R = rotation_from_rpy(unit * Vec3(v[3], v[4], v[5]), xml.where(*p) + " roll, pitch, yaw");
-  }
-  return pose;
-}
-
 std::string child_text(const XMLElement& e, const char* name) {
   const XMLElement* c = e.FirstChildElement(name);
   const char* t = c != nullptr ? c->GetText() : nullptr;
   return t != nullptr ? std::string(t) : std::string();
 }
+
+/// The <pose> child of `e` as written: the pose, and the frame it is relative to ("" when none is named).
+struct WrittenPose {
+  RigidPose pose;
+  std::string relative_to;
+};
+
+WrittenPose written_pose(const XmlSource& xml, const XMLElement& e) {
+  WrittenPose out;
+  const XMLElement* p = e.FirstChildElement("pose");
+  if (p == nullptr) return out;
+  if (const char* rel = p->Attribute("relative_to")) out.relative_to = rel;
+  if (p->GetText() == nullptr) return out;
+  const char* format = p->Attribute("rotation_format");
+  const bool quat = format != nullptr && std::string_view(format) == "quat_xyzw";
+  const std::vector<double> v = xml.numbers_text(*p, quat ? 7 : 6);
+  out.pose.p = Vec3(v[0], v[1], v[2]);
+  if (quat) {
+    out.pose.R = so3::rotation_from_quaternion(so3::quaternion_wxyz(v[6], v[3], v[4], v[5]));
+  } else {
+    const double unit = p->BoolAttribute("degrees", false) ? std::numbers::pi / 180.0 : 1.0;
+    out.pose.R = rotation_from_rpy(unit * Vec3(v[3], v[4], v[5]), xml.where(*p) + " roll, pitch, yaw");
+  }
+  return out;
+}
+
+/// A <model>'s pose in its parent's frame; `relative_to` another frame is refused.
+RigidPose model_pose_of(const XmlSource& xml, const XMLElement& model) {
+  const WrittenPose w = written_pose(xml, model);
+  if (!w.relative_to.empty() && w.relative_to != "__model__") {
+    throw InvalidInput(
+        fmt::format("{} relative_to=\"{}\": not supported for a model; expected a pose in its "
+                    "parent's frame",
+                    xml.where(*model.FirstChildElement("pose")), w.relative_to));
+  }
+  return w.pose;
+}
+
+/// The frames of one <model> (SDF 1.7): each link, joint and <frame> by name, and each one's pose in the
+/// model's frame, following `relative_to` through the others. A pose without `relative_to` is in the frame
+/// SDF implies: the model's for a link, the child link's for a joint, the `attached_to` frame's (else the
+/// model's) for a <frame>; `__model__` names the model's frame.
+class SdfModelFrames {
+ public:
+  SdfModelFrames(const XmlSource& xml, const XMLElement& model) : xml_(xml) {
+    for (const XMLElement* e = model.FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
+      const std::string_view n = e->Name();
+      if (n != "link" && n != "joint" && n != "frame") continue;
+      if (const char* name = e->Attribute("name")) by_name_.emplace(name, e);
+    }
+  }
+
+  /// The pose of `e` (a link, joint or frame of this model) in the model's frame. Throws InvalidInput naming
+  /// the <pose> for a `relative_to` that names no frame of the model, or a chain of them that comes back.
+  RigidPose in_model(const XMLElement& e) const {
+    std::vector<const XMLElement*> chain;
+    return resolve(e, chain);
+  }
+
+ private:
+  RigidPose resolve(const XMLElement& e, std::vector<const XMLElement*>& chain) const {
+    if (const auto it = cache_.find(&e); it != cache_.end()) return it->second;
+    const XMLElement* pose = e.FirstChildElement("pose");
+    if (std::find(chain.begin(), chain.end(), &e) != chain.end()) {
+      throw InvalidInput(
+          fmt::format("{} {}: its pose is relative to a chain of frames that comes back to it; "
+                      "expected the chain to end at the model's frame",
+                      xml_.where(e), element_label(e)));
+    }
+    chain.push_back(&e);
+    const WrittenPose w = written_pose(xml_, e);
+    std::string base = w.relative_to;
+    if (base.empty() && std::string_view(e.Name()) == "joint") base = child_text(e, "child");
+    if (base.empty() && std::string_view(e.Name()) == "frame" && e.Attribute("attached_to") != nullptr)
+      base = e.Attribute("attached_to");
+    RigidPose frame;  // the model's
+    if (!base.empty() && base != "__model__") {
+      const auto it = by_name_.find(base);
+      if (it == by_name_.end()) {
+        throw InvalidInput(fmt::format(
+            "{} {}: relative_to=\"{}\": no link, joint or frame of that name in the model; expected one of "
+            "them or __model__",
+            xml_.where(pose != nullptr ? *pose : e), element_label(e), base));
+      }
+      frame = resolve(*it->second, chain);
+    }
+    chain.pop_back();
+    const RigidPose out = frame * w.pose;
+    cache_.emplace(&e, out);
+    return out;
+  }
+
+  const XmlSource& xml_;
+  std::map<std::string, const XMLElement*, std::less<>> by_name_;
+  mutable std::map<const XMLElement*, RigidPose> cache_;
+};
 
 struct SdfReader {
   const XmlSource& xml;
@@ -55,9 +130,12 @@ struct SdfReader {
   std::vector<const XMLElement*> link_model;
   std::vector<RigidPose> model_pose_of_link;                    ///< the pose of the link's model in space
   std::vector<std::pair<const XMLElement*, RigidPose>> joints;  // (element, its model's pose)
+  std::map<const XMLElement*, std::unique_ptr<SdfModelFrames>> frames;  ///< per <model> element
 
   void read_model(const XMLElement& m, const RigidPose& parent_pose, bool is_static) {
-    const RigidPose model_pose = parent_pose * pose_of(xml, m);
+    const RigidPose model_pose = parent_pose * model_pose_of(xml, m);
+    const SdfModelFrames& model_frames =
+        *frames.emplace(&m, std::make_unique<SdfModelFrames>(xml, m)).first->second;
     const bool static_model =
         is_static || child_text(m, "static") == "true" || child_text(m, "static") == "1";
     for (const XMLElement* e = m.FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
@@ -65,7 +143,7 @@ struct SdfReader {
       if (n == "link") {
         if (next_link >= model.links.size())
           throw InvalidInput(fmt::format("{}: more links than the model read", xml.where(*e)));
-        const RigidPose link_pose = model_pose * pose_of(xml, *e);
+        const RigidPose link_pose = model_pose * model_frames.in_model(*e);
         tree.root_pose.push_back(link_pose);
         RobotJointSpec spec;  // until a joint names it as child: free, or fixed in a static model
         spec.kind = static_model ? RobotJointKind::fixed : RobotJointKind::free;
@@ -167,7 +245,10 @@ struct SdfReader {
     const RigidPose child_pose = tree.root_pose[static_cast<std::size_t>(child)];
     const RigidPose parent_pose = parent < 0 ? RigidPose{} : tree.root_pose[static_cast<std::size_t>(parent)];
     spec.parent_child = parent_pose.inverse() * child_pose;
-    const RigidPose child_joint = pose_of(xml, e);  // the joint's frame in the child's
+    // The joint's frame in the child's: its pose as written, or through the model's frames when it names one.
+    const RigidPose child_joint = written_pose(xml, e).relative_to.empty()
+                                      ? written_pose(xml, e).pose
+                                      : child_pose.inverse() * (model_pose * frames.at(&m)->in_model(e));
     const auto dof = [&](RobotDof::Kind kind, const char* which) {
       RobotDof d;
       d.kind = kind;
@@ -225,7 +306,7 @@ struct SdfReader {
 }  // namespace
 
 RobotTree read_sdf_tree(const XmlSource& xml, const RobotModel& model) {
-  SdfReader r{xml, model, {}, 0, {}, {}, {}};
+  SdfReader r{xml, model, {}, 0, {}, {}, {}, {}};
   // Models under <sdf> and under its <world>s, in file order.
   for (const XMLElement* e = xml.root()->FirstChildElement(); e != nullptr; e = e->NextSiblingElement()) {
     const std::string_view n = e->Name();

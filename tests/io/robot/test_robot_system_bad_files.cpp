@@ -1,6 +1,7 @@
 // Robot files that poinsot refuses: each is one line naming the file, the element and its line (URDF, MJCF
 // and SDF; a missing parent, a loop, a zero axis, a massless moving link, an unsupported joint, an
-// orientation whose rotation is not finite).
+// orientation whose rotation is not finite, an SDF pose relative to no frame or to a chain of frames that
+// comes back).
 #include <string>
 #include <vector>
 
@@ -93,6 +94,17 @@ const std::string kSdfScrew =
     "<sdf version=\"1.6\"><model name=\"m\">\n<link name=\"a\"/>\n"
     "<joint name=\"j\" type=\"screw\"><parent>world</parent><child>a</child></joint></model></sdf>\n";
 
+const std::string kSdfUnknownFrame =
+    "<sdf version=\"1.7\"><model name=\"m\">\n<link name=\"a\">\n<pose relative_to=\"ghost\">0 0 1 0 0 "
+    "0</pose></link>\n</model></sdf>\n";
+const std::string kSdfFrameCycle =
+    "<sdf version=\"1.7\"><model name=\"m\">\n<link name=\"a\"><pose relative_to=\"f\">0 0 1 0 0 "
+    "0</pose></link>\n"
+    "<frame name=\"f\" attached_to=\"a\"><pose>1 0 0 0 0 0</pose></frame>\n</model></sdf>\n";
+const std::string kSdfModelRelative =
+    "<sdf version=\"1.7\"><model name=\"m\">\n<pose relative_to=\"a\">0 0 1 0 0 0</pose>\n<link "
+    "name=\"a\"/>\n</model></sdf>\n";
+
 INSTANTIATE_TEST_SUITE_P(
     Files, RobotSystemBadFile,
     ::testing::Values(
@@ -142,7 +154,16 @@ INSTANTIATE_TEST_SUITE_P(
                 {"parent.sdf:3: <joint> name=\"j\": <parent>ghost</parent>: no such link"}},
         BadFile{"screw.sdf",
                 kSdfScrew.c_str(),
-                {"screw.sdf:3: <joint> name=\"j\" type=\"screw\": not supported"}}));
+                {"screw.sdf:3: <joint> name=\"j\" type=\"screw\": not supported"}},
+        BadFile{"frame.sdf",
+                kSdfUnknownFrame.c_str(),
+                {"frame.sdf:3: <pose>", "relative_to=\"ghost\": no link, joint or frame of that name"}},
+        BadFile{"cycle.sdf",
+                kSdfFrameCycle.c_str(),
+                {"cycle.sdf:2: <link>", "a chain of frames that comes back to it"}},
+        BadFile{"model_pose.sdf",
+                kSdfModelRelative.c_str(),
+                {"model_pose.sdf:2: <pose> relative_to=\"a\": not supported for a model"}}));
 
 }  // namespace
 }  // namespace poinsot::io
