@@ -58,9 +58,9 @@ void check_state(const MultibodyProblem& p, const multibody::State& s, const std
   }
 }
 
-}  // namespace
-
-void validate(const MultibodyProblem& p) {
+/// The final time (and its bounds and the energy weight for minimum time), the intervals and the mesh. Throws
+/// InvalidInput.
+void check_times_and_mesh(const MultibodyProblem& p) {
   if (!(p.final_time > 0.0) || !std::isfinite(p.final_time)) {
     throw InvalidInput(
         fmt::format("optimal control: final_time: got {} s; expected a finite number > 0", p.final_time));
@@ -97,6 +97,11 @@ void validate(const MultibodyProblem& p) {
           p.mesh.size(), smallest, sum, p.intervals));
     }
   }
+}
+
+/// The system: no springs, no joint springs, no prismatic joint (the transcriptions have none of them).
+/// Throws InvalidInput.
+void check_system_supported(const MultibodyProblem& p) {
   if (!p.system.springs().empty()) {
     throw InvalidInput(
         fmt::format("optimal control: spring '{}': springs are not supported by the optimal "
@@ -117,6 +122,11 @@ void validate(const MultibodyProblem& p) {
                       j.name));
     }
   }
+}
+
+/// At least one actuator; each bound > 0 (finite for minimum time) on a joint of its kind or a body. Throws
+/// InvalidInput.
+void check_actuators(const MultibodyProblem& p) {
   if (p.actuators.empty()) {
     throw InvalidInput(
         "optimal control: actuators: none given; expected at least one hinge or body torque (an unactuated "
@@ -148,8 +158,10 @@ void validate(const MultibodyProblem& p) {
           fmt::format("{}: body: got index {}; expected 0 to {}", what, a.index, p.system.body_count() - 1));
     }
   }
-  check_state(p, p.initial_state, "initial state");
-  check_state(p, p.final_state, "final state");
+}
+
+/// Each rate bound on a hinge, > 0, and met by both boundary states. Throws InvalidInput.
+void check_rate_bounds(const MultibodyProblem& p) {
   for (std::size_t i = 0; i < p.rate_bounds.size(); ++i) {
     const RateBound& b = p.rate_bounds[i];
     const std::string what = fmt::format("optimal control: rate_bounds[{}]", i);
@@ -170,6 +182,10 @@ void validate(const MultibodyProblem& p) {
       }
     }
   }
+}
+
+/// Each free final hinge a hinge whose body_a hangs from it alone. Throws InvalidInput.
+void check_free_final_hinges(const MultibodyProblem& p) {
   for (std::size_t k = 0; k < p.free_final_hinges.size(); ++k) {
     const int ji = p.free_final_hinges[k];
     const std::string what = fmt::format("optimal control: free_final_hinges[{}]", k);
@@ -188,6 +204,11 @@ void validate(const MultibodyProblem& p) {
       }
     }
   }
+}
+
+/// Each no-twist condition on a ball joint, with a unit axis and a rotation, met by both boundary states.
+/// Throws InvalidInput.
+void check_no_twist(const MultibodyProblem& p) {
   for (std::size_t i = 0; i < p.no_twist.size(); ++i) {
     const NoTwist& c = p.no_twist[i];
     const std::string what = fmt::format("optimal control: no_twist[{}]", i);
@@ -213,6 +234,11 @@ void validate(const MultibodyProblem& p) {
       }
     }
   }
+}
+
+/// A free-floating system with internal torques only: zero linear momentum for minimum time, and the same
+/// momenta (P, H, M x_com − t P) in both boundary states. Throws InvalidInput.
+void check_momenta(const MultibodyProblem& p) {
   if (detail::conserves_momenta(p) && p.objective == MultibodyObjective::minimum_time) {
     const double P = multibody::linear_momentum(p.system, p.initial_state).norm();
     double scale = 0.0;
@@ -242,6 +268,20 @@ void validate(const MultibodyProblem& p) {
           gap));
     }
   }
+}
+
+}  // namespace
+
+void validate(const MultibodyProblem& p) {
+  check_times_and_mesh(p);
+  check_system_supported(p);
+  check_actuators(p);
+  check_state(p, p.initial_state, "initial state");
+  check_state(p, p.final_state, "final state");
+  check_rate_bounds(p);
+  check_free_final_hinges(p);
+  check_no_twist(p);
+  check_momenta(p);
 }
 
 double twist_residual(const multibody::System& system, const multibody::State& state,

@@ -28,20 +28,11 @@ double replay_attitude_error(const Mat3& replayed, const Mat3& reference) {
                               : std::numeric_limits<double>::quiet_NaN();
 }
 
-}  // namespace
-
-VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d, const IndirectSolution& s,
-                          const VerificationTolerances& tol) {
-  VerificationReport r;
-  auto fail = [&](const std::string& what) { r.failures.push_back(what); };
-  // The direct optimum must be a solution of its NLP; a mesh error above its tolerance is no failure here:
-  // the indirect solution is checked on its own, and the costs' agreement below bounds the direct one's.
-  if (!d.converged && !d.nlp_solved) fail("direct method: " + d.status);
-  if (!s.converged) fail("indirect method: " + s.status);
-  if (s.time.empty()) {
-    r.passed = false;
-    return r;
-  }
+/// The necessary conditions along the indirect solution's samples: H constant (its mean and deviation), the
+/// control minimising H (the gap, relative to the size of its control-dependent part; the bang-bang signs),
+/// R p_θ constant, RᵀR = I, and vee(Λ − Λᵀ) = u.
+void measure_necessary_conditions(const ReorientationProblem& p, const IndirectSolution& s,
+                                  VerificationReport& r) {
   const Mat3 J_inv = p.inertia_body.inverse();
   const auto body = dynamics::RigidBody::from_inertia(p.inertia_body);
   double h_sum = 0.0;
@@ -86,6 +77,11 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
     r.lambda_torque_error = std::max(
         r.lambda_torque_error, (so3::vee(lambda - lambda.transpose()) - u).norm() / p.torque_norm_limit());
   }
+}
+
+/// The re-simulations of the indirect control by DOP853: open loop from the initial state to the target, and
+/// with M > 1 split at the shooting nodes. A replay that cannot run gives NaN errors and a failure.
+void measure_replays(const ReorientationProblem& p, const IndirectSolution& s, VerificationReport& r) {
   // The open-loop replay from the initial state, compared with the target (with a free final attitude, with
   // the indirect solution's own R(T)); then, with M > 1, each segment replayed from its node and compared
   // with the next node (the last with the target).
@@ -129,10 +125,13 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
     const double nan = std::numeric_limits<double>::quiet_NaN();
     r.resimulated_attitude_error = r.resimulated_rate_error = r.replay_amplification = nan;
     r.split_replay_attitude_error = r.split_replay_rate_error = nan;
-    fail(std::string("re-simulation could not run: ") + e.what());
+    r.failures.push_back(std::string("re-simulation could not run: ") + e.what());
   }
-  r.direct_indirect_difference = std::abs(d.cost - s.cost) / std::max(std::abs(s.cost), 1e-300);
-  // Admissibility of the samples and the sign of the rate-bound multipliers.
+}
+
+/// Admissibility along the samples (the torque and rate bounds, the pointing cones' margins) and the sign of
+/// the rate-bound multipliers.
+void measure_admissibility(const ReorientationProblem& p, const IndirectSolution& s, VerificationReport& r) {
   r.torque_bound_excess = -1.0;
   for (std::size_t j = 0; j < s.time.size(); ++j) {
     const Vec3& u = s.torque_body[j];
@@ -160,7 +159,12 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
     mu_min = std::min(mu_min, mu.minCoeff());
   }
   r.rate_multiplier_min = mu_max > 0.0 ? mu_min / mu_max : 0.0;
+}
 
+/// Each measured condition against its tolerance: one failure line per condition missed.
+void judge(const ReorientationProblem& p, const IndirectSolution& s, const VerificationTolerances& tol,
+           VerificationReport& r) {
+  auto fail = [&](const std::string& what) { r.failures.push_back(what); };
   const double h_level = p.free_final_time() ? std::abs(r.hamiltonian_mean) : 0.0;
   if (r.hamiltonian_deviation > tol.hamiltonian || h_level > tol.hamiltonian)
     fail("Hamiltonian: mean " + format_number(r.hamiltonian_mean, 3) + ", deviation " +
@@ -214,6 +218,26 @@ VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d
   if (r.direct_indirect_difference > tol.direct_indirect)
     fail("direct and indirect costs differ by " + format_number(r.direct_indirect_difference, 3) +
          " (relative)");
+}
+
+}  // namespace
+
+VerificationReport verify(const ReorientationProblem& p, const DirectSolution& d, const IndirectSolution& s,
+                          const VerificationTolerances& tol) {
+  VerificationReport r;
+  // The direct optimum must be a solution of its NLP; a mesh error above its tolerance is no failure here:
+  // the indirect solution is checked on its own, and the costs' agreement below bounds the direct one's.
+  if (!d.converged && !d.nlp_solved) r.failures.push_back("direct method: " + d.status);
+  if (!s.converged) r.failures.push_back("indirect method: " + s.status);
+  if (s.time.empty()) {
+    r.passed = false;
+    return r;
+  }
+  measure_necessary_conditions(p, s, r);
+  measure_replays(p, s, r);
+  r.direct_indirect_difference = std::abs(d.cost - s.cost) / std::max(std::abs(s.cost), 1e-300);
+  measure_admissibility(p, s, r);
+  judge(p, s, tol, r);
   r.passed = r.failures.empty();
   return r;
 }
