@@ -293,7 +293,11 @@ OptimalRun run_optimal(const OptimalScenario& sc,
   return r;
 }
 
-std::string optimal_report(const OptimalRun& r) {
+namespace {
+
+/// The report's head: the problem (body, objective, bounds, cones), the status, what failed and what to
+/// change, the direct re-simulation and what the files hold.
+std::string report_problem_and_outcome(const OptimalRun& r) {
   const auto& p = r.scenario.problem;
   std::ostringstream o;
   o << "poinsot optimize: " << r.scenario.source << "\n";
@@ -343,7 +347,12 @@ std::string optimal_report(const OptimalRun& r) {
           : direct_optimum(r).nlp_solved                     ? "the direct solution Ipopt solved"
                                                              : "the direct method's last iterate")
       << "\n";
-  o << "\n";
+  return o.str();
+}
+
+/// The direct method's lines: mesh refinement, the phase-per-arc re-solve, which gave the direct optimum.
+std::string report_direct(const OptimalRun& r) {
+  std::ostringstream o;
   o << fmt::format(
       "direct (Hermite–Simpson, Ipopt): {}; {} intervals after {} mesh iterations, mesh error {}, "
       "{} Ipopt iterations{}\n  final time {} s, cost {}\n",
@@ -368,6 +377,14 @@ std::string optimal_report(const OptimalRun& r) {
     << (direct_optimum_source(r) == std::string_view("phased") ? "the phase-per-arc re-solve"
                                                                : "mesh refinement")
     << "\n";
+  return o.str();
+}
+
+/// The indirect method's lines: the shooting, its switches and reversals, and the checks of the minimum
+/// principle.
+std::string report_indirect(const OptimalRun& r) {
+  const auto& p = r.scenario.problem;
+  std::ostringstream o;
   const int segments = r.scenario.shooting.shooting_nodes;
   o << fmt::format("indirect (minimum principle in (R, ω), {}): {}; {} Newton iterations, residual {}\n",
                    segments > 1 ? fmt::format("multiple shooting over {} segments", segments) : "shooting",
@@ -409,6 +426,12 @@ std::string optimal_report(const OptimalRun& r) {
     for (const auto& f : v.failures)
       o << "  FAILED: " << f << "\n";
   }
+  return o.str();
+}
+
+/// The constraint stress and the comparison with the eigenaxis manoeuvre, when computed.
+std::string report_interpretation(const OptimalRun& r) {
+  std::ostringstream o;
   if (r.has_interpretation) {
     const auto& m = r.interpretation;
     o << fmt::format(
@@ -420,6 +443,13 @@ std::string optimal_report(const OptimalRun& r) {
                        format_number(m.eigenaxis_cost, 10), format_number(m.saving, 4));
   }
   return o.str();
+}
+
+}  // namespace
+
+std::string optimal_report(const OptimalRun& r) {
+  return report_problem_and_outcome(r) + "\n" + report_direct(r) + report_indirect(r) +
+         report_interpretation(r);
 }
 
 std::string optimal_summary_json(const OptimalRun& r) {
