@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -144,6 +147,190 @@ class FreeStepChecks final : public StepWatcher {
   long long done_ = 0;
 };
 
+/// One call of simulate(): what persists between the steps (the state, the samples' times, the invariants,
+/// the flip detector, the result) and the two step loops, adaptive (samples from the dense output) and fixed
+/// (steps that land on the samples).
+class SimulationRun {
+ public:
+  SimulationRun(const RigidBody& body, std::shared_ptr<const TorqueModel> torque, const State& initial,
+                Integrator& integrator, const SimulationOptions& options, const Observer& observer,
+                std::chrono::steady_clock::time_point wall_start)
+      : torque_(std::move(torque)),
+        integrator_(integrator),
+        options_(options),
+        observer_(observer),
+        wall_start_(wall_start),
+        invariants_(body, *torque_, initial),
+        flips_(body, torque_),
+        locate_(options.locate_flips && flips_.applicable()),
+        breaks_(torque_->breakpoints()),
+        dense_{&integrator, &flips_},
+        s_(initial),
+        t0_(initial.time),
+        // Samples at t0 + i·sample_dt for i = 0..n−1 and t_end (a last sample closer than 1e-9·sample_dt to
+        // t_end is t_end itself).
+        n_intervals_(static_cast<long long>(std::ceil((options.t_end - t0_) / options.sample_dt - 1e-9))) {
+    result_.flip_times.reserve(64);
+    invariants_.record(s_, result_.errors);
+  }
+
+  SimulationResult run() {
+    if (!emit(s_)) return finish();
+    return integrator_.is_adaptive() ? run_adaptive() : run_fixed();
+  }
+
+ private:
+  double sample_time(long long i) const {
+    return i >= n_intervals_ ? options_.t_end : t0_ + static_cast<double>(i) * options_.sample_dt;
+  }
+
+  /// Hands a sample to the observer; false (and the result marked interrupted) when it asks to stop.
+  bool emit(const State& x) {
+    if (observer_ && !observer_(x)) {
+      result_.interrupted = true;
+      return false;
+    }
+    return true;
+  }
+
+  SimulationResult finish() {
+    result_.final_state = s_;
+    result_.wall_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start_).count();
+    return result_;
+  }
+
+  /// The torque's breakpoints (a tabulated torque's jumps and kinks): no step straddles one, and the torque
+  /// is told where each step starts (TorqueModel::enter_interval), so that stages at a breakpoint see one
+  /// piece. The first breakpoint after t before `limit`, else `limit`.
+  double next_stop(double t, double limit) const {
+    const auto it = std::upper_bound(breaks_.begin(), breaks_.end(), t);
+    return it != breaks_.end() && *it < limit ? *it : limit;
+  }
+
+  StepResult take_step(State& x, double h) {
+    torque_->enter_interval(x.time);
+    try {
+      const StepResult r = integrator_.step(x, h);
+      ++result_.steps;
+      result_.rejected_steps += r.rejected;
+      return r;
+    } catch (const ComputationFailed& e) {
+      throw ComputationFailed(fmt::format("simulate: {} failed at step {} (t = {} s): {}", integrator_.name(),
+                                          result_.steps + 1, x.time, e.what()));
+    }
+  }
+
+  /// After every step from `prev` to the state: a finite state, the invariant errors, and a flip located
+  /// inside the step by root finding on the dense output, or on a cubic Hermite interpolant for methods
+  /// without one.
+  void after_step(const State& prev) {
+    require_finite_state(integrator_, s_, result_.steps);
+    invariants_.record(s_, result_.errors);
+    if (!locate_) return;
+    const double c0 = flips_.component(prev);
+    const double c1 = flips_.component(s_);
+    if (!FlipDetector::sign_change(c0, c1)) return;
+    result_.flip_times.push_back(
+        integrator_.has_dense_output()
+            ? locate_sign_change(&dense_component, &dense_, prev.time, s_.time, c0, c1)
+            : FlipDetector::hermite_root(prev.time, s_.time, c0, c1, flips_.rate(prev), flips_.rate(s_)));
+  }
+
+  /// Adaptive methods: the steps the controller proposes, cut at the breakpoints and at t_end; the samples
+  /// from the dense output.
+  SimulationResult run_adaptive() {
+    long long next = 1;  // index of the next sample
+    double h = integrator_.nominal_step() > 0.0 ? integrator_.nominal_step() : options_.sample_dt;
+    while (s_.time < options_.t_end) {
+      const State prev = s_;
+      const double stop = next_stop(s_.time, options_.t_end);
+      const double remaining = stop - s_.time;
+      const bool last = h >= remaining;
+      const StepResult r = take_step(s_, last ? remaining : h);
+      const bool reached = last && r.dt_taken == remaining;
+      if (reached) s_.time = stop;
+      // A step cut short at a breakpoint says nothing against the step proposed before it.
+      h = reached ? std::max(h, r.dt_next) : r.dt_next;
+      after_step(prev);
+      while (next <= n_intervals_ && sample_time(next) <= s_.time) {
+        const double ts = sample_time(next);
+        ++next;
+        if (!emit(ts == s_.time ? s_ : integrator_.dense_output(ts))) return finish();
+      }
+    }
+    return finish();
+  }
+
+  /// Fixed-step methods: each sample interval is cut into n equal steps of at most the nominal step, so that
+  /// samples land exactly on the sample times (no interpolation of the samples). A torque-free body is
+  /// advanced one sample interval at a time (Integrator::advance: no conversion to a State between the
+  /// steps), its per-step checks made from ω by FreeStepChecks. With a torque every step ends in a State,
+  /// since the torque and its flip rate depend on the attitude.
+  SimulationResult run_fixed() {
+    const double h_nominal = integrator_.nominal_step();
+    const bool free = torque_->is_zero();
+    FreeStepChecks checks(integrator_, invariants_, flips_, locate_, result_);
+    // A sample interval holding breakpoints is cut at them first.
+    for (long long next = 1; next <= n_intervals_; ++next) {
+      const double b = sample_time(next);
+      while (s_.time < b) {
+        const double a = s_.time;
+        const double e = next_stop(a, b);
+        const long long n = h_nominal > 0.0
+                                ? std::max(1LL, static_cast<long long>(std::ceil((e - a) / h_nominal - 1e-9)))
+                                : 1;
+        const double hh = (e - a) / static_cast<double>(n);
+        if (free) {
+          advance_free(checks, n, hh, e);
+          continue;
+        }
+        for (long long k = 0; k < n; ++k) {
+          const State prev = s_;
+          take_step(s_, hh);
+          if (k == n - 1) s_.time = e;
+          after_step(prev);
+        }
+      }
+      if (!emit(s_)) return finish();
+    }
+    return finish();
+  }
+
+  /// n steps of hh to `end` of a torque-free body through Integrator::advance.
+  void advance_free(FreeStepChecks& checks, long long n, double hh, double end) {
+    checks.begin(s_, n, end);
+    try {
+      const StepResult r = integrator_.advance(s_, hh, n, &checks);
+      result_.rejected_steps += r.rejected;
+    } catch (const ComputationFailed& err) {
+      if (checks.failed()) throw;
+      throw ComputationFailed(fmt::format("simulate: {} failed at step {} (t = {} s): {}", integrator_.name(),
+                                          result_.steps + checks.steps_done() + 1, checks.time(),
+                                          err.what()));
+    }
+    result_.steps += n;
+    s_.time = end;
+    require_finite_state(integrator_, s_, result_.steps);
+    invariants_.record(s_, result_.errors);
+  }
+
+  std::shared_ptr<const TorqueModel> torque_;
+  Integrator& integrator_;
+  const SimulationOptions& options_;
+  const Observer& observer_;
+  std::chrono::steady_clock::time_point wall_start_;
+  const InvariantTracker invariants_;
+  const FlipDetector flips_;
+  const bool locate_;
+  const std::vector<double> breaks_;
+  const DenseContext dense_;
+  SimulationResult result_;
+  State s_;
+  const double t0_;
+  const long long n_intervals_;
+};
+
 }  // namespace
 
 SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
@@ -158,139 +345,7 @@ SimulationResult simulate(const RigidBody& body, std::shared_ptr<const TorqueMod
                                    options.t_end, initial.time));
   }
   require_positive("simulate: sample_dt", options.sample_dt, "s");
-
-  const InvariantTracker invariants(body, *torque, initial);
-  const FlipDetector flips(body, torque);
-  const bool locate = options.locate_flips && flips.applicable();
-  SimulationResult result;
-  result.flip_times.reserve(64);
-  State s = initial;
-  invariants.record(s, result.errors);
-
-  const double t0 = initial.time;
-  const double span = options.t_end - t0;
-  // Samples at t0 + i·sample_dt for i = 0..n−1 and t_end (a last sample closer than 1e-9·sample_dt to
-  // t_end is t_end itself).
-  const auto n_intervals = static_cast<long long>(std::ceil(span / options.sample_dt - 1e-9));
-  const auto sample_time = [&](long long i) {
-    return i >= n_intervals ? options.t_end : t0 + static_cast<double>(i) * options.sample_dt;
-  };
-  const auto emit = [&](const State& x) {
-    if (observer && !observer(x)) {
-      result.interrupted = true;
-      return false;
-    }
-    return true;
-  };
-  const auto finish = [&]() {
-    result.final_state = s;
-    result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-    return result;
-  };
-  // The torque's breakpoints (a tabulated torque's jumps and kinks): no step straddles one, and the torque is
-  // told where each step starts (TorqueModel::enter_interval), so that stages at a breakpoint see one piece.
-  const std::vector<double> breaks = torque->breakpoints();
-  const auto next_stop = [&](double t, double limit) {
-    const auto it = std::upper_bound(breaks.begin(), breaks.end(), t);
-    return it != breaks.end() && *it < limit ? *it : limit;
-  };
-  const auto take_step = [&](State& x, double h) {
-    torque->enter_interval(x.time);
-    try {
-      const StepResult r = integrator.step(x, h);
-      ++result.steps;
-      result.rejected_steps += r.rejected;
-      return r;
-    } catch (const ComputationFailed& e) {
-      throw ComputationFailed(fmt::format("simulate: {} failed at step {} (t = {} s): {}", integrator.name(),
-                                          result.steps + 1, x.time, e.what()));
-    }
-  };
-  const DenseContext dense{&integrator, &flips};
-  // After every step from `prev` to s: a finite state, the invariant errors, and a flip located inside the
-  // step by root finding on the dense output, or on a cubic Hermite interpolant for methods without one.
-  const auto after_step = [&](const State& prev) {
-    require_finite_state(integrator, s, result.steps);
-    invariants.record(s, result.errors);
-    if (!locate) return;
-    const double c0 = flips.component(prev);
-    const double c1 = flips.component(s);
-    if (!FlipDetector::sign_change(c0, c1)) return;
-    result.flip_times.push_back(
-        integrator.has_dense_output()
-            ? locate_sign_change(&dense_component, &dense, prev.time, s.time, c0, c1)
-            : FlipDetector::hermite_root(prev.time, s.time, c0, c1, flips.rate(prev), flips.rate(s)));
-  };
-
-  if (!emit(s)) return finish();
-  long long next = 1;  // index of the next sample
-
-  if (integrator.is_adaptive()) {
-    double h = integrator.nominal_step() > 0.0 ? integrator.nominal_step() : options.sample_dt;
-    while (s.time < options.t_end) {
-      const State prev = s;
-      const double stop = next_stop(s.time, options.t_end);
-      const double remaining = stop - s.time;
-      const bool last = h >= remaining;
-      const StepResult r = take_step(s, last ? remaining : h);
-      const bool reached = last && r.dt_taken == remaining;
-      if (reached) s.time = stop;
-      // A step cut short at a breakpoint says nothing against the step proposed before it.
-      h = reached ? std::max(h, r.dt_next) : r.dt_next;
-      after_step(prev);
-      while (next <= n_intervals && sample_time(next) <= s.time) {
-        const double ts = sample_time(next);
-        ++next;
-        if (!emit(ts == s.time ? s : integrator.dense_output(ts))) return finish();
-      }
-    }
-    return finish();
-  }
-
-  // Fixed-step methods: each sample interval is cut into n equal steps of at most the nominal step, so that
-  // samples land exactly on the sample times (no interpolation of the samples).
-  const double h_nominal = integrator.nominal_step();
-  // A torque-free body is advanced one sample interval at a time (Integrator::advance: no conversion to a
-  // State between the steps), its per-step checks made from ω by FreeStepChecks. With a torque every step
-  // ends in a State, since the torque and its flip rate depend on the attitude.
-  const bool free = torque->is_zero();
-  FreeStepChecks checks(integrator, invariants, flips, locate, result);
-  // A sample interval holding breakpoints is cut at them first.
-  for (; next <= n_intervals; ++next) {
-    const double b = sample_time(next);
-    while (s.time < b) {
-      const double a = s.time;
-      const double e = next_stop(a, b);
-      const long long n =
-          h_nominal > 0.0 ? std::max(1LL, static_cast<long long>(std::ceil((e - a) / h_nominal - 1e-9))) : 1;
-      const double hh = (e - a) / static_cast<double>(n);
-      if (free) {
-        checks.begin(s, n, e);
-        try {
-          const StepResult r = integrator.advance(s, hh, n, &checks);
-          result.rejected_steps += r.rejected;
-        } catch (const ComputationFailed& err) {
-          if (checks.failed()) throw;
-          throw ComputationFailed(fmt::format("simulate: {} failed at step {} (t = {} s): {}",
-                                              integrator.name(), result.steps + checks.steps_done() + 1,
-                                              checks.time(), err.what()));
-        }
-        result.steps += n;
-        s.time = e;
-        require_finite_state(integrator, s, result.steps);
-        invariants.record(s, result.errors);
-        continue;
-      }
-      for (long long k = 0; k < n; ++k) {
-        const State prev = s;
-        take_step(s, hh);
-        if (k == n - 1) s.time = e;
-        after_step(prev);
-      }
-    }
-    if (!emit(s)) return finish();
-  }
-  return finish();
+  return SimulationRun(body, std::move(torque), initial, integrator, options, observer, wall_start).run();
 }
 
 }  // namespace poinsot::dynamics
