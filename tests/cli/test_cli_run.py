@@ -139,6 +139,25 @@ def test_a_file_of_another_sub_command_names_the_one_that_reads_it(cli, source_d
         assert f"is read by `{reader}`, not by this sub-command; expected `{reader} {path}`" in r.stderr, r.stderr
 
 
+def test_the_other_sub_commands_name_the_one_that_reads_a_file(cli, source_dir, tmp_path):
+    """A robot file given to a sub-command that reads TOML scenarios, and a scenario of another kind given to
+    `poinsot ensemble`: one line naming the sub-command that reads it, exit 2, nothing written."""
+    urdf = Path(source_dir) / "tests/data/models/robots/pendulum2.urdf"
+    for args in (("optimize", urdf, "--out", tmp_path / "a"), ("ensemble", urdf, "--out", tmp_path / "a"),
+                 ("lambda", urdf)):
+        r = cli(*args)
+        assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+        assert f"a robot file (URDF, MJCF or SDF), which `poinsot run {urdf}` simulates as it is" in r.stderr
+    for example, says in (("examples/optimal/betts.toml", "which `poinsot optimize {}` solves"),
+                          ("examples/multibody/double_pendulum.toml", "which `poinsot run {}` simulates"),
+                          ("examples/tennis_racket.toml", "`poinsot run {}` simulates the file as it is")):
+        path = Path(source_dir) / example
+        r = cli("ensemble", path, "--out", tmp_path / "a")
+        assert r.returncode == 2 and r.stderr.count("\n") == 1, r.stderr
+        assert "[ensemble]: missing" in r.stderr and says.format(path) in r.stderr, r.stderr
+    assert not (tmp_path / "a").exists()
+
+
 def test_missing_and_double_keys(cli, tmp_path):
     assert "[output] t_end: missing" in bad(cli, tmp_path, MINIMAL.replace("t_end = 5.0", ""))
     msg = bad(cli, tmp_path, MINIMAL.replace("[initial]", "[initial]\nomega_space = [1, 0, 0]"))

@@ -247,10 +247,22 @@ EnsembleScenario parse_ensemble_scenario(std::string_view text, std::string_view
   toml::table root = detail::parse_toml(text, source);
   const toml::table* ens = root["ensemble"].as_table();
   if (!ens) {
+    // Which sub-command reads the file, when it is another kind of scenario.
+    const std::string reader = root.get("optimal_control") != nullptr
+                                   ? fmt::format(
+                                         "; the file is an optimal-control problem, which `poinsot "
+                                         "optimize {}` solves",
+                                         source)
+                               : root.get("bodies") != nullptr || root.get("model") != nullptr
+                                   ? fmt::format(
+                                         "; the file is a multibody scenario, which `poinsot run {}` "
+                                         "simulates (an ensemble disperses one body)",
+                                         source)
+                                   : fmt::format("; `poinsot run {}` simulates the file as it is", source);
     throw InvalidInput(
         fmt::format("{}: [ensemble]: missing; expected a section with samples, seed and the "
-                    "dispersions (docs/ensemble.md)",
-                    source));
+                    "dispersions (docs/ensemble.md){}",
+                    source, reader));
   }
   const toml::table ensemble_table = *ens;
   toml::table body_table = root;
@@ -309,7 +321,8 @@ EnsembleScenario parse_ensemble_scenario(std::string_view text, std::string_view
 
 EnsembleScenario load_ensemble_scenario(const std::string& path) {
   const std::filesystem::path p(path);
-  EnsembleScenario sc = parse_ensemble_scenario(detail::read_text_file(path), path, p.parent_path().string());
+  EnsembleScenario sc =
+      parse_ensemble_scenario(detail::read_scenario_file(path), path, p.parent_path().string());
   sc.base.name = p.stem().string();
   return sc;
 }

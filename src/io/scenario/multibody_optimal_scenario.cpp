@@ -402,7 +402,7 @@ MultibodyOptimalScenario multibody_optimal_scenario_of(const optimal::MultibodyP
 MultibodyOptimalScenario load_multibody_optimal_scenario(const std::string& path) {
   const std::filesystem::path p(path);
   MultibodyOptimalScenario sc =
-      parse_multibody_optimal_scenario(detail::read_text_file(path), path, p.parent_path().string());
+      parse_multibody_optimal_scenario(detail::read_scenario_file(path), path, p.parent_path().string());
   sc.name = p.stem().string();
   return sc;
 }

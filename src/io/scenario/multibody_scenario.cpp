@@ -364,7 +364,7 @@ multibody::Scenario parse_multibody_scenario(std::string_view text, std::string_
 }
 
 multibody::Scenario load_multibody_scenario(const std::string& path) {
-  return parse_multibody_scenario(detail::read_text_file(path), path,
+  return parse_multibody_scenario(detail::read_scenario_file(path), path,
                                   std::filesystem::path(path).parent_path().string());
 }
 

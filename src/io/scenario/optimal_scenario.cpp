@@ -172,7 +172,8 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
 
 OptimalScenario load_optimal_scenario(const std::string& path) {
   const std::filesystem::path p(path);
-  OptimalScenario sc = parse_optimal_scenario(detail::read_text_file(path), path, p.parent_path().string());
+  OptimalScenario sc =
+      parse_optimal_scenario(detail::read_scenario_file(path), path, p.parent_path().string());
   sc.name = p.stem().string();
   return sc;
 }

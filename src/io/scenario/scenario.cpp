@@ -214,7 +214,7 @@ Scenario parse_scenario(std::string_view text, std::string_view source, std::str
 
 Scenario load_scenario(const std::string& path) {
   const std::filesystem::path p(path);
-  Scenario sc = parse_scenario(detail::read_text_file(path), path, p.parent_path().string());
+  Scenario sc = parse_scenario(detail::read_scenario_file(path), path, p.parent_path().string());
   sc.name = p.stem().string();
   return sc;
 }

@@ -14,6 +14,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/core/text_file.hpp"
+#include "poinsot/io/robot/robot_system.hpp"
 
 namespace poinsot::io::detail {
 
@@ -30,6 +31,16 @@ toml::table parse_toml(std::string_view text, std::string_view source) {
 
 std::string read_text_file(const std::string& path) {
   return read_file_limited(path, "scenario", default_max_file_bytes());
+}
+
+std::string read_scenario_file(const std::string& path) {
+  if (is_robot_file(path)) {
+    throw InvalidInput(fmt::format(
+        "{}: a robot file (URDF, MJCF or SDF), which `poinsot run {}` simulates as it is; expected a TOML "
+        "scenario (one names a robot file with [model] file = \"...\": docs/robot_models.md)",
+        path, path));
+  }
+  return read_text_file(path);
 }
 
 std::string location(const Source& source, const toml::node* node) {

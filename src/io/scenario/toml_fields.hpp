@@ -31,6 +31,10 @@ toml::table parse_toml(std::string_view text, std::string_view source);
 /// The whole content of a text file; InvalidInput `scenario: cannot read "PATH": REASON; ...` otherwise.
 std::string read_text_file(const std::string& path);
 
+/// The text of a TOML scenario file (read_text_file). A robot file (URDF, MJCF or SDF, by its extension) is
+/// refused with a line that says `poinsot run PATH` simulates it and a scenario names it in `[model]`.
+std::string read_scenario_file(const std::string& path);
+
 /// "SOURCE:LINE:COLUMN: " for a node (or "SOURCE: " when the node has no position).
 std::string location(const Source& source, const toml::node* node);
 
