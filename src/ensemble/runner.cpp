@@ -206,6 +206,62 @@ std::string path_name(Path p, const EnsembleOptions& o) {
   return fmt::format("batched {} ({}, {} lanes)", o.method, avx2 ? "AVX2" : "portable", kBatchLanes);
 }
 
+/// Per-sample rows of `range` samples must fit in o.max_row_bytes (default half the memory). Throws
+/// InvalidInput.
+void check_row_memory(const EnsembleOptions& o, std::uint64_t range) {
+  const std::uint64_t limit = o.max_row_bytes > 0 ? o.max_row_bytes
+                                                  : static_cast<std::uint64_t>(sysconf(_SC_PHYS_PAGES)) *
+                                                        static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE)) / 2;
+  if (range > limit / sizeof(SampleRow)) {
+    throw InvalidInput(fmt::format(
+        "ensemble: {} samples with per-sample output need {:.3g} GB, more than the {:.3g} GB allowed (half "
+        "the memory); expected fewer samples or per-sample output off",
+        range, static_cast<double>(row_bytes(range)) / 1e9, static_cast<double>(limit) / 1e9));
+  }
+}
+
+/// One round of nb blocks on o.threads threads: the range's block b0 + k (its samples from first_sample +
+/// (b0 + k)·kBlockSamples on, at most `range` in all) into rows_of(k), its statistics into block[k]. The
+/// threads take the blocks in any order; a block's content depends on its index only. Rethrows the first
+/// error.
+template <class RowsOf>
+void run_round(const Context& context, const EnsembleOptions& o, std::uint64_t first_sample,
+               std::uint64_t first_block, std::uint64_t range, std::uint64_t b0, std::uint64_t nb,
+               const RowsOf& rows_of, std::vector<BlockSummary>& block) {
+  std::atomic<std::uint64_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  const auto worker = [&] {
+    for (std::uint64_t k; (k = next.fetch_add(1)) < nb;) {
+      try {
+        const std::uint64_t offset = (b0 + k) * kBlockSamples;  // within the range
+        const std::uint64_t count = std::min(kBlockSamples, range - offset);
+        SampleRow* rows = rows_of(k);
+        run_block(context, first_sample + offset, count, rows);
+        BlockSummary& b = block[k];
+        b = BlockSummary{};
+        b.index = first_block + b0 + k;
+        for (std::uint64_t i = 0; i < count; ++i) {
+          for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
+            b.stats[q].add(rows[i].out[q]);
+          b.rejected += rows[i].rejected;
+          b.repaired += rows[i].repaired ? 1 : 0;
+        }
+      } catch (...) {
+        const std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min<std::uint64_t>(o.threads, nb); ++t)
+    pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool)
+    t.join();
+  if (error) std::rethrow_exception(error);
+}
+
 }  // namespace
 
 std::uint64_t row_bytes(std::uint64_t samples) {
@@ -255,18 +311,7 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
   const std::uint64_t end_sample = std::min(o.samples, last_block * kBlockSamples);
   const std::uint64_t range = end_sample - first_sample;
   const auto start = std::chrono::steady_clock::now();
-  if (o.keep_rows) {
-    const std::uint64_t limit = o.max_row_bytes > 0
-                                    ? o.max_row_bytes
-                                    : static_cast<std::uint64_t>(sysconf(_SC_PHYS_PAGES)) *
-                                          static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE)) / 2;
-    if (range > limit / sizeof(SampleRow)) {
-      throw InvalidInput(fmt::format(
-          "ensemble: {} samples with per-sample output need {:.3g} GB, more than the {:.3g} GB allowed (half "
-          "the memory); expected fewer samples or per-sample output off",
-          range, static_cast<double>(row_bytes(range)) / 1e9, static_cast<double>(limit) / 1e9));
-    }
-  }
+  if (o.keep_rows) check_row_memory(o, range);
   const Path path = choose_path(sampler, o);
   EnsembleResult result;
   result.path = path_name(path, o);
@@ -317,41 +362,10 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
     const std::uint64_t nb = std::min(per_round, blocks - b0);
     // The rows grow round by round (amortised doubling), so an interrupted run never touched the rest.
     if (o.keep_rows) result.rows.resize(std::min(range, (b0 + nb) * kBlockSamples));
-    std::atomic<std::uint64_t> next{0};
-    std::exception_ptr error;
-    std::mutex error_mutex;
-    const auto worker = [&] {
-      for (std::uint64_t k; (k = next.fetch_add(1)) < nb;) {
-        try {
-          const std::uint64_t offset = (b0 + k) * kBlockSamples;  // within the range
-          const std::uint64_t count = std::min(kBlockSamples, range - offset);
-          SampleRow* rows = o.keep_rows ? result.rows.data() + offset : scratch[k].data();
-          run_block(context, first_sample + offset, count, rows);
-          BlockSummary& b = block[k];
-          b = BlockSummary{};
-          b.index = first_block + b0 + k;
-          for (std::uint64_t i = 0; i < count; ++i) {
-            for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
-              b.stats[q].add(rows[i].out[q]);
-            b.rejected += rows[i].rejected;
-            b.repaired += rows[i].repaired ? 1 : 0;
-          }
-        } catch (...) {
-          const std::lock_guard lock(error_mutex);
-          if (!error) error = std::current_exception();
-        }
-      }
-    };
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::min<std::uint64_t>(o.threads, nb); ++t)
-      pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool)
-      t.join();
-    if (error) std::rethrow_exception(error);
     const auto block_rows = [&](std::uint64_t k) {
       return o.keep_rows ? result.rows.data() + (b0 + k) * kBlockSamples : scratch[k].data();
     };
+    run_round(context, o, first_sample, first_block, range, b0, nb, block_rows, block);
     if (!histograms_set) {  // block 0 is the pilot, run in this first round
       set_histograms(block_rows(0));
       histograms_set = true;
