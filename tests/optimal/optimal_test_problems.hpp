@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "poinsot/optimal/direct_collocation.hpp"
 #include "poinsot/optimal/problem.hpp"
 
 namespace poinsot::optimal::testing {
@@ -31,6 +32,15 @@ inline ReorientationProblem sphere_energy_problem(double j, double theta, const 
   p.objective = Objective::minimum_energy;
   p.final_time = T;
   return p;
+}
+
+/// The direct solution that seeds the shooting in the sphere tests: 10 initial intervals, refined to
+/// `mesh_tolerance`.
+inline DirectSolution sphere_direct_seed(const ReorientationProblem& p, double mesh_tolerance = 1e-6) {
+  CollocationOptions opt;
+  opt.initial_intervals = 10;
+  opt.mesh_tolerance = mesh_tolerance;
+  return solve_direct(p, opt);
 }
 
 /// Brody's tennis racket (J = diag(0.00121, 0.01638, 0.01748) kg·m², examples/tennis_racket.toml) spinning at

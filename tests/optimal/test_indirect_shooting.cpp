@@ -83,10 +83,7 @@ TEST(IndirectShooting, PerAxisSphereSlewBeatsTheEigenaxisManoeuvre) {
 TEST(IndirectShooting, SphereMinimumEnergyCost) {
   const double j = 2.5, theta = 2.0, T = 3.0;
   const auto p = testing::sphere_energy_problem(j, theta, Vec3(1.0, -2.0, 0.5), T);
-  CollocationOptions opt;
-  opt.initial_intervals = 10;
-  opt.mesh_tolerance = 1e-6;
-  const DirectSolution d = solve_direct(p, opt);
+  const DirectSolution d = testing::sphere_direct_seed(p);
   ASSERT_TRUE(d.converged) << d.status;
   const IndirectSolution s = solve_indirect(p, d);
   ASSERT_TRUE(s.converged) << s.status;
@@ -100,10 +97,7 @@ TEST(IndirectShooting, SphereMinimumEnergyCost) {
 // is the same bit for bit without it.
 TEST(IndirectShooting, NewtonProgressReportsEachIteration) {
   const auto p = testing::sphere_energy_problem(2.5, 2.0, Vec3(1.0, -2.0, 0.5), 3.0);
-  CollocationOptions opt;
-  opt.initial_intervals = 10;
-  opt.mesh_tolerance = 1e-6;
-  const DirectSolution d = solve_direct(p, opt);
+  const DirectSolution d = testing::sphere_direct_seed(p);
   ASSERT_TRUE(d.converged) << d.status;
   std::vector<double> residuals;
   ShootingOptions watched;
@@ -137,10 +131,7 @@ TEST(IndirectShooting, NormBoundSphereReversesAtHalfTime) {
   // (docs/optimal_control_theory.md) and says so.
   const Vec3 n = Vec3::UnitX();
   p.attitude_final = Quat(Eigen::AngleAxisd(theta, n));
-  CollocationOptions opt;
-  opt.initial_intervals = 10;
-  opt.mesh_tolerance = 1e-6;
-  const DirectSolution d = solve_direct(p, opt);
+  const DirectSolution d = testing::sphere_direct_seed(p);
   ASSERT_TRUE(d.converged) << d.status;
   const IndirectSolution s = solve_indirect(p, d);
   ASSERT_TRUE(s.converged) << s.status;

@@ -102,10 +102,7 @@ TEST(SplitReplay, StableProblemsKeepTheOpenLoopCheck) {
     GTEST_SKIP() << "about 1 s in release, 17 s under ASan; DirectReplay and the other split-replay tests "
                     "cover the code there";
   const auto p = testing::sphere_energy_problem(2.5, 2.0, Vec3(1.0, -2.0, 0.5), 3.0);
-  CollocationOptions opt;
-  opt.initial_intervals = 10;
-  opt.mesh_tolerance = 1e-5;
-  const DirectSolution d = solve_direct(p, opt);
+  const DirectSolution d = testing::sphere_direct_seed(p, 1e-5);
   ASSERT_TRUE(d.converged) << d.status;
   ShootingOptions o;
   o.shooting_nodes = 5;

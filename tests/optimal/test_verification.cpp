@@ -11,10 +11,7 @@ namespace {
 // not the one the costates imply (the control no longer minimises H, and the replay misses the target).
 TEST(Verification, PassesOnTheOptimumAndCatchesATamperedControl) {
   const auto p = testing::sphere_energy_problem(2.5, 2.0, Vec3(1.0, -2.0, 0.5), 3.0);
-  CollocationOptions opt;
-  opt.initial_intervals = 10;
-  opt.mesh_tolerance = 1e-6;
-  const DirectSolution d = solve_direct(p, opt);
+  const DirectSolution d = testing::sphere_direct_seed(p);
   IndirectSolution s = solve_indirect(p, d);
   ASSERT_TRUE(s.converged) << s.status;
   const VerificationReport ok = verify(p, d, s);
