@@ -41,6 +41,14 @@
 /// rad, its position error at most target_tolerance·L and its velocity error at most target_tolerance·max(1
 /// m, L)/T (L the system's length scale; the velocity error is the larger of |Δv| in m/s and |Δω| in rad/s).
 ///
+/// The system may instead come from a robot file named by a `[model]` table (scenario_table.hpp,
+/// docs/robot_models.md), the actuators naming its joints; the target is then given by the joints too:
+/// `final_positions = { JOINT = q, ... }` and `final_velocities` (the file's coordinates, joints not named at
+/// the file's pose and at rest) and a floating base's `final_base` (as `[model.base]`), or by
+/// `[[optimal_control.final]]` tables, not both. A file whose joints have springs or dampers is refused
+/// unless `[model] joint_springs = false`. What the file states and the plan leaves out is in
+/// `model.not_modelled`.
+///
 /// Throws InvalidInput, one line located at the key, for every malformed or invalid value; the problem's own
 /// checks (optimal::validate: a target that violates a joint, no actuator, a bound ≤ 0, ...) are located at
 /// [optimal_control].
