@@ -37,6 +37,80 @@ Mat3 axis_rotation(int i, double a) {
   return r;
 }
 
+/// ExactMethod::elliptic's regime: the free-body theory's, with a symmetric body followed as the limit of the
+/// asymmetric one about its symmetry axis. Throws InvalidInput for a body at rest, a sphere, or a symmetric
+/// body spinning in its equatorial plane (no component along the symmetry axis to follow).
+FreeBodyRegime elliptic_regime(FreeBodyRegime shape, const Vec3& I, const Vec3& w) {
+  if (shape == FreeBodyRegime::rest || shape == FreeBodyRegime::sphere) {
+    throw InvalidInput(
+        fmt::format("exact: method elliptic needs a rotating body with I1 < I3; got moments {} kg·m² and "
+                    "omega {} rad/s",
+                    format_vector(I), format_vector(w)));
+  }
+  if (shape != FreeBodyRegime::axisymmetric) return shape;
+  if (I[1] - I[0] <= I[2] - I[1] && w[2] != 0.0) return FreeBodyRegime::largest_axis;
+  if (I[1] - I[0] > I[2] - I[1] && w[0] != 0.0) return FreeBodyRegime::smallest_axis;
+  throw InvalidInput(fmt::format(
+      "exact: method elliptic cannot follow a symmetric body (moments {} kg·m²) spinning in its equatorial "
+      "plane (omega {} rad/s); expected a non-zero component along the symmetry axis",
+      format_vector(I), format_vector(w)));
+}
+
+/// The Jacobi-elliptic form of ω(t) in principal axes (free_body_theory.hpp): which axes follow cn and dn,
+/// the frequency ω_p, the modulus k² and its complement k'² (from the separatrix gap, without
+/// cancellation), the signed amplitudes, and sn, cn at the start.
+struct JacobiSetUp {
+  int cn_axis = 0, dn_axis = 2;
+  double omega_p = 0.0, k2 = 0.0, kc2 = 1.0;
+  Vec3 amplitude = Vec3::Zero();
+  double sn0 = 0.0, cn0 = 1.0;
+};
+
+/// The set-up for moments I (ascending), principal-axis rate w, the regime (largest axis and separatrix:
+/// about axis 3; smallest axis: about axis 1) and the gaps gap3 = 2T I3 − |L|², gap1 = |L|² − 2T I1 (both >
+/// 0).
+JacobiSetUp jacobi_set_up(const Vec3& I, const Vec3& w, FreeBodyRegime shape, double separatrix_gap,
+                          double gap1, double gap3) {
+  JacobiSetUp out;
+  const double I123 = I[0] * I[1] * I[2];
+  if (shape != FreeBodyRegime::smallest_axis) {
+    out.cn_axis = 0, out.dn_axis = 2;
+    out.omega_p = std::sqrt((I[2] - I[1]) * gap1 / I123);
+    out.k2 = std::min(1.0, (I[1] - I[0]) * gap3 / ((I[2] - I[1]) * gap1));
+    out.kc2 = (I[2] - I[0]) * separatrix_gap / ((I[2] - I[1]) * gap1);
+    const double a1 = std::sqrt(gap3 / (I[0] * (I[2] - I[0])));
+    const double a2 = std::sqrt(gap3 / (I[1] * (I[2] - I[1])));
+    const double a3 = std::sqrt(gap1 / (I[2] * (I[2] - I[0])));
+    const double s3 = sign_of(w[2]);
+    if (shape == FreeBodyRegime::separatrix) {
+      // ω1 = σ1 a1 sech u, ω2 = σ1σ3 a2 tanh u, ω3 = σ3 a3 sech u (Euler's equations fix σ2 = σ1σ3).
+      const double s1 = sign_of(w[0]);
+      out.amplitude = Vec3(s1 * a1, s1 * s3 * a2, s3 * a3);
+      out.sn0 = w[1] / out.amplitude[1];
+      out.cn0 = 0.5 * ((a1 > 0.0 ? std::abs(w[0]) / a1 : 0.0) + (a3 > 0.0 ? std::abs(w[2]) / a3 : 0.0));
+    } else {
+      // ω1 = a1 cn u, ω2 = σ3 a2 sn u, ω3 = σ3 a3 dn u.
+      out.amplitude = Vec3(a1, s3 * a2, s3 * a3);
+      out.sn0 = w[1] / out.amplitude[1];
+      out.cn0 = w[0] / out.amplitude[0];
+    }
+  } else {
+    out.cn_axis = 2, out.dn_axis = 0;
+    out.omega_p = std::sqrt((I[1] - I[0]) * gap3 / I123);
+    out.k2 = std::min(1.0, (I[2] - I[1]) * gap1 / ((I[1] - I[0]) * gap3));
+    out.kc2 = (I[2] - I[0]) * (-separatrix_gap) / ((I[1] - I[0]) * gap3);
+    const double a1 = std::sqrt(gap3 / (I[0] * (I[2] - I[0])));
+    const double a2 = std::sqrt(gap1 / (I[1] * (I[1] - I[0])));
+    const double a3 = std::sqrt(gap1 / (I[2] * (I[2] - I[0])));
+    const double s1 = sign_of(w[0]);
+    // ω1 = σ1 a1 dn u, ω2 = σ1 a2 sn u, ω3 = a3 cn u.
+    out.amplitude = Vec3(s1 * a1, s1 * a2, a3);
+    out.sn0 = w[1] / out.amplitude[1];
+    out.cn0 = w[2] / out.amplitude[2];
+  }
+  return out;
+}
+
 }  // namespace
 
 State axisymmetric_free_motion(double A, double C, const Vec3& axis_body, const State& initial, double t) {
@@ -64,28 +138,9 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
   moments_ = theory_.moments;
   const Vec3& I = theory_.moments;
 
-  FreeBodyRegime shape = theory_.regime;
-  if (method == ExactMethod::elliptic) {
-    if (shape == FreeBodyRegime::rest || shape == FreeBodyRegime::sphere) {
-      throw InvalidInput(
-          fmt::format("exact: method elliptic needs a rotating body with I1 < I3; got moments {} kg·m² and "
-                      "omega {} rad/s",
-                      format_vector(I), format_vector(w)));
-    }
-    if (shape == FreeBodyRegime::axisymmetric) {
-      if (I[1] - I[0] <= I[2] - I[1] && w[2] != 0.0) {
-        shape = FreeBodyRegime::largest_axis;
-      } else if (I[1] - I[0] > I[2] - I[1] && w[0] != 0.0) {
-        shape = FreeBodyRegime::smallest_axis;
-      } else {
-        throw InvalidInput(fmt::format(
-            "exact: method elliptic cannot follow a symmetric body (moments {} kg·m²) spinning in its "
-            "equatorial plane (omega {} rad/s); expected a non-zero component along the symmetry axis",
-            format_vector(I), format_vector(w)));
-      }
-      theory_.regime = shape;
-    }
-  }
+  const FreeBodyRegime shape =
+      method == ExactMethod::elliptic ? elliptic_regime(theory_.regime, I, w) : theory_.regime;
+  theory_.regime = shape;
 
   switch (shape) {
     case FreeBodyRegime::rest:
@@ -114,50 +169,19 @@ ExactFreeBody::ExactFreeBody(const RigidBody& body, const State& initial, ExactM
   // Jacobi-elliptic set-up (free_body_theory.hpp): gaps without cancellation, amplitudes, signs, phase u0.
   const double d3 = I[0] * (I[2] - I[0]) * w[0] * w[0] + I[1] * (I[2] - I[1]) * w[1] * w[1];  // 2T I3 − |L|²
   const double d1 = I[1] * (I[1] - I[0]) * w[1] * w[1] + I[2] * (I[2] - I[0]) * w[2] * w[2];  // |L|² − 2T I1
-  const double I123 = I[0] * I[1] * I[2];
   if (d3 == 0.0 || d1 == 0.0) {  // a steady rotation about axis 3 or 1 (reached by ExactMethod::elliptic)
     kind_ = Kind::steady;
     return;
   }
   const bool largest = shape != FreeBodyRegime::smallest_axis;  // the separatrix is followed from axis 3
-  double sn0 = 0.0;
-  double cn0 = 1.0;
-  double k2 = 0.0;
-  if (largest) {
-    cn_axis_ = 0, dn_axis_ = 2;
-    omega_p_ = std::sqrt((I[2] - I[1]) * d1 / I123);
-    k2 = std::min(1.0, (I[1] - I[0]) * d3 / ((I[2] - I[1]) * d1));
-    kc2_ = (I[2] - I[0]) * theory_.separatrix_gap / ((I[2] - I[1]) * d1);
-    const double a1 = std::sqrt(d3 / (I[0] * (I[2] - I[0])));
-    const double a2 = std::sqrt(d3 / (I[1] * (I[2] - I[1])));
-    const double a3 = std::sqrt(d1 / (I[2] * (I[2] - I[0])));
-    const double s3 = sign_of(w[2]);
-    if (shape == FreeBodyRegime::separatrix) {
-      // ω1 = σ1 a1 sech u, ω2 = σ1σ3 a2 tanh u, ω3 = σ3 a3 sech u (Euler's equations fix σ2 = σ1σ3).
-      const double s1 = sign_of(w[0]);
-      amplitude_ = Vec3(s1 * a1, s1 * s3 * a2, s3 * a3);
-      sn0 = w[1] / amplitude_[1];
-      cn0 = 0.5 * ((a1 > 0.0 ? std::abs(w[0]) / a1 : 0.0) + (a3 > 0.0 ? std::abs(w[2]) / a3 : 0.0));
-    } else {
-      // ω1 = a1 cn u, ω2 = σ3 a2 sn u, ω3 = σ3 a3 dn u.
-      amplitude_ = Vec3(a1, s3 * a2, s3 * a3);
-      sn0 = w[1] / amplitude_[1];
-      cn0 = w[0] / amplitude_[0];
-    }
-  } else {
-    cn_axis_ = 2, dn_axis_ = 0;
-    omega_p_ = std::sqrt((I[1] - I[0]) * d3 / I123);
-    k2 = std::min(1.0, (I[2] - I[1]) * d1 / ((I[1] - I[0]) * d3));
-    kc2_ = (I[2] - I[0]) * (-theory_.separatrix_gap) / ((I[1] - I[0]) * d3);
-    const double a1 = std::sqrt(d3 / (I[0] * (I[2] - I[0])));
-    const double a2 = std::sqrt(d1 / (I[1] * (I[1] - I[0])));
-    const double a3 = std::sqrt(d1 / (I[2] * (I[2] - I[0])));
-    const double s1 = sign_of(w[0]);
-    // ω1 = σ1 a1 dn u, ω2 = σ1 a2 sn u, ω3 = a3 cn u.
-    amplitude_ = Vec3(s1 * a1, s1 * a2, a3);
-    sn0 = w[1] / amplitude_[1];
-    cn0 = w[2] / amplitude_[2];
-  }
+  const JacobiSetUp jac = jacobi_set_up(I, w, shape, theory_.separatrix_gap, d1, d3);
+  cn_axis_ = jac.cn_axis, dn_axis_ = jac.dn_axis;
+  omega_p_ = jac.omega_p;
+  kc2_ = jac.kc2;
+  amplitude_ = jac.amplitude;
+  const double k2 = jac.k2;
+  double sn0 = jac.sn0;
+  double cn0 = jac.cn0;
   // The polar axis c of the attitude frame B(n): 3 or 1, both valid in both regimes (n never reaches ±e_c:
   // the component that follows dn never vanishes). With L_c² = P − Q sn² (Q = P k² when L_c follows dn, Q = P
   // when it follows cn), φ̇ = G/I_c + C1/(1 − N sn²), C1 = G(2T − G²/I_c)/(G² − P), N = −Q/(G² − P):
