@@ -71,8 +71,8 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
     const RobotDof& d = dofs[0];
     if (d.stiffness == 0.0 && d.damping == 0.0) return;
     if (!options.joint_springs) {
-      sc.not_modelled.push_back(
-          fmt::format("{}: the spring and damper of \"{}\" (left out: joint_springs = false)", where(j), d.name));
+      sc.not_modelled.push_back(fmt::format(
+          "{}: the spring and damper of \"{}\" (left out: joint_springs = false)", where(j), d.name));
       return;
     }
     multibody::JointSpring s;
