@@ -36,6 +36,7 @@
 #include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"
 #include "poinsot/so3/exp_log.hpp"
+#include "robot_bench_poinsot.hpp"
 
 #ifndef POINSOT_SOURCE_DIR
 #define POINSOT_SOURCE_DIR "."
@@ -187,16 +188,8 @@ void compare_trajectories() {
   };
   const mb::State half = dart_run(2e-5);
   dart_run(1e-5);  // the reference: the skeleton is left at its end
-  const auto poinsot_run = [&](double dt) {
-    mb::ProjectedRk4 rk4(sc.system, dt);
-    mb::State s = sc.initial;
-    const long n = std::lround(1.0 / dt);
-    for (long k = 0; k < n; ++k)
-      rk4.step(s);
-    return s;
-  };
-  const auto [x4, r4] = difference(poinsot_run(1e-4), map);
-  const auto [x5, r5] = difference(poinsot_run(1e-5), map);
+  const auto [x4, r4] = difference(poinsot::bench::projected_rk4_run(sc, 1e-4), map);
+  const auto [x5, r5] = difference(poinsot::bench::projected_rk4_run(sc, 1e-5), map);
   const auto [xd, rd] = difference(half, map);
   std::printf(
       "\narm5: 1 s under gravity from the same state (initial angular velocities agree to %.2g rad/s)\n",
@@ -218,21 +211,10 @@ void compare_energy() {
   const mb::Scenario sc = poinsot_scenario(rates, Vec3::Zero());
   std::printf("\narm5: energy in zero gravity over 1e5 steps of dt = 1e-3, max |E - E0| / max(T)\n");
   for (const int order : {2, 4}) {
-    mb::RattleOptions ro;
-    ro.order = order;
-    mb::Rattle rattle(sc.system, dt, ro);
-    mb::State s = sc.initial;
-    const double e0 = mb::total_energy(sc.system, s);
-    double de = 0.0, tmax = 0.0, de_first = 0.0;
     try {
-      for (long k = 0; k < steps; ++k) {
-        rattle.step(s);
-        de = std::max(de, std::abs(mb::total_energy(sc.system, s) - e0));
-        tmax = std::max(tmax, mb::kinetic_energy(sc.system, s));
-        if (k == steps / 10) de_first = de / tmax;
-      }
-      std::printf("  poinsot RATTLE order %d: %.3g (first tenth of the run: %.3g)\n", order, de / tmax,
-                  de_first);
+      const poinsot::bench::RattleDrift drift = poinsot::bench::rattle_drift(sc, order, dt, steps);
+      std::printf("  poinsot RATTLE order %d: %.3g (first tenth of the run: %.3g)\n", order, drift.energy,
+                  drift.energy_first_tenth);
     } catch (const std::exception& e) {
       std::printf("  poinsot RATTLE order %d: failed: %s\n", order, e.what());
     }
@@ -259,23 +241,7 @@ void compare_energy() {
 }
 
 void BM_Poinsot(benchmark::State& state, bool rk4) {
-  const mb::Scenario sc = poinsot_scenario(draw_rates(load_dart()));
-  mb::State s = sc.initial;
-  const auto run = [&](auto& integrator) {
-    long k = 0;
-    for (auto _ : state) {
-      integrator.step(s);
-      if (++k % kRestartSteps == 0) s = sc.initial;
-    }
-  };
-  if (rk4) {
-    mb::ProjectedRk4 integrator(sc.system, 1e-3);
-    run(integrator);
-  } else {
-    mb::Rattle integrator(sc.system, 1e-3);
-    run(integrator);
-  }
-  benchmark::DoNotOptimize(s.bodies[0].x_space);
+  poinsot::bench::time_poinsot_steps(state, poinsot_scenario(draw_rates(load_dart())), rk4, kRestartSteps);
 }
 
 void BM_Dart(benchmark::State& state, bool rk4) {

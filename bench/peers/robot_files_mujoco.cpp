@@ -35,6 +35,7 @@
 #include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"
 #include "poinsot/so3/exp_log.hpp"
+#include "robot_bench_poinsot.hpp"
 
 #ifndef POINSOT_SOURCE_DIR
 #define POINSOT_SOURCE_DIR "."
@@ -259,16 +260,8 @@ void compare_trajectories(const Model& md) {
     const Vec3 w = s.R_space_body * s.omega_body;
     dv0 = std::max(dv0, (Vec3(vel[0], vel[1], vel[2]) - w).norm());
   }
-  const auto poinsot_run = [&](double dt) {
-    mb::ProjectedRk4 rk4(sc.system, dt);
-    mb::State s = sc.initial;
-    const long n = std::lround(1.0 / dt);
-    for (long k = 0; k < n; ++k)
-      rk4.step(s);
-    return s;
-  };
-  const auto [x4, r4] = difference(poinsot_run(1e-4), ref, map);
-  const auto [x5, r5] = difference(poinsot_run(1e-5), ref, map);
+  const auto [x4, r4] = difference(poinsot::bench::projected_rk4_run(sc, 1e-4), ref, map);
+  const auto [x5, r5] = difference(poinsot::bench::projected_rk4_run(sc, 1e-5), ref, map);
   // MuJoCo at 2e-5 against 1e-5: compare two mjData through a poinsot-shaped state.
   mb::State hs = sc.initial;
   for (std::size_t i = 0; i < map.size(); ++i) {
@@ -299,30 +292,16 @@ void compare_energy(const Model& md) {
   const Rates r = draw_rates(m);
   const mb::Scenario sc = poinsot_scenario(md, r, has_free);
   std::printf("\n%s: energy over 1e5 steps of dt = 1e-3, max |E - E0| / max(T)\n", md.name.c_str());
+  const Vec3 p_start = mb::linear_momentum(sc.system, sc.initial);
+  const Vec3 L_start = mb::angular_momentum(sc.system, sc.initial);
   for (const int order : {2, 4}) {
-    mb::RattleOptions ro;
-    ro.order = order;
-    mb::Rattle rattle(sc.system, dt, ro);
-    mb::State s = sc.initial;
-    const double e0 = mb::total_energy(sc.system, s);
-    const Vec3 p0 = mb::linear_momentum(sc.system, s), L0 = mb::angular_momentum(sc.system, s);
-    double de = 0.0, tmax = 0.0, dp = 0.0, dL = 0.0, de_first = 0.0;
     try {
-      for (long k = 0; k < steps; ++k) {
-        rattle.step(s);
-        de = std::max(de, std::abs(mb::total_energy(sc.system, s) - e0));
-        if (k == steps / 10) de_first = de / tmax;
-        tmax = std::max(tmax, mb::kinetic_energy(sc.system, s));
-        if (md.zero_gravity) {
-          dp = std::max(dp, (mb::linear_momentum(sc.system, s) - p0).norm());
-          dL = std::max(dL, (mb::angular_momentum(sc.system, s) - L0).norm());
-        }
-      }
-      std::printf("  poinsot RATTLE order %d: %.3g (first tenth of the run: %.3g)", order, de / tmax,
-                  de_first);
+      const poinsot::bench::RattleDrift drift = poinsot::bench::rattle_drift(sc, order, dt, steps);
+      std::printf("  poinsot RATTLE order %d: %.3g (first tenth of the run: %.3g)", order, drift.energy,
+                  drift.energy_first_tenth);
       if (md.zero_gravity)
-        std::printf("; |dp| %.2g of |p0| %.3g kg m/s, |dL| %.2g of |L0| %.3g kg m2/s", dp, p0.norm(), dL,
-                    L0.norm());
+        std::printf("; |dp| %.2g of |p0| %.3g kg m/s, |dL| %.2g of |L0| %.3g kg m2/s", drift.linear_momentum,
+                    p_start.norm(), drift.angular_momentum, L_start.norm());
       std::printf("\n");
     } catch (const std::exception& e) {
       std::printf("  poinsot RATTLE order %d: failed: %s\n", order, e.what());
@@ -351,8 +330,8 @@ void compare_energy(const Model& md) {
       mj_energyPos(m, d);
       mj_energyVel(m, d);
       de = std::max(de, std::abs(d->energy[0] + d->energy[1] - e0));
-      if (k == steps / 10) de_first = de / tmax;
       tmax = std::max(tmax, d->energy[1]);
+      if (k == steps / 10) de_first = de / tmax;
       if (md.zero_gravity) {
         const auto [p, L] = momenta();
         dp = std::max(dp, (p - p0).norm());
@@ -378,23 +357,8 @@ void BM_Poinsot(benchmark::State& state, Model md, bool rk4) {
     has_free = has_free || m->jnt_type[j] == mjJNT_FREE;
   const Rates r = draw_rates(m);
   mj_deleteModel(m);
-  const mb::Scenario sc = poinsot_scenario(md, r, has_free);
-  mb::State s = sc.initial;
-  const auto run = [&](auto& integrator) {
-    long k = 0;
-    for (auto _ : state) {
-      integrator.step(s);
-      if (++k % kRestartSteps == 0) s = sc.initial;  // released again, as in the runs of step 3
-    }
-  };
-  if (rk4) {
-    mb::ProjectedRk4 integrator(sc.system, 1e-3);
-    run(integrator);
-  } else {
-    mb::Rattle integrator(sc.system, 1e-3);
-    run(integrator);
-  }
-  benchmark::DoNotOptimize(s.bodies[0].x_space);
+  // Released again every kRestartSteps, as in the runs of step 3.
+  poinsot::bench::time_poinsot_steps(state, poinsot_scenario(md, r, has_free), rk4, kRestartSteps);
 }
 
 void BM_Mujoco(benchmark::State& state, Model md, int integrator) {
