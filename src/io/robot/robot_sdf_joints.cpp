@@ -246,8 +246,9 @@ struct SdfReader {
     const RigidPose parent_pose = parent < 0 ? RigidPose{} : tree.root_pose[static_cast<std::size_t>(parent)];
     spec.parent_child = parent_pose.inverse() * child_pose;
     // The joint's frame in the child's: its pose as written, or through the model's frames when it names one.
-    const RigidPose child_joint = written_pose(xml, e).relative_to.empty()
-                                      ? written_pose(xml, e).pose
+    const WrittenPose written = written_pose(xml, e);
+    const RigidPose child_joint = written.relative_to.empty()
+                                      ? written.pose
                                       : child_pose.inverse() * (model_pose * frames.at(&m)->in_model(e));
     const auto dof = [&](RobotDof::Kind kind, const char* which) {
       RobotDof d;
