@@ -2,9 +2,9 @@
 """Runs every optimal-control example (examples/optimal/*.toml) through `poinsot optimize` and checks it
 against the optimum it states: verified optimal (exit 0; the keep-out slew, whose cone is active: converged
 direct, exit 3) and the figure within the tolerance below. Prints one
-line per example (figure, tolerance met, exit status, CPU seconds). Slow (the tumbling racket's and the
-falling cat's direct phases take minutes): CI runs the fast ones as tests (tests/cli/test_cli_optimize.py,
-python/tests/), not this script.
+line per example (figure, tolerance met, exit status, CPU seconds). Slow (the tumbling racket's direct
+phase takes minutes): CI runs the fast ones as tests (tests/cli/test_cli_optimize*.py, python/tests/), not
+this script.
 
     python3 scripts/optimal_examples.py [--poinsot PATH] [--only NAME,...]
 

@@ -29,7 +29,7 @@ class MultibodyOptimalSolution:
     ``BODY.ux``, ``BALL.ux``, ...); per joint the reaction on body a ``joint_force_space`` (n, J, 3) N and
     ``joint_torque_space`` (n, J, 3) N·m; per body ``Lambda_body`` (n, B, 3, 3) J. ``cost`` ∫ Σ u² dt
     (N²·m²·s; for minimum time T + ε ∫ Σ u² dt, s), ``final_time`` s (the optimum's, free under minimum
-    time), ``nlp_iterations``, ``replay`` (dict: the re-simulation's attitude, position and velocity errors,
+    time), ``nlp_iterations``, ``nlp_restarts`` (Ipopt runs restarted with other settings), ``replay`` (dict: the re-simulation's attitude, position and velocity errors,
     joint gap, ‖RᵀR − I‖, tolerance, ``target_reached``), ``summary`` (the dict of
     summary.json), ``report`` (the text ``poinsot optimize`` prints), ``out_dir``, ``kind`` ("multibody"),
     ``problem`` (the poinsot.optimal.MultibodyProblem solved).
@@ -43,6 +43,7 @@ class MultibodyOptimalSolution:
     final_time: float
     cost: float
     nlp_iterations: int
+    nlp_restarts: int
     t: np.ndarray
     x_space: np.ndarray
     R_space_body: np.ndarray
@@ -108,7 +109,7 @@ def solve_multibody(prepared: _Prepared, out_dir: str) -> MultibodyOptimalSoluti
     return MultibodyOptimalSolution(
         kind="multibody", optimal=raw["optimal"], status=raw["status"], objective=summary["objective"],
         coordinates=scenario.coordinates, final_time=summary["solution"]["final_time"], cost=raw["cost"],
-        nlp_iterations=raw["nlp_iterations"], t=raw["t"], x_space=raw["x_space"], R_space_body=raw["R_space_body"],
+        nlp_iterations=raw["nlp_iterations"], nlp_restarts=raw["nlp_restarts"], t=raw["t"], x_space=raw["x_space"], R_space_body=raw["R_space_body"],
         v_space=raw["v_space"], omega_body=raw["omega_body"], controls=raw["controls"], control_names=names,
         joint_force_space=raw["joint_force_space"], joint_torque_space=raw["joint_torque_space"],
         Lambda_body=raw["Lambda_body"], replay=summary["replay"], summary=summary, report=raw["report"],

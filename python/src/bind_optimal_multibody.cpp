@@ -189,6 +189,7 @@ py::dict run_dict(const io::MultibodyOptimalRun& run) {
   d["status"] = run.status;
   d["cost"] = o.cost;
   d["nlp_iterations"] = o.nlp_iterations;
+  d["nlp_restarts"] = o.nlp_restarts;
   d["t"] = array_from_buffer(std::vector<double>(o.time), {static_cast<py::ssize_t>(n)});
   d["x_space"] = stack(n, B, {3}, [&](auto p, auto i) { return o.states[p].bodies[i].x_space; });
   d["R_space_body"] = stack(n, B, {3, 3}, [&](auto p, auto i) { return o.states[p].bodies[i].R_space_body; });

@@ -199,16 +199,10 @@ detail::IpoptSettings attempt_settings(const CollocationOptions& options, int at
   ipopt.acceptable_tolerance = options.nlp_tolerance;
   ipopt.max_iterations = options.max_nlp_iterations;
   ipopt.print_level = options.print_level;
-  if (attempt >= 1) ipopt.warm_start = true;
-  if (attempt == 1) {
-    ipopt.mu_strategy = "monotone";
-    ipopt.mu_init = 1e-4;
-  }
-  if (attempt == 2) ipopt.max_iterations = 2 * options.max_nlp_iterations;
-  return ipopt;
+  return detail::restart_settings(ipopt, attempt);
 }
 
-constexpr int kAttempts = 3;
+constexpr int kAttempts = detail::kIpoptAttempts;
 
 /// The mesh refinement from `nlp` and its start `z`; the counts of `before` (a previous solve) are added to.
 DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<CollocationNlp> nlp,

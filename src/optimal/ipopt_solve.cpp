@@ -170,6 +170,21 @@ const char* status_words(Ipopt::ApplicationReturnStatus s) {
 
 }  // namespace
 
+IpoptSettings restart_settings(const IpoptSettings& first, int attempt) {
+  if (attempt < 0 || attempt >= kIpoptAttempts) {
+    throw InvalidInput(
+        fmt::format("restart_settings: attempt {}; expected 0 to {}", attempt, kIpoptAttempts - 1));
+  }
+  IpoptSettings ipopt = first;
+  if (attempt >= 1) ipopt.warm_start = true;
+  if (attempt == 1) {
+    ipopt.mu_strategy = "monotone";
+    ipopt.mu_init = 1e-4;
+  }
+  if (attempt == 2) ipopt.max_iterations = 2 * first.max_iterations;
+  return ipopt;
+}
+
 NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& start,
                              const IpoptSettings& settings) {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = new Ipopt::IpoptApplication(false);

@@ -17,6 +17,8 @@
 #include "multibody_rotation_model.hpp"
 #include "path_inequality_nlp.hpp"
 #include "poinsot/core/error.hpp"
+#include "poinsot/so3/distance.hpp"
+#include "poinsot/so3/exp_log.hpp"
 
 namespace poinsot::optimal {
 namespace {
@@ -29,13 +31,14 @@ using detail::SparseNlp;
 
 /// Solves the transcription of `model` and fills the parts of the optimum common to both formulations.
 /// `decode(w, t)` gives the multibody state of the point variables w, `state_vector(state)` the state y of a
-/// multibody state (for a warm start); `rates` the hinge rates of the
-/// problem's rate bounds at a point (multibody_rate_rows.hpp), bounded at every point but the first.
-template <class Decode, class Encode>
+/// multibody state (for a warm start), `naive(s)` the naive guess of y at the fraction s = t/T; `rates` the
+/// hinge rates of the problem's rate bounds at a point (multibody_rate_rows.hpp), bounded at every point but
+/// the first.
+template <class Decode, class Encode, class Naive>
 MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationModel& model,
                              const Eigen::VectorXd& y0, const Eigen::VectorXd& yf,
                              const Eigen::MatrixXd& final_rows, const PointFunctions& rates,
-                             const MultibodyOptions& options, Decode decode, Encode state_vector,
+                             const MultibodyOptions& options, Decode decode, Encode state_vector, Naive naive,
                              std::chrono::steady_clock::time_point start) {
   const bool free_time = problem.objective == MultibodyObjective::minimum_time;
   const detail::FreeFinalTime time_bounds{problem.final_time_min, problem.final_time_max,
@@ -63,7 +66,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
     const double s = static_cast<double>(p) / (base.points() - 1);
     Eigen::Map<Eigen::VectorXd> y(guess.data() + nw * p, ny);
     if (options.warm_start == nullptr) {
-      y = (1.0 - s) * y0 + s * yf;
+      y = naive(s);
       continue;
     }
     const MultibodyOptimum& warm = *options.warm_start;
@@ -83,16 +86,26 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   settings.max_iterations = options.max_nlp_iterations;
   settings.print_level = options.print_level;
   settings.mumps_scaling = options.mumps_scaling;
-  if (options.progress) {
-    settings.on_iteration = [&](int iteration, double objective, double infeasibility) {
-      options.progress(DirectProgress{1, problem.intervals, 0, iteration, objective, infeasibility});
-    };
-  }
-  const detail::NlpSolution sol = detail::solve_with_ipopt(nlp, guess, settings);
+  // Where Ipopt fails, it is restarted from the same guess with other settings (detail::restart_settings).
+  detail::NlpSolution sol;
   MultibodyOptimum out;
+  int attempt = 0;
+  for (; attempt < detail::kIpoptAttempts; ++attempt) {
+    detail::IpoptSettings ipopt = detail::restart_settings(settings, attempt);
+    if (options.progress) {
+      ipopt.on_iteration = [&, attempt](int iteration, double objective, double infeasibility) {
+        options.progress(DirectProgress{1, problem.intervals, attempt, iteration, objective, infeasibility});
+      };
+    }
+    sol = detail::solve_with_ipopt(nlp, guess, ipopt);
+    out.nlp_iterations += sol.iterations;
+    if (sol.solved) break;
+  }
+  out.nlp_restarts = std::min(attempt, detail::kIpoptAttempts - 1);
   out.converged = sol.solved;
-  out.status = sol.solved ? "converged" : "not converged: " + sol.status;
-  out.nlp_iterations = sol.iterations;
+  out.status = sol.solved ? "converged"
+                          : fmt::format("not converged: {}, also when restarted with {} other settings",
+                                        sol.status, detail::kIpoptAttempts - 1);
   out.cost = sol.objective;
   const double T = base.final_time(sol.x.data());
   std::vector<double> g(static_cast<std::size_t>(nlp.num_constraints()));
@@ -112,6 +125,50 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   }
   out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
+}
+
+/// The naive guess of the rotation-matrix transcription at the fraction s = t/T of the motion: every body
+/// turned along the geodesic of SO(3) from its initial rotation R₀ to its target R_f, R(s) = R₀ exp(s log(R₀ᵀ
+/// R_f)), so that every guessed R is a rotation (the straight line between them is not: halfway across a
+/// half-turn it has rank 1); positions, velocities and body rates interpolated linearly.
+///
+/// A half-turn has two geodesics, about n and −n, and the sign of log's axis then follows the round-off of
+/// the boundary states. Within 1e-6 rad of π the turn is taken about the axis (in the body frame) whose first
+/// component above 1e-3 of the norm is positive, so that the guess does not depend on the last bits of the
+/// input (the falling cat's halves, each turned by π, then turn in opposite senses about the spine).
+multibody::State geodesic_guess(const multibody::State& from, const multibody::State& to, double s) {
+  constexpr double kHalfTurnTolerance = 1e-6;  // rad
+  multibody::State out = from;
+  for (std::size_t i = 0; i < out.bodies.size(); ++i) {
+    const multibody::BodyState& a = from.bodies[i];
+    const multibody::BodyState& b = to.bodies[i];
+    multibody::BodyState& g = out.bodies[i];
+    Vec3 turn = so3::log(a.R_space_body.transpose() * b.R_space_body);
+    if (std::numbers::pi - turn.norm() < kHalfTurnTolerance) {
+      const auto first =
+          std::find_if(turn.begin(), turn.end(), [&](double c) { return std::abs(c) > 1e-3 * turn.norm(); });
+      if (*first < 0.0) turn = -turn;
+    }
+    g.R_space_body = a.R_space_body * so3::exp(s * turn);
+    g.x_space = (1.0 - s) * a.x_space + s * b.x_space;
+    g.v_space = (1.0 - s) * a.v_space + s * b.v_space;
+    g.omega_body = (1.0 - s) * a.omega_body + s * b.omega_body;
+  }
+  return out;
+}
+
+/// Whether the straight line between the boundary states' matrices comes near a singular matrix, where the
+/// naive guess of the rotation-matrix transcription follows the geodesics instead: some body turns by more
+/// than 2π/3 (halfway across a turn Q by θ the line passes through R₀ (I + Q)/2, whose singular values are 1
+/// and cos(θ/2), twice). Below it the straight line is kept: it meets every joint row that is linear in (x,
+/// R) at every point, which the geodesics with linear positions do not.
+bool straight_line_degenerates(const multibody::State& from, const multibody::State& to) {
+  for (std::size_t i = 0; i < from.bodies.size(); ++i) {
+    if (so3::angle_between(from.bodies[i].R_space_body, to.bodies[i].R_space_body) >
+        2.0 * std::numbers::pi / 3.0)
+      return true;
+  }
+  return false;
 }
 
 /// Throws InvalidInput unless `warm` is a solution of `problem` on some mesh (multibody_direct.hpp).
@@ -195,7 +252,8 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
     MultibodyOptimum out = solve_model(
         problem, model, y0, yf, rows, detail::minimal_rate_rows(problem, model), options,
         [&](const double* w, double t) { return model.state_of(w, t); },
-        [&](const multibody::State& s) { return model.state_vector(s); }, start);
+        [&](const multibody::State& s) { return model.state_vector(s); },
+        [&](double s) -> Eigen::VectorXd { return (1.0 - s) * y0 + s * yf; }, start);
     // No multiplier is a variable here: the reactions and Λ of the continuous equations at each point's
     // state and controls (one KKT solve each, multibody/multipliers.hpp).
     for (std::size_t p = 0; p < out.states.size(); ++p) {
@@ -229,7 +287,13 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
         stabilisation = std::max(stabilisation, model.stabilisation_step(w));
         return model.state_of(w, t);
       },
-      [&](const multibody::State& s) { return model.state_vector(s); }, start);
+      [&](const multibody::State& s) { return model.state_vector(s); },
+      [&, geodesic = straight_line_degenerates(problem.initial_state, problem.final_state)](
+          double s) -> Eigen::VectorXd {
+        if (!geodesic) return (1.0 - s) * y0 + s * yf;
+        return model.state_vector(geodesic_guess(problem.initial_state, problem.final_state, s));
+      },
+      start);
   out.multipliers = std::move(multipliers);
   out.stabilisation_step = stabilisation;
   check_stabilisation(options, out);

@@ -71,4 +71,15 @@ struct NlpSolution {
 NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& start,
                              const IpoptSettings& settings);
 
+/// How many times one NLP is given to Ipopt before the direct methods give up on it: the first settings and
+/// two restarts (restart_settings).
+inline constexpr int kIpoptAttempts = 3;
+
+/// The settings of attempt `attempt` (0 to kIpoptAttempts − 1) on one NLP, from the same start, after the
+/// attempts before it failed: 0 is `first`; 1 the monotone (Fiacco–McCormick) barrier from μ = 1e-4 with the
+/// start kept off its bounds by 1e-9 only (IpoptSettings::warm_start), for a start that is near a solution
+/// where the adaptive barrier wandered off; 2 the first settings with the warm start and twice the
+/// iterations. Throws InvalidInput for another attempt number.
+IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
+
 }  // namespace poinsot::optimal::detail

@@ -21,7 +21,8 @@ SOURCE = Path(__file__).resolve().parents[2]
 DOCS = [SOURCE / "README.md", *sorted((SOURCE / "docs").glob("**/*.md"))]
 # The reader's own files in examples of usage: not in the repository.
 READERS_FILES = {"my_body.toml", "part.stl"}
-# Minutes of Ipopt each: run by scripts, not by the test suite.
+# Run elsewhere: the tumbling racket (minutes of Ipopt) by scripts/optimal_examples.py, the falling cat by
+# tests/cli/test_cli_optimize_multibody.py against its stated optimum.
 SLOW = ("examples/optimal/falling_cat.toml", "examples/optimal/tennis_racket_stop.toml")
 
 

@@ -166,7 +166,7 @@ inline MultibodyProblem falling_cat(double alpha, double turn, double T, int int
   return p;
 }
 /// The bound on the stabilising variables' step for the falling cat (MultibodyOptions::stabilisation_step):
-/// unbounded, the half turn from the naive guess ends on a spurious jump of cost ~1e-26.
+/// unbounded, the half turn from a guess that jumps ends on a spurious jump of cost ~1e-26.
 inline constexpr double kCatStabilisationStep = 0.05;
 /// Kane & Scher's no-twist condition on the cat's waist: the relative rotation R_aᵀR_b is C M with C the
 /// straight cat's (a half-turn about body z: the halves face each other) and M a bend about an axis

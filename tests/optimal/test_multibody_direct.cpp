@@ -126,13 +126,35 @@ TEST(MultibodyDirect, TwoLinkArmBothFormulationsAgree) {
 }
 
 TEST(MultibodyDirect, NonConvergenceIsReportedAsSuch) {
+  // Two Ipopt iterations a run: the first run and both restarts (2, 2 and 4 iterations) stop at the limit.
   const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 4);
   MultibodyOptions o;
   o.coordinates = MultibodyCoordinates::minimal;
   o.max_nlp_iterations = 2;
   const MultibodyOptimum m = solve_multibody(p, o);
   EXPECT_FALSE(m.converged);
-  EXPECT_EQ(m.status, "not converged: maximum iterations exceeded");
+  EXPECT_EQ(m.status,
+            "not converged: maximum iterations exceeded, also when restarted with 2 other settings");
+  EXPECT_EQ(m.nlp_restarts, 2);
+  EXPECT_EQ(m.nlp_iterations, 8);
+}
+
+TEST(MultibodyDirect, IpoptIsRestartedWithOtherSettingsWhereItFails) {
+  // The arm on 8 intervals in minimal coordinates needs 11 Ipopt iterations from the naive guess (measured);
+  // limited to 8 a run, the first run fails and a restart from the same guess reaches the same KKT point:
+  // the cost of the unlimited solve to Ipopt's tolerance (1e-10 on the scaled KKT error).
+  const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 8);
+  MultibodyOptions o;
+  o.coordinates = MultibodyCoordinates::minimal;
+  const MultibodyOptimum reference = solve_multibody(p, o);
+  ASSERT_TRUE(reference.converged) << reference.status;
+  EXPECT_EQ(reference.nlp_restarts, 0);
+  o.max_nlp_iterations = 8;
+  const MultibodyOptimum restarted = solve_multibody(p, o);
+  ASSERT_TRUE(restarted.converged) << restarted.status;
+  EXPECT_GT(restarted.nlp_restarts, 0);
+  EXPECT_GT(restarted.nlp_iterations, 8);
+  EXPECT_NEAR(restarted.cost / reference.cost, 1.0, 1e-9);
 }
 
 void expect_invalid(const MultibodyProblem& p, const std::string& fragment,

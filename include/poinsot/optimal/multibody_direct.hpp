@@ -20,11 +20,15 @@
 /// equal intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point
 /// but the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
 /// ones). The naive initial guess is used unless MultibodyOptions::warm_start is given: every state
-/// coordinate linearly interpolated between the two boundary states, every other variable zero. A result is
-/// `converged` only when Ipopt reports success and no body turns by more than π/2 between neighbouring
-/// collocation points (an unresolved mesh, or in R-coordinates a spurious half-turn jump of the stabilised
-/// form: docs/optimal_control_multibody.md, "The falling cat"); otherwise `status` says what happened and the
-/// last iterate is kept, never presented as an optimum.
+/// coordinate interpolated linearly between the two boundary states, every other variable zero; but in
+/// rotation-matrix coordinates, where some body turns by more than 2π/3 (the straight line between two
+/// rotations is not one, and across a half-turn it has rank 1 halfway), each body turned along its geodesic
+/// R(s) = R₀ exp(s log(R₀ᵀR_f)) at s = t/T, its position, velocity and body rates interpolated linearly.
+/// Where Ipopt fails it is restarted from the same guess with other settings, twice
+/// (MultibodyOptimum::nlp_restarts). A result is `converged` only when Ipopt reports success and no body
+/// turns by more than π/2 between neighbouring collocation points (an unresolved mesh, or in R-coordinates a
+/// spurious half-turn jump of the stabilised form: docs/optimal_control_multibody.md, "The falling cat");
+/// otherwise `status` says what happened and the last iterate is kept, never presented as an optimum.
 #include <functional>
 #include <string>
 #include <vector>
@@ -59,9 +63,10 @@ struct MultibodyOptions {
   /// choose; 0, none beyond Ipopt's own NLP scaling. Neither is better everywhere
   /// (docs/measurements/optimal_multibody.md, "The cost of the R-coordinate transcription"): in R-coordinates
   /// 0 takes the two-link arm at N = 32 and 64 in 25 Ipopt iterations instead of 61 and 292 and the reaction
-  /// wheel in 15 to 17 instead of 32 to 119, but the unbounded falling cat 7.7 times the CPU time, and from
-  /// the naive guess at N = 6 it ends 11 of the benchmark's 100 random arm problems on a spurious jump (none
-  /// with 77). Any of Ipopt's values -2, -1, 0, 1, 3, 4, 7, 8, 77.
+  /// wheel in 15 to 17 instead of 32 to 119, but from the straight-line guess between the boundary matrices
+  /// the unbounded falling cat takes 7.7 times the CPU time, and at N = 6 it ends 11 of the benchmark's 100
+  /// random arm problems on a spurious jump (none with 77). Any of Ipopt's values -2, -1, 0, 1, 3, 4, 7,
+  /// 8, 77.
   int mumps_scaling = 77;
   /// Called after every Ipopt iteration (mesh_iteration 1, this problem's intervals, restart 0; the terminal
   /// progress of `poinsot optimize`); empty: not called. It does not change the solution.
@@ -71,7 +76,11 @@ struct MultibodyOptions {
 struct MultibodyOptimum {
   bool converged = false;  ///< Ipopt solved the NLP
   std::string status;      ///< "converged", or Ipopt's status in words
-  int nlp_iterations = 0;
+  int nlp_iterations = 0;  ///< Ipopt iterations, of every attempt
+  /// Ipopt runs restarted from the same guess with other settings after a failure (at most two: the
+  /// monotone barrier, then twice the iterations); a result Ipopt solved but the checks reject is not
+  /// restarted.
+  int nlp_restarts = 0;
   /// The objective: ∫ Σ u_i² dt (N²·m²·s), or T + ε ∫ Σ u_i² dt (s) for minimum_time (T = time.back()).
   double cost = 0.0;
   double wall_seconds = 0.0;              ///< building and solving the NLP

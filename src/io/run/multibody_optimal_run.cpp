@@ -182,9 +182,10 @@ std::string multibody_optimal_report(const MultibodyOptimalRun& r) {
   }
   out << "\nstatus: " << r.status << "\n\n";
   out << fmt::format(
-      "solution: {}; {} Ipopt iterations, cost {} {}, final time {} s, largest constraint row {}\n", o.status,
-      o.nlp_iterations, report_number(o.cost, 12), cost_unit,
-      report_number(o.time.empty() ? p.final_time : o.time.back(), 12),
+      "solution: {}; {} Ipopt iterations{}, cost {} {}, final time {} s, largest constraint row {}\n",
+      o.status, o.nlp_iterations,
+      o.nlp_restarts > 0 ? fmt::format(" ({} restarts with other settings)", o.nlp_restarts) : "",
+      report_number(o.cost, 12), cost_unit, report_number(o.time.empty() ? p.final_time : o.time.back(), 12),
       report_number(o.max_constraint_error, 3));
   const std::vector<std::string> columns = control_columns(p);
   for (std::size_t c = 0; c < columns.size(); ++c) {
@@ -273,6 +274,7 @@ std::string multibody_optimal_summary_json(const MultibodyOptimalRun& r) {
                    {"status", o.status},
                    {"cost", o.cost},
                    {"nlp_iterations", o.nlp_iterations},
+                   {"nlp_restarts", o.nlp_restarts},
                    {"max_constraint_error", o.max_constraint_error},
                    {"stabilisation_step", o.stabilisation_step},
                    {"points", o.time.size()},

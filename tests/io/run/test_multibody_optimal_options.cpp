@@ -157,7 +157,7 @@ TEST(MultibodyOptimalOptions, MinimumTimeFileMeetsTheBangBangTime) {
 }
 
 TEST(MultibodyOptimalOptions, FallingCatExampleIsTheCatOfTheTests) {
-  // examples/optimal/falling_cat.toml (solved by `poinsot optimize` in minutes, so not here): the cat of the
+  // examples/optimal/falling_cat.toml (solved by tests/cli/test_cli_optimize_multibody.py): the cat of the
   // optimal/ tests, its three motors in the waist, the bound c and the mesh sequence.
   const MultibodyOptimalScenario sc =
       load_multibody_optimal_scenario(std::string(POINSOT_SOURCE_DIR) + "/examples/optimal/falling_cat.toml");
