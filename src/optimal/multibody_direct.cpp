@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 #include <numbers>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -17,7 +18,6 @@
 #include "multibody_rotation_model.hpp"
 #include "path_inequality_nlp.hpp"
 #include "poinsot/core/error.hpp"
-#include "poinsot/so3/distance.hpp"
 #include "poinsot/so3/exp_log.hpp"
 
 namespace poinsot::optimal {
@@ -127,48 +127,54 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   return out;
 }
 
-/// The naive guess of the rotation-matrix transcription at the fraction s = t/T of the motion: every body
-/// turned along the geodesic of SO(3) from its initial rotation R₀ to its target R_f, R(s) = R₀ exp(s log(R₀ᵀ
-/// R_f)), so that every guessed R is a rotation (the straight line between them is not: halfway across a
-/// half-turn it has rank 1); positions, velocities and body rates interpolated linearly.
+/// Each body's turn from `from` to `to`, log(R₀ᵀR_f) in its initial body frame (rad): the geodesic of SO(3)
+/// between its two rotations is R(s) = R₀ exp(s log(R₀ᵀR_f)).
 ///
 /// A half-turn has two geodesics, about n and −n, and the sign of log's axis then follows the round-off of
-/// the boundary states. Within 1e-6 rad of π the turn is taken about the axis (in the body frame) whose first
-/// component above 1e-3 of the norm is positive, so that the guess does not depend on the last bits of the
-/// input (the falling cat's halves, each turned by π, then turn in opposite senses about the spine).
-multibody::State geodesic_guess(const multibody::State& from, const multibody::State& to, double s) {
+/// the boundary states. Within 1e-6 rad of π the turn is taken about the axis whose first component above
+/// 1e-3 of the norm is positive, so that the guess does not depend on the last bits of the input (the falling
+/// cat's halves, each turned by π, then turn in opposite senses about the spine).
+std::vector<Vec3> body_turns(const multibody::State& from, const multibody::State& to) {
   constexpr double kHalfTurnTolerance = 1e-6;  // rad
-  multibody::State out = from;
-  for (std::size_t i = 0; i < out.bodies.size(); ++i) {
-    const multibody::BodyState& a = from.bodies[i];
-    const multibody::BodyState& b = to.bodies[i];
-    multibody::BodyState& g = out.bodies[i];
-    Vec3 turn = so3::log(a.R_space_body.transpose() * b.R_space_body);
+  std::vector<Vec3> turns;
+  for (std::size_t i = 0; i < from.bodies.size(); ++i) {
+    Vec3 turn = so3::log(from.bodies[i].R_space_body.transpose() * to.bodies[i].R_space_body);
     if (std::numbers::pi - turn.norm() < kHalfTurnTolerance) {
       const auto first =
           std::find_if(turn.begin(), turn.end(), [&](double c) { return std::abs(c) > 1e-3 * turn.norm(); });
       if (*first < 0.0) turn = -turn;
     }
-    g.R_space_body = a.R_space_body * so3::exp(s * turn);
+    turns.push_back(turn);
+  }
+  return turns;
+}
+
+/// Whether the straight line between the boundary states' matrices comes near a singular matrix, where the
+/// naive guess of the rotation-matrix transcription follows the geodesics instead: some body turns (`turns`,
+/// body_turns) by more than 2π/3 (halfway across a turn Q by θ the line passes through R₀ (I + Q)/2, whose
+/// singular values are 1 and cos(θ/2), twice). Below it the straight line is kept: it meets every joint row
+/// that is linear in (x, R) at every point, which the geodesics with linear positions do not.
+bool straight_line_degenerates(const std::vector<Vec3>& turns) {
+  return std::any_of(turns.begin(), turns.end(),
+                     [](const Vec3& turn) { return turn.norm() > 2.0 * std::numbers::pi / 3.0; });
+}
+
+/// The geodesic guess of the rotation-matrix transcription at the fraction s = t/T of the motion: every body
+/// turned along its geodesic by s times its turn (`turns`, body_turns), so that every guessed R is a
+/// rotation; positions, velocities and body rates interpolated linearly.
+multibody::State geodesic_guess(const multibody::State& from, const multibody::State& to,
+                                const std::vector<Vec3>& turns, double s) {
+  multibody::State out = from;
+  for (std::size_t i = 0; i < out.bodies.size(); ++i) {
+    const multibody::BodyState& a = from.bodies[i];
+    const multibody::BodyState& b = to.bodies[i];
+    multibody::BodyState& g = out.bodies[i];
+    g.R_space_body = a.R_space_body * so3::exp(s * turns[i]);
     g.x_space = (1.0 - s) * a.x_space + s * b.x_space;
     g.v_space = (1.0 - s) * a.v_space + s * b.v_space;
     g.omega_body = (1.0 - s) * a.omega_body + s * b.omega_body;
   }
   return out;
-}
-
-/// Whether the straight line between the boundary states' matrices comes near a singular matrix, where the
-/// naive guess of the rotation-matrix transcription follows the geodesics instead: some body turns by more
-/// than 2π/3 (halfway across a turn Q by θ the line passes through R₀ (I + Q)/2, whose singular values are 1
-/// and cos(θ/2), twice). Below it the straight line is kept: it meets every joint row that is linear in (x,
-/// R) at every point, which the geodesics with linear positions do not.
-bool straight_line_degenerates(const multibody::State& from, const multibody::State& to) {
-  for (std::size_t i = 0; i < from.bodies.size(); ++i) {
-    if (so3::angle_between(from.bodies[i].R_space_body, to.bodies[i].R_space_body) >
-        2.0 * std::numbers::pi / 3.0)
-      return true;
-  }
-  return false;
 }
 
 /// Throws InvalidInput unless `warm` is a solution of `problem` on some mesh (multibody_direct.hpp).
@@ -278,6 +284,8 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
   const Eigen::MatrixXd rows = detail::model_final_rows(
       problem, N, N.transpose(), [&](const Eigen::VectorXd& y) { return model.state_of(y.data(), 0.0); },
       [&](const multibody::State& s) { return model.state_vector(s); });
+  const std::vector<Vec3> turns = body_turns(problem.initial_state, problem.final_state);
+  const bool geodesic = straight_line_degenerates(turns);
   std::vector<multibody::Multipliers> multipliers;
   double stabilisation = 0.0;
   MultibodyOptimum out = solve_model(
@@ -288,10 +296,9 @@ MultibodyOptimum solve_multibody(const MultibodyProblem& problem, const Multibod
         return model.state_of(w, t);
       },
       [&](const multibody::State& s) { return model.state_vector(s); },
-      [&, geodesic = straight_line_degenerates(problem.initial_state, problem.final_state)](
-          double s) -> Eigen::VectorXd {
+      [&](double s) -> Eigen::VectorXd {
         if (!geodesic) return (1.0 - s) * y0 + s * yf;
-        return model.state_vector(geodesic_guess(problem.initial_state, problem.final_state, s));
+        return model.state_vector(geodesic_guess(problem.initial_state, problem.final_state, turns, s));
       },
       start);
   out.multipliers = std::move(multipliers);
