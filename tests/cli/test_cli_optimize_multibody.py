@@ -264,16 +264,22 @@ def test_progress_line_on_a_terminal_only(source_dir, tmp_path):
 
 @pytest.mark.slow_under_sanitizers
 def test_falling_cat_example_reaches_its_stated_optimum(cli, source_dir, tmp_path):
-    """examples/optimal/falling_cat.toml (2 to 6 s): verified optimal at the effort the file states, the C++
-    example's 12-interval optimum 0.243543547267 N²·m²·s, to 1e-9 (Ipopt's tolerance 1e-10 on a cost of order
-    0.2; the digits are the same with the reference BLAS and OpenBLAS). The re-simulation misses the target by
-    the transcription's error on 12 intervals (1.35e-4 rad measured, order 4), far inside the file's 1e-2."""
+    """examples/optimal/falling_cat.toml (2 to 6 s): verified optimal at the effort it states, the C++ example's
+    12-interval optimum, within the tolerance of scripts/optimal_examples.py (the one place of each example's
+    stated figure; Ipopt's tolerance 1e-10 on a cost of order 0.2, and the digits are the same with the
+    reference BLAS and OpenBLAS). The re-simulation misses the target by the transcription's error on 12
+    intervals (1.35e-4 rad measured, order 4), far inside the file's 1e-2."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("optimal_examples", source_dir / "scripts" / "optimal_examples.py")
+    examples = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(examples)
+    (section, key), stated, rtol = examples.EXAMPLES["falling_cat"]
     out = tmp_path / "out"
     r = cli("optimize", source_dir / "examples" / "optimal" / "falling_cat.toml", "--out", out, "--json",
             "--quiet")
     assert r.returncode == 0, r.stdout + r.stderr
     summary = json.loads(r.stdout)
     assert summary["optimal"] is True
-    assert math.isclose(summary["solution"]["cost"], 0.243543547267, rel_tol=1e-9), summary["solution"]["cost"]
+    assert math.isclose(summary[section][key], stated, rel_tol=rtol), summary[section][key]
     assert summary["replay"]["attitude_error"] < 1e-3
     assert summary["replay"]["max_joint_gap"] < 1e-12
