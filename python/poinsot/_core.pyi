@@ -159,6 +159,8 @@ class Scenario:
     @property
     def locate_flips(self) -> bool: ...
     @property
+    def max_step(self) -> float: ...
+    @property
     def method(self) -> str: ...
     @property
     def name(self) -> str: ...
@@ -270,7 +272,7 @@ def kinetic_energy(body: RigidBody, state: State) -> float:
 def load_scenario(path: str) -> Scenario:
     """Reads and validates a scenario file."""
 
-def make_integrator(name: str, body: RigidBody, torque: object = ..., *, dt: float = ..., rtol: float = ..., atol: float = ..., newton_tolerance: float = ..., newton_max_iterations: int = ...) -> Integrator:
+def make_integrator(name: str, body: RigidBody, torque: object = ..., *, dt: float = ..., max_step: float = ..., rtol: float = ..., atol: float = ..., newton_tolerance: float = ..., newton_max_iterations: int = ...) -> Integrator:
     """Creates the integrator of the registry (methods.hpp) named `name` for a body and a torque (null: none)."""
 
 def parse_scenario(text: str, source: str = ..., base_dir: str = ...) -> Scenario:

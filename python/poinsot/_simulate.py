@@ -142,14 +142,15 @@ def _scenario_parts(scenario: Any) -> dict:
         scenario = _core.load_scenario(os.fspath(scenario))
     if not isinstance(scenario, _core.Scenario):
         raise TypeError(f"scenario: expected a path, a dict or a poinsot.Scenario, got {type(scenario).__name__}")
-    keys = ("body", "initial", "torque", "method", "dt", "rtol", "atol", "newton_tolerance",
+    keys = ("body", "initial", "torque", "method", "dt", "max_step", "rtol", "atol", "newton_tolerance",
             "newton_max_iterations", "t_end", "sample_dt", "locate_flips")
     return {k: getattr(scenario, k) for k in keys}
 
 
 def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, omega_body: Any = None,
              R: Any = None, quaternion: Any = None, torque: Any = None, method: str | None = None,
-             dt: float | None = None, rtol: float | None = None, atol: float | None = None,
+             dt: float | None = None, max_step: float | None = None, rtol: float | None = None,
+             atol: float | None = None,
              newton_tolerance: float | None = None, newton_max_iterations: int | None = None,
              t_end: float | None = None, sample_dt: float | None = None, locate_flips: bool | None = None,
              keep_samples: bool = True) -> SimulationResult:
@@ -165,8 +166,9 @@ def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, ome
       ``quaternion`` (w, x, y, z) (default: identity);
     - ``torque``: None, a ``poinsot.TorqueModel``, or a Python callable ``tau(t, R, omega_body) -> (3,)``
       returning the body-frame torque (N·m) (called with the GIL held at every stage of every step);
-    - ``method``: a name of ``poinsot.METHODS`` ({methods}; default {default}); ``dt`` (s), ``rtol``,
-      ``atol``, ``newton_tolerance``, ``newton_max_iterations`` as in IntegratorOptions;
+    - ``method``: a name of ``poinsot.METHODS`` ({methods}; default {default}); ``dt`` (s), ``max_step``
+      (s; adaptive methods' largest step, default none), ``rtol``, ``atol``, ``newton_tolerance``,
+      ``newton_max_iterations`` as in IntegratorOptions;
     - ``t_end`` (s), ``sample_dt`` (s), ``locate_flips`` as in SimulationOptions. ``keep_samples=False``
       keeps no trajectory (only the summary), for long runs.
 
@@ -199,14 +201,14 @@ def simulate(scenario: Any = None, *, body: Any = None, initial: Any = None, ome
         raise ValueError("initial: missing; expected initial= (poinsot.State) or omega_body= (rad/s)")
     if torque is not None:
         parts["torque"] = torque
-    given = dict(method=method, dt=dt, rtol=rtol, atol=atol, newton_tolerance=newton_tolerance,
+    given = dict(method=method, dt=dt, max_step=max_step, rtol=rtol, atol=atol, newton_tolerance=newton_tolerance,
                  newton_max_iterations=newton_max_iterations, t_end=t_end, sample_dt=sample_dt,
                  locate_flips=locate_flips)
     opts = {k: (v if v is not None else parts.get(k, defaults.get(k))) for k, v in given.items()}
     if opts["method"] is None:
         opts["method"] = DEFAULT_METHOD
     out = _core._simulate(parts["body"], parts["initial"], parts.get("torque"), opts["method"],
-                          float(opts["dt"]), float(opts["rtol"]), float(opts["atol"]),
+                          float(opts["dt"]), float(opts["max_step"]), float(opts["rtol"]), float(opts["atol"]),
                           float(opts["newton_tolerance"]), int(opts["newton_max_iterations"]),
                           float(opts["t_end"]), float(opts["sample_dt"]), bool(opts["locate_flips"]),
                           keep_samples)

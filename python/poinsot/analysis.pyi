@@ -85,7 +85,7 @@ def lambda_from_state(body: _core.RigidBody, state: _core.State, torque: object 
 def lambda_properties(body: _core.RigidBody, t: numpy.typing.ArrayLike, R: numpy.typing.ArrayLike, omega_body: numpy.typing.ArrayLike, torque: object = ..., volume_m3: float = ..., axisymmetry_tolerance: float = ...) -> dict:
     """The properties of Λ checked along a sampled trajectory (t (n,), R (n, 3, 3), omega_body (n, 3)), as a dict (arrays as lists) with the keys of `poinsot lambda --json` that describe the trajectory (closed_form: a dict for an axisymmetric torque-free body, else None):"""
 
-def lambda_report(body: _core.RigidBody, initial: _core.State, *, method: str = ..., dt: float = ..., rtol: float = ..., atol: float = ..., t_end: float = ..., sample_dt: float = ..., torque: object = ..., volume_m3: float = ..., axisymmetry_tolerance: float = ...) -> dict:
+def lambda_report(body: _core.RigidBody, initial: _core.State, *, method: str = ..., dt: float = ..., max_step: float = ..., rtol: float = ..., atol: float = ..., t_end: float = ..., sample_dt: float = ..., torque: object = ..., volume_m3: float = ..., axisymmetry_tolerance: float = ...) -> dict:
     """Runs `body` from `initial` to options.t_end and checks Λ at every sample."""
 
 def lambda_trajectory(body: _core.RigidBody, t: numpy.typing.ArrayLike, R: numpy.typing.ArrayLike, omega_body: numpy.typing.ArrayLike, torque: object = ...) -> numpy.typing.NDArray[numpy.float64]:

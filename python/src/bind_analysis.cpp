@@ -276,12 +276,13 @@ void bind_analysis(py::module_& parent) {
 
   m.def(
       "lambda_report",
-      [](const RigidBody& body, const State& initial, const std::string& method, double dt, double rtol,
-         double atol, double t_end, double sample_dt, const py::object& torque, double volume,
+      [](const RigidBody& body, const State& initial, const std::string& method, double dt, double max_step,
+         double rtol, double atol, double t_end, double sample_dt, const py::object& torque, double volume,
          double axisymmetry_tolerance) {
         analysis::LambdaAnalysisOptions o;
         o.method = method;
         o.integrator.dt = dt;
+        o.integrator.max_step = max_step;
         o.integrator.rtol = rtol;
         o.integrator.atol = atol;
         o.t_end = t_end;
@@ -296,7 +297,9 @@ void bind_analysis(py::module_& parent) {
       },
       py::arg("body"), py::arg("initial"), py::kw_only(),
       py::arg("method") = std::string(dynamics::kDefaultLambdaMethod),
-      py::arg("dt") = dynamics::IntegratorOptions{}.dt, py::arg("rtol") = dynamics::IntegratorOptions{}.rtol,
+      py::arg("dt") = dynamics::IntegratorOptions{}.dt,
+      py::arg("max_step") = dynamics::IntegratorOptions{}.max_step,
+      py::arg("rtol") = dynamics::IntegratorOptions{}.rtol,
       py::arg("atol") = dynamics::IntegratorOptions{}.atol, py::arg("t_end") = 10.0,
       py::arg("sample_dt") = 0.01, py::arg("torque") = py::none(), py::arg("volume_m3") = 0.0,
       py::arg("axisymmetry_tolerance") = 1e-12,

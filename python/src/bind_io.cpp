@@ -54,6 +54,9 @@ void bind_io(py::module_& m) {
       .def_property_readonly(
           "dt", [](const Scenario& s) { return s.integrator.dt; }, POINSOT_DOC(dynamics_IntegratorOptions_dt))
       .def_property_readonly(
+          "max_step", [](const Scenario& s) { return s.integrator.max_step; },
+          POINSOT_DOC(dynamics_IntegratorOptions_max_step))
+      .def_property_readonly(
           "rtol", [](const Scenario& s) { return s.integrator.rtol; },
           POINSOT_DOC(dynamics_IntegratorOptions_rtol))
       .def_property_readonly(

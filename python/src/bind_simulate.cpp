@@ -353,10 +353,11 @@ void bind_exact(py::module_& m) {
               .c_str());
   m.def(
       "make_integrator",
-      [](const std::string& name, const RigidBody& body, const py::object& torque, double dt, double rtol,
-         double atol, double newton_tolerance, int newton_max_iterations) {
+      [](const std::string& name, const RigidBody& body, const py::object& torque, double dt, double max_step,
+         double rtol, double atol, double newton_tolerance, int newton_max_iterations) {
         dynamics::IntegratorOptions o;
         o.dt = dt;
+        o.max_step = max_step;
         o.rtol = rtol;
         o.atol = atol;
         o.newton_tolerance = newton_tolerance;
@@ -364,7 +365,9 @@ void bind_exact(py::module_& m) {
         return dynamics::make_integrator(name, body, as_torque(torque), o);
       },
       py::arg("name"), py::arg("body"), py::arg("torque") = py::none(), py::kw_only(),
-      py::arg("dt") = dynamics::IntegratorOptions{}.dt, py::arg("rtol") = dynamics::IntegratorOptions{}.rtol,
+      py::arg("dt") = dynamics::IntegratorOptions{}.dt,
+      py::arg("max_step") = dynamics::IntegratorOptions{}.max_step,
+      py::arg("rtol") = dynamics::IntegratorOptions{}.rtol,
       py::arg("atol") = dynamics::IntegratorOptions{}.atol,
       py::arg("newton_tolerance") = dynamics::IntegratorOptions{}.newton_tolerance,
       py::arg("newton_max_iterations") = dynamics::IntegratorOptions{}.newton_max_iterations,
@@ -420,10 +423,11 @@ void bind_simulate(py::module_& m) {
   m.def(
       "_simulate",
       [](const RigidBody& body, const State& initial, const py::object& torque, const std::string& method,
-         double dt, double rtol, double atol, double newton_tolerance, int newton_max_iterations,
-         double t_end, double sample_dt, bool locate_flips, bool keep_samples) {
+         double dt, double max_step, double rtol, double atol, double newton_tolerance,
+         int newton_max_iterations, double t_end, double sample_dt, bool locate_flips, bool keep_samples) {
         dynamics::IntegratorOptions io;
         io.dt = dt;
+        io.max_step = max_step;
         io.rtol = rtol;
         io.atol = atol;
         io.newton_tolerance = newton_tolerance;
@@ -435,8 +439,9 @@ void bind_simulate(py::module_& m) {
         return run_simulation(body, initial, torque, method, io, so, keep_samples);
       },
       py::arg("body"), py::arg("initial"), py::arg("torque"), py::arg("method"), py::arg("dt"),
-      py::arg("rtol"), py::arg("atol"), py::arg("newton_tolerance"), py::arg("newton_max_iterations"),
-      py::arg("t_end"), py::arg("sample_dt"), py::arg("locate_flips"), py::arg("keep_samples") = true,
+      py::arg("max_step"), py::arg("rtol"), py::arg("atol"), py::arg("newton_tolerance"),
+      py::arg("newton_max_iterations"), py::arg("t_end"), py::arg("sample_dt"), py::arg("locate_flips"),
+      py::arg("keep_samples") = true,
       "Low-level driver of poinsot.simulate (use that): returns a dict of NumPy arrays and the run's "
       "summary.");
 
@@ -444,6 +449,7 @@ void bind_simulate(py::module_& m) {
   const dynamics::SimulationOptions so;
   auto defaults = py::dict();
   defaults["dt"] = io.dt;
+  defaults["max_step"] = io.max_step;
   defaults["rtol"] = io.rtol;
   defaults["atol"] = io.atol;
   defaults["newton_tolerance"] = io.newton_tolerance;

@@ -217,6 +217,22 @@ def test_summary_only_run_keeps_no_samples():
     assert r.final_state.time == pytest.approx(1.0)
 
 
+def test_max_step_caps_the_adaptive_steps_from_a_scenario_or_a_keyword():
+    # No largest step by default: dop853 at its default tolerances chooses steps far longer than dt = 1e-3;
+    # max_step = dt (a keyword, or the scenario's [integrator] max_step) caps every step at dt.
+    free = poinsot.simulate(body=BODY, omega_body=W0, method="dop853", t_end=2.0, sample_dt=0.5)
+    capped = poinsot.simulate(body=BODY, omega_body=W0, method="dop853", t_end=2.0, sample_dt=0.5, max_step=1e-3)
+    assert free.steps < 200 and capped.steps >= 2000
+    scenario = {"body": {"principal_moments": list(BODY)}, "initial": {"omega_body": list(W0)},
+                "integrator": {"method": "dop853", "max_step": 1e-3}, "output": {"t_end": 2.0, "sample_dt": 0.5}}
+    assert poinsot.simulate(scenario).steps == capped.steps
+    assert poinsot.parse_scenario(poinsot.scenario_toml(scenario), "<dict>", ".").max_step == 1e-3
+    # the two agree to the tolerance (rtol 1e-10 per step over a few hundred steps)
+    assert np.abs(free.R - capped.R).max() < 1e-8
+    with pytest.raises(ValueError, match="max_step: got 0"):
+        poinsot.make_integrator("dopri5", RigidBody.from_principal_moments(BODY), max_step=0.0)
+
+
 def test_integrator_step_by_step_matches_simulate():
     body = RigidBody.from_principal_moments(BODY)
     integ = poinsot.make_integrator("rk4", body, dt=1e-2)

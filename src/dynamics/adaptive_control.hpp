@@ -19,10 +19,16 @@
 
 namespace poinsot::dynamics::detail {
 
-/// The options an adaptive integrator needs: the largest step dt (s) and the tolerances, all > 0. `method`
-/// names the integrator in the message ("dopri5: rtol: got 0, expected a number > 0").
+/// The options an adaptive integrator needs: the first step dt (s) and the tolerances, all finite and > 0,
+/// and the largest step max_step (s), > 0 or infinite (no limit). `method` names the integrator in the
+/// message ("dopri5: rtol: got 0, expected a finite number > 0").
 inline void require_adaptive_options(const std::string& method, const IntegratorOptions& options) {
   require_positive(method + ": dt", options.dt, "s");
+  if (!(options.max_step > 0.0)) {
+    throw InvalidInput(
+        fmt::format("{}: max_step: got {} s, expected a number > 0 (infinity: no largest step)", method,
+                    options.max_step));
+  }
   require_positive(method + ": rtol", options.rtol);
   require_positive(method + ": atol", options.atol);
 }
@@ -77,7 +83,7 @@ struct AdaptiveLoop {
   ResumeCheck resume;
   StepController control;
 
-  /// One accepted step of at most min(dt, opt.dt) s from `state`. `fsal` is the method's storage of
+  /// One accepted step of at most min(dt, opt.max_step) s from `state`. `fsal` is the method's storage of
   /// f(t, y), the first stage, recomputed only when the state is not the one the last step produced; `y1`
   /// its storage of the attempt's result. `attempt(t, y, h)` computes y1 and returns the scaled error (≤ 1:
   /// accepted); `accept(t, y, h)`, called once per accepted step before y becomes y1, keeps what dense output
@@ -92,7 +98,7 @@ struct AdaptiveLoop {
     }
     const double t = state.time;
     if (!fsal_valid) fsal = f(t, y);
-    double h = std::min(dt, opt.dt);
+    double h = std::min(dt, opt.max_step);
     if (!(h > 0.0)) {
       throw InvalidInput(fmt::format("{}: step dt = {} s at t = {} s; expected dt > 0", name, h, t));
     }
@@ -106,7 +112,7 @@ struct AdaptiveLoop {
       }
       const double err = attempt(t, std::as_const(y), h);
       if (err <= 1.0 && y1.allFinite()) {
-        const double h_next = std::min(control.accept(h, err), opt.dt);
+        const double h_next = std::min(control.accept(h, err), opt.max_step);
         accept(t, std::as_const(y), h);
         y = y1;
         fsal_valid = accept_step(y, t + h, state, resume);

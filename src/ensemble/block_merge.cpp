@@ -38,6 +38,7 @@ void merge_summary(BlockSummary& into, const BlockSummary& right) {
     into.stats[q].merge(right.stats[q]);
   into.rejected += right.rejected;
   into.repaired += right.repaired;
+  into.body_steps += right.body_steps;
 }
 
 void BlockTree::push(const BlockSummary& block) {

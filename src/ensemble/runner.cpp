@@ -100,42 +100,45 @@ void fill_slew_outputs(const Sample& s, const SlewOutcome& r, const Context& c, 
   row.out[meets_requirement] = r.meets_requirement ? 1.0 : 0.0;
 }
 
-/// Runs samples [first, first + count) into rows (count ≤ kBlockSamples) by the context's path.
-void run_block(const Context& c, std::uint64_t first, std::uint64_t count, SampleRow* rows) {
+/// Runs samples [first, first + count) into rows (count ≤ kBlockSamples) by the context's path; returns the
+/// body steps they took (an adaptive method's accepted steps, each sample's own).
+std::int64_t run_block(const Context& c, std::uint64_t first, std::uint64_t count, SampleRow* rows) {
   const EnsembleOptions& o = c.options;
+  const auto samples = static_cast<std::int64_t>(count);
   if (c.path == Path::slew) {
     for (std::uint64_t i = 0; i < count; ++i) {
       const Sample s = c.sampler.draw(first + i);
       fill_slew_outputs(s, o.slew->run(s.inertia_com(), s.initial), c, rows[i]);
     }
-    return;
+    return samples * o.slew->step_count();
   }
   if (c.path == Path::batched) {
-    std::vector<Sample> samples;
+    std::vector<Sample> drawn;
     std::vector<LaneResult> lanes(kBatchLanes);
     for (std::uint64_t b = 0; b < count; b += kBatchLanes) {
       const std::uint64_t n = std::min<std::uint64_t>(kBatchLanes, count - b);
-      samples.clear();
+      drawn.clear();
       for (std::uint64_t i = 0; i < n; ++i)
-        samples.push_back(c.sampler.draw(first + b + i));
-      run_batch(o.method, samples, o.t_end, o.dt, o.simd, lanes);
+        drawn.push_back(c.sampler.draw(first + b + i));
+      run_batch(o.method, drawn, o.t_end, o.dt, o.simd, lanes);
       for (std::uint64_t i = 0; i < n; ++i)
-        fill_outputs(samples[i], lanes[i].final_state, lanes[i].first_flip, lanes[i].second_flip, c,
+        fill_outputs(drawn[i], lanes[i].final_state, lanes[i].first_flip, lanes[i].second_flip, c,
                      rows[b + i]);
     }
-    return;
+    return samples * batch_step_count(o.t_end, o.dt);
   }
+  std::int64_t steps = 0;
   for (std::uint64_t i = 0; i < count; ++i) {
     const Sample s = c.sampler.draw(first + i);
     const dynamics::RigidBody body = s.body();
     if (c.path == Path::exact) {
       const dynamics::State x = dynamics::ExactFreeBody(body, s.initial).state_at(o.t_end);
       fill_outputs(s, x, kNaN, kNaN, c, rows[i]);
-      continue;
+      continue;  // the closed form takes no steps
     }
     const auto torque = s.torque_model(body);
-    auto integrator =
-        dynamics::make_integrator(o.method, body, torque, {.dt = o.dt, .rtol = o.rtol, .atol = o.atol});
+    auto integrator = dynamics::make_integrator(
+        o.method, body, torque, {.dt = o.dt, .max_step = o.max_step, .rtol = o.rtol, .atol = o.atol});
     // A heavy top's axis is sampled on every step (the tracker needs several samples per nutation period).
     std::optional<dynamics::AxisTracker> top;
     dynamics::Observer observer;
@@ -152,7 +155,9 @@ void run_block(const Context& c, std::uint64_t first, std::uint64_t count, Sampl
     const auto& f = r.flip_times;
     fill_outputs(s, r.final_state, f.empty() ? kNaN : f[0], f.size() < 2 ? kNaN : f[1], c, rows[i],
                  top ? &*top : nullptr);
+    steps += r.steps;
   }
+  return steps;
 }
 
 Path choose_path(const Sampler& sampler, const EnsembleOptions& o) {
@@ -194,7 +199,7 @@ void validate(const EnsembleOptions& o) {
   // Builds one integrator to validate the method's name (the registry's own message lists the methods).
   if (o.method != dynamics::kExactMethodName) {
     dynamics::make_integrator(o.method, dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3)), nullptr,
-                              {.dt = o.dt, .rtol = o.rtol, .atol = o.atol});
+                              {.dt = o.dt, .max_step = o.max_step, .rtol = o.rtol, .atol = o.atol});
   }
 }
 
@@ -237,10 +242,11 @@ void run_round(const Context& context, const EnsembleOptions& o, std::uint64_t f
         const std::uint64_t offset = (b0 + k) * kBlockSamples;  // within the range
         const std::uint64_t count = std::min(kBlockSamples, range - offset);
         SampleRow* rows = rows_of(k);
-        run_block(context, first_sample + offset, count, rows);
+        const std::int64_t steps = run_block(context, first_sample + offset, count, rows);
         BlockSummary& b = block[k];
         b = BlockSummary{};
         b.index = first_block + b0 + k;
+        b.body_steps = steps;
         for (std::uint64_t i = 0; i < count; ++i) {
           for (std::size_t q = 0; q < static_cast<std::size_t>(kOutputCount); ++q)
             b.stats[q].add(rows[i].out[q]);
@@ -289,6 +295,7 @@ void set_statistics(EnsembleResult& result, std::vector<BlockNode> nodes, std::u
   result.stats = root.stats;
   result.rejected = root.rejected;
   result.repaired = root.repaired;
+  result.body_steps = root.body_steps;
 }
 
 std::uint64_t block_count(std::uint64_t samples) {
@@ -353,9 +360,6 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
                                               std::vector<SampleRow>(kBlockSamples));
   std::vector<BlockSummary> block(per_round);
   BlockTree tree;  // the blocks' statistics, merged in the fixed tree as they complete
-  const long long steps_per_sample = path == Path::exact  ? 0
-                                     : path == Path::slew ? o.slew->step_count()
-                                                          : batch_step_count(o.t_end, o.dt);
 
   for (std::uint64_t round = 0; round * per_round < blocks; ++round) {
     const std::uint64_t b0 = round * per_round;
@@ -391,7 +395,6 @@ EnsembleResult run_ensemble_blocks(const Sampler& sampler, const EnsembleOptions
   if (o.keep_rows) result.rows.resize(result.completed);
   set_statistics(result, tree.nodes(), o.samples);
   if (nodes_out) nodes_out->insert(nodes_out->end(), tree.nodes().begin(), tree.nodes().end());
-  result.body_steps = static_cast<std::int64_t>(result.completed) * steps_per_sample;
   result.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

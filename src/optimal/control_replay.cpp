@@ -119,7 +119,7 @@ dynamics::State replay_control(const ReorientationProblem& p, const IndirectSolu
   const auto body = dynamics::RigidBody::from_inertia(p.inertia_body);
   const ReplayedTorque torque(s);
   dynamics::IntegratorOptions opt;
-  opt.dt = s.final_time / 16.0;
+  opt.dt = opt.max_step = s.final_time / 16.0;
   opt.rtol = opt.atol = replay_tolerance;
   dynamics::Dop853Integrator integrator(body, torque.model(), opt);
   dynamics::State state = start;
@@ -250,7 +250,7 @@ DirectReplay replay_direct(const ReorientationProblem& p, const DirectSolution& 
                      false, "direct collocation torque");
   const auto body = dynamics::RigidBody::from_inertia(p.bus_inertia());
   dynamics::IntegratorOptions opt;
-  opt.dt = d.final_time / 16.0;
+  opt.dt = opt.max_step = d.final_time / 16.0;
   opt.rtol = opt.atol = 1e-13;
   dynamics::Dop853Integrator integrator(body, torque, opt);
   dynamics::State state;

@@ -2,6 +2,8 @@
 // and its order-7 dense output is as accurate as its steps (the flips are located on it, test_simulation).
 #include "poinsot/dynamics/dop853.hpp"
 
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "dynamics_test_util.hpp"
@@ -44,6 +46,34 @@ TEST(Dop853, GlobalErrorFollowsTheTolerance) {
     const double e = state_error(run_adaptive(m, s0, T, 0.5), ref);
     EXPECT_LT(e, 30.0 * tol) << "tol " << tol;
   }
+}
+
+// Every step, the first included, is at most max_step, whatever step is asked; without max_step the first
+// step is the one asked. The largest step must be > 0 (infinity: none); a bad one is named in the message.
+TEST(Dop853, StepsAreAtMostMaxStep) {
+  IntegratorOptions o = dop853_options(1e-6, 0.5);
+  o.max_step = 0.01;
+  Dop853Integrator capped(kBody, TorqueModel::none(), o);
+  State s = tumbling();
+  double h = 1.0;
+  double largest = 0.0;
+  for (int k = 0; k < 50; ++k) {
+    const auto r = capped.step(s, h);
+    largest = std::max(largest, r.dt_taken);
+    EXPECT_LE(r.dt_next, 0.01);
+    h = 1.0;  // asks for more than the cap every time
+  }
+  EXPECT_EQ(largest, 0.01);
+  Dop853Integrator free(kBody, TorqueModel::none(), dop853_options(1e6, 0.5));  // accepts any step
+  State f = tumbling();
+  EXPECT_EQ(free.step(f, 0.5).dt_taken, 0.5);
+  for (const double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    o.max_step = bad;
+    POINSOT_EXPECT_THROWS_MESSAGE(Dop853Integrator(kBody, TorqueModel::none(), o), InvalidInput,
+                                  "dop853: max_step: got");
+  }
+  o.max_step = std::numeric_limits<double>::infinity();
+  EXPECT_NO_THROW(Dop853Integrator(kBody, TorqueModel::none(), o));
 }
 
 TEST(Dop853, DenseOutputIsAsAccurateAsTheSteps) {

@@ -34,7 +34,7 @@ class IntegratorContract : public ::testing::TestWithParam<const MethodInfo*> {
   const MethodInfo& info() const { return *GetParam(); }
 
   /// A fixed step h (s) for every method: an adaptive one with tolerances so loose that it accepts every
-  /// step at the largest step, min(h, dt) = h, so that it is measured as the Runge–Kutta method it is.
+  /// step it is asked (no max_step), so that it is measured as the Runge–Kutta method it is.
   std::unique_ptr<dynamics::Integrator> make(const RigidBody& body, double h,
                                              std::shared_ptr<const TorqueModel> torque = nullptr) const {
     IntegratorOptions o;

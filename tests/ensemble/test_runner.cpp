@@ -6,6 +6,8 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/dynamics/exact_free_body.hpp"
+#include "poinsot/dynamics/integrator.hpp"
+#include "poinsot/dynamics/simulation.hpp"
 #include "poinsot_test.hpp"
 
 namespace poinsot::ensemble {
@@ -139,6 +141,28 @@ TEST(Runner, ExactAndScalarPathsAgreeWithTheClosedFormAndTheTorquedPath) {
   // The torque acts: the free sample ends elsewhere by far more than the tolerances.
   const SampleRow free = run_sample(s, 5, opts(1, "dop853", 2.0));
   EXPECT_GT(test::max_abs_diff(c.final_state.omega_body, free.final_state.omega_body), 1e-3);
+}
+
+// An adaptive method's body steps are the steps its samples took, counted one by one: the same as the
+// driver's count for each sample, and (no largest step by default) far fewer than t_end/dt each. With
+// max_step = dt every step is capped, so each sample takes t_end/dt of them (one more where round-off leaves
+// a sliver).
+TEST(Runner, AdaptiveMethodsCountTheStepsTheirSamplesTook) {
+  const Sampler s = racket_sampler();
+  EnsembleOptions o = opts(6, "dop853", 3.0);
+  const EnsembleResult r = run_ensemble(s, o);
+  std::int64_t expected = 0;
+  for (std::uint64_t i = 0; i < 6; ++i) {
+    const Sample x = s.draw(i);
+    auto m = dynamics::make_integrator("dop853", x.body(), nullptr, {.dt = o.dt});
+    expected += dynamics::simulate(x.body(), nullptr, x.initial, *m, {.t_end = 3.0, .sample_dt = 3.0}).steps;
+  }
+  EXPECT_EQ(r.body_steps, expected);
+  EXPECT_LT(r.body_steps, 6 * 3000 / 10);
+  o.max_step = o.dt;
+  const std::int64_t capped = run_ensemble(s, o).body_steps;
+  EXPECT_GE(capped, 6 * 3000);
+  EXPECT_LE(capped, 6 * 3001);  // the sum of 3000 steps of 1e-3 may fall short of 3 s by round-off
 }
 
 TEST(Runner, StopsBetweenRoundsKeepingCompleteRows) {

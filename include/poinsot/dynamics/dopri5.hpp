@@ -15,7 +15,8 @@ namespace poinsot::dynamics {
 
 class Dopri5Integrator final : public Integrator {
  public:
-  /// options.dt (s): the first and the largest step; rtol, atol > 0. Throws InvalidInput otherwise.
+  /// options.dt (s): the first step; options.max_step (s, default none): the largest; rtol, atol > 0.
+  /// Throws InvalidInput otherwise.
   Dopri5Integrator(const RigidBody& body, std::shared_ptr<const TorqueModel> torque,
                    const IntegratorOptions& options = {});
   ~Dopri5Integrator() override;
@@ -27,8 +28,9 @@ class Dopri5Integrator final : public Integrator {
   bool is_adaptive() const override { return true; }
   bool has_dense_output() const override { return true; }
   double nominal_step() const override;
-  /// One accepted step of at most dt (s); rejected attempts are retried with a smaller step. Throws
-  /// ComputationFailed when rejections shrink the step below 1e-14·max(1, |t|) s; InvalidInput for dt ≤ 0.
+  /// One accepted step of at most min(dt, max_step) (s); rejected attempts are retried with a smaller step.
+  /// Throws ComputationFailed when rejections shrink the step below 1e-14·max(1, |t|) s; InvalidInput for dt
+  /// ≤ 0.
   StepResult step(State& state, double dt) override;
   /// The interpolated state at t (s) in the last accepted step (quaternion normalised), error O(h⁵).
   State dense_output(double t) const override;

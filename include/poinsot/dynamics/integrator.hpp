@@ -2,12 +2,13 @@
 /// @file integrator.hpp
 /// The one interface every integrator implements (Boost.Odeint's `step(state, dt)` concept, as a small
 /// virtual class): a new method is one new file. Fixed-step methods take exactly the step asked; adaptive
-/// ones take at most that step, report the step taken and propose the next, and offer dense output inside the
-/// last step.
+/// ones take at most that step (and at most IntegratorOptions::max_step), report the step taken and propose
+/// the next, and offer dense output inside the last step.
 ///
 /// The methods, each in its own file with its order and what it preserves, are listed once, in the registry
 /// (methods.hpp), which make_integrator reads.
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -21,9 +22,12 @@ namespace poinsot::dynamics {
 
 /// Options common to all integrators; each uses those that apply to it.
 struct IntegratorOptions {
-  double dt = 1e-3;     ///< s: the step of fixed-step methods, the first and largest step of adaptive ones
-  double rtol = 1e-10;  ///< relative tolerance of adaptive methods
-  double atol = 1e-12;  ///< absolute tolerance of adaptive methods
+  double dt = 1e-3;  ///< s: the step of fixed-step methods, the first step of adaptive ones
+  /// s, > 0: the largest step of adaptive methods. By default there is none: the tolerances alone set the
+  /// step, and a caller that needs the state between steps (samples, events) reads the dense output.
+  double max_step = std::numeric_limits<double>::infinity();
+  double rtol = 1e-10;              ///< relative tolerance of adaptive methods
+  double atol = 1e-12;              ///< absolute tolerance of adaptive methods
   double newton_tolerance = 1e-14;  ///< implicit methods (rattle): relative tolerance of the Newton iteration
   int newton_max_iterations = 50;
 };
@@ -57,7 +61,7 @@ class Integrator {
   virtual bool is_adaptive() const { return false; }
   virtual bool has_dense_output() const { return false; }
   /// s: the step the method was configured with (IntegratorOptions::dt), which the simulation driver uses
-  /// for fixed-step methods and as the first and largest step of adaptive ones; 0 when the method has none
+  /// for fixed-step methods and as the first step of adaptive ones; 0 when the method has none
   /// (exact: any step is exact), in which case the driver steps from sample to sample.
   virtual double nominal_step() const { return 0.0; }
 

@@ -29,6 +29,7 @@ struct BlockSummary {
   std::uint64_t index = 0;  ///< block number (of a subtree: its first block)
   std::array<RunningStats, kOutputSlots> stats;
   std::int64_t rejected = 0, repaired = 0;
+  std::int64_t body_steps = 0;  ///< the steps its samples took
 };
 
 /// `into` ← the merge of `into` (the left part) and `right`: statistics by RunningStats::merge, counts

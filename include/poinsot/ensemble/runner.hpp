@@ -32,6 +32,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -101,6 +102,9 @@ struct EnsembleOptions {
   std::string method{dynamics::Rk4Integrator::kName};
   double t_end = 10.0;  ///< s
   double dt = 1e-3;     ///< s, the nominal step (fixed-step methods; the first step of adaptive ones)
+  /// s, > 0: the largest step of adaptive methods (default none; a heavy top's axis is still sampled every
+  /// dt, from the dense output)
+  double max_step = std::numeric_limits<double>::infinity();
   double rtol = 1e-10, atol = 1e-12;  ///< adaptive methods
   unsigned threads = 1;
   Simd simd = Simd::automatic;
@@ -128,9 +132,9 @@ struct EnsembleResult {
   std::array<FixedHistogram, kOutputCount> histograms;
   std::uint64_t completed = 0;  ///< samples done (all, unless interrupted)
   bool interrupted = false;
-  std::int64_t rejected = 0;  ///< redraws of the reject policy, all samples
-  std::int64_t repaired = 0;  ///< samples moved onto the valid cone
-  std::int64_t body_steps = 0;
+  std::int64_t rejected = 0;    ///< redraws of the reject policy, all samples
+  std::int64_t repaired = 0;    ///< samples moved onto the valid cone
+  std::int64_t body_steps = 0;  ///< the steps the completed samples took (adaptive methods: accepted steps)
   double wall_time_s = 0.0;
   std::string path;   ///< "batched rk4 (AVX2)", "exact", "scalar dop853", ...
   SampleRow nominal;  ///< the undispersed sample

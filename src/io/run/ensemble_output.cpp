@@ -72,6 +72,7 @@ std::string ensemble_summary_json(const EnsembleScenario& sc, const ensemble::En
   j["threads"] = o.threads;
   j["t_end"] = o.t_end;
   j["dt"] = o.dt;
+  j["max_step"] = number(o.max_step);  // adaptive methods; null: none
   j["policy"] = ensemble::to_string(sc.dispersions.policy);
   j["rejected_draws"] = r.rejected;
   j["repaired_samples"] = r.repaired;

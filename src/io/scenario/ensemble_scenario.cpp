@@ -215,7 +215,8 @@ std::shared_ptr<const ensemble::SlewTracking> read_slew(const Source& src, const
     spec.target_omega = w;
   }
 
-  const Section in(src, root["integrator"].as_table(), "integrator", {"method", "dt", "rtol", "atol"});
+  const Section in(src, root["integrator"].as_table(), "integrator",
+                   {"method", "dt", "max_step", "rtol", "atol"});
   if (base.method != "rk4") {
     in.fail("method",
             fmt::format("got \"{}\" with [ensemble.slew]; expected \"rk4\" (the closed-loop slew is "
@@ -333,6 +334,7 @@ ensemble::EnsembleOptions ensemble_options(const EnsembleScenario& sc) {
   o.method = sc.base.method;
   o.t_end = sc.base.simulation.t_end;
   o.dt = sc.base.integrator.dt;
+  o.max_step = sc.base.integrator.max_step;
   o.rtol = sc.base.integrator.rtol;
   o.atol = sc.base.integrator.atol;
   o.keep_rows = sc.per_sample;

@@ -183,7 +183,8 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
   }
 
   // [integrator]
-  const Section in(src, root["integrator"].as_table(), "integrator", {"method", "dt", "rtol", "atol"});
+  const Section in(src, root["integrator"].as_table(), "integrator",
+                   {"method", "dt", "max_step", "rtol", "atol"});
   sc.method = in.string("method").value_or(std::string(dynamics::kDefaultMethod));
   try {
     check_method(sc, sc.method, in.label("method"));
@@ -191,6 +192,7 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
     throw InvalidInput(detail::location(src, in.node("method")) + e.what());
   }
   if (in.has("dt")) sc.integrator.dt = positive(in, "dt", "s");
+  if (in.has("max_step")) sc.integrator.max_step = positive(in, "max_step", "s");
   if (in.has("rtol")) sc.integrator.rtol = positive(in, "rtol", "");
   if (in.has("atol")) sc.integrator.atol = positive(in, "atol", "");
 
@@ -202,6 +204,8 @@ Scenario single_scenario_from_table(const toml::table& root, std::string_view so
   sc.out_dir = o.string("dir").value_or("");
   const std::string where = detail::location(src, o.node("t_end")) + "[output] t_end";
   check_step_count(sc.simulation.t_end / sc.integrator.dt, where, "t_end / dt");
+  // A finite max_step caps the adaptive methods' steps: at least t_end / max_step of them.
+  check_step_count(sc.simulation.t_end / sc.integrator.max_step, where, "t_end / max_step");
   check_sample_count(sc.simulation.t_end / sc.simulation.sample_dt, where, "t_end / sample_dt");
   return sc;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -65,6 +66,7 @@ g = [0, 0, -9.8]
 [integrator]
 method = "rattle"
 dt = 1e-4
+max_step = 0.05
 rtol = 1e-9
 atol = 1e-11
 [output]
@@ -80,6 +82,7 @@ dir = "out/top"
   EXPECT_EQ(sc.gravity_space, Vec3(0, 0, -9.8));
   EXPECT_EQ(sc.method, "rattle");
   EXPECT_EQ(sc.integrator.dt, 1e-4);
+  EXPECT_EQ(sc.integrator.max_step, 0.05);
   EXPECT_EQ(sc.integrator.rtol, 1e-9);
   EXPECT_EQ(sc.integrator.atol, 1e-11);
   EXPECT_EQ(sc.simulation.t_end, 2.5);
@@ -179,6 +182,12 @@ TEST(Scenario, RangesAreChecked) {
   expect_has(error_of(std::string(kMinimal) + "[integrator]\ndt = 0.0\n"),
              {"[integrator] dt: got 0 s, expected a number > 0"});
   expect_has(error_of(std::string(kMinimal) + "[integrator]\ndt = -1e-3\n"), {"got -0.001 s"});
+  expect_has(error_of(std::string(kMinimal) + "[integrator]\nmax_step = 0\n"),
+             {"[integrator] max_step: got 0 s, expected a number > 0"});
+  expect_has(error_of(std::string(kMinimal) + "[integrator]\nmax_step = 1e-12\n"),
+             {"t_end / max_step = 5e+12 steps"});
+  EXPECT_EQ(parse_scenario(kMinimal, "t.toml").integrator.max_step,
+            std::numeric_limits<double>::infinity());  // by default the tolerances alone set the steps
   expect_has(error_of(replace(kMinimal, "[0.1, 2.0, 0.1]", "[0.1, nan, 0.1]")),
              {"[initial] omega_body: got [0.1, nan, 0.1], expected finite numbers"});
   expect_has(error_of(replace(kMinimal, "t_end = 5", "t_end = inf")),

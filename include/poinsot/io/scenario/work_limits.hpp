@@ -2,8 +2,9 @@
 /// @file work_limits.hpp
 /// Limits on the work and the output of a run, checked when a scenario is read or overridden — before
 /// anything runs or is written — so that no input makes poinsot run without end or write without bound:
-///  * steps: t_end / dt (single body; for adaptive methods a lower bound, dt being their largest step) or
-///    duration / dt (multibody), at most 1e9 (environment variable POINSOT_MAX_STEPS raises it);
+///  * steps: t_end / dt (single body; for adaptive methods, whose tolerance sets the steps, a conservative
+///    measure with dt their first step) or duration / dt (multibody), at most 1e9 (environment variable
+///    POINSOT_MAX_STEPS raises it);
 ///  * samples (trajectory rows, hence the output size): t_end / sample_dt (single body) or
 ///    steps / output_every (multibody), at most 1e7 (POINSOT_MAX_SAMPLES).
 #include <string_view>
