@@ -192,17 +192,15 @@ void validate(const CollocationOptions& options) {
 
 namespace {
 
-/// The Ipopt settings of attempt 0, 1, 2 on one mesh (solve_direct's restarts, direct_collocation.hpp).
-detail::IpoptSettings attempt_settings(const CollocationOptions& options, int attempt) {
+/// The Ipopt settings of the first attempt on each mesh (solve_direct's restarts, direct_collocation.hpp).
+detail::IpoptSettings first_settings(const CollocationOptions& options) {
   detail::IpoptSettings ipopt;
   ipopt.tolerance = options.nlp_tolerance;
   ipopt.acceptable_tolerance = options.nlp_tolerance;
   ipopt.max_iterations = options.max_nlp_iterations;
   ipopt.print_level = options.print_level;
-  return detail::restart_settings(ipopt, attempt);
+  return ipopt;
 }
-
-constexpr int kAttempts = detail::kIpoptAttempts;
 
 /// The mesh refinement from `nlp` and its start `z`; the counts of `before` (a previous solve) are added to.
 DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<CollocationNlp> nlp,
@@ -215,25 +213,23 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
   int nlp_iterations = before.nlp_iterations, restarts = before.nlp_restarts;
   for (int it = 0; it < options.max_mesh_iterations; ++it) {
     const int mesh = before.mesh_iterations + it + 1;
-    detail::NlpSolution solution;
-    int attempt = 0;
-    for (; attempt < kAttempts; ++attempt) {
-      detail::IpoptSettings ipopt = attempt_settings(options, attempt);
-      if (options.progress)
-        ipopt.on_iteration = [&, attempt](int i, double f, double inf) {
-          options.progress(DirectProgress{mesh, nlp->intervals(), attempt, i, f, inf});
-        };
-      solution = detail::solve_with_ipopt(*nlp, z, ipopt);
-      nlp_iterations += solution.iterations;
-      if (solution.solved || solution.acceptable) break;
+    detail::RestartProgress progress;
+    if (options.progress) {
+      progress = [&](int attempt, int i, double f, double inf) {
+        options.progress(DirectProgress{mesh, nlp->intervals(), attempt, i, f, inf});
+      };
     }
-    restarts += std::min(attempt, kAttempts - 1);
-    const bool solved = attempt < kAttempts;
-    if (!solved) {
+    detail::RestartedSolution run = detail::solve_with_restarts(
+        *nlp, z, first_settings(options),
+        [](const detail::NlpSolution& s) { return s.solved || s.acceptable; }, progress);
+    detail::NlpSolution& solution = run.solution;
+    nlp_iterations += run.iterations;
+    restarts += run.restarts;
+    if (!run.accepted) {
       failure = fmt::format(
           "Ipopt did not converge (status {}: {}) on mesh {} with {} intervals, also when "
           "restarted with {} other settings",
-          solution.return_code, solution.status, mesh, nlp->intervals(), kAttempts - 1);
+          solution.return_code, solution.status, mesh, nlp->intervals(), run.restarts);
       if (have_previous) {  // the previous mesh's solution, which Ipopt solved, is the result
         best = std::move(previous);
         failure += fmt::format("; the solution of mesh {} ({} intervals, mesh error {}) is kept", mesh - 1,

@@ -185,6 +185,29 @@ IpoptSettings restart_settings(const IpoptSettings& first, int attempt) {
   return ipopt;
 }
 
+RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<double>& start,
+                                      const IpoptSettings& first,
+                                      const std::function<bool(const NlpSolution&)>& accept,
+                                      const RestartProgress& progress) {
+  RestartedSolution out;
+  for (int attempt = 0; attempt < kIpoptAttempts; ++attempt) {
+    IpoptSettings ipopt = restart_settings(first, attempt);
+    if (progress) {
+      ipopt.on_iteration = [&progress, attempt](int iteration, double objective, double infeasibility) {
+        progress(attempt, iteration, objective, infeasibility);
+      };
+    }
+    out.solution = solve_with_ipopt(nlp, start, ipopt);
+    out.iterations += out.solution.iterations;
+    out.restarts = attempt;
+    if (accept(out.solution)) {
+      out.accepted = true;
+      break;
+    }
+  }
+  return out;
+}
+
 NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& start,
                              const IpoptSettings& settings) {
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = new Ipopt::IpoptApplication(false);

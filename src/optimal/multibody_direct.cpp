@@ -87,25 +87,22 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   settings.print_level = options.print_level;
   settings.mumps_scaling = options.mumps_scaling;
   // Where Ipopt fails, it is restarted from the same guess with other settings (detail::restart_settings).
-  detail::NlpSolution sol;
-  MultibodyOptimum out;
-  int attempt = 0;
-  for (; attempt < detail::kIpoptAttempts; ++attempt) {
-    detail::IpoptSettings ipopt = detail::restart_settings(settings, attempt);
-    if (options.progress) {
-      ipopt.on_iteration = [&, attempt](int iteration, double objective, double infeasibility) {
-        options.progress(DirectProgress{1, problem.intervals, attempt, iteration, objective, infeasibility});
-      };
-    }
-    sol = detail::solve_with_ipopt(nlp, guess, ipopt);
-    out.nlp_iterations += sol.iterations;
-    if (sol.solved) break;
+  detail::RestartProgress progress;
+  if (options.progress) {
+    progress = [&](int attempt, int iteration, double objective, double infeasibility) {
+      options.progress(DirectProgress{1, problem.intervals, attempt, iteration, objective, infeasibility});
+    };
   }
-  out.nlp_restarts = std::min(attempt, detail::kIpoptAttempts - 1);
+  const detail::RestartedSolution run = detail::solve_with_restarts(
+      nlp, guess, settings, [](const detail::NlpSolution& s) { return s.solved; }, progress);
+  const detail::NlpSolution& sol = run.solution;
+  MultibodyOptimum out;
+  out.nlp_iterations = run.iterations;
+  out.nlp_restarts = run.restarts;
   out.converged = sol.solved;
   out.status = sol.solved ? "converged"
                           : fmt::format("not converged: {}, also when restarted with {} other settings",
-                                        sol.status, detail::kIpoptAttempts - 1);
+                                        sol.status, run.restarts);
   out.cost = sol.objective;
   const double T = base.final_time(sol.x.data());
   std::vector<double> g(static_cast<std::size_t>(nlp.num_constraints()));

@@ -82,4 +82,25 @@ inline constexpr int kIpoptAttempts = 3;
 /// iterations. Throws InvalidInput for another attempt number.
 IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
 
+/// What solve_with_restarts did.
+struct RestartedSolution {
+  NlpSolution solution;  ///< of the accepted attempt, else of the last one
+  int iterations = 0;    ///< Ipopt iterations of every attempt
+  int restarts = 0;      ///< attempts after the first (0 to kIpoptAttempts − 1)
+  bool accepted = false;
+};
+
+/// Called after every Ipopt iteration of solve_with_restarts: the attempt (0: the first settings), then the
+/// arguments of IpoptSettings::on_iteration.
+using RestartProgress =
+    std::function<void(int attempt, int iteration, double objective, double infeasibility)>;
+
+/// Solves `nlp` from `start` with the settings `first`; while `accept` refuses the solution, again from the
+/// same start with restart_settings' next settings, kIpoptAttempts attempts at most. `progress`, if not
+/// empty, sees every iteration. Throws what solve_with_ipopt throws.
+RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<double>& start,
+                                      const IpoptSettings& first,
+                                      const std::function<bool(const NlpSolution&)>& accept,
+                                      const RestartProgress& progress = {});
+
 }  // namespace poinsot::optimal::detail

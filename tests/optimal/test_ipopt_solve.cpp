@@ -1,0 +1,111 @@
+// Ipopt behind the SparseNlp interface and the restarts of the direct methods: a two-variable program with a
+// known optimum, solved; the restart settings in their documented order; solve_with_restarts makes at most
+// kIpoptAttempts attempts from the same start, stops at the first accepted one and counts every iteration.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "../../src/optimal/sparse_nlp.hpp"
+#include "poinsot/core/error.hpp"
+
+namespace poinsot::optimal::detail {
+namespace {
+
+/// min (x − 1)² + (y − 2)² subject to x + y = 1: the optimum (0, 1), multiplier y_g = 2 (∇f + y_g ∇g = 0).
+class Projection final : public SparseNlp {
+ public:
+  int num_variables() const override { return 2; }
+  int num_constraints() const override { return 1; }
+  void bounds(std::vector<double>& xl, std::vector<double>& xu, std::vector<double>& gl,
+              std::vector<double>& gu) const override {
+    xl.assign(2, -10.0);
+    xu.assign(2, 10.0);
+    gl.assign(1, 1.0);
+    gu.assign(1, 1.0);
+  }
+  double objective(const double* x) const override {
+    return (x[0] - 1.0) * (x[0] - 1.0) + (x[1] - 2.0) * (x[1] - 2.0);
+  }
+  void objective_gradient(const double* x, double* g) const override {
+    g[0] = 2.0 * (x[0] - 1.0);
+    g[1] = 2.0 * (x[1] - 2.0);
+  }
+  void constraints(const double* x, double* g) const override { g[0] = x[0] + x[1]; }
+  int jacobian_nonzeros() const override { return 2; }
+  void jacobian_structure(int* rows, int* cols) const override {
+    rows[0] = rows[1] = 0;
+    cols[0] = 0;
+    cols[1] = 1;
+  }
+  void jacobian_values(const double*, double* v) const override { v[0] = v[1] = 1.0; }
+  int hessian_nonzeros() const override { return 2; }
+  void hessian_structure(int* rows, int* cols) const override {
+    rows[0] = cols[0] = 0;
+    rows[1] = cols[1] = 1;
+  }
+  void hessian_values(const double*, double sigma, const double*, double* v) const override {
+    v[0] = v[1] = 2.0 * sigma;
+  }
+};
+
+TEST(IpoptSolve, SolvesAProgramWithAKnownOptimum) {
+  const NlpSolution s = solve_with_ipopt(Projection(), {3.0, -4.0}, IpoptSettings{});
+  ASSERT_TRUE(s.solved) << s.status;
+  EXPECT_NEAR(s.x[0], 0.0, 1e-9);  // Ipopt's tol 1e-10 on the scaled KKT error of a quadratic program
+  EXPECT_NEAR(s.x[1], 1.0, 1e-9);
+  EXPECT_NEAR(s.objective, 2.0, 1e-9);
+  ASSERT_EQ(s.y.size(), 1u);
+  EXPECT_NEAR(std::abs(s.y[0]), 2.0, 1e-8);  // the sign follows Ipopt's Lagrangian convention
+}
+
+TEST(IpoptSolve, RestartSettingsAreTheMonotoneBarrierThenTwiceTheIterations) {
+  IpoptSettings first;
+  first.max_iterations = 40;
+  const IpoptSettings a0 = restart_settings(first, 0);
+  const IpoptSettings a1 = restart_settings(first, 1);
+  const IpoptSettings a2 = restart_settings(first, 2);
+  EXPECT_EQ(a0.mu_strategy, "adaptive");
+  EXPECT_FALSE(a0.warm_start);
+  EXPECT_EQ(a1.mu_strategy, "monotone");
+  EXPECT_EQ(a1.mu_init, 1e-4);
+  EXPECT_TRUE(a1.warm_start);
+  EXPECT_EQ(a1.max_iterations, 40);
+  EXPECT_EQ(a2.mu_strategy, "adaptive");
+  EXPECT_TRUE(a2.warm_start);
+  EXPECT_EQ(a2.max_iterations, 80);
+  EXPECT_THROW(restart_settings(first, kIpoptAttempts), InvalidInput);
+  EXPECT_THROW(restart_settings(first, -1), InvalidInput);
+}
+
+TEST(IpoptSolve, RestartsStopAtTheFirstAcceptedAttemptAndCountEveryIteration) {
+  const Projection nlp;
+  const std::vector<double> start{3.0, -4.0};
+  for (int accept_at = 0; accept_at <= kIpoptAttempts; ++accept_at) {
+    int calls = 0, iterations = 0;
+    std::vector<int> attempts_seen;
+    const RestartedSolution r = solve_with_restarts(
+        nlp, start, IpoptSettings{},
+        [&](const NlpSolution& s) {
+          iterations += s.iterations;
+          return calls++ == accept_at;
+        },
+        [&](int attempt, int, double, double) {
+          if (attempts_seen.empty() || attempts_seen.back() != attempt) attempts_seen.push_back(attempt);
+        });
+    const int made = accept_at < kIpoptAttempts ? accept_at + 1 : kIpoptAttempts;
+    EXPECT_EQ(calls, made) << accept_at;
+    EXPECT_EQ(r.accepted, accept_at < kIpoptAttempts) << accept_at;
+    EXPECT_EQ(r.restarts, made - 1) << accept_at;
+    EXPECT_EQ(r.iterations, iterations) << accept_at;
+    ASSERT_EQ(static_cast<int>(attempts_seen.size()), made) << accept_at;
+    for (int a = 0; a < made; ++a)
+      EXPECT_EQ(attempts_seen[static_cast<std::size_t>(a)], a);
+    // Every attempt starts from the same point and solves this program.
+    EXPECT_TRUE(r.solution.solved);
+    EXPECT_NEAR(r.solution.x[1], 1.0, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace poinsot::optimal::detail
