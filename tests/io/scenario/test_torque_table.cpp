@@ -118,7 +118,7 @@ TEST(TorqueTable, ReplayOfBettsOptimumReachesTheTarget) {
   // Two seconds past T the body is still at rest at the target (τ = 0 after the table). Tolerances: the
   // adaptive methods at rtol = atol = 1e-13 over ~30 s and six arcs, each switch a breakpoint of the driver
   // (measured: dop853 4e-11 rad, dopri5 4e-10 rad); rk4 at dt = 0.01 s, O(h⁴) with ‖ω̇‖ ≤ 0.02 rad/s²
-  // (measured 9e-14 rad; 7e-10 rad at dt = 0.1 s).
+  // (measured 7e-14 rad; 7e-10 rad at dt = 0.1 s).
   for (const auto& [method, dt, tol] :
        {std::tuple{"dop853", 0.5, 1e-9}, std::tuple{"dopri5", 0.5, 1e-9}, std::tuple{"rk4", 0.01, 1e-9}}) {
     dynamics::IntegratorOptions opt;
