@@ -135,9 +135,14 @@ void bind_multibody_system(py::module_& m) {
       .def(
           "add_joint_spring",
           [](mb::System& s, int joint, double stiffness, double damping, double rest_position,
-             const py::object& R_b_a_zero, double offset) {
+             const py::object& R_b_a_zero, double offset, const std::string& coordinate) {
             mb::JointSpring sp;
             sp.joint = joint;
+            if (coordinate != "a" && coordinate != "b")
+              throw InvalidInput("add_joint_spring: coordinate: got \"" + coordinate +
+                                 "\"; expected \"a\" or \"b\" (a universal joint's angle about axis a or b)");
+            sp.coordinate =
+                coordinate == "a" ? mb::JointSpring::Coordinate::a : mb::JointSpring::Coordinate::b;
             sp.stiffness = stiffness;
             sp.damping = damping;
             sp.rest_position = rest_position;
@@ -147,7 +152,11 @@ void bind_multibody_system(py::module_& m) {
           },
           py::arg("joint"), py::kw_only(), py::arg("stiffness") = 0.0, py::arg("damping") = 0.0,
           py::arg("rest_position") = 0.0, py::arg("R_b_a_zero") = py::none(), py::arg("offset") = 0.0,
-          POINSOT_DOC(multibody_System_add_joint_spring))
+          py::arg("coordinate") = "a",
+          (std::string(POINSOT_DOC(multibody_System_add_joint_spring)) +
+           "\n\ncoordinate: \"a\" or \"b\", the angle of a universal joint the spring acts on.\n\n" +
+           POINSOT_DOC(multibody_JointSpring))
+              .c_str())
       .def(
           "add_force",
           [](mb::System& s, const py::object& body, ArrayLike f, ArrayLike p) {

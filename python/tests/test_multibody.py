@@ -577,3 +577,20 @@ def test_robot_files_load_as_scenarios_and_systems():
     np.testing.assert_array_equal(turned.system.gravity, [0, 0, -1.62])
     with pytest.raises(ValueError, match=r"positions\.knee: no moving joint of that name"):
         mb.load_robot(str(robots / "pendulum2.urdf"), positions={"knee": [1.0]})
+
+
+def test_a_universal_joint_takes_a_spring_on_either_angle():
+    # Two hinges in series, about y of the world then x of the body: R = Rot(y, q_b) Rot(x, q_a); the springs'
+    # potential ½ k_a (q_a − 0.1)² + ½ k_b q_b², with the angles of R computed here in NumPy.
+    system = mb.System()
+    system.add_body("a", 2.0, np.diag([0.3, 0.4, 0.5]))
+    u = system.add_universal("u", 0, [0, 0, 0], [1, 0, 0], -1, [0, 0, 0], [0, 1, 0])
+    system.add_joint_spring(u, stiffness=2.0, rest_position=0.1)
+    system.add_joint_spring(u, stiffness=3.0, coordinate="b")
+    q_a, q_b = 0.7, -1.2
+    ca, sa, cb, sb = math.cos(q_a), math.sin(q_a), math.cos(q_b), math.sin(q_b)
+    R = np.array([[cb, 0, sb], [0, 1, 0], [-sb, 0, cb]]) @ np.array([[1, 0, 0], [0, ca, -sa], [0, sa, ca]])
+    state = mb.State(bodies=[mb.BodyState(R_space_body=R)])
+    assert mb.potential_energy(system, state) == pytest.approx(0.5 * 2.0 * 0.6**2 + 0.5 * 3.0 * 1.2**2, abs=1e-13)
+    with pytest.raises(ValueError, match='coordinate: got "c"'):
+        system.add_joint_spring(u, stiffness=1.0, coordinate="c")

@@ -2,6 +2,7 @@
 #include "poinsot/multibody/loads.hpp"
 
 #include <cmath>
+#include <numbers>
 
 #include <Eigen/Geometry>
 
@@ -36,8 +37,36 @@ Vec3 slide_axis_space(const Joint& j, const BodyState& b) {
   return b.R_space_body * j.slide_axis_b();
 }
 
+/// A universal joint's angle (model.hpp, JointSpring) and the direction, in body a's frame, of the torque
+/// on a per unit of generalized force: e_a, or w = Mᵀc for the angle about e_b.
+struct UniversalAngle {
+  JointDeflection q;
+  Vec3 torque_axis_a;
+};
+
+UniversalAngle universal_angle(const Joint& j, const JointSpring& s, const BodyState& a, const BodyState& b) {
+  const Vec3& e_a = j.p_a[0];
+  const Mat3 S = b.R_space_body.transpose() * a.R_space_body;
+  const Mat3 M = s.R_b_a_zero.transpose() * S;
+  const Vec3 c = s.R_b_a_zero.transpose() * j.u_b[0];
+  const Vec3 n = c.cross(e_a);
+  const Vec3 w = M.transpose() * c;
+  const Vec3 omega = a.omega_body - S.transpose() * b.omega_body;
+  double angle = 0.0;
+  Vec3 axis = e_a;
+  if (s.coordinate == JointSpring::Coordinate::a) {
+    angle = std::atan2(w.dot(n), w.dot(c));
+  } else {
+    const Vec3 v = M * e_a;
+    angle = std::atan2(v.dot(n), v.dot(e_a));
+    axis = w;
+  }
+  return {{std::remainder(angle - s.rest_position, 2.0 * std::numbers::pi), axis.dot(omega)}, axis};
+}
+
 JointDeflection joint_deflection(const Joint& j, const JointSpring& s, const BodyState& a,
                                  const BodyState& b) {
+  if (j.type == JointType::universal) return universal_angle(j, s, a, b).q;
   if (j.type == JointType::hinge) {
     const Vec3 n = j.hinge_axis_a();
     const Mat3 S = b.R_space_body.transpose() * a.R_space_body;
@@ -94,11 +123,13 @@ void applied_loads(const System& system, const std::vector<BodyState>& bodies, s
     const Joint& j = system.joints()[static_cast<std::size_t>(s.joint)];
     const BodyState& a = side_state(bodies, j.body_a);
     const BodyState& b = side_state(bodies, j.body_b);
-    const JointDeflection q = joint_deflection(j, s, a, b);
+    const bool universal = j.type == JointType::universal;
+    const UniversalAngle u = universal ? universal_angle(j, s, a, b) : UniversalAngle{};
+    const JointDeflection q = universal ? u.q : joint_deflection(j, s, a, b);
     const double Q = -s.stiffness * q.deflection - s.damping * q.rate;
     BodyLoads& on_a = out[static_cast<std::size_t>(j.body_a)];
-    if (j.type == JointType::hinge) {
-      const Vec3 tau_a = Q * j.hinge_axis_a();
+    if (j.type != JointType::prismatic) {
+      const Vec3 tau_a = Q * (universal ? u.torque_axis_a : j.hinge_axis_a());
       add_couple(on_a, tau_a);
       if (j.body_b != kWorld) {
         const Vec3 tau_b = -(b.R_space_body.transpose() * (a.R_space_body * tau_a));

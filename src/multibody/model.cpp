@@ -202,16 +202,26 @@ int System::add_joint_spring(const JointSpring& spring) {
   }
   const Joint& j = joints_[static_cast<std::size_t>(spring.joint)];
   const std::string what = fmt::format("multibody joint '{}': spring", j.name);
-  if (j.type != JointType::hinge && j.type != JointType::prismatic) {
-    throw InvalidInput(fmt::format("{}: the joint is a {}; expected a hinge or a prismatic joint", what,
-                                   joint_type_info(j.type).name));
+  if (j.type != JointType::hinge && j.type != JointType::prismatic && j.type != JointType::universal) {
+    throw InvalidInput(
+        fmt::format("{}: the joint is a {}; expected a hinge, a prismatic or a universal joint", what,
+                    joint_type_info(j.type).name));
   }
-  const bool hinge = j.type == JointType::hinge;
+  const bool hinge = j.type != JointType::prismatic;
   require_non_negative(what + ": stiffness", spring.stiffness, hinge ? "N·m/rad" : "N/m");
   require_non_negative(what + ": damping", spring.damping, hinge ? "N·m·s/rad" : "N·s/m");
   require_finite(what + ": rest position", spring.rest_position);
   require_finite(what + ": offset", spring.offset);
-  if (hinge) {
+  if (j.type == JointType::universal) {
+    require_finite(what + ": zero rotation", spring.R_b_a_zero);
+    if (!so3::is_rotation(spring.R_b_a_zero) ||
+        std::abs((spring.R_b_a_zero * j.p_a[0]).dot(j.u_b[0])) > 1e-6) {
+      throw InvalidInput(
+          fmt::format("{}: zero rotation {} does not carry the axis of body a perpendicular to the axis of "
+                      "body b; expected a rotation R_b_a with (R_b_a·axis_a)·axis_b = 0",
+                      what, format_matrix(spring.R_b_a_zero)));
+    }
+  } else if (hinge) {
     require_finite(what + ": zero rotation", spring.R_b_a_zero);
     const Vec3 axis_a = j.hinge_axis_a();
     if (!so3::is_rotation(spring.R_b_a_zero) || (spring.R_b_a_zero * axis_a - j.u_b[0]).norm() > 1e-6) {

@@ -85,17 +85,29 @@ struct Spring {
   double rest_length = 0.0;     ///< ℓ₀, m
 };
 
-/// A linear spring-damper along the coordinate q of a hinge or prismatic joint (joint_coordinates.hpp): the
-/// generalized force Q = −k (q − q_rest) − c q̇ acts on body a (a torque Q about the hinge axis, N·m, or a
-/// force Q along the sliding axis at point a, N) and −Q on body b. Its potential is ½ k (q − q_rest)². A
-/// hinge's deflection q − q_rest is measured within half a turn, (−π, π]: like a torsion spring about its
-/// rest angle, the spring does not count the turns.
+/// A linear spring-damper along the coordinate q of a hinge or prismatic joint (joint_coordinates.hpp), or
+/// along one of the two angles of a universal joint: the generalized force Q = −k (q − q_rest) − c q̇ acts on
+/// body a (a torque Q about the hinge axis, N·m, or a force Q along the sliding axis at point a, N) and −Q on
+/// body b. Its potential is ½ k (q − q_rest)². A hinge's deflection q − q_rest is measured within half a
+/// turn, (−π, π]: like a torsion spring about its rest angle, the spring does not count the turns.
+///
+/// Universal joint (cross-pin axis e_a fixed in body a, e_b fixed in body b): its relative rotations are
+/// S = R_bᵀR_a = Rot(e_b, q_b) · R_b_a_zero · Rot(e_a, q_a), two hinges in series, the first about e_b, the
+/// second about e_a (MuJoCo's two hinges of one body about one point). With c = R_b_a_zeroᵀ e_b and
+/// M = R_b_a_zeroᵀ S: q_b = atan2(v·(c × e_a), v·e_a) with v = M e_a, q_a = atan2(w·(c × e_a), w·c) with
+/// w = Mᵀc; the rates q̇_a = e_a·ω, q̇_b = w·ω of the relative angular velocity ω = ω_a − Sᵀω_b (body a
+/// frame), and the torque on body a is Q e_a (coordinate a) or Q w (coordinate b): since w ⊥ e_a its power is
+/// Q q̇, so the spring is conservative with the potential above.
 struct JointSpring {
-  int joint = 0;               ///< index of a hinge or prismatic joint
-  double stiffness = 0.0;      ///< k: N·m/rad (hinge) or N/m (prismatic)
-  double damping = 0.0;        ///< c: N·m·s/rad (hinge) or N·s/m (prismatic)
-  double rest_position = 0.0;  ///< q_rest: rad or m
+  /// Which angle of a universal joint the spring acts on.
+  enum class Coordinate { a, b };
+  int joint = 0;                          ///< index of a hinge, prismatic or universal joint
+  Coordinate coordinate = Coordinate::a;  ///< universal joints: q_a (about e_a) or q_b (about e_b)
+  double stiffness = 0.0;                 ///< k: N·m/rad (hinge) or N/m (prismatic)
+  double damping = 0.0;                   ///< c: N·m·s/rad (hinge) or N·s/m (prismatic)
+  double rest_position = 0.0;             ///< q_rest: rad or m
   /// Hinge: the relative rotation R_bᵀR_a at which q = 0; it must carry the axis of a onto the axis of b.
+  /// Universal: the one at which q_a = q_b = 0; it must carry e_a perpendicular to e_b.
   Mat3 R_b_a_zero = Mat3::Identity();
   /// Prismatic: q when point a is at point b (m); q grows as point a moves along the axis.
   double offset = 0.0;
@@ -150,9 +162,10 @@ class System {
                     const Vec3& point_b, const Mat3& R_b_a);
 
   int add_spring(const Spring& spring);
-  /// Adds a spring-damper on the coordinate of a hinge or a prismatic joint (its index `joint`). Throws
-  /// InvalidInput for another joint type, a negative stiffness or damping, a non-finite value, or a hinge's
-  /// R_b_a_zero that is not a rotation carrying axis a onto axis b (to 1e-6).
+  /// Adds a spring-damper on the coordinate of a hinge or a prismatic joint, or on one angle of a universal
+  /// joint (its index `joint`). Throws InvalidInput for another joint type, a negative stiffness or damping,
+  /// a non-finite value, a hinge's R_b_a_zero that is not a rotation carrying axis a onto axis b, or a
+  /// universal joint's that does not carry e_a perpendicular to e_b (to 1e-6).
   int add_joint_spring(const JointSpring& spring);
   void add_force(const ConstantForce& force);
   void add_torque(const ConstantTorque& torque);

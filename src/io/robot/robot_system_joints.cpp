@@ -66,9 +66,13 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
   const Vec3 pa = anchor - c_a;
   const Vec3 pb = b_before * anchor - c_b;
   // A hinge's or slide's spring-damper acts on its displacement from the file's configuration, where the
-  // child's frame is b_before; a slide's points coincide at its initial displacement.
-  const auto add_spring = [&](int joint) {
-    const RobotDof& d = dofs[0];
+  // child's frame is b_before; a slide's points coincide at its initial displacement. Of two hinges merged
+  // into a universal joint the first turns about the parent's axis (coordinate b), the second about the
+  // child's (coordinate a).
+  const auto add_spring = [&](int joint, std::size_t dof = 0,
+                              multibody::JointSpring::Coordinate angle =
+                                  multibody::JointSpring::Coordinate::a) {
+    const RobotDof& d = dofs[dof];
     if (d.stiffness == 0.0 && d.damping == 0.0) return;
     if (!options.joint_springs) {
       sc.not_modelled.push_back(fmt::format(
@@ -77,6 +81,7 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
     }
     multibody::JointSpring s;
     s.joint = joint;
+    s.coordinate = angle;
     s.stiffness = d.stiffness;
     s.damping = d.damping;
     s.rest_position = d.spring_reference - d.reference;
@@ -96,24 +101,26 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
     }));
     return;
   }
+  const bool universal = same_anchor && all_hinges && dofs.size() == 2 &&
+                         std::abs(dofs[0].axis_child.dot(dofs[1].axis_child)) <= 1e-12;
+  if (universal) {
+    const int joint = located([&] {
+      return sc.system.add_universal(name, a, pa, dofs[1].axis_child, b, pb, b_before.R * dofs[0].axis_child);
+    });
+    add_spring(joint, 0, multibody::JointSpring::Coordinate::b);
+    add_spring(joint, 1, multibody::JointSpring::Coordinate::a);
+    return;
+  }
   std::string sprung;
   for (const RobotDof& d : dofs) {
     if (d.stiffness != 0.0 || d.damping != 0.0) sprung += (sprung.empty() ? "\"" : ", \"") + d.name + "\"";
   }
   if (!sprung.empty()) {
     sc.not_modelled.push_back(fmt::format(
-        "{}: the springs and dampers of {} (joints of one body merged into a universal or ball joint)",
-        where(j), sprung));
+        "{}: the springs and dampers of {} (joints of one body merged into a ball joint)", where(j), sprung));
   }
   if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::ball) {
     located([&] { return sc.system.add_ball(name, a, pa, b, pb); });
-    return;
-  }
-  if (same_anchor && all_hinges && dofs.size() == 2 &&
-      std::abs(dofs[0].axis_child.dot(dofs[1].axis_child)) <= 1e-12) {
-    located([&] {
-      return sc.system.add_universal(name, a, pa, dofs[1].axis_child, b, pb, b_before.R * dofs[0].axis_child);
-    });
     return;
   }
   if (same_anchor && all_hinges && dofs.size() == 3) {

@@ -219,15 +219,19 @@ TEST(RobotSystem, MjcfJointKinds) {
   std::string all;
   for (const std::string& line : sc.not_modelled)
     all += line + "\n";
-  // The crank's spring is modelled; the damper of gimbal_x, merged into a universal joint, is listed.
-  expect_has(all, {"<joint> friction loss: 8 joint(s)",
-                   "the springs and dampers of \"gimbal_x\" (joints of one body merged into a universal or "
-                   "ball joint)"});
+  // The crank's spring is modelled, and so is the damper of gimbal_x, the second of the two hinges merged
+  // into a universal joint: it turns about the child's axis (coordinate a).
+  expect_has(all, {"<joint> friction loss: 8 joint(s)"});
   EXPECT_EQ(all.find("crank_hinge\""), std::string::npos) << all;
-  ASSERT_EQ(sc.system.joint_springs().size(), 1u);
-  EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(sc.system.joint_springs()[0].joint)].name,
-            "crank_hinge");
-  EXPECT_EQ(sc.system.joint_springs()[0].stiffness, 2.0);
+  EXPECT_EQ(all.find("gimbal_x\""), std::string::npos) << all;
+  ASSERT_EQ(sc.system.joint_springs().size(), 2u);
+  const auto& springs = sc.system.joint_springs();
+  EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(springs[0].joint)].name, "crank_hinge");
+  EXPECT_EQ(springs[0].stiffness, 2.0);
+  EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(springs[1].joint)].name, "gimbal_z+gimbal_x");
+  EXPECT_EQ(springs[1].coordinate, multibody::JointSpring::Coordinate::a);
+  EXPECT_EQ(springs[1].stiffness, 0.0);
+  EXPECT_EQ(springs[1].damping, 0.3);
   double de = 0.0, gap = 0.0;
   run_rk4(sc, 300, &de, &gap);
   EXPECT_LT(gap, 1e-12);
