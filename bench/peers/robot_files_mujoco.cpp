@@ -3,7 +3,8 @@
 // pendulum2.xml (a double pendulum under gravity) and joints.xml (a hinge, a slide, a ball, two hinges about
 // one point, three hinges about one point, welds and a free body) — with MuJoCo's contacts, limits, passive
 // forces (joint damping and springs) and actuators switched off, and poinsot's joint springs left out; and
-// pendulum2.xml and springs.xml again with the joint springs and dampers on in both (steps 1 and 2 only):
+// pendulum2.xml, springs.xml and universal_springs.xml (two sprung hinges of one body about one point, a
+// universal joint in poinsot) with the joint springs and dampers on in both (steps 1 and 2 only):
 //  1. the inertias MuJoCo compiled against poinsot's, body by body (mass, centre of mass, tensor);
 //  2. the same initial state (joint rates drawn from a seeded generator, by joint name), 1 s of motion:
 //     poinsot's projected RK4 at dt = 1e-4 and 1e-5 against MuJoCo's RK4 at dt = 1e-5 (and MuJoCo's RK4 at
@@ -88,7 +89,8 @@ std::vector<Model> models() {
                             {"pendulum2", robots + "pendulum2.xml"},
                             {"joints", robots + "joints.xml"},
                             {"pendulum2, dampers on", robots + "pendulum2.xml", false, true},
-                            {"springs", robots + "springs.xml", false, true}};
+                            {"springs", robots + "springs.xml", false, true},
+                            {"universal springs", robots + "universal_springs.xml", false, true}};
   if (const std::string humanoid = humanoid_with_one_point_ankles(); !humanoid.empty())
     out.push_back({"humanoid", humanoid, true});
   return out;
