@@ -69,6 +69,46 @@ TEST(RobotJointSprings, MjcfHingeAndSlideAreTheDampedOscillators) {
   EXPECT_NEAR(s.bodies[1].x_space.x() - 1.0, -0.2 + damped_oscillator(0.3, w_track, z_track, s.time), 1e-12);
 }
 
+// Two hinges of one body about one point become a universal joint whose two angles keep their springs: the
+// first hinge's on the angle about the parent's axis (coordinate b), the second's about the child's (a), each
+// resting at springref − ref (degrees in the file). At the file's pose both angles are 0, so the springs hold
+// Σ ½ k (springref − ref)² beside gravity's −Σ m g·x. (Their motion against MuJoCo's:
+// bench/peers/robot_files_mujoco.cpp, "universal springs".)
+TEST(RobotJointSprings, MjcfHingesMergedIntoAUniversalJointKeepTheirSprings) {
+  const multibody::Scenario sc =
+      load_robot_scenario(std::string(POINSOT_TEST_DATA_DIR) + "/models/robots/universal_springs.xml");
+  const auto& springs = sc.system.joint_springs();
+  ASSERT_EQ(springs.size(), 4u);
+  using Coordinate = multibody::JointSpring::Coordinate;
+  const double deg = std::numbers::pi / 180.0;
+  const struct {
+    const char* joint;
+    Coordinate coordinate;
+    double k, c, rest;
+  } expected[] = {{"pin_y+pin_x", Coordinate::b, 4.0, 0.2, 20 * deg},
+                  {"pin_y+pin_x", Coordinate::a, 2.5, 0.1, -10 * deg},
+                  {"knee_z+knee_x", Coordinate::b, 1.0, 0.05, 5 * deg},
+                  {"knee_z+knee_x", Coordinate::a, 3.0, 0.05, (-20 - 15) * deg}};
+  double spring_energy = 0.0;
+  for (std::size_t i = 0; i < 4; ++i) {
+    const multibody::JointSpring& s = springs[i];
+    EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(s.joint)].name, expected[i].joint) << i;
+    EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(s.joint)].type, multibody::JointType::universal);
+    EXPECT_EQ(s.coordinate, expected[i].coordinate) << i;
+    EXPECT_EQ(s.stiffness, expected[i].k) << i;
+    EXPECT_EQ(s.damping, expected[i].c) << i;
+    EXPECT_NEAR(s.rest_position, expected[i].rest, 1e-15) << i;
+    spring_energy += 0.5 * expected[i].k * expected[i].rest * expected[i].rest;
+  }
+  double gravity_energy = 0.0;
+  for (std::size_t i = 0; i < sc.system.bodies().size(); ++i)
+    gravity_energy -= sc.system.bodies()[i].mass * sc.system.gravity().dot(sc.initial.bodies[i].x_space);
+  EXPECT_NEAR(multibody::potential_energy(sc.system, sc.initial.bodies) - gravity_energy, spring_energy,
+              1e-14);
+  for (const std::string& line : sc.not_modelled)
+    EXPECT_EQ(line.find("spring"), std::string::npos) << line;
+}
+
 TEST(RobotJointSprings, MjcfRefIsTheCoordinateOfTheFilesPose) {
   // As MuJoCo's qpos0: a hinge with ref = 30° is at 30° in the file's pose; springref is in the same
   // coordinates. A slide with ref = 0.5 m likewise.
