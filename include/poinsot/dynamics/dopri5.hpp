@@ -29,8 +29,8 @@ class Dopri5Integrator final : public Integrator {
   bool has_dense_output() const override { return true; }
   double nominal_step() const override;
   /// One accepted step of at most min(dt, max_step) (s); rejected attempts are retried with a smaller step.
-  /// Throws ComputationFailed when rejections shrink the step below 1e-14·max(1, |t|) s; InvalidInput for dt
-  /// ≤ 0.
+  /// Throws ComputationFailed when rejections shrink the step below 1e-14·max(1, |t|) s; InvalidInput for
+  /// dt ≤ 0.
   StepResult step(State& state, double dt) override;
   /// The interpolated state at t (s) in the last accepted step (quaternion normalised), error O(h⁵).
   State dense_output(double t) const override;
