@@ -100,6 +100,11 @@ void fill_slew_outputs(const Sample& s, const SlewOutcome& r, const Context& c, 
   row.out[meets_requirement] = r.meets_requirement ? 1.0 : 0.0;
 }
 
+/// The integrator options of the scalar path: the step, the largest step and the tolerances of `o`.
+dynamics::IntegratorOptions integrator_options(const EnsembleOptions& o) {
+  return {.dt = o.dt, .max_step = o.max_step, .rtol = o.rtol, .atol = o.atol};
+}
+
 /// Runs samples [first, first + count) into rows (count ≤ kBlockSamples) by the context's path; returns the
 /// body steps they took (an adaptive method's accepted steps, each sample's own).
 std::int64_t run_block(const Context& c, std::uint64_t first, std::uint64_t count, SampleRow* rows) {
@@ -137,8 +142,7 @@ std::int64_t run_block(const Context& c, std::uint64_t first, std::uint64_t coun
       continue;  // the closed form takes no steps
     }
     const auto torque = s.torque_model(body);
-    auto integrator = dynamics::make_integrator(
-        o.method, body, torque, {.dt = o.dt, .max_step = o.max_step, .rtol = o.rtol, .atol = o.atol});
+    auto integrator = dynamics::make_integrator(o.method, body, torque, integrator_options(o));
     // A heavy top's axis is sampled on every step (the tracker needs several samples per nutation period).
     std::optional<dynamics::AxisTracker> top;
     dynamics::Observer observer;
@@ -199,7 +203,7 @@ void validate(const EnsembleOptions& o) {
   // Builds one integrator to validate the method's name (the registry's own message lists the methods).
   if (o.method != dynamics::kExactMethodName) {
     dynamics::make_integrator(o.method, dynamics::RigidBody::from_principal_moments(Vec3(1, 2, 3)), nullptr,
-                              {.dt = o.dt, .max_step = o.max_step, .rtol = o.rtol, .atol = o.atol});
+                              integrator_options(o));
   }
 }
 
