@@ -1,10 +1,12 @@
 // Robot files in poinsot and in MuJoCo 2.2, in one process (docs/measurements/peers.md, "Robot files beside
-// MuJoCo"). For each MJCF model both can load — MuJoCo's own sample arm26.xml, and the test models
-// pendulum2.xml (a double pendulum under gravity) and joints.xml (a hinge, a slide, a ball, two hinges about
-// one point, three hinges about one point, welds and a free body) — with MuJoCo's contacts, limits, passive
-// forces (joint damping and springs) and actuators switched off, and poinsot's joint springs left out; and
-// pendulum2.xml, springs.xml and universal_springs.xml (two sprung hinges of one body about one point, a
-// universal joint in poinsot) with the joint springs and dampers on in both (steps 1 and 2 only):
+// MuJoCo"). For each MJCF model both can load — MuJoCo's own sample arm26.xml and humanoid.xml (in zero
+// gravity), and the test models pendulum2.xml (a double pendulum under gravity) and joints.xml (a hinge, a
+// slide, a ball, two hinges about one point, three hinges about one point, two hinges about different points,
+// welds and a free body) — with MuJoCo's contacts, limits, passive forces (joint damping and springs) and
+// actuators switched off, and poinsot's joint springs left out; and pendulum2.xml, springs.xml,
+// universal_springs.xml (two sprung hinges of one body about one point, a universal joint in poinsot) and
+// humanoid.xml (every hinge sprung and damped) with the joint springs and dampers on in both (steps 1 and 2
+// only):
 //  1. the inertias MuJoCo compiled against poinsot's, body by body (mass, centre of mass, tensor);
 //  2. the same initial state (joint rates drawn from a seeded generator, by joint name), 1 s of motion:
 //     poinsot's projected RK4 at dt = 1e-4 and 1e-5 against MuJoCo's RK4 at dt = 1e-5 (and MuJoCo's RK4 at
@@ -18,14 +20,11 @@
 #include <benchmark/benchmark.h>
 #include <mujoco/mujoco.h>
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
 #include <random>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -61,28 +60,6 @@ struct Model {
   bool passive = false;
 };
 
-/// MuJoCo's humanoid.xml with each ankle's second hinge moved to the first's point (z 0.08 instead of 0.04
-/// in the foot's frame, 4 cm): poinsot refuses hinges about different points in one body, and with this
-/// change each ankle is a universal joint (its axes (0, 1, 0) and (1, 0, 0.5) are perpendicular). Written to
-/// a temporary file; empty when the sample is not installed.
-std::string humanoid_with_one_point_ankles() {
-  std::ifstream in("/usr/share/mujoco/model/humanoid/humanoid.xml");
-  if (!in) return {};
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string xml = text.str();
-  const std::string from = "pos=\"0 0 .04\" axis=\"1 0 .5\"", to = "pos=\"0 0 .08\" axis=\"1 0 .5\"";
-  int replaced = 0;
-  for (std::size_t at = xml.find(from); at != std::string::npos; at = xml.find(from, at)) {
-    xml.replace(at, from.size(), to);
-    ++replaced;
-  }
-  if (replaced != 2) return {};
-  const std::string path = "/tmp/poinsot_humanoid_" + std::to_string(::getpid()) + ".xml";
-  std::ofstream(path) << xml;
-  return path;
-}
-
 std::vector<Model> models() {
   const std::string robots = std::string(POINSOT_SOURCE_DIR) + "/tests/data/models/robots/";
   std::vector<Model> out = {{"arm26", "/usr/share/mujoco/model/tendon_arm/arm26.xml"},
@@ -91,8 +68,13 @@ std::vector<Model> models() {
                             {"pendulum2, dampers on", robots + "pendulum2.xml", false, true},
                             {"springs", robots + "springs.xml", false, true},
                             {"universal springs", robots + "universal_springs.xml", false, true}};
-  if (const std::string humanoid = humanoid_with_one_point_ankles(); !humanoid.empty())
+  // MuJoCo's humanoid as it is: its ankles are two hinges about points 4 cm apart, a universal joint whose
+  // axes do not meet in poinsot.
+  const std::string humanoid = "/usr/share/mujoco/model/humanoid/humanoid.xml";
+  if (std::ifstream(humanoid).good()) {
     out.push_back({"humanoid", humanoid, true});
+    out.push_back({"humanoid, springs on", humanoid, true, true});
+  }
   return out;
 }
 
@@ -411,7 +393,5 @@ int main(int argc, char** argv) {
   std::printf("\n");
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
-  for (const Model& md : all)
-    if (md.path.rfind("/tmp/poinsot_humanoid_", 0) == 0) std::remove(md.path.c_str());
   return 0;
 }

@@ -234,15 +234,15 @@ class System:
         """A constant force (space frame, N) applied at a point of a body (body frame, m from the centre of mass)."""
     def add_hinge(self, name: str, body_a: object, point_a: numpy.typing.ArrayLike, axis_a: numpy.typing.ArrayLike, body_b: object, point_b: numpy.typing.ArrayLike, axis_b: numpy.typing.ArrayLike) -> int:
         """Hinge (revolute) joint: ball joint plus the axis `axis_a` (body a frame) kept parallel to `axis_b` (body b frame, or space frame)."""
-    def add_joint_spring(self, joint: int, *, stiffness: float = ..., damping: float = ..., rest_position: float = ..., R_b_a_zero: object = ..., offset: float = ..., coordinate: str = ...) -> int:
-        """Adds a spring-damper on the coordinate of a hinge or a prismatic joint, or on one angle of a universal joint (its index `joint`)."""
+    def add_joint_spring(self, joint: int, *, stiffness: float = ..., damping: float = ..., rest_position: float = ..., R_b_a_zero: object = ..., offset: float = ..., coordinate: str = ..., hinge_axes: object = ...) -> int:
+        """Adds a spring-damper on the coordinate of a hinge or a prismatic joint, on one angle of a universal joint, or on one of the three hinge angles that a ball joint stands for (its index `joint`)."""
     def add_prismatic(self, name: str, body_a: object, point_a: numpy.typing.ArrayLike, axis_a: numpy.typing.ArrayLike, body_b: object, point_b: numpy.typing.ArrayLike, R_b_a: numpy.typing.ArrayLike) -> int:
         """Prismatic (slider) joint: the relative rotation fixed at `R_b_a = R_bᵀ R_a` as for a weld, and point_a kept on the line through point_b along `axis_a` (body a frame, the sliding direction; fixed in b as R_b_a axis_a): one translational degree of freedom."""
     def add_spring(self, name: str, body_a: object, point_a: numpy.typing.ArrayLike, body_b: object, point_b: numpy.typing.ArrayLike, *, stiffness: float, damping: float = ..., rest_length: float = ...) -> int:
         """A linear spring-damper between a point of body a and a point of body b (or of the world): force on a = −(k (ℓ − ℓ₀) + c ℓ̇) e, with e the unit vector from the point on b to the point on a."""
     def add_torque(self, body: object, torque: numpy.typing.ArrayLike, *, in_body_frame: bool = ...) -> None:
         """A constant torque (N·m) on a body, given in the space frame or in the body frame."""
-    def add_universal(self, name: str, body_a: object, point_a: numpy.typing.ArrayLike, axis_a: numpy.typing.ArrayLike, body_b: object, point_b: numpy.typing.ArrayLike, axis_b: numpy.typing.ArrayLike) -> int:
+    def add_universal(self, name: str, body_a: object, point_a: numpy.typing.ArrayLike, axis_a: numpy.typing.ArrayLike, body_b: object, point_b: numpy.typing.ArrayLike, axis_b: numpy.typing.ArrayLike, axis_offset: float = ...) -> int:
         """Universal (Cardan, Hooke) joint: ball joint plus the cross-pin axis `axis_a` (body a frame) kept perpendicular to `axis_b` (body b frame, or space frame): two rotational degrees of freedom."""
     def add_weld(self, name: str, body_a: object, point_a: numpy.typing.ArrayLike, body_b: object, point_b: numpy.typing.ArrayLike, R_b_a: numpy.typing.ArrayLike) -> int:
         """Weld joint: ball joint plus fixed relative rotation `R_b_a = R_bᵀ R_a` (R_a = R_b R_b_a)."""

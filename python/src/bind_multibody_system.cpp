@@ -97,13 +97,14 @@ void bind_multibody_system(py::module_& m) {
       .def(
           "add_universal",
           [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, ArrayLike axis_a,
-             const py::object& b, ArrayLike pb, ArrayLike axis_b) {
+             const py::object& b, ArrayLike pb, ArrayLike axis_b, double axis_offset) {
             return s.add_universal(name, body_ref(s, a, "body_a"), to_vec3(pa, "point_a"),
                                    to_vec3(axis_a, "axis_a"), body_ref(s, b, "body_b"),
-                                   to_vec3(pb, "point_b"), to_vec3(axis_b, "axis_b"));
+                                   to_vec3(pb, "point_b"), to_vec3(axis_b, "axis_b"), axis_offset);
           },
           py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("axis_a"), py::arg("body_b"),
-          py::arg("point_b"), py::arg("axis_b"), POINSOT_DOC(multibody_System_add_universal))
+          py::arg("point_b"), py::arg("axis_b"), py::arg("axis_offset") = 0.0,
+          POINSOT_DOC(multibody_System_add_universal))
       .def(
           "add_prismatic",
           [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, ArrayLike axis_a,
@@ -135,14 +136,29 @@ void bind_multibody_system(py::module_& m) {
       .def(
           "add_joint_spring",
           [](mb::System& s, int joint, double stiffness, double damping, double rest_position,
-             const py::object& R_b_a_zero, double offset, const std::string& coordinate) {
+             const py::object& R_b_a_zero, double offset, const std::string& coordinate,
+             const py::object& hinge_axes) {
             mb::JointSpring sp;
             sp.joint = joint;
-            if (coordinate != "a" && coordinate != "b")
-              throw InvalidInput("add_joint_spring: coordinate: got \"" + coordinate +
-                                 "\"; expected \"a\" or \"b\" (a universal joint's angle about axis a or b)");
-            sp.coordinate =
-                coordinate == "a" ? mb::JointSpring::Coordinate::a : mb::JointSpring::Coordinate::b;
+            using C = mb::JointSpring::Coordinate;
+            bool known = false;
+            for (const C c : {C::a, C::b, C::first, C::second, C::third}) {
+              if (coordinate == mb::joint_spring_coordinate_name(c)) {
+                sp.coordinate = c;
+                known = true;
+              }
+            }
+            if (!known) {
+              throw InvalidInput(
+                  "add_joint_spring: coordinate: got \"" + coordinate +
+                  "\"; expected \"a\" or \"b\" (a universal joint's angle about axis a or b) or "
+                  "\"first\", \"second\" or \"third\" (a ball joint's hinge)");
+            }
+            if (!hinge_axes.is_none()) {
+              const Mat3 axes = to_mat3(hinge_axes, "hinge_axes");
+              for (int k = 0; k < 3; ++k)
+                sp.hinge_axes[static_cast<std::size_t>(k)] = axes.row(k).transpose();
+            }
             sp.stiffness = stiffness;
             sp.damping = damping;
             sp.rest_position = rest_position;
@@ -152,9 +168,12 @@ void bind_multibody_system(py::module_& m) {
           },
           py::arg("joint"), py::kw_only(), py::arg("stiffness") = 0.0, py::arg("damping") = 0.0,
           py::arg("rest_position") = 0.0, py::arg("R_b_a_zero") = py::none(), py::arg("offset") = 0.0,
-          py::arg("coordinate") = "a",
+          py::arg("coordinate") = "a", py::arg("hinge_axes") = py::none(),
           (std::string(POINSOT_DOC(multibody_System_add_joint_spring)) +
-           "\n\ncoordinate: \"a\" or \"b\", the angle of a universal joint the spring acts on.\n\n" +
+           "\n\ncoordinate: \"a\" or \"b\", the angle of a universal joint the spring acts on; \"first\", "
+           "\"second\" or \"third\", the hinge of a ball joint.\nhinge_axes: a ball joint's three hinge axes "
+           "e₁, "
+           "e₂, e₃ as the rows of a 3 × 3 array (body a's frame at q = 0).\n\n" +
            POINSOT_DOC(multibody_JointSpring))
               .c_str())
       .def(

@@ -559,6 +559,57 @@ def test_universal_joint_keeps_its_cross_pins_perpendicular():
         system.add_universal("bad", link, [0, 0, 0], [0, 1, 0], mb.WORLD, [0, 0, 0], [0, 0, 0])
 
 
+def test_universal_joint_with_offset_axes_keeps_the_hinges_apart():
+    """Hinges in series about axes 0.15 m apart (the outer along space x through the origin, the inner along
+    body y through body point −c): the inner axis stays at that distance along (R y) × x, checked in NumPy."""
+    c, h = np.array([0.05, 0.02, -0.6]), 0.15
+    system = mb.System()
+    link = system.add_body_from_inertia("link", 1.2, np.diag([0.05, 0.07, 0.03]))
+    system.add_universal("ankle", link, -c, [0, 1, 0], mb.WORLD, [0, 0, 0], [1, 0, 0], axis_offset=h)
+    system.gravity = [0, 0, -G]
+    R0 = rot_y(-0.3)
+    omega = np.array([0.0, 0.5, 0.0])  # about the inner hinge only
+    state = mb.State(bodies=[mb.BodyState(x_space=R0 @ c - h * np.array([0, 0, 1]), R_space_body=R0,
+                                          v_space=R0 @ np.cross(omega, c), omega_body=omega)])
+    mb.check_consistent(system, state)
+    E0 = mb.total_energy(system, state)
+    rattle = mb.Rattle(system, 2e-3)
+    for _ in range(10):
+        rattle.step(state, steps=50)
+        R, x = state[0].R_space_body, state[0].x_space
+        assert np.linalg.norm(x - R @ c - h * np.cross(R @ [0, 1, 0], [1, 0, 0])) < 1e-12
+        assert abs((R @ [0, 1, 0]).dot([1, 0, 0])) < 1e-12
+    assert abs(mb.total_energy(system, state) - E0) < 1e-4 * abs(E0)
+    with pytest.raises(ValueError, match="axis offset"):
+        system.add_universal("bad", link, [0, 0, 0], [0, 1, 0], mb.WORLD, [0, 0, 0], [1, 0, 0],
+                             axis_offset=float("nan"))
+
+
+def test_ball_joint_springs_act_on_three_hinges_in_series():
+    """A ball joint standing for hinges about x, z, y (a hip): at M = Rot(x, q1) Rot(z, q2) Rot(y, q3) the springs'
+    energy is that of the three angles, and a coordinate of another joint's kind is refused."""
+    system = mb.System()
+    body = system.add_body_from_inertia("thigh", 4.0, np.diag([0.3, 0.4, 0.5]))
+    hip = system.add_ball("hip", body, [0, 0, 0], mb.WORLD, [0, 0, 0])
+    axes = np.array([[1.0, 0, 0], [0, 0, 1], [0, 1, 0]])
+    for coordinate, k, rest in (("first", 2.0, 0.1), ("second", 3.0, -0.2), ("third", 5.0, 0.3)):
+        system.add_joint_spring(hip, stiffness=k, rest_position=rest, coordinate=coordinate, hinge_axes=axes)
+    q = (0.7, -0.8, 0.4)
+
+    def rot(axis, a):
+        K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+        return np.eye(3) + math.sin(a) * K + (1 - math.cos(a)) * K @ K
+
+    R = rot(axes[0], q[0]) @ rot(axes[1], q[1]) @ rot(axes[2], q[2])
+    state = mb.State(bodies=[mb.BodyState(R_space_body=R)])
+    expected = 0.5 * (2.0 * (0.7 - 0.1) ** 2 + 3.0 * (-0.8 + 0.2) ** 2 + 5.0 * (0.4 - 0.3) ** 2)
+    assert abs(mb.total_energy(system, state) - expected) < 1e-13
+    with pytest.raises(ValueError, match='coordinate "a" does not belong to a ball joint'):
+        system.add_joint_spring(hip, stiffness=1.0, coordinate="a", hinge_axes=axes)
+    with pytest.raises(ValueError, match="coordinate: got"):
+        system.add_joint_spring(hip, stiffness=1.0, coordinate="fourth", hinge_axes=axes)
+
+
 def test_robot_files_load_as_scenarios_and_systems():
     robots = SOURCE_DIR / "tests" / "data" / "models" / "robots"
     # The URDF double pendulum is the hand-written scenario: same bodies and joints, same initial state.

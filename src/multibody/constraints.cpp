@@ -67,6 +67,13 @@ void joint_jacobians(const Joint& joint, const BodyState& a, const BodyState& b,
     G_a.block<3, 3>(0, 3) = point_rows_omega_jacobian_a(joint, a.R_space_body);
     G_b.block<3, 3>(0, 0) = -Mat3::Identity();
     G_b.block<3, 3>(0, 3) = point_rows_omega_jacobian_b(joint, b.R_space_body);
+    if (joint.axis_offset != 0.0) {
+      // −h ṅ with ṅ = (Ω_a × P) × U + P × (Ω_b × U) = j(U) j(P) Ω_a − j(P) j(U) Ω_b.
+      const Mat3 hat_P = so3::hat(a.R_space_body * joint.p_a[0]);
+      const Mat3 hat_U = so3::hat(b.R_space_body * joint.u_b[0]);
+      G_a.block<3, 3>(0, 3) -= joint.axis_offset * hat_U * hat_P * a.R_space_body;
+      G_b.block<3, 3>(0, 3) += joint.axis_offset * hat_P * hat_U * b.R_space_body;
+    }
   }
   for (int k = 0; k < joint.perpendicular_count; ++k) {
     const auto ku = static_cast<std::size_t>(k);
@@ -99,6 +106,16 @@ JointVector joint_bias(const Joint& joint, const BodyState& a, const BodyState& 
   } else {
     gamma.head<3>().noalias() = a.R_space_body * wa.cross(wa.cross(joint.point_a));
     gamma.head<3>().noalias() -= b.R_space_body * wb.cross(wb.cross(joint.point_b));
+    if (joint.axis_offset != 0.0) {
+      // −h n̈ at zero angular accelerations.
+      const Vec3 Oa = a.R_space_body * wa;
+      const Vec3 Ob = b.R_space_body * wb;
+      const Vec3 P = a.R_space_body * joint.p_a[0];
+      const Vec3 U = b.R_space_body * joint.u_b[0];
+      const Vec3 n_ddot = Oa.cross(Oa.cross(P)).cross(U) + 2.0 * Oa.cross(P).cross(Ob.cross(U)) +
+                          P.cross(Ob.cross(Ob.cross(U)));
+      gamma.head<3>() -= joint.axis_offset * n_ddot;
+    }
   }
   if (joint.perpendicular_count == 0) return gamma;
   const Vec3 Oa = a.R_space_body * a.omega_body;
@@ -151,6 +168,16 @@ JointLoads joint_loads(const Joint& joint, const BodyState& a, const BodyState& 
     loads.phi_b_body = -(b.R_space_body.transpose() * loads.force_a_space) * joint.point_b.transpose();
   }
   loads.phi_a_body = (a.R_space_body.transpose() * loads.force_a_space) * joint.point_a.transpose();
+  if (joint.axis_offset != 0.0) {
+    // λ·(−h (R_a p) × (R_b u)): R-gradients −h (U × f) pᵀ on a and −h (f × P) uᵀ on b; torque −h P × (U × f).
+    const Vec3& f = loads.force_a_space;
+    const double h = joint.axis_offset;
+    const Vec3 P = a.R_space_body * joint.p_a[0];
+    const Vec3 U = b.R_space_body * joint.u_b[0];
+    loads.torque_a_space -= h * P.cross(U.cross(f));
+    loads.phi_a_body -= h * (a.R_space_body.transpose() * U.cross(f)) * joint.p_a[0].transpose();
+    loads.phi_b_body -= h * (b.R_space_body.transpose() * f.cross(P)) * joint.u_b[0].transpose();
+  }
   for (int k = 0; k < joint.perpendicular_count; ++k) {
     const auto ku = static_cast<std::size_t>(k);
     const Vec3 P = a.R_space_body * joint.p_a[ku];

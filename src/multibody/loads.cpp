@@ -1,10 +1,15 @@
 // Applied loads and potential energy (loads.hpp).
 #include "poinsot/multibody/loads.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
+#include <fmt/format.h>
 #include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include "poinsot/core/error.hpp"
 
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/so3/hat.hpp"
@@ -37,14 +42,15 @@ Vec3 slide_axis_space(const Joint& j, const BodyState& b) {
   return b.R_space_body * j.slide_axis_b();
 }
 
-/// A universal joint's angle (model.hpp, JointSpring) and the direction, in body a's frame, of the torque
-/// on a per unit of generalized force: e_a, or w = Mᵀc for the angle about e_b.
-struct UniversalAngle {
+/// One angle of a joint with several (a universal joint's two, a ball joint's three hinges; model.hpp,
+/// JointSpring) and the torque on body a per unit of generalized force (body a's frame): e_a, or w = Mᵀc for
+/// a universal joint's angle about e_b; E⁻ᵀe_k for a ball joint's hinge k.
+struct CoupledAngle {
   JointDeflection q;
   Vec3 torque_axis_a;
 };
 
-UniversalAngle universal_angle(const Joint& j, const JointSpring& s, const BodyState& a, const BodyState& b) {
+CoupledAngle universal_angle(const Joint& j, const JointSpring& s, const BodyState& a, const BodyState& b) {
   const Vec3& e_a = j.p_a[0];
   const Mat3 S = b.R_space_body.transpose() * a.R_space_body;
   const Mat3 M = s.R_b_a_zero.transpose() * S;
@@ -64,9 +70,55 @@ UniversalAngle universal_angle(const Joint& j, const JointSpring& s, const BodyS
   return {{std::remainder(angle - s.rest_position, 2.0 * std::numbers::pi), axis.dot(omega)}, axis};
 }
 
+/// The signed angle of the turn about the unit axis n that carries x to y (x and y of equal components along
+/// n), rad.
+double angle_about(const Vec3& n, const Vec3& x, const Vec3& y) {
+  return std::atan2(n.dot(x.cross(y)), x.dot(y) - n.dot(x) * n.dot(y));
+}
+
+CoupledAngle ball_hinge_angle(const Joint& j, const JointSpring& s, const BodyState& a, const BodyState& b) {
+  const auto& [e1, e2, e3] = s.hinge_axes;
+  const Mat3 S = b.R_space_body.transpose() * a.R_space_body;
+  const Mat3 M = s.R_b_a_zero.transpose() * S;
+  const double lambda = std::atan2(e1.cross(e2).dot(e3), e1.dot(e3));
+  const double q2 = lambda - std::copysign(std::acos(std::clamp(e1.dot(M * e3), -1.0, 1.0)), lambda);
+  const Mat3 R2 = Eigen::AngleAxisd(q2, e2).toRotationMatrix();
+  const double q1 = angle_about(e1, R2 * e3, M * e3);
+  const double q3 = angle_about(e3, M.transpose() * e1, R2.transpose() * e1);
+  const Mat3 R3_t = Eigen::AngleAxisd(-q3, e3).toRotationMatrix();
+  Mat3 E;
+  E << R3_t * (R2.transpose() * e1), R3_t * e2, e3;
+  // det E = sin(λ − q₂): the distance to the lock in angle. Closer than 1e-6 rad, acos has lost half the
+  // digits of q₂ (√ε ≈ 1.5e-8 rad at the lock itself) and the torque E⁻ᵀQ grows as 1/det.
+  const double det = E.determinant();
+  if (!(std::abs(det) > 1e-6)) {
+    throw ComputationFailed(fmt::format(
+        "multibody joint '{}': the spring on its {} hinge: the first and third hinge axes are aligned (the "
+        "hinges' gimbal lock, q₂ = {} rad), where the three angles are undefined; expected motions away from "
+        "it",
+        j.name, joint_spring_coordinate_name(s.coordinate), q2));
+  }
+  const Mat3 E_inv = E.inverse();
+  const int k = s.coordinate == JointSpring::Coordinate::first    ? 0
+                : s.coordinate == JointSpring::Coordinate::second ? 1
+                                                                  : 2;
+  const double angles[3] = {q1, q2, q3};
+  const Vec3 omega = a.omega_body - S.transpose() * b.omega_body;
+  return {{std::remainder(angles[k] - s.rest_position, 2.0 * std::numbers::pi), E_inv.row(k).dot(omega)},
+          E_inv.row(k).transpose()};
+}
+
+CoupledAngle coupled_angle(const Joint& j, const JointSpring& s, const BodyState& a, const BodyState& b) {
+  return j.type == JointType::universal ? universal_angle(j, s, a, b) : ball_hinge_angle(j, s, a, b);
+}
+
+bool has_coupled_angles(const Joint& j) {
+  return j.type == JointType::universal || j.type == JointType::ball;
+}
+
 JointDeflection joint_deflection(const Joint& j, const JointSpring& s, const BodyState& a,
                                  const BodyState& b) {
-  if (j.type == JointType::universal) return universal_angle(j, s, a, b).q;
+  if (has_coupled_angles(j)) return coupled_angle(j, s, a, b).q;
   if (j.type == JointType::hinge) {
     const Vec3 n = j.hinge_axis_a();
     const Mat3 S = b.R_space_body.transpose() * a.R_space_body;
@@ -123,13 +175,13 @@ void applied_loads(const System& system, const std::vector<BodyState>& bodies, s
     const Joint& j = system.joints()[static_cast<std::size_t>(s.joint)];
     const BodyState& a = side_state(bodies, j.body_a);
     const BodyState& b = side_state(bodies, j.body_b);
-    const bool universal = j.type == JointType::universal;
-    const UniversalAngle u = universal ? universal_angle(j, s, a, b) : UniversalAngle{};
-    const JointDeflection q = universal ? u.q : joint_deflection(j, s, a, b);
+    const bool coupled = has_coupled_angles(j);
+    const CoupledAngle u = coupled ? coupled_angle(j, s, a, b) : CoupledAngle{};
+    const JointDeflection q = coupled ? u.q : joint_deflection(j, s, a, b);
     const double Q = -s.stiffness * q.deflection - s.damping * q.rate;
     BodyLoads& on_a = out[static_cast<std::size_t>(j.body_a)];
     if (j.type != JointType::prismatic) {
-      const Vec3 tau_a = Q * (universal ? u.torque_axis_a : j.hinge_axis_a());
+      const Vec3 tau_a = Q * (coupled ? u.torque_axis_a : j.hinge_axis_a());
       add_couple(on_a, tau_a);
       if (j.body_b != kWorld) {
         const Vec3 tau_b = -(b.R_space_body.transpose() * (a.R_space_body * tau_a));

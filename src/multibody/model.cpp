@@ -159,12 +159,14 @@ int System::add_weld(const std::string& name, int body_a, const Vec3& point_a, i
 }
 
 int System::add_universal(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a,
-                          int body_b, const Vec3& point_b, const Vec3& axis_b) {
+                          int body_b, const Vec3& point_b, const Vec3& axis_b, double axis_offset) {
   const std::string what = fmt::format("multibody joint '{}'", name);
   Joint j = joint_between(name, JointType::universal, body_a, point_a, body_b, point_b);
   j.perpendicular_count = 1;
   j.p_a[0] = unit_axis(what + ": axis a", axis_a);
   j.u_b[0] = unit_axis(what + ": axis b", axis_b);
+  require_finite(what + ": axis offset", axis_offset);
+  j.axis_offset = axis_offset;
   return add_joint(j);
 }
 
@@ -195,6 +197,22 @@ int System::add_spring(const Spring& spring) {
   return static_cast<int>(springs_.size()) - 1;
 }
 
+const char* joint_spring_coordinate_name(JointSpring::Coordinate coordinate) {
+  switch (coordinate) {
+    case JointSpring::Coordinate::a:
+      return "a";
+    case JointSpring::Coordinate::b:
+      return "b";
+    case JointSpring::Coordinate::first:
+      return "first";
+    case JointSpring::Coordinate::second:
+      return "second";
+    case JointSpring::Coordinate::third:
+      return "third";
+  }
+  return "?";
+}
+
 int System::add_joint_spring(const JointSpring& spring) {
   if (spring.joint < 0 || spring.joint >= joint_count()) {
     throw InvalidInput(fmt::format("multibody joint spring: joint {} does not exist; expected 0 to {}",
@@ -202,10 +220,21 @@ int System::add_joint_spring(const JointSpring& spring) {
   }
   const Joint& j = joints_[static_cast<std::size_t>(spring.joint)];
   const std::string what = fmt::format("multibody joint '{}': spring", j.name);
-  if (j.type != JointType::hinge && j.type != JointType::prismatic && j.type != JointType::universal) {
-    throw InvalidInput(
-        fmt::format("{}: the joint is a {}; expected a hinge, a prismatic or a universal joint", what,
-                    joint_type_info(j.type).name));
+  if (j.type == JointType::weld) {
+    throw InvalidInput(fmt::format(
+        "{}: the joint is a weld; expected a hinge, a prismatic, a universal or a ball joint", what));
+  }
+  using C = JointSpring::Coordinate;
+  const C c = spring.coordinate;
+  const bool universal_angle = c == C::a || c == C::b;
+  const bool ball_angle = c == C::first || c == C::second || c == C::third;
+  if ((j.type == JointType::universal && !universal_angle) || (j.type == JointType::ball && !ball_angle) ||
+      ((j.type == JointType::hinge || j.type == JointType::prismatic) && c != C::a)) {
+    throw InvalidInput(fmt::format("{}: coordinate \"{}\" does not belong to a {} joint; expected {}", what,
+                                   joint_spring_coordinate_name(c), joint_type_info(j.type).name,
+                                   j.type == JointType::universal ? "\"a\" or \"b\""
+                                   : j.type == JointType::ball    ? "\"first\", \"second\" or \"third\""
+                                                                  : "\"a\", the joint's only coordinate"));
   }
   const bool hinge = j.type != JointType::prismatic;
   require_non_negative(what + ": stiffness", spring.stiffness, hinge ? "N·m/rad" : "N/m");
@@ -221,6 +250,25 @@ int System::add_joint_spring(const JointSpring& spring) {
                       "body b; expected a rotation R_b_a with (R_b_a·axis_a)·axis_b = 0",
                       what, format_matrix(spring.R_b_a_zero)));
     }
+  } else if (j.type == JointType::ball) {
+    require_finite(what + ": zero rotation", spring.R_b_a_zero);
+    if (!so3::is_rotation(spring.R_b_a_zero)) {
+      throw InvalidInput(fmt::format("{}: zero rotation {} is not a rotation; expected RᵀR = I, det R = +1",
+                                     what, format_matrix(spring.R_b_a_zero)));
+    }
+    JointSpring unit = spring;
+    for (std::size_t k = 0; k < 3; ++k)
+      unit.hinge_axes[k] = unit_axis(fmt::format("{}: hinge axis {}", what, k + 1), spring.hinge_axes[k]);
+    const auto& e = unit.hinge_axes;
+    if (std::abs(e[0].dot(e[1])) > 1e-9 || std::abs(e[1].dot(e[2])) > 1e-9 ||
+        std::abs(e[0].cross(e[1]).dot(e[2])) < 1e-6) {
+      throw InvalidInput(fmt::format(
+          "{}: hinge axes {}, {}, {} are not three hinges that a ball joint stands for; expected the second "
+          "perpendicular to the first and the third, and the third not along the first",
+          what, format_vector(e[0]), format_vector(e[1]), format_vector(e[2])));
+    }
+    joint_springs_.push_back(unit);
+    return static_cast<int>(joint_springs_.size()) - 1;
   } else if (hinge) {
     require_finite(what + ": zero rotation", spring.R_b_a_zero);
     const Vec3 axis_a = j.hinge_axis_a();

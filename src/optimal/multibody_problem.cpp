@@ -99,7 +99,8 @@ void check_times_and_mesh(const MultibodyProblem& p) {
   }
 }
 
-/// The system: no springs, no joint springs, no prismatic joint (the transcriptions have none of them).
+/// The system: no springs, no joint springs, no prismatic joint, no universal joint with offset axes (the
+/// transcriptions have none of them).
 /// Throws InvalidInput.
 void check_system_supported(const MultibodyProblem& p) {
   if (!p.system.springs().empty()) {
@@ -115,6 +116,12 @@ void check_system_supported(const MultibodyProblem& p) {
         p.system.joints()[static_cast<std::size_t>(p.system.joint_springs()[0].joint)].name));
   }
   for (const multibody::Joint& j : p.system.joints()) {
+    if (j.axis_offset != 0.0) {
+      throw InvalidInput(
+          fmt::format("optimal control: joint '{}': a universal joint whose axes do not meet (axis offset {} "
+                      "m) is not supported by the optimal control transcriptions; expected axes that meet",
+                      j.name, j.axis_offset));
+    }
     if (j.sliding) {
       throw InvalidInput(
           fmt::format("optimal control: joint '{}': prismatic joints are not supported by the "

@@ -29,6 +29,10 @@ std::vector<Joint> sample_joints() {
   s.add_weld("weld", 0, Vec3(0, 0, 0.5), 1, Vec3(0.5, 0, 0), random_rotation());
   s.add_hinge("world hinge", 0, Vec3(0.1, 0.2, 0.3), Vec3(0, 0, 1), kWorld, Vec3(1, 1, 1), Vec3(0, 1, 0));
   s.add_universal("universal", 0, Vec3(0.2, -0.1, 0.3), Vec3(1, -1, 2), 1, Vec3(0.1, 0.3, 0), Vec3(2, 1, 0));
+  s.add_universal("offset universal", 0, Vec3(0.2, -0.1, 0.3), Vec3(1, -1, 2), 1, Vec3(0.1, 0.3, 0),
+                  Vec3(2, 1, 0), 0.7);
+  s.add_universal("world offset universal", 0, Vec3(0.2, -0.1, 0.3), Vec3(1, -1, 2), kWorld,
+                  Vec3(0.1, 0.3, 0), Vec3(2, 1, 0), -0.4);
   s.add_prismatic("prismatic", 0, Vec3(0.3, 0.1, -0.2), Vec3(1, 2, -1), 1, Vec3(-0.2, 0.1, 0.4),
                   random_rotation());
   s.add_prismatic("world prismatic", 0, Vec3(0.3, 0.1, -0.2), Vec3(0, 1, 1), kWorld, Vec3(1, 0, 2),
@@ -97,10 +101,12 @@ TEST(Constraints, LoadsAreTheVirtualWorkOfTheMultiplier) {
     const JointLoads l = joint_loads(joint, a, b, lambda);
     const Vec3 Oa = a.R_space_body * a.omega_body, Ob = b.R_space_body * b.omega_body;
     const Vec3 pa_dot = a.v_space + Oa.cross(a.R_space_body * joint.point_a);
-    // Body b receives the force at the point of space where it acts on a: its own point B for point rows,
-    // the current position of point A for the line rows of a sliding joint.
-    const Vec3 arm_b = joint.sliding ? Vec3(a.x_space + a.R_space_body * joint.point_a - b.x_space)
-                                     : Vec3(b.R_space_body * joint.point_b);
+    // Body b receives the force at the point of space where it acts on a: its own point B (plus h n for
+    // offset axes) for point rows, the current position of point A for the line rows of a sliding joint.
+    const Vec3 arm_b =
+        joint.sliding
+            ? Vec3(a.x_space + a.R_space_body * joint.point_a - b.x_space)
+            : Vec3(b.R_space_body * joint.point_b + joint.axis_offset * cross_pin_normal(joint, a, b));
     const Vec3 pb_dot = b.v_space + Ob.cross(arm_b);
     const double loads_power = l.force_a_space.dot(pa_dot) - l.force_a_space.dot(pb_dot) +
                                l.torque_a_space.dot(Oa) - l.torque_a_space.dot(Ob);

@@ -1,6 +1,7 @@
 // Spring-dampers on the coordinate of a hinge or a prismatic joint (model.hpp JointSpring, loads.cpp) against
 // the damped oscillator's closed form, the integrators' convergence orders, the conservation of angular
 // momentum under internal torques and of energy without damping.
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <tuple>
@@ -14,6 +15,7 @@
 #include "poinsot/multibody/observables.hpp"
 #include "poinsot/multibody/projected_rk4.hpp"
 #include "poinsot/multibody/rattle.hpp"
+#include "poinsot/multibody/scenario.hpp"
 #include "poinsot_test.hpp"
 
 namespace poinsot::multibody {
@@ -153,13 +155,18 @@ TEST(JointSprings, SliderIsTheDampedOscillatorAlongItsAxis) {
 TEST(JointSprings, RefusesOtherJointsNegativeValuesAndAZeroOffTheAxis) {
   System s;
   s.add_body_from_inertia("a", 1.0, Mat3::Identity());
-  const int ball = s.add_ball("b", 0, Vec3::Zero(), kWorld, Vec3::Zero());
+  const int weld = s.add_weld("w", 0, Vec3::Zero(), kWorld, Vec3::Zero(), Mat3::Identity());
   const int hinge = s.add_hinge("h", 0, Vec3::Zero(), Vec3::UnitZ(), kWorld, Vec3::Zero(), Vec3::UnitZ());
   JointSpring bad;
-  bad.joint = ball;
+  bad.joint = weld;
   bad.stiffness = 1.0;
   expect_has(message_of([&] { s.add_joint_spring(bad); }),
-             {"joint 'b': spring", "ball", "expected a hinge, a prismatic or a universal joint"});
+             {"joint 'w': spring", "weld", "expected a hinge, a prismatic, a universal or a ball joint"});
+  bad.joint = hinge;
+  bad.coordinate = JointSpring::Coordinate::b;
+  expect_has(message_of([&] { s.add_joint_spring(bad); }),
+             {"joint 'h': spring", "coordinate \"b\" does not belong to a hinge joint"});
+  bad.coordinate = JointSpring::Coordinate::a;
   bad.joint = 7;
   expect_has(message_of([&] { s.add_joint_spring(bad); }), {"joint 7 does not exist"});
   bad.joint = hinge;
@@ -177,6 +184,32 @@ TEST(JointSprings, RefusesOtherJointsNegativeValuesAndAZeroOffTheAxis) {
   bad.R_b_a_zero = rot_z(0.3);
   expect_has(message_of([&] { s.add_joint_spring(bad); }),
              {"joint 'u': spring", "does not carry the axis of body a perpendicular to the axis of body b"});
+  bad.coordinate = JointSpring::Coordinate::first;
+  expect_has(message_of([&] { s.add_joint_spring(bad); }),
+             {"coordinate \"first\" does not belong to a universal joint; expected \"a\" or \"b\""});
+  // A ball joint's three hinges: the second axis perpendicular to the others, the third not along the first.
+  const int ball = s.add_ball("b", 0, Vec3::Zero(), kWorld, Vec3::Zero());
+  bad.joint = ball;
+  bad.R_b_a_zero = Mat3::Identity();
+  bad.hinge_axes = {Vec3::UnitX(), Vec3::UnitZ(), Vec3::UnitY()};
+  bad.coordinate = JointSpring::Coordinate::a;
+  expect_has(
+      message_of([&] { s.add_joint_spring(bad); }),
+      {"coordinate \"a\" does not belong to a ball joint; expected \"first\", \"second\" or \"third\""});
+  bad.coordinate = JointSpring::Coordinate::second;
+  bad.hinge_axes = {Vec3::UnitX(), Vec3::UnitZ(), Vec3::UnitX()};
+  expect_has(
+      message_of([&] { s.add_joint_spring(bad); }),
+      {"joint 'b': spring: hinge axes", "expected the second perpendicular to the first and the third"});
+  bad.hinge_axes = {Vec3::UnitX(), Vec3(1, 0, 1), Vec3::UnitY()};
+  expect_has(message_of([&] { s.add_joint_spring(bad); }), {"hinge axes", "not three hinges"});
+  bad.hinge_axes = {Vec3::UnitX(), Vec3::Zero(), Vec3::UnitY()};
+  expect_has(message_of([&] { s.add_joint_spring(bad); }), {"hinge axis 2", "is zero"});
+  EXPECT_EQ(s.joint_springs().size(), 0u);
+  // Axes need not be unit: they are normalised.
+  bad.hinge_axes = {2.0 * Vec3::UnitX(), Vec3::UnitZ(), Vec3::UnitY()};
+  s.add_joint_spring(bad);
+  EXPECT_EQ(s.joint_springs()[0].hinge_axes[0], Vec3::UnitX());
 }
 
 // A universal joint between body a and the world, axis e_a = x of a, e_b = y of the world: its relative
@@ -280,6 +313,135 @@ TEST(JointSprings, UniversalJointSpringsAreConservative) {
     worst = std::max(worst, std::abs(total_energy(p.system, s) - e0));
   }
   EXPECT_LT(worst / e0, (omega * h) * (omega * h));
+}
+
+// A body on a ball joint to the world that stands for three hinges in series, M = C₀ᵀR = Rot(e₁, q₁)
+// Rot(e₂, q₂) Rot(e₃, q₃), with C₀ = Rot(z, 0.3) and axes of two kinds: a humanoid's hip (x, z, y: the third
+// perpendicular to the first, λ = −π/2) and a third axis at 60° from the first (λ = −π/3).
+struct HingeTriple {
+  System system;
+  Mat3 C0 = rot_z(0.3);
+  std::array<Vec3, 3> axes;
+};
+
+HingeTriple hinge_triple(const std::array<Vec3, 3>& axes, const Vec3& k, const Vec3& c, const Vec3& rest) {
+  HingeTriple t;
+  t.axes = axes;
+  t.system.add_body_from_inertia("a", 2.0, Vec3(0.3, 0.4, 0.5).asDiagonal());
+  const int joint = t.system.add_ball("hip", 0, Vec3(0.1, -0.2, 0.05), kWorld, Vec3::Zero());
+  const JointSpring::Coordinate order[3] = {JointSpring::Coordinate::first, JointSpring::Coordinate::second,
+                                            JointSpring::Coordinate::third};
+  for (int i = 0; i < 3; ++i) {
+    JointSpring s;
+    s.joint = joint;
+    s.coordinate = order[i];
+    s.stiffness = k(i);
+    s.damping = c(i);
+    s.rest_position = rest(i);
+    s.R_b_a_zero = t.C0;
+    s.hinge_axes = axes;
+    t.system.add_joint_spring(s);
+  }
+  return t;
+}
+
+Mat3 hinges_in_series(const HingeTriple& t, const Vec3& q) {
+  Mat3 R = t.C0;
+  for (int i = 0; i < 3; ++i)
+    R = R * Eigen::AngleAxisd(q(i), t.axes[static_cast<std::size_t>(i)]).toRotationMatrix();
+  return R;
+}
+
+const std::array<std::array<Vec3, 3>, 2> kHingeAxes = {
+    std::array<Vec3, 3>{Vec3::UnitX(), Vec3::UnitZ(), Vec3::UnitY()},
+    std::array<Vec3, 3>{Vec3::UnitX(), Vec3::UnitZ(), Vec3(0.5, std::sqrt(0.75), 0.0)}};
+
+TEST(JointSprings, BallJointAnglesAreThoseOfThreeHingesInSeries) {
+  const Vec3 k(2.0, 3.0, 5.0), rest(0.1, -0.2, 0.3);
+  for (const auto& axes : kHingeAxes) {
+    const HingeTriple t = hinge_triple(axes, k, Vec3::Zero(), rest);
+    State s;
+    s.bodies.resize(1);
+    // q₂ within both branches: [−π/2, π/2] for the hip, [−π/3, 2π/3] for the other.
+    for (const Vec3& q : {Vec3(0, 0, 0), Vec3(0.7, -0.8, 0.4), Vec3(-2.9, 1.1, 2.5), Vec3(3.0, 0.4, -3.1),
+                          Vec3(-0.3, -0.9, 1.7)}) {
+      s.bodies[0].R_space_body = hinges_in_series(t, q);
+      double V = 0.0;
+      for (int i = 0; i < 3; ++i) {
+        const double d = std::remainder(q(i) - rest(i), 2.0 * std::numbers::pi);
+        V += 0.5 * k(i) * d * d;
+      }
+      EXPECT_NEAR(potential_energy(t.system, s.bodies), V, 1e-12) << q.transpose();
+    }
+  }
+}
+
+// The springs' torque is the gradient of their potential (central differences of V along small rotations of
+// the body, error O(δ²) ≈ 1e-10 of V's second derivatives ~ 10), and the dampers' generalized force on hinge
+// j is −c_j q̇_j: the torque's power along the motion of hinge j alone (its ω by central differences of the
+// rotation, error ~1e-10) is −c_j q̇_j.
+TEST(JointSprings, BallJointSpringTorquesAreTheGradientsAndTheDampersActOnEachHinge) {
+  const Vec3 q(0.6, -0.5, 1.2), rates(0.8, -1.3, 0.4), c(0.7, 1.1, 0.25);
+  for (const auto& axes : kHingeAxes) {
+    const HingeTriple springs = hinge_triple(axes, Vec3(2.0, 3.0, 5.0), Vec3::Zero(), Vec3(0.1, -0.2, 0.3));
+    State s;
+    s.bodies.resize(1);
+    s.bodies[0].R_space_body = hinges_in_series(springs, q);
+    std::vector<BodyLoads> loads;
+    applied_loads(springs.system, s.bodies, loads);
+    const double d = 1e-5;
+    for (int i = 0; i < 3; ++i) {
+      State plus = s, minus = s;
+      plus.bodies[0].R_space_body =
+          s.bodies[0].R_space_body * Eigen::AngleAxisd(d, Vec3::Unit(i)).toRotationMatrix();
+      minus.bodies[0].R_space_body =
+          s.bodies[0].R_space_body * Eigen::AngleAxisd(-d, Vec3::Unit(i)).toRotationMatrix();
+      const double dV =
+          (potential_energy(springs.system, plus.bodies) - potential_energy(springs.system, minus.bodies)) /
+          (2 * d);
+      EXPECT_NEAR(loads[0].torque_body(i), -dV, 1e-8);
+    }
+    // The body's angular velocity of each hinge's unit rate (body frame), by central differences.
+    const HingeTriple dampers = hinge_triple(axes, Vec3::Zero(), c, Vec3::Zero());
+    std::array<Vec3, 3> omega_of;
+    for (int j = 0; j < 3; ++j) {
+      const Mat3 Rdot = (hinges_in_series(dampers, q + d * Vec3::Unit(j)) -
+                         hinges_in_series(dampers, q - d * Vec3::Unit(j))) /
+                        (2 * d);
+      const Mat3 W = hinges_in_series(dampers, q).transpose() * Rdot;
+      omega_of[static_cast<std::size_t>(j)] = Vec3(W(2, 1), W(0, 2), W(1, 0));
+    }
+    s.bodies[0].R_space_body = hinges_in_series(dampers, q);
+    s.bodies[0].omega_body = rates(0) * omega_of[0] + rates(1) * omega_of[1] + rates(2) * omega_of[2];
+    applied_loads(dampers.system, s.bodies, loads);
+    for (int j = 0; j < 3; ++j)
+      EXPECT_NEAR(loads[0].torque_body.dot(omega_of[static_cast<std::size_t>(j)]), -c(j) * rates(j), 1e-9);
+  }
+}
+
+// Without dampers, at angles of a radian, RATTLE keeps the energy to (ωh)² without drift (the spring is
+// conservative); at the hinges' gimbal lock the loads throw.
+TEST(JointSprings, BallJointSpringsAreConservativeAndRefuseTheGimbalLock) {
+  const HingeTriple t = hinge_triple(kHingeAxes[0], Vec3(2.0, 3.0, 1.0), Vec3::Zero(), Vec3(0.2, -0.1, 0.3));
+  State s;
+  s.bodies.resize(1);
+  s.bodies[0].R_space_body = hinges_in_series(t, Vec3(1.1, -0.6, 0.8));
+  s.bodies[0].x_space = -s.bodies[0].R_space_body * Vec3(0.1, -0.2, 0.05);
+  s.bodies[0].omega_body = Vec3(0.5, -0.4, 0.3);
+  project_velocities(t.system, s);
+  const double e0 = total_energy(t.system, s);
+  const double h = 0.005, omega = std::sqrt(3.0 / 0.3);
+  Rattle rattle(t.system, h);
+  double worst = 0.0;
+  for (int n = 0; n < 20000; ++n) {  // 100 s
+    rattle.step(s);
+    worst = std::max(worst, std::abs(total_energy(t.system, s) - e0));
+  }
+  EXPECT_LT(worst / e0, (omega * h) * (omega * h));
+  s.bodies[0].R_space_body = hinges_in_series(t, Vec3(0.3, std::numbers::pi / 2, -0.2));
+  std::vector<BodyLoads> loads;
+  expect_has(message_of<ComputationFailed>([&] { applied_loads(t.system, s.bodies, loads); }),
+             {"multibody joint 'hip': the spring on its first hinge", "gimbal lock"});
 }
 
 }  // namespace

@@ -9,7 +9,10 @@
 /// matrix G with ġ = G_a (v_a, ω_a) + G_b (v_b, ω_b), and g̈ = G_a (a_a, ω̇_a) + G_b (a_b, ω̇_b) + γ.
 ///
 /// - point rows `d = x_a + R_a A − x_b − R_b B` (3, m): G_a = [I, −R_a j(A)], G_b = [−I, R_b j(B)],
-///   γ = R_a j(ω_a)² A − R_b j(ω_b)² B;
+///   γ = R_a j(ω_a)² A − R_b j(ω_b)² B; a universal joint with an axis offset h adds −h n with
+///   n = P × U (P = R_a p, U = R_b u, its cross-pin axes; Ω = R ω): −h j(U) j(P) R_a to G_a's ω-block,
+///   +h j(P) j(U) R_b to G_b's, and −h ((Ω_a × (Ω_a × P)) × U + 2 (Ω_a × P) × (Ω_b × U) + P × (Ω_b × (Ω_b ×
+///   U))) to γ;
 /// - line rows (sliding joints, 2, m) `(R_b n)·r − n·B` with r = x_a + R_a A − x_b, N = R_b n, r_b = R_bᵀ r:
 ///   G_a = [Nᵀ, (A × R_aᵀN)ᵀ], G_b = [−Nᵀ, (n × r_b)ᵀ],
 ///   γ = N·(R_a j(ω_a)² A) + (ω_b × (ω_b × n))·r_b + 2 (ω_b × n)·R_bᵀṙ, ṙ = v_a + R_a(ω_a × A) − v_b;
@@ -19,8 +22,10 @@
 ///
 /// A multiplier λ (force = Gᵀλ) acts on body a with the force Σ λ_k (point rows: e_k; line rows: N_k) (space
 /// frame, N) at its joint point R_a A, and the torque Σ λ_k n_k of the perpendicularity rows (space frame,
-/// N·m); body b receives the opposite, the force at the same point of space. In the 12 coordinates it also
-/// has an R-gradient part Φ = Rᵀ G_Rᵀ λ (body frame, N·m, its skew part is half the torque), which enters Λ.
+/// N·m; with an axis offset h also −h P × (U × f) of the point rows' force f); body b receives the opposite,
+/// the force at the same point of space (x_b + R_b B + h n: point A where the joint holds). In the 12
+/// coordinates it also has an R-gradient part Φ = Rᵀ G_Rᵀ λ (body frame, N·m, its skew part is half the
+/// torque), which enters Λ.
 
 #include <algorithm>
 #include <cmath>
@@ -56,11 +61,18 @@ inline Mat3 point_rows_omega_jacobian_b(const Joint& joint, const Mat3& R_b) {
   return so3::times_hat(R_b, joint.point_b);
 }
 
-/// d = x_a + R_a A − x_b − R_b B: the point rows' value (m).
+/// n = (R_a p) × (R_b u): the common normal of a universal joint's cross-pin axes (space frame; unit where
+/// the joint holds).
+inline Vec3 cross_pin_normal(const Joint& joint, const BodyState& a, const BodyState& b) {
+  return (a.R_space_body * joint.p_a[0]).cross(b.R_space_body * joint.u_b[0]);
+}
+/// d = x_a + R_a A − x_b − R_b B − h n: the point rows' value (m; h n only for a universal joint whose axes
+/// are offset).
 inline Vec3 point_rows_value(const Joint& joint, const BodyState& a, const BodyState& b) {
   Vec3 d = a.x_space - b.x_space;
   d.noalias() += a.R_space_body * joint.point_a;
   d.noalias() -= b.R_space_body * joint.point_b;
+  if (joint.axis_offset != 0.0) d -= joint.axis_offset * cross_pin_normal(joint, a, b);
   return d;
 }
 /// (R_a p_k)·(R_b u_k): perpendicularity row k's value (dimensionless).

@@ -18,6 +18,9 @@
 /// - ball: `x_a + R_a A − x_b − R_b B = 0` (3 rows; multiplier = force on body a from b, space frame, N);
 /// - hinge: ball + `(R_a p_k)·(R_b u_b) = 0` for two unit vectors p_1, p_2 ⟂ u_a (2 rows, torques N·m);
 /// - universal: ball + one such row, `(R_a p)·(R_b u) = 0` for the two cross-pin axes (p in a, u in b);
+///   with an offset h between the axes (two hinges in series about different points), the point rows are
+///   `x_a + R_a A − x_b − R_b B − h (R_a p) × (R_b u) = 0`: A on axis a, B on axis b, h their distance along
+///   the common normal;
 /// - weld: ball + three such perpendicularity rows that freeze the relative rotation;
 /// - prismatic: the weld's three rotation rows, and point A on the line through B along the axis s (fixed in
 ///   b): `(R_b n_k)·(x_a + R_a A − x_b) − n_k·B = 0` for the two unit normals n_1, n_2 ⟂ s (2 rows, N).
@@ -63,6 +66,9 @@ struct Joint {
   int perpendicular_count = 0;  ///< 0 (ball), 1 (universal), 2 (hinge), 3 (weld, prismatic)
   std::array<Vec3, 3> p_a{};    ///< unit vectors fixed in body a
   std::array<Vec3, 3> u_b{};    ///< unit vectors fixed in body b (space frame for the world)
+  /// Universal joints: h, m, the distance from axis b (through point B) to axis a (through point A) along
+  /// their common normal (R_a p_a[0]) × (R_b u_b[0]); 0 when the axes meet (point rows, constraints.hpp).
+  double axis_offset = 0.0;
   int translation_rows() const { return sliding ? 2 : 3; }
   int rows() const { return translation_rows() + perpendicular_count; }
   /// A hinge's axis in body a's frame (unit): p_a[0] × p_a[1], the two unit vectors that the hinge's rows
@@ -98,20 +104,37 @@ struct Spring {
 /// w = Mᵀc; the rates q̇_a = e_a·ω, q̇_b = w·ω of the relative angular velocity ω = ω_a − Sᵀω_b (body a
 /// frame), and the torque on body a is Q e_a (coordinate a) or Q w (coordinate b): since w ⊥ e_a its power is
 /// Q q̇, so the spring is conservative with the potential above.
+///
+/// Ball joint standing for three hinges in series (MuJoCo's three hinges of one body about one point), their
+/// axes e₁, e₂, e₃ in body a's frame at q = 0 (`hinge_axes`, e₁ ⟂ e₂, e₂ ⟂ e₃, e₃ ≠ ±e₁): M = R_b_a_zeroᵀS =
+/// Rot(e₁, q₁) Rot(e₂, q₂) Rot(e₃, q₃). With λ = atan2((e₁ × e₂)·e₃, e₁·e₃): cos(q₂ − λ) = e₁·M e₃ gives
+/// q₂ = λ ∓ acos(e₁·M e₃) (the branch through q₂ = 0, |q₂ − λ| ≤ π); q₁ turns Rot(e₂, q₂) e₃ into M e₃ about
+/// e₁, q₃ turns Mᵀe₁ into Rot(e₂, q₂)ᵀe₁ about e₃. The rates solve ω = E q̇ with
+/// E = [Rot(e₃, q₃)ᵀRot(e₂, q₂)ᵀe₁, Rot(e₃, q₃)ᵀe₂, e₃], and the torque on body a is E⁻ᵀ Q e_k, so that its
+/// power is Q q̇_k: conservative again. E is singular where e₁ and the turned e₃ align (q₂ − λ = 0 or π, the
+/// hinges' gimbal lock; det E = sin(λ − q₂)), where the angles are undefined; applied_loads throws
+/// ComputationFailed within 1e-6 rad of it.
 struct JointSpring {
-  /// Which angle of a universal joint the spring acts on.
-  enum class Coordinate { a, b };
-  int joint = 0;                          ///< index of a hinge, prismatic or universal joint
-  Coordinate coordinate = Coordinate::a;  ///< universal joints: q_a (about e_a) or q_b (about e_b)
+  /// Which angle the spring acts on: a universal joint's q_a (about e_a) or q_b (about e_b); a ball joint's
+  /// q₁, q₂ or q₃ (its three hinges, first to third).
+  enum class Coordinate { a, b, first, second, third };
+  int joint = 0;                          ///< index of a hinge, prismatic, universal or ball joint
+  Coordinate coordinate = Coordinate::a;  ///< universal joints: a or b; ball joints: first, second or third
   double stiffness = 0.0;                 ///< k: N·m/rad (hinge) or N/m (prismatic)
   double damping = 0.0;                   ///< c: N·m·s/rad (hinge) or N·s/m (prismatic)
   double rest_position = 0.0;             ///< q_rest: rad or m
   /// Hinge: the relative rotation R_bᵀR_a at which q = 0; it must carry the axis of a onto the axis of b.
-  /// Universal: the one at which q_a = q_b = 0; it must carry e_a perpendicular to e_b.
+  /// Universal: the one at which q_a = q_b = 0; it must carry e_a perpendicular to e_b. Ball: the one at
+  /// which q₁ = q₂ = q₃ = 0.
   Mat3 R_b_a_zero = Mat3::Identity();
+  /// Ball: the three hinges' axes e₁, e₂, e₃ (body a's frame at q = 0; non-zero, normalised when added).
+  std::array<Vec3, 3> hinge_axes{};
   /// Prismatic: q when point a is at point b (m); q grows as point a moves along the axis.
   double offset = 0.0;
 };
+
+/// The name of a joint spring's coordinate: "a", "b", "first", "second" or "third".
+const char* joint_spring_coordinate_name(JointSpring::Coordinate coordinate);
 
 /// A constant force (space frame, N) applied at a point of a body (body frame, m from the centre of mass).
 struct ConstantForce {
@@ -153,8 +176,14 @@ class System {
   /// Universal (Cardan, Hooke) joint: ball joint plus the cross-pin axis `axis_a` (body a frame) kept
   /// perpendicular to `axis_b` (body b frame, or space frame): two rotational degrees of freedom. Axes need
   /// not be unit; they must be non-zero (the assembled state must have them perpendicular).
+  ///
+  /// With `axis_offset` h ≠ 0 (m) the axes do not meet: two hinges in series, the first about `axis_b`
+  /// through `point_b`, the second about `axis_a` through `point_a`, the second's axis at the distance h from
+  /// the first's along the common normal e_a × e_b (space frame: (R_a axis_a) × (R_b axis_b), unit): point a
+  /// is at point b + h e_a × e_b (MuJoCo's two hinges of one body about different points, such as a
+  /// humanoid's ankle). Throws InvalidInput for a non-finite offset.
   int add_universal(const std::string& name, int body_a, const Vec3& point_a, const Vec3& axis_a, int body_b,
-                    const Vec3& point_b, const Vec3& axis_b);
+                    const Vec3& point_b, const Vec3& axis_b, double axis_offset = 0.0);
   /// Prismatic (slider) joint: the relative rotation fixed at `R_b_a = R_bᵀ R_a` as for a weld, and point_a
   /// kept on the line through point_b along `axis_a` (body a frame, the sliding direction; fixed in b as
   /// R_b_a axis_a): one translational degree of freedom. The axis must be non-zero.
@@ -162,10 +191,13 @@ class System {
                     const Vec3& point_b, const Mat3& R_b_a);
 
   int add_spring(const Spring& spring);
-  /// Adds a spring-damper on the coordinate of a hinge or a prismatic joint, or on one angle of a universal
-  /// joint (its index `joint`). Throws InvalidInput for another joint type, a negative stiffness or damping,
-  /// a non-finite value, a hinge's R_b_a_zero that is not a rotation carrying axis a onto axis b, or a
-  /// universal joint's that does not carry e_a perpendicular to e_b (to 1e-6).
+  /// Adds a spring-damper on the coordinate of a hinge or a prismatic joint, on one angle of a universal
+  /// joint, or on one of the three hinge angles that a ball joint stands for (its index `joint`). Throws
+  /// InvalidInput for another joint type, a coordinate of another joint type, a negative stiffness or
+  /// damping, a non-finite value, a hinge's R_b_a_zero that is not a rotation carrying axis a onto axis b, a
+  /// universal joint's that does not carry e_a perpendicular to e_b (to 1e-6), or a ball joint's hinge axes
+  /// that are zero, not perpendicular in sequence (e₁·e₂, e₂·e₃ within 1e-9) or with e₃ = ±e₁ (|(e₁ × e₂)·e₃|
+  /// below 1e-6).
   int add_joint_spring(const JointSpring& spring);
   void add_force(const ConstantForce& force);
   void add_torque(const ConstantTorque& torque);

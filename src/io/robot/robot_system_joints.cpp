@@ -1,6 +1,6 @@
 // The joints of a robot file's multibody scenario (robot_system_builder.hpp): each link's joint to its parent
 // as a multibody joint (a weld, a hinge or prismatic joint with its spring-damper, a ball, a universal joint,
-// or MJCF hinges about one point merged into one), and the loops that MJCF's <equality> closes.
+// or MJCF hinges of one body merged into one), and the loops that MJCF's <equality> closes.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -68,7 +68,7 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
   // A hinge's or slide's spring-damper acts on its displacement from the file's configuration, where the
   // child's frame is b_before; a slide's points coincide at its initial displacement. Of two hinges merged
   // into a universal joint the first turns about the parent's axis (coordinate b), the second about the
-  // child's (coordinate a).
+  // child's (coordinate a); three hinges merged into a ball joint keep their order (first, second, third).
   const auto add_spring = [&](int joint, std::size_t dof = 0,
                               multibody::JointSpring::Coordinate angle =
                                   multibody::JointSpring::Coordinate::a) {
@@ -86,6 +86,10 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
     s.damping = d.damping;
     s.rest_position = d.spring_reference - d.reference;
     s.R_b_a_zero = b_before.R;
+    if (dofs.size() == 3) {
+      for (std::size_t k = 0; k < 3; ++k)
+        s.hinge_axes[k] = dofs[k].axis_child;
+    }
     s.offset = coordinate(d, false)[0];
     located([&] { return sc.system.add_joint_spring(s); });
   };
@@ -101,33 +105,55 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
     }));
     return;
   }
-  const bool universal = same_anchor && all_hinges && dofs.size() == 2 &&
-                         std::abs(dofs[0].axis_child.dot(dofs[1].axis_child)) <= 1e-12;
+  const bool universal =
+      all_hinges && dofs.size() == 2 && std::abs(dofs[0].axis_child.dot(dofs[1].axis_child)) <= 1e-12;
   if (universal) {
+    // The second hinge's anchor is fixed in the frame that the first turns: at the offset d from the first's
+    // anchor, d = α e₁ + β e₂ + h e₂ × e₁ in the orthonormal frame of the axes (child frame, reference
+    // pose). Point B on the first axis and point A on the second are then h apart along the common normal
+    // e₂ × e₁ at every pose (model.hpp, add_universal); h = 0 when the axes meet.
+    const Vec3& e1 = dofs[0].axis_child;
+    const Vec3& e2 = dofs[1].axis_child;
+    const Vec3 d = dofs[1].anchor_child - dofs[0].anchor_child;
+    const Vec3 point_b = dofs[0].anchor_child + d.dot(e1) * e1;
+    const Vec3 point_a = dofs[1].anchor_child - d.dot(e2) * e2;
+    const double h = d.dot(e2.cross(e1));
     const int joint = located([&] {
-      return sc.system.add_universal(name, a, pa, dofs[1].axis_child, b, pb, b_before.R * dofs[0].axis_child);
+      return sc.system.add_universal(name, a, point_a - c_a, e2, b, b_before * point_b - c_b, b_before.R * e1,
+                                     std::abs(h) <= 1e-12 * scale ? 0.0 : h);
     });
     add_spring(joint, 0, multibody::JointSpring::Coordinate::b);
     add_spring(joint, 1, multibody::JointSpring::Coordinate::a);
     return;
   }
-  std::string sprung;
-  for (const RobotDof& d : dofs) {
-    if (d.stiffness != 0.0 || d.damping != 0.0) sprung += (sprung.empty() ? "\"" : ", \"") + d.name + "\"";
-  }
-  if (!sprung.empty()) {
-    sc.not_modelled.push_back(fmt::format(
-        "{}: the springs and dampers of {} (joints of one body merged into a ball joint)", where(j), sprung));
-  }
+  const auto springs_not_modelled = [&](const char* why) {
+    std::string sprung;
+    for (const RobotDof& d : dofs) {
+      if (d.stiffness != 0.0 || d.damping != 0.0) sprung += (sprung.empty() ? "\"" : ", \"") + d.name + "\"";
+    }
+    if (!sprung.empty())
+      sc.not_modelled.push_back(fmt::format("{}: the springs and dampers of {} ({})", where(j), sprung, why));
+  };
   if (dofs.size() == 1 && dofs[0].kind == RobotDof::Kind::ball) {
+    springs_not_modelled("a ball joint's, on its quaternion");
     located([&] { return sc.system.add_ball(name, a, pa, b, pb); });
     return;
   }
   if (same_anchor && all_hinges && dofs.size() == 3) {
-    Mat3 axes;
-    axes << dofs[0].axis_child, dofs[1].axis_child, dofs[2].axis_child;
-    if (std::abs(axes.determinant()) > 1e-9) {
-      located([&] { return sc.system.add_ball(name, a, pa, b, pb); });
+    const Vec3 &e1 = dofs[0].axis_child, &e2 = dofs[1].axis_child, &e3 = dofs[2].axis_child;
+    if (std::abs(e1.dot(e2.cross(e3))) > 1e-9) {
+      const int joint = located([&] { return sc.system.add_ball(name, a, pa, b, pb); });
+      // The springs act on the three hinge angles where the second axis is perpendicular to the other two
+      // (their angles are then defined everywhere but at the hinges' gimbal lock; multibody::JointSpring).
+      if (std::abs(e1.dot(e2)) <= 1e-12 && std::abs(e2.dot(e3)) <= 1e-12) {
+        add_spring(joint, 0, multibody::JointSpring::Coordinate::first);
+        add_spring(joint, 1, multibody::JointSpring::Coordinate::second);
+        add_spring(joint, 2, multibody::JointSpring::Coordinate::third);
+      } else {
+        springs_not_modelled(
+            "three hinges merged into a ball joint whose second axis is not perpendicular "
+            "to the first and the third");
+      }
       return;
     }
   }
@@ -140,8 +166,8 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
                         d.name, d.line);
   throw InvalidInput(fmt::format(
       "{}: the joints {} of one body are not supported together{}; expected one hinge, slide or ball, two "
-      "perpendicular hinges about one point (a universal joint) or three hinges about one point (a ball "
-      "joint)",
+      "perpendicular hinges (a universal joint, its axes meeting or not) or three hinges about one point (a "
+      "ball joint)",
       where(j), list, same_anchor ? "" : " (their anchors differ)"));
 }
 

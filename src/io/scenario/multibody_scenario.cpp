@@ -168,7 +168,7 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
   for (std::size_t j = 0; j < joints->size(); ++j) {
     const Section f(r.src, (*joints)[j].as_table(), fmt::format("joints[{}]", j),
                     {"name", "type", "body_a", "point_a", "body_b", "point_b", "axis_a", "axis_b",
-                     "stiffness", "damping", "rest_position"},
+                     "axis_offset", "stiffness", "damping", "rest_position"},
                     &(*joints)[j]);
     const std::string name = f.string("name").value_or(fmt::format("joint{}", j));
     f.require("type", multibody::joint_type_names());
@@ -183,16 +183,25 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
     if ((axes == JointAxes::none || axes == JointAxes::sliding) && f.has("axis_b"))
       f.fail("axis_b",
              fmt::format("given for a {} joint; only {} take axis_b", type, axis_joint_names(true)));
+    if (axes != JointAxes::crossed && f.has("axis_offset"))
+      f.fail("axis_offset",
+             fmt::format("given for a {} joint; only universal joints take an axis offset", type));
+    const double axis_offset = f.number("axis_offset").value_or(0.0);
     const int a = r.body_ref(f, "body_a", false, "");
     const int b = r.body_ref(f, "body_b", true, "world");
     const multibody::BodyState& sa = r.side(a);
     const multibody::BodyState& sb = r.side(b);
     const Vec3 pa = r.point(f, "point_a", a);
-    // Default far point: where the near point is at t = 0, in b's frame (from its centre of mass).
+    // Default far point: where the near point is at t = 0 (less the axis offset along the common normal of
+    // the cross pins), in b's frame (from its centre of mass).
+    Vec3 pb_space = sa.x_space + sa.R_space_body * pa - sb.x_space;
+    if (axis_offset != 0.0) {
+      const Vec3 n = (sa.R_space_body * f.vec3("axis_a").value_or(Vec3::Zero()).normalized())
+                         .cross(sb.R_space_body * f.vec3("axis_b").value_or(Vec3::Zero()).normalized());
+      pb_space -= axis_offset * n;
+    }
     const Vec3 pb =
-        f.has("point_b")
-            ? r.to_model(b, *f.vec3("point_b"))
-            : Vec3(sb.R_space_body.transpose() * (sa.x_space + sa.R_space_body * pa - sb.x_space));
+        f.has("point_b") ? r.to_model(b, *f.vec3("point_b")) : Vec3(sb.R_space_body.transpose() * pb_space);
     // The relative rotation at t = 0, frozen by welds and prismatic joints.
     const Mat3 R_b_a = sb.R_space_body.transpose() * sa.R_space_body;
     if (axes != JointAxes::none)
@@ -218,7 +227,7 @@ void read_joints(Reader& r, const Section& top, const toml::table& root) {
               name, a, pa, axis_a, b, pb,
               f.vec3("axis_b").value_or(Vec3(sb.R_space_body.transpose() * (sa.R_space_body * axis_a))));
         case multibody::JointType::universal:
-          return r.sc.system.add_universal(name, a, pa, axis_a, b, pb, *f.vec3("axis_b"));
+          return r.sc.system.add_universal(name, a, pa, axis_a, b, pb, *f.vec3("axis_b"), axis_offset);
         case multibody::JointType::prismatic:
           return r.sc.system.add_prismatic(name, a, pa, axis_a, b, pb, R_b_a);
       }

@@ -199,8 +199,8 @@ TEST(RobotSystem, UrdfFloatingBaseAndInertiaFromGeometry) {
 
 TEST(RobotSystem, MjcfJointKinds) {
   const multibody::Scenario sc = load_robot_scenario(robots("joints.xml"));
-  EXPECT_EQ(body_names(sc.system),
-            (std::vector<std::string>{"post", "crank", "slider", "bob", "gimbal", "hip", "foot", "puck"}));
+  EXPECT_EQ(body_names(sc.system), (std::vector<std::string>{"post", "crank", "slider", "bob", "gimbal",
+                                                             "hip", "foot", "heel", "puck"}));
   EXPECT_EQ(joint_types_of(sc.system),
             (std::map<std::string, JointType>{{"post", JointType::weld},
                                               {"crank_hinge", JointType::hinge},
@@ -208,7 +208,17 @@ TEST(RobotSystem, MjcfJointKinds) {
                                               {"bob_ball", JointType::ball},
                                               {"gimbal_z+gimbal_x", JointType::universal},
                                               {"hip_x+hip_z+hip_y", JointType::ball},
-                                              {"foot", JointType::weld}}));
+                                              {"foot", JointType::weld},
+                                              {"heel_y+heel_x", JointType::universal}}));
+  // The heel's hinges: y through (0, 0, 0.04), then x + z/2 through the origin (heel frame). The second axis
+  // is 0.04 m · (e₂ × e₁)·(−z) = 0.04/√1.25 m from the first, on the side of −(e₂ × e₁).
+  for (const multibody::Joint& j : sc.system.joints()) {
+    if (j.name == "heel_y+heel_x") {
+      EXPECT_NEAR(j.axis_offset, -0.04 / std::sqrt(1.25), 1e-15);
+    } else {
+      EXPECT_EQ(j.axis_offset, 0.0) << j.name;
+    }
+  }
   // Inertia from the geoms at 1000 kg/m³: the post is a 0.1 m cube, the bob a sphere of radius 0.03 plus a
   // cylinder of 0.05 kg.
   EXPECT_NEAR(sc.system.bodies()[0].mass, 1.0, 1e-15);
@@ -221,10 +231,10 @@ TEST(RobotSystem, MjcfJointKinds) {
     all += line + "\n";
   // The crank's spring is modelled, and so is the damper of gimbal_x, the second of the two hinges merged
   // into a universal joint: it turns about the child's axis (coordinate a).
-  expect_has(all, {"<joint> friction loss: 8 joint(s)"});
+  expect_has(all, {"<joint> friction loss: 10 joint(s)"});
   EXPECT_EQ(all.find("crank_hinge\""), std::string::npos) << all;
   EXPECT_EQ(all.find("gimbal_x\""), std::string::npos) << all;
-  ASSERT_EQ(sc.system.joint_springs().size(), 2u);
+  ASSERT_EQ(sc.system.joint_springs().size(), 3u);
   const auto& springs = sc.system.joint_springs();
   EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(springs[0].joint)].name, "crank_hinge");
   EXPECT_EQ(springs[0].stiffness, 2.0);
@@ -232,13 +242,16 @@ TEST(RobotSystem, MjcfJointKinds) {
   EXPECT_EQ(springs[1].coordinate, multibody::JointSpring::Coordinate::a);
   EXPECT_EQ(springs[1].stiffness, 0.0);
   EXPECT_EQ(springs[1].damping, 0.3);
+  EXPECT_EQ(sc.system.joints()[static_cast<std::size_t>(springs[2].joint)].name, "heel_y+heel_x");
+  EXPECT_EQ(springs[2].coordinate, multibody::JointSpring::Coordinate::b);
+  EXPECT_EQ(springs[2].stiffness, 2.0);
   double de = 0.0, gap = 0.0;
   run_rk4(sc, 300, &de, &gap);
   EXPECT_LT(gap, 1e-12);
   EXPECT_LT(de, 1e-8);
   // The drawn surfaces (view.html): every body's geoms about its centre of mass; the post's cube of half-size
   // 0.05 m, the crank's capsule from its pin (x = 0, less the 0.02 m cap) to x = 0.22 m in its frame.
-  ASSERT_EQ(sc.body_surfaces.size(), 8u);
+  ASSERT_EQ(sc.body_surfaces.size(), 9u);
   for (const auto& surface : sc.body_surfaces)
     EXPECT_NE(surface, nullptr);
   double post = 0.0;
@@ -338,10 +351,11 @@ TEST(RobotSystem, InitialVelocitiesAreTheDerivativesOfThePoses) {
   std::map<std::string, std::vector<double>> rates = {
       {"crank_hinge", {0.8}}, {"slide_x", {-0.3}},  {"bob_ball", {w_ball.x(), w_ball.y(), w_ball.z()}},
       {"gimbal_z", {0.5}},    {"gimbal_x", {-1.2}}, {"hip_x", {0.3}},
-      {"hip_z", {0.9}},       {"hip_y", {-0.6}}};
+      {"hip_z", {0.9}},       {"hip_y", {-0.6}},    {"heel_y", {1.3}},
+      {"heel_x", {-0.7}}};
   const std::map<std::string, double> angles = {{"crank_hinge", 0.4}, {"slide_x", 0.05}, {"gimbal_z", 0.3},
                                                 {"gimbal_x", -0.2},   {"hip_x", 0.25},   {"hip_z", -0.4},
-                                                {"hip_y", 0.6}};
+                                                {"hip_y", 0.6},       {"heel_y", -0.5},  {"heel_x", 0.35}};
   const auto at = [&](double t) {
     std::map<std::string, std::vector<double>> q;
     for (const auto& [name, a] : angles)
@@ -472,20 +486,21 @@ TEST(RobotSystem, MujocoSampleModelsRunOrAreRefusedWithOneLine) {
   EXPECT_GE(refused, 1);
 }
 
-TEST(RobotSystem, MujocoHumanoidWithOnePointAnklesIsUniversalBallAndHingeJoints) {
+TEST(RobotSystem, MujocoHumanoidIsUniversalBallAndHingeJoints) {
   std::ifstream in("/usr/share/mujoco/model/humanoid/humanoid.xml");
   if (!in) GTEST_SKIP() << "MuJoCo's sample models are not installed";
   std::stringstream text;
   text << in.rdbuf();
-  std::string xml = text.str();
-  // Each ankle's second hinge moved to the first's point (4 cm): then every body's joints compose.
-  const std::string from = "pos=\"0 0 .04\" axis=\"1 0 .5\"";
-  for (std::size_t at = xml.find(from); at != std::string::npos; at = xml.find(from, at))
-    xml.replace(at, from.size(), "pos=\"0 0 .08\" axis=\"1 0 .5\"");
+  const std::string xml = text.str();
   RobotSystemOptions o;
   o.gravity = Vec3::Zero();
   o.base_omega_body = Vec3(0.3, -0.2, 0.5);
-  o.velocities = {{"right_knee", {2.0}}, {"left_shoulder1", {-1.5}}, {"abdomen_y", {1.0}}};
+  o.velocities = {{"right_knee", {2.0}},
+                  {"left_shoulder1", {-1.5}},
+                  {"abdomen_y", {1.0}},
+                  {"right_ankle_y", {3.0}},
+                  {"left_ankle_x", {-2.5}}};
+  o.positions = {{"right_ankle_y", {0.4}}, {"right_ankle_x", {-0.3}}};
   const multibody::Scenario sc = robot_scenario(read_robot_model(xml, "humanoid.xml"), o);
   EXPECT_EQ(sc.system.body_count(), 16);
   std::map<JointType, int> count;
@@ -493,11 +508,23 @@ TEST(RobotSystem, MujocoHumanoidWithOnePointAnklesIsUniversalBallAndHingeJoints)
     ++count[j.type];
   // Abdomen z+y, both ankles, both shoulders: universal; the hips' three hinges: balls; knees, elbows and
   // abdomen x: hinges; the head and the hands (no joints): welds. 6 (free torso) + 5·2 + 2·3 + 5·1 = 27
-  // degrees of freedom, MuJoCo's count.
+  // degrees of freedom, MuJoCo's count. Each ankle's two hinges turn about points 4 cm apart along z: axes
+  // (0, 1, 0) and (1, 0, 0.5) at 0.04/√1.25 m from each other.
   EXPECT_EQ(count[JointType::universal], 5);
+  for (const multibody::Joint& j : sc.system.joints()) {
+    const bool ankle = j.name.find("ankle") != std::string::npos;
+    EXPECT_NEAR(std::abs(j.axis_offset), ankle ? 0.04 / std::sqrt(1.25) : 0.0, 1e-15) << j.name;
+  }
   EXPECT_EQ(count[JointType::ball], 2);
   EXPECT_EQ(count[JointType::hinge], 5);
   EXPECT_EQ(count[JointType::weld], 3);
+  // Every hinge's spring and damper is modelled: on a hinge, on a universal joint's angles (abdomen z+y,
+  // ankles, shoulders) and on the three hinge angles of the hips' ball joints.
+  EXPECT_EQ(sc.system.joint_springs().size(), 21u);
+  for (const std::string& line : sc.not_modelled)
+    EXPECT_EQ(line.find("springs"), std::string::npos) << line;
+  // The poses that the two hinges in series give (robot_kinematics.hpp) hold the joints of the model.
+  EXPECT_LT(multibody::constraint_violation(sc.system, sc.initial).joint_gap, 1e-15);
   // A free system: RATTLE conserves its momenta to round-off.
   multibody::Rattle rattle(sc.system, 1e-3);
   multibody::State s = sc.initial;

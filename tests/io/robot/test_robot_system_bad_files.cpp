@@ -62,8 +62,8 @@ const std::string kMjcfZeroAxis =
     "<geom type=\"sphere\" size=\"0.1\"/></body></worldbody></mujoco>\n";
 const std::string kMjcfOffsetHinges =
     "<mujoco>\n<worldbody>\n<body name=\"foot\">\n<joint name=\"ankle_y\" pos=\"0 0 .08\" axis=\"0 1 0\"/>\n"
-    "<joint name=\"ankle_x\" pos=\"0 0 .04\" axis=\"1 0 .5\"/>\n<geom type=\"sphere\" size=\"0.1\"/></body>"
-    "</worldbody></mujoco>\n";
+    "<joint name=\"ankle_x\" pos=\"0 0 .04\" axis=\"1 0 .5\"/>\n<joint name=\"ankle_z\" axis=\"0 0 1\"/>\n"
+    "<geom type=\"sphere\" size=\"0.1\"/></body></worldbody></mujoco>\n";
 const std::string kMjcfEquality =
     "<mujoco>\n<worldbody>\n<body name=\"b\">\n<joint name=\"j\"/><geom type=\"sphere\" size=\"0.1\"/></body>"
     "</worldbody>\n<equality>\n<joint joint1=\"j\"/>\n</equality></mujoco>\n";
@@ -143,7 +143,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadFile{"offset.xml",
                 kMjcfOffsetHinges.c_str(),
                 {"offset.xml:4: <joint name=\"ankle_y\">",
-                 "hinge \"ankle_y\" (line 4), hinge \"ankle_x\" (line 5)",
+                 "hinge \"ankle_y\" (line 4), hinge \"ankle_x\" (line 5), hinge \"ankle_z\" (line 6)",
                  "not supported together (their anchors differ)"}},
         BadFile{"equality.xml", kMjcfEquality.c_str(), {"equality.xml:6: <joint>: not supported"}},
         BadFile{"massless.xml", kMjcfMassless.c_str(), {"massless.xml:3: <body name=\"b\">: mass 0 kg"}},

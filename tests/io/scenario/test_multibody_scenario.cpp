@@ -158,6 +158,36 @@ axis_a = [0, 0, 1]
              {"[joints[0]] axis_b: given for a prismatic joint; only hinge or universal joints take axis_b"});
 }
 
+TEST(MultibodyScenario, UniversalJointWithOffsetAxes) {
+  // Body a (turned 0.4 rad about z, kTwoBodies) hangs from the world by hinges in series: about space z
+  // through the default point b, then about a's x axis through point a, 0.25 m away along axis_a × axis_b.
+  const std::string bodies = kTwoBodies;
+  const multibody::Scenario sc = parse_multibody_scenario(bodies + R"(
+[[joints]]
+type = "universal"
+body_a = "a"
+point_a = [0, 0, 0.5]
+axis_a = [1, 0, 0]
+axis_b = [0, 0, 1]
+axis_offset = 0.25
+)",
+                                                          "t.toml");
+  ASSERT_EQ(sc.system.joint_count(), 1);
+  const multibody::Joint& j = sc.system.joints()[0];
+  EXPECT_EQ(j.axis_offset, 0.25);
+  // The default point b is point a less h along e_a × e_b (space frame, e_a = a's x axis turned 0.4 rad).
+  const multibody::BodyState& s = sc.initial.bodies[0];
+  const Vec3 e_a = s.R_space_body * Vec3::UnitX();
+  POINSOT_EXPECT_MATRIX_NEAR(
+      j.point_b, Vec3(s.x_space + s.R_space_body * j.point_a - 0.25 * e_a.cross(Vec3::UnitZ())), 1e-15);
+  multibody::check_consistent(sc.system, sc.initial);
+  EXPECT_LT(multibody::constraint_violation(sc.system, sc.initial).joint_gap, 1e-15);
+  EXPECT_LT(multibody::constraint_violation(sc.system, sc.initial).joint_velocity, 1e-14);
+  const std::string a = bodies + "[[joints]]\nbody_a = \"a\"\n";
+  expect_has(multibody_error_of(a + "type = \"hinge\"\naxis_a = [1, 0, 0]\naxis_offset = 0.1\n"),
+             {"[joints[0]] axis_offset: given for a hinge joint; only universal joints take an axis offset"});
+}
+
 TEST(MultibodyScenario, JointSpringsOnHingesAndPrismaticJoints) {
   // Body a is turned 0.4 rad about z at t = 0: the hinge's zero is that relative rotation; the prismatic
   // joint's coordinate is the displacement of point_a from point_b (0 with the default point_b).
