@@ -11,6 +11,8 @@
 
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
+#include "poinsot/inertia/mesh.hpp"
+#include "poinsot/inertia/mesh_io.hpp"
 #include "poinsot/inertia/shapes.hpp"
 #include "poinsot/inertia/tessellation.hpp"
 #include "poinsot/io/robot/model_check.hpp"
@@ -329,8 +331,23 @@ void RobotSystemBuilder::add_body(std::size_t u) {
   sc.body_surfaces.push_back(nullptr);
 }
 
-/// Each body's drawn surface (view.html): the shapes of its link and of the frames merged into it, about
-/// its centre of mass in its frame; meshes are not drawn.
+namespace {
+
+/// A URDF or SDF mesh as drawn: the file's triangles at their scale, in the geometry's frame. MJCF meshes are
+/// not drawn (MuJoCo moves a mesh to its own centre of mass and principal axes). Throws InvalidInput when the
+/// mesh cannot be read (it is then not drawn).
+inertia::TriangleMesh drawn_mesh(const LinkGeometry& g) {
+  inertia::TriangleMesh mesh = inertia::load_mesh(g.mesh_path);
+  for (Vec3& v : mesh.vertices)
+    v = g.mesh_scale.cwiseProduct(v);
+  if (g.mesh_scale.prod() < 0.0) inertia::flip_orientation(mesh);  // a reflection reverses the winding
+  return mesh;
+}
+
+}  // namespace
+
+/// Each body's drawn surface (view.html): the shapes and the URDF and SDF meshes of its link and of the
+/// frames merged into it, about its centre of mass in its frame.
 void RobotSystemBuilder::add_surfaces() {
   std::vector<inertia::TriangleMesh> surfaces(static_cast<std::size_t>(sc.system.body_count()));
   for (std::size_t k = 0; k < place.size(); ++k) {
@@ -338,12 +355,15 @@ void RobotSystemBuilder::add_surfaces() {
     const std::size_t b = static_cast<std::size_t>(place[k].body);
     const Vec3 com = inertia[link_of_body[b]].props.com;
     for (const LinkGeometry& g : model.links[k].geometry) {
-      if (g.shape.kind == "mesh") continue;
+      const bool mesh = g.shape.kind == "mesh";
+      if (mesh && model.format == RobotFormat::mjcf) continue;
       inertia::TriangleMesh part;
       try {
-        part = inertia::tessellate(g.shape, inertia::kDrawnSurfaceSegments);
+        part = mesh ? drawn_mesh(g) : inertia::tessellate(g.shape, inertia::kDrawnSurfaceSegments);
       } catch (const InvalidInput&) {
-        continue;  // a shape too degenerate to draw; its mass is already accounted for or refused
+        // A shape too degenerate to draw, or a mesh that cannot be read; its mass is already accounted for
+        // or refused.
+        continue;
       }
       inertia::TriangleMesh& m = surfaces[b];
       const auto offset = static_cast<std::int32_t>(m.vertices.size());

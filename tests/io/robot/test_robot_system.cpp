@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/inertia/mesh_io.hpp"
 #include "poinsot/io/scenario/multibody_scenario.hpp"
 #include "poinsot/io/scenario/scenario_file.hpp"
 #include "poinsot/multibody/observables.hpp"
@@ -195,6 +196,29 @@ TEST(RobotSystem, UrdfFloatingBaseAndInertiaFromGeometry) {
     rattle.step(end);
   POINSOT_EXPECT_MATRIX_NEAR(multibody::linear_momentum(sc.system, end), p0, 1e-12);
   POINSOT_EXPECT_MATRIX_NEAR(multibody::angular_momentum(sc.system, end), L0, 1e-10);
+}
+
+TEST(RobotSystem, UrdfMeshesAreDrawnAsTheFilesTriangles) {
+  // valid_arm.urdf's hand is a 10 cm cube given as an STL mesh, its centre of mass at its link's origin: its
+  // drawn surface is the mesh's triangles as read, unmoved; an unreadable mesh is not drawn.
+  const std::string arm = std::string(POINSOT_TEST_DATA_DIR) + "/models/valid_arm.urdf";
+  const multibody::Scenario sc = load_robot_scenario(arm);
+  const int hand = sc.system.body_index("hand");
+  ASSERT_GE(hand, 0);
+  const auto& surface = sc.body_surfaces[static_cast<std::size_t>(hand)];
+  ASSERT_NE(surface, nullptr);
+  const inertia::TriangleMesh cube =
+      inertia::load_mesh(std::string(POINSOT_TEST_DATA_DIR) + "/inertia/cube_10cm.stl");
+  ASSERT_EQ(surface->vertices.size(), cube.vertices.size());
+  ASSERT_EQ(surface->triangles.size(), cube.triangles.size());
+  for (std::size_t k = 0; k < cube.vertices.size(); ++k)
+    EXPECT_EQ(surface->vertices[k], cube.vertices[k]);
+  std::ifstream in(arm);
+  std::stringstream text;
+  text << in.rdbuf();
+  const multibody::Scenario missing =
+      robot_scenario(read_robot_model(text.str(), "arm.urdf", "/nonexistent"));
+  EXPECT_EQ(missing.body_surfaces[static_cast<std::size_t>(hand)], nullptr);
 }
 
 TEST(RobotSystem, MjcfJointKinds) {

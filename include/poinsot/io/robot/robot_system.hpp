@@ -12,20 +12,22 @@
 ///    their geoms as MuJoCo does: each geom of uniform density (its `density`, 1000 kg/m³ by default) or of
 ///    its `mass`. SDF links without <inertial> take SDF's default (1 kg, J = I kg·m²). A link without mass
 ///    attached by a fixed joint is a frame of its parent (no body); one that moves is refused.
-///  * Joints, each in its child link's frame: URDF revolute/continuous → hinge, prismatic → prismatic, fixed
-///  →
-///    weld, floating → none (a free body); the root link is fixed to the world (`floating_base` frees it).
-///    MJCF: hinge, slide → prismatic, ball, free → none; a body without joints is welded to its parent; two
-///    perpendicular hinges about one point → universal, three hinges about one point → ball (the composition
-///    MuJoCo integrates); <equality><connect> → ball and <weld> → weld joints closing loops, at the file's
-///    configuration. SDF: revolute/continuous, prismatic, ball, fixed, universal (axis fixed in the parent,
-///    axis2 in the child); a link without a joint is free, parent `world` is the world.
+///  * Joints, each in its child link's frame: URDF revolute/continuous → hinge, prismatic → prismatic,
+///    fixed → weld, floating → none (a free body); the root link is fixed to the world (`floating_base` frees
+///    it). MJCF: hinge, slide → prismatic, ball, free → none; a body without joints is welded to its parent;
+///    two perpendicular hinges → universal (with an axis offset when they turn about different points),
+///    three hinges about one point → ball (the composition MuJoCo integrates); <equality><connect> → ball and
+///    <weld> → weld joints closing loops, at the file's configuration. SDF: revolute/continuous, prismatic,
+///    ball, fixed, universal (axis fixed in the parent, axis2 in the child); a link without a joint is free,
+///    parent `world` is the world.
 ///  * A hinge's or slide's spring and damper → multibody::JointSpring (RobotSystemOptions::joint_springs).
 ///  * Not modelled (contacts, limits, friction, armature, actuators, tendons, transmissions, the springs of
-///    merged MJCF joints): listed one line each in Scenario::not_modelled, which the run report prints.
-/// Scenario::body_surfaces draws each body as its link's shapes (not its meshes).
-/// Bodies carry their link's name and joints their file joint's name (two or three MJCF hinges merged into
-/// one joint: their names joined by '+'), so reactions and Λ are reported per link.
+///    MJCF ball joints and of three hinges whose second axis is not perpendicular to the others): listed one
+///    line each in Scenario::not_modelled, which the run report prints.
+/// Scenario::body_surfaces draws each body as its link's shapes and its URDF and SDF meshes (MJCF meshes,
+/// which MuJoCo re-centres, are not drawn). Bodies carry their link's name and joints their file joint's name
+/// (two or three MJCF hinges merged into one joint: their names joined by '+'), so reactions and Λ are
+/// reported per link.
 
 #include <map>
 #include <optional>
