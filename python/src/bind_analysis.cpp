@@ -64,11 +64,8 @@ struct Trajectory {
   }
 };
 
-}  // namespace
-
-void bind_analysis(py::module_& parent) {
-  auto m = parent.def_submodule("analysis", POINSOT_DOC(file_analysis_multipliers));
-
+/// The orthogonality multiplier Λ of one body and its pieces.
+void bind_body_multipliers(py::module_& m) {
   m.def(
       "angular_acceleration_body",
       [](const RigidBody& body, const State& s, const py::object& torque) {
@@ -136,8 +133,10 @@ void bind_analysis(py::module_& parent) {
       "sorted_eigenvalues",
       [](ArrayLike L) { return from_vec3(analysis::sorted_eigenvalues(to_mat3(L, "lambda_body"))); },
       py::arg("lambda_body"), POINSOT_DOC(analysis_sorted_eigenvalues));
+}
 
-  // Stress.
+/// The constraint stress: ∫σ dv and its principal values.
+void bind_stress(py::module_& m) {
   m.def(
       "stress_integral_space",
       [](const RigidBody& body, const State& s, const py::object& torque) {
@@ -183,8 +182,10 @@ void bind_analysis(py::module_& parent) {
       (std::string(POINSOT_DOC(analysis_constraint_stress)) +
        "\n\nReturns a dict: integral (N·m) and mean (Pa, None without a volume), each as summarize_stress.")
           .c_str());
+}
 
-  // The axisymmetric closed form of the paper.
+/// The axisymmetric closed form of Λ.
+void bind_axisymmetric_lambda(py::module_& m) {
   py::class_<analysis::AxisymmetricInertia>(m, "AxisymmetricInertia",
                                             POINSOT_DOC(analysis_AxisymmetricInertia))
       .def(py::init([](double A, double C, ArrayLike k) {
@@ -248,8 +249,10 @@ void bind_analysis(py::module_& parent) {
       .def(
           "lambda_at", [](const AL& a, double t) { return from_mat3(a.lambda_at(t)); }, py::arg("t"),
           POINSOT_DOC(analysis_AxisymmetricLambda_lambda_at));
+}
 
-  // The properties of Λ along a trajectory.
+/// The properties of Λ along a trajectory.
+void bind_lambda_properties(py::module_& m) {
   m.def(
       "lambda_properties",
       [](const RigidBody& body, ArrayLike t, ArrayLike R, ArrayLike w, const py::object& torque,
@@ -308,6 +311,16 @@ void bind_analysis(py::module_& parent) {
        "text, arrays as lists) and `text`, the report it prints without --json:\n\n" +
        POINSOT_DOC(io_lambda_report_json) + "\n\n" + POINSOT_DOC(file_analysis_lambda_report))
           .c_str());
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& parent) {
+  auto m = parent.def_submodule("analysis", POINSOT_DOC(file_analysis_multipliers));
+  bind_body_multipliers(m);
+  bind_stress(m);
+  bind_axisymmetric_lambda(m);
+  bind_lambda_properties(m);
 }
 
 }  // namespace poinsot::python

@@ -73,7 +73,10 @@ State make_state(double time, const py::object& R_space_body, const py::object& 
   return s;
 }
 
-void bind_dynamics(py::module_& m) {
+namespace {
+
+/// RigidBody: a body's inertia as the dynamics layer takes it.
+void bind_rigid_body(py::module_& m) {
   py::class_<RigidBody>(m, "RigidBody", POINSOT_DOC(file_dynamics_rigid_body))
       .def_static(
           "from_principal_moments",
@@ -120,7 +123,10 @@ void bind_dynamics(py::module_& m) {
                " m";
         return s + ")";
       });
+}
 
+/// State: attitude, angular velocity and time.
+void bind_body_state(py::module_& m) {
   py::class_<State>(m, "State", POINSOT_DOC(file_dynamics_state))
       .def(py::init(&make_state), py::kw_only(), py::arg("time") = 0.0, py::arg("R_space_body") = py::none(),
            py::arg("quaternion") = py::none(), py::arg("omega_body") = py::none(),
@@ -147,7 +153,10 @@ void bind_dynamics(py::module_& m) {
         return "State(time=" + format_number(s.time) + " s, quaternion=" + format_quaternion(s.quaternion()) +
                ", omega_body=" + format_vector(s.omega_body) + " rad/s)";
       });
+}
 
+/// Energy, momentum and the checks of a state.
+void bind_invariants(py::module_& m) {
   m.def("kinetic_energy", &dynamics::kinetic_energy, py::arg("body"), py::arg("state"),
         POINSOT_DOC(dynamics_kinetic_energy));
   m.def(
@@ -174,7 +183,10 @@ void bind_dynamics(py::module_& m) {
       "validate_state",
       [](const State& s, const std::string& what) { dynamics::validate_state(s, what.c_str()); },
       py::arg("state"), py::arg("what") = "state", POINSOT_DOC(dynamics_validate_state));
+}
 
+/// The torque models.
+void bind_torque_models(py::module_& m) {
   py::class_<TorqueModel, std::shared_ptr<TorqueModel>>(m, "TorqueModel", POINSOT_DOC(file_dynamics_torque))
       .def(
           "torque_body",
@@ -217,6 +229,15 @@ void bind_dynamics(py::module_& m) {
           py::arg("body"), py::arg("g_space"), POINSOT_DOC(dynamics_TorqueModel_gravity))
       .def_static("callback", &python_torque, py::arg("f"), py::arg("depends_on_omega") = true,
                   py::arg("description") = "Python callable", POINSOT_DOC(dynamics_TorqueModel_Callback));
+}
+
+}  // namespace
+
+void bind_dynamics(py::module_& m) {
+  bind_rigid_body(m);
+  bind_body_state(m);
+  bind_invariants(m);
+  bind_torque_models(m);
 }
 
 }  // namespace poinsot::python

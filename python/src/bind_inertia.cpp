@@ -74,11 +74,19 @@ void with_mass_or_density(const char* what, const std::optional<double>& mass,
                           (mass ? "both" : "neither"));
 }
 
-}  // namespace
+/// The robot-model check's options from the Python arguments.
+io::ModelCheckOptions check_options(double density_min, double density_max, double ratio_limit,
+                                    double validity_tolerance) {
+  io::ModelCheckOptions o;
+  o.density_min = density_min;
+  o.density_max = density_max;
+  o.ratio_limit = ratio_limit;
+  o.validity_tolerance = validity_tolerance;
+  return o;
+}
 
-void bind_inertia(py::module_& parent) {
-  auto m = parent.def_submodule("inertia", POINSOT_DOC(file_inertia_mass_properties));
-
+/// MassProperties, and what combines, moves and re-expresses mass properties.
+void bind_mass_properties(py::module_& m) {
   py::class_<MassProperties>(m, "MassProperties", POINSOT_DOC(inertia_MassProperties))
       .def(py::init([](double mass, ArrayLike com, ArrayLike J) {
              MassProperties p;
@@ -179,8 +187,10 @@ void bind_inertia(py::module_& parent) {
         return from_mat3(inertia::reexpress(to_mat3(T, "tensor_F"), to_mat3(R, "R_B_F")));
       },
       py::arg("tensor_F"), py::arg("R_B_F"), POINSOT_DOC(inertia_reexpress));
+}
 
-  // Principal axes and validity.
+/// Principal axes, symmetry class, validity checks and the explicit repair.
+void bind_principal_axes_and_validity(py::module_& m) {
   m.def(
       "principal_axes",
       [](ArrayLike J, double rel_tol) {
@@ -239,8 +249,10 @@ void bind_inertia(py::module_& parent) {
        "(kg·m²).\n\n" +
        POINSOT_DOC(file_inertia_validity))
           .c_str());
+}
 
-  // Shapes: each from a mass (kg); poinsot.inertia.shape() also from a density.
+/// The closed-form shapes, each from a mass (kg); shape() by name, also from a density.
+void bind_shapes(py::module_& m) {
   m.def("point_mass", &inertia::point_mass, py::arg("mass"));
   m.def("rod", &inertia::rod, py::arg("mass"), py::arg("length"));
   m.def("plate", &inertia::plate, py::arg("mass"), py::arg("size_x"), py::arg("size_y"));
@@ -296,8 +308,10 @@ void bind_inertia(py::module_& parent) {
       (std::string("A shape by name with a mass (kg) or a density, sizes in m.\n\n") +
        POINSOT_DOC(inertia_ShapeSpec) + "\n\n" + POINSOT_DOC(file_inertia_shapes))
           .c_str());
+}
 
-  // Meshes.
+/// Triangle meshes: construction, files, mass properties.
+void bind_meshes(py::module_& m) {
   py::class_<TriangleMesh>(m, "TriangleMesh", POINSOT_DOC(inertia_TriangleMesh))
       .def(py::init([](ArrayLike v, ArrayLike t) { return make_mesh(v.obj, t.obj); }), py::arg("vertices"),
            py::arg("triangles"), "A mesh from vertices (n, 3) in m and triangles (m, 3) of vertex indices.")
@@ -326,7 +340,10 @@ void bind_inertia(py::module_& parent) {
         return "TriangleMesh(vertices=" + std::to_string(mesh.vertices.size()) +
                ", triangles=" + std::to_string(mesh.triangles.size()) + ")";
       });
-  // Composite bodies from a body file (the format of `poinsot inertia body FILE.toml`).
+}
+
+/// Composite bodies from a body file (the format of `poinsot inertia body FILE.toml`).
+void bind_body_files(py::module_& m) {
   const auto body_result = [](const inertia::BodyFileResult& r) {
     py::dict d;
     d["body"] = r.body;
@@ -384,22 +401,15 @@ void bind_inertia(py::module_& parent) {
            "(kg/m²).\n\n") +
        POINSOT_DOC(inertia_mesh_mass_properties) + "\n\n" + POINSOT_DOC(file_inertia_mesh))
           .c_str());
+}
 
-  // Robot models (URDF, MJCF, SDF): the report is io::model_check_json, parsed, so that the command line and
-  // Python share one serialisation.
-  const auto check_options = [](double density_min, double density_max, double ratio_limit,
-                                double validity_tolerance) {
-    io::ModelCheckOptions o;
-    o.density_min = density_min;
-    o.density_max = density_max;
-    o.ratio_limit = ratio_limit;
-    o.validity_tolerance = validity_tolerance;
-    return o;
-  };
+/// Robot models (URDF, MJCF, SDF), checked and repaired: the report is io::model_check_json, parsed, so
+/// that the command line and Python share one serialisation.
+void bind_robot_model_checks(py::module_& m) {
   m.def(
       "check_model",
-      [check_options](const std::string& path, double density_min, double density_max, double ratio_limit,
-                      double validity_tolerance) {
+      [](const std::string& path, double density_min, double density_max, double ratio_limit,
+         double validity_tolerance) {
         const auto model = io::load_robot_model(path);
         const auto check =
             io::check_model(model, check_options(density_min, density_max, ratio_limit, validity_tolerance));
@@ -412,8 +422,11 @@ void bind_inertia(py::module_& parent) {
        "model_check_json).\n\n" +
        POINSOT_DOC(file_io_robot_model_check))
           .c_str());
-  // The report of `poinsot inertia --json` and the inertial elements of `--format`, from
-  // io/robot/inertia_report.hpp.
+}
+
+/// The report of `poinsot inertia --json` and the inertial elements of `--format`, from
+/// io/robot/inertia_report.hpp.
+void bind_inertia_report(py::module_& m) {
   m.def(
       "report",
       [](const MassProperties& props, const py::object& about, double symmetry_tolerance) {
@@ -447,7 +460,7 @@ void bind_inertia(py::module_& parent) {
           .c_str());
   m.def(
       "repair_model",
-      [check_options](const std::string& path, const std::string& out, bool from_geometry) {
+      [](const std::string& path, const std::string& out, bool from_geometry) {
         const auto model = io::load_robot_model(path);
         const auto check =
             io::check_model(model, check_options(50.0, 25000.0, 10.0, inertia::kDefaultValidityTolerance));
@@ -463,6 +476,19 @@ void bind_inertia(py::module_& parent) {
        "(link, inertia_before, inertia_after, distance) and skipped.\n\n" +
        POINSOT_DOC(file_io_robot_model_repair))
           .c_str());
+}
+
+}  // namespace
+
+void bind_inertia(py::module_& parent) {
+  auto m = parent.def_submodule("inertia", POINSOT_DOC(file_inertia_mass_properties));
+  bind_mass_properties(m);
+  bind_principal_axes_and_validity(m);
+  bind_shapes(m);
+  bind_meshes(m);
+  bind_body_files(m);
+  bind_robot_model_checks(m);
+  bind_inertia_report(m);
 }
 
 }  // namespace poinsot::python

@@ -300,7 +300,10 @@ void bind_multibody_methods(py::module_& m) {
   m.attr("DEFAULT_METHOD") = std::string(mb::multibody_method_name(mb::kDefaultMultibodyMethod));
 }
 
-void bind_multibody_scenario(py::module_& m) {
+namespace {
+
+/// Scenario, and the scenario and robot files that give one.
+void bind_scenario_files(py::module_& m) {
   py::class_<mb::Scenario>(m, "Scenario", POINSOT_DOC(file_multibody_scenario))
       .def_readwrite("system", &mb::Scenario::system, "The model.")
       .def_readwrite("initial", &mb::Scenario::initial, "The initial state (velocities already projected).")
@@ -375,7 +378,10 @@ void bind_multibody_scenario(py::module_& m) {
           .c_str());
   m.def("project_velocities", &mb::project_velocities, py::arg("system"), py::arg("state"),
         POINSOT_DOC(multibody_project_velocities));
+}
 
+/// RunSummary and run(): a multibody run with its files.
+void bind_multibody_run(py::module_& m) {
   py::class_<mb::RunSummary>(m, "RunSummary", POINSOT_DOC(multibody_RunSummary))
       .def_readonly("steps", &mb::RunSummary::steps)
       .def_readonly("energy_initial", &mb::RunSummary::energy_initial,
@@ -421,6 +427,13 @@ void bind_multibody_scenario(py::module_& m) {
       },
       py::arg("scenario"), py::arg("trajectory_csv") = "", py::arg("report") = py::none(),
       py::arg("diagnostics_csv") = "", py::arg("out_dir") = "", POINSOT_DOC(io_run_multibody_scenario));
+}
+
+}  // namespace
+
+void bind_multibody_scenario(py::module_& m) {
+  bind_scenario_files(m);
+  bind_multibody_run(m);
 }
 
 }  // namespace

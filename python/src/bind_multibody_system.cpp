@@ -28,11 +28,9 @@ int body_ref(const mb::System& s, const py::handle& body, const char* what) {
                        std::string(py::str(py::type::of(body).attr("__name__"))));
 }
 
-}  // namespace
-
-void bind_multibody_system(py::module_& m) {
-  py::class_<mb::System>(m, "System", POINSOT_DOC(multibody_System))
-      .def(py::init<>(), "An empty system: no bodies, no joints, no gravity.")
+/// The System class and its bodies: construction, robot files, add_body*.
+void bind_system_bodies(py::class_<mb::System>& system) {
+  system.def(py::init<>(), "An empty system: no bodies, no joints, no gravity.")
       .def_static(
           "from_file", [](const std::string& path) { return io::load_robot_scenario(path).system; },
           py::arg("path"),
@@ -64,7 +62,12 @@ void bind_multibody_system(py::module_& m) {
           "poinsot.inertia): its mass (kg) and J about its centre of mass (kg·m²), in the axes of the frame "
           "F they were given in. The body's frame has F's axes and its origin at the centre of mass: its "
           "x_space is the centre of mass, and a point p given in F is p − center_of_mass in the body frame. "
-          "Returns the body's index.")
+          "Returns the body's index.");
+}
+
+/// System: the joints (ball, hinge, weld, universal, prismatic).
+void bind_system_joints(py::class_<mb::System>& system) {
+  system
       .def(
           "add_ball",
           [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, const py::object& b,
@@ -114,7 +117,12 @@ void bind_multibody_system(py::module_& m) {
                                    to_vec3(pb, "point_b"), to_mat3(R_b_a, "R_b_a"));
           },
           py::arg("name"), py::arg("body_a"), py::arg("point_a"), py::arg("axis_a"), py::arg("body_b"),
-          py::arg("point_b"), py::arg("R_b_a"), POINSOT_DOC(multibody_System_add_prismatic))
+          py::arg("point_b"), py::arg("R_b_a"), POINSOT_DOC(multibody_System_add_prismatic));
+}
+
+/// System: the loads (springs between points, joint springs, constant forces and torques).
+void bind_system_loads(py::class_<mb::System>& system) {
+  system
       .def(
           "add_spring",
           [](mb::System& s, const std::string& name, const py::object& a, ArrayLike pa, const py::object& b,
@@ -197,7 +205,12 @@ void bind_multibody_system(py::module_& m) {
             s.add_torque(c);
           },
           py::arg("body"), py::arg("torque"), py::kw_only(), py::arg("in_body_frame") = false,
-          POINSOT_DOC(multibody_ConstantTorque))
+          POINSOT_DOC(multibody_ConstantTorque));
+}
+
+/// System: gravity, names, masses and tensors, indices, rows and length scale.
+void bind_system_queries(py::class_<mb::System>& system) {
+  system
       .def_property(
           "gravity", [](const mb::System& s) { return from_vec3(s.gravity()); },
           [](mb::System& s, ArrayLike g) { s.set_gravity(to_vec3(g, "gravity_space")); },
@@ -257,6 +270,16 @@ void bind_multibody_system(py::module_& m) {
                ", joints=" + std::to_string(s.joint_count()) + ", gravity=" + format_vector(s.gravity()) +
                " m/s²)";
       });
+}
+
+}  // namespace
+
+void bind_multibody_system(py::module_& m) {
+  py::class_<mb::System> system(m, "System", POINSOT_DOC(multibody_System));
+  bind_system_bodies(system);
+  bind_system_joints(system);
+  bind_system_loads(system);
+  bind_system_queries(system);
 }
 
 }  // namespace poinsot::python

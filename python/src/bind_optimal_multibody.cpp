@@ -207,10 +207,8 @@ py::dict run_dict(const io::MultibodyOptimalRun& run) {
   return d;
 }
 
-}  // namespace
-
-void bind_optimal_multibody(py::module_& parent) {
-  py::module_ m = parent.attr("optimal").cast<py::module_>();
+/// MultibodyProblem: a multibody optimal-control problem, from a file or built in Python.
+void bind_multibody_problem(py::module_& m) {
   py::class_<io::MultibodyOptimalScenario>(m, "MultibodyProblem",
                                            POINSOT_DOC(file_io_scenario_multibody_optimal_scenario))
       .def(py::init(&make_scenario), py::kw_only(), py::arg("system"), py::arg("initial_state"),
@@ -319,7 +317,10 @@ void bind_optimal_multibody(py::module_& parent) {
                ", final_time=" + std::to_string(s.problem.final_time) +
                " s, coordinates=" + std::string(io::coordinates_name(s.options.coordinates)) + ")";
       });
+}
 
+/// Loading and solving multibody problems.
+void bind_multibody_solvers(py::module_& m) {
   m.def("load_multibody_scenario", &io::load_multibody_optimal_scenario, py::arg("path"),
         POINSOT_DOC(io_load_multibody_optimal_scenario));
   m.def(
@@ -344,6 +345,14 @@ void bind_optimal_multibody(py::module_& parent) {
       (std::string(POINSOT_DOC(io_run_multibody_optimal)) + "\n\n" +
        POINSOT_DOC(file_io_run_multibody_optimal_run))
           .c_str());
+}
+
+}  // namespace
+
+void bind_optimal_multibody(py::module_& parent) {
+  py::module_ m = parent.attr("optimal").cast<py::module_>();
+  bind_multibody_problem(m);
+  bind_multibody_solvers(m);
 }
 
 }  // namespace poinsot::python

@@ -123,7 +123,8 @@ py::dict run_simulation(const RigidBody& body, const State& initial, const py::o
 
 namespace {
 
-void bind_exact(py::module_& m) {
+/// The torque-free body in closed form: its theory (FreeBodyTheory) and its exact motion (ExactFreeBody).
+void bind_free_body_closed_forms(py::module_& m) {
   using dynamics::ExactFreeBody;
   using dynamics::FreeBodyTheory;
   py::class_<FreeBodyTheory>(m, "FreeBodyTheory", POINSOT_DOC(file_dynamics_free_body_theory))
@@ -216,8 +217,10 @@ void bind_exact(py::module_& m) {
       },
       py::arg("A"), py::arg("C"), py::arg("axis_body"), py::arg("initial"), py::arg("t"),
       POINSOT_DOC(dynamics_axisymmetric_free_motion));
+}
 
-  // The heavy symmetric top (top_theory.hpp).
+/// The heavy symmetric top (top_theory.hpp).
+void bind_heavy_top(py::module_& m) {
   using dynamics::HeavyTop;
   py::class_<HeavyTop>(m, "HeavyTop", POINSOT_DOC(dynamics_HeavyTop))
       .def(py::init([](double I1, double I3, double mass, double length, double gravity) {
@@ -302,7 +305,10 @@ void bind_exact(py::module_& m) {
       (std::string(POINSOT_DOC(dynamics_TopInitialConditions)) +
        "\n\nReturns a dict: theta (rad), theta_dot, phi_dot, omega3 (rad/s).")
           .c_str());
+}
 
+/// The integrators as Python objects (Integrator).
+void bind_integrator_class(py::module_& m) {
   using dynamics::Integrator;
   py::class_<Integrator>(m, "Integrator", POINSOT_DOC(file_dynamics_integrator))
       .def_property_readonly(
@@ -372,6 +378,12 @@ void bind_exact(py::module_& m) {
       py::arg("newton_tolerance") = dynamics::IntegratorOptions{}.newton_tolerance,
       py::arg("newton_max_iterations") = dynamics::IntegratorOptions{}.newton_max_iterations,
       py::keep_alive<0, 2>(), POINSOT_DOC(dynamics_make_integrator));
+}
+
+void bind_exact(py::module_& m) {
+  bind_free_body_closed_forms(m);
+  bind_heavy_top(m);
+  bind_integrator_class(m);
 }
 
 /// poinsot.MethodInfo and poinsot.METHODS (name → entry, the registry's order), DEFAULT_METHOD and
