@@ -215,7 +215,7 @@ void read_mjcf(const XmlSource& xml, const std::string& base_dir, RobotModel& mo
   for (const XMLElement* e : bodies) {
     RobotLink link;
     const char* name = e->Attribute("name");
-    link.name = name != nullptr ? name : fmt::format("(body at line {})", e->GetLineNum());
+    link.name = name != nullptr ? name : fmt::format("(body at {})", xml.line_label(*e));
     link.line = e->GetLineNum();
     if (const XMLElement* inertial = e->FirstChildElement("inertial"))
       read_mjcf_inertial(xml, *inertial, link);

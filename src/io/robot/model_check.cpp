@@ -77,7 +77,8 @@ ModelCheck check_model(const RobotModel& model, const ModelCheckOptions& options
   for (const RobotLink& link : model.links) {
     LinkCheck c;
     c.name = link.name;
-    c.line = link.line;
+    c.line = model.lines.line_in_file(link.line);
+    c.file = model.lines.file(link.line);
     c.has_inertial = link.has_inertial;
     c.notes = link.notes;
     if (!link.has_inertial) {

@@ -34,6 +34,7 @@ std::string model_check_json(const ModelCheck& check) {
     json l;
     l["name"] = c.name;
     l["line"] = c.line;
+    if (!c.file.empty()) l["file"] = c.file;
     l["has_inertial"] = c.has_inertial;
     if (c.has_inertial) {
       l["mass"] = c.mass;
@@ -73,7 +74,7 @@ std::string model_check_text(const ModelCheck& check) {
   std::string out = fmt::format("{} ({}): {} links, {} invalid, {} warnings\n", check.source,
                                 to_string(check.format), check.links.size(), check.invalid, check.warnings);
   for (const LinkCheck& c : check.links) {
-    out += fmt::format("\nlink {} (line {})\n", c.name, c.line);
+    out += fmt::format("\nlink {} (line {}{})\n", c.name, c.line, c.file.empty() ? "" : " of " + c.file);
     if (c.has_inertial) {
       out += fmt::format("  mass:              {} kg\n", format_number(c.mass));
       out += fmt::format("  centre of mass:    {} m (link frame)\n", format_vector(c.com_link));

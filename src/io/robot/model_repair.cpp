@@ -70,9 +70,9 @@ ModelRepair repair_model(const RobotModel& model, const ModelCheck& check, Repai
     }
     if (link.value_spans.empty()) {
       throw InvalidInput(
-          fmt::format("{}:{}: link {}: the inertia values are not plain text in the file; cannot "
+          fmt::format("{}: link {}: the inertia values are not plain text in the file; cannot "
                       "edit them in place",
-                      model.source, link.line, link.name));
+                      model.lines.location(link.line), link.name));
     }
     auto e = edits_for(link, J_file);
     if (!e) {

@@ -92,11 +92,8 @@ struct MjcfReader {
     pose.R = mjcf_orientation(xml, body, compiler);
     tree.root_pose.push_back(pose);
     if (const char* name = body.Attribute("name")) body_index.emplace(name, index);
-    if (body.FirstChildElement("composite") != nullptr || body.FirstChildElement("include") != nullptr) {
-      const XMLElement* c = body.FirstChildElement("composite");
-      if (c == nullptr) c = body.FirstChildElement("include");
+    if (const XMLElement* c = body.FirstChildElement("composite"))
       throw InvalidInput(fmt::format("{}: not supported; expected bodies, joints and geoms", xml.where(*c)));
-    }
 
     RobotJointSpec spec;
     spec.child = index;
@@ -176,7 +173,7 @@ struct MjcfReader {
         if (const char* active = e->Attribute("active");
             active != nullptr && std::string_view(active) == "false") {
           tree.not_modelled.push_back(
-              fmt::format("<{}> line {}: inactive (active=\"false\"), left out", kind, e->GetLineNum()));
+              fmt::format("<{}> {}: inactive (active=\"false\"), left out", kind, xml.line_label(*e)));
           continue;
         }
         RobotLoopSpec loop;
@@ -223,14 +220,10 @@ RobotTree read_mjcf_tree(const XmlSource& xml, const RobotModel& model) {
     for (const XMLElement* c = w->FirstChildElement(); c != nullptr; c = c->NextSiblingElement()) {
       const std::string_view n = c->Name();
       if (n == "body") r.read_body(*c, -1);
-      if (n == "composite" || n == "include" || n == "flexcomp")
+      if (n == "composite" || n == "flexcomp")
         throw InvalidInput(
             fmt::format("{}: not supported; expected bodies, joints and geoms", xml.where(*c)));
     }
-  }
-  if (xml.root()->FirstChildElement("include") != nullptr) {
-    throw InvalidInput(fmt::format("{}: not supported; expected the whole model in one file",
-                                   xml.where(*xml.root()->FirstChildElement("include"))));
   }
   if (r.body_elements.size() != model.links.size())
     throw InvalidInput(fmt::format("{}: the bodies do not match the model's links", xml.where(*xml.root())));
@@ -250,7 +243,7 @@ RobotTree read_mjcf_tree(const XmlSource& xml, const RobotModel& model) {
   for (const char* other : {"actuator", "tendon", "contact"}) {
     if (const XMLElement* t = xml.root()->FirstChildElement(other);
         t != nullptr && t->FirstChildElement() != nullptr)
-      r.tree.not_modelled.push_back(fmt::format("<{}> line {}: {}", other, t->GetLineNum(),
+      r.tree.not_modelled.push_back(fmt::format("<{}> {}: {}", other, xml.line_label(*t),
                                                 std::string_view(other) == "actuator" ? "actuators"
                                                 : std::string_view(other) == "tendon"
                                                     ? "tendons"

@@ -1,10 +1,12 @@
 #include "poinsot/io/robot/robot_model.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <string_view>
 
 #include <fmt/format.h>
 
+#include "mjcf_include.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/core/text_file.hpp"
@@ -27,10 +29,41 @@ std::string to_string(RobotFormat f) {
   return "urdf";
 }
 
+std::string SourceLines::file(int line) const {
+  if (origin.empty() || line < 1 || line > static_cast<int>(origin.size())) return "";
+  const int f = origin[static_cast<std::size_t>(line - 1)].first;
+  return f == 0 ? "" : files[static_cast<std::size_t>(f)];
+}
+
+int SourceLines::line_in_file(int line) const {
+  if (origin.empty() || line < 1 || line > static_cast<int>(origin.size())) return line;
+  return origin[static_cast<std::size_t>(line - 1)].second;
+}
+
+std::string SourceLines::location(int line) const {
+  const std::string f = file(line);
+  return fmt::format("{}:{}", f.empty() ? (files.empty() ? "" : files[0]) : f, line_in_file(line));
+}
+
+std::string SourceLines::label(int line) const {
+  const std::string f = file(line);
+  return f.empty() ? fmt::format("line {}", line_in_file(line))
+                   : fmt::format("line {} of {}", line_in_file(line), f);
+}
+
 RobotModel read_robot_model(std::string text, const std::string& source, const std::string& base_dir) {
   RobotModel model;
   model.source = source;
-  const detail::XmlSource xml(std::move(text), source);
+  model.lines.files = {source};
+  auto parsed = std::make_unique<const detail::XmlSource>(std::move(text), model.lines);
+  if (std::string_view(parsed->root()->Name()) == "mujoco" &&
+      parsed->text().find("<include") != std::string::npos) {
+    detail::ExpandedText e =
+        detail::expand_mjcf_includes(parsed->text(), source, base_dir, kDefaultMaxModelBytes);
+    model.lines = e.lines;
+    parsed = std::make_unique<const detail::XmlSource>(std::move(e.text), std::move(e.lines));
+  }
+  const detail::XmlSource& xml = *parsed;
   const std::string_view root = xml.root()->Name();
   if (root == "robot") {
     model.format = RobotFormat::urdf;

@@ -52,10 +52,10 @@ LinkInertia link_inertia(const RobotModel& model, const RobotTree& tree, std::si
     for (const LinkGeometry& g : link.geometry) {
       if (g.shape.kind == "mesh") {
         throw InvalidInput(
-            fmt::format("{}:{}: <body name=\"{}\">: inertia from a mesh geom: MuJoCo re-centres meshes on "
+            fmt::format("{}: <body name=\"{}\">: inertia from a mesh geom: MuJoCo re-centres meshes on "
                         "their centre of "
                         "mass, which is not reproduced; expected an <inertial> for this body",
-                        model.source, link.line, link.name));
+                        model.lines.location(link.line), link.name));
       }
       const double mass = g.mass ? *g.mass : g.density * inertia::shape_measure(g.shape);
       if (!(mass > 0.0)) continue;
@@ -327,7 +327,9 @@ void RobotSystemBuilder::add_body(std::size_t u) {
   s.v_space = twist[u].at(s.x_space);
   s.omega_body = pose[u].R.transpose() * twist[u].omega;
   sc.initial.bodies.push_back(s);
-  sc.body_descriptions.push_back(fmt::format("line {} of the file, inertia {}", link.line, li.how));
+  const std::string at = model.lines.file(link.line).empty() ? model.lines.label(link.line) + " of the file"
+                                                             : model.lines.label(link.line);
+  sc.body_descriptions.push_back(fmt::format("{}, inertia {}", at, li.how));
   sc.body_surfaces.push_back(nullptr);
 }
 
@@ -384,7 +386,7 @@ void RobotSystemBuilder::add_surfaces() {
 namespace {
 
 detail::RobotTree read_tree(const RobotModel& model) {
-  const detail::XmlSource xml(model.text, model.source);
+  const detail::XmlSource xml(model.text, model.lines);
   switch (model.format) {
     case RobotFormat::urdf:
       return detail::read_urdf_tree(xml, model);

@@ -38,9 +38,9 @@ struct LinkInertia {
   std::string how;
 };
 
-/// "SOURCE:LINE: ELEMENT", the place of an element in messages.
-inline std::string line_of(const std::string& source, int line, const std::string& element) {
-  return fmt::format("{}:{}: {}", source, line, element);
+/// "FILE:LINE: ELEMENT", the place of an element in messages (its own file's, for an MJCF <include>).
+inline std::string line_of(const SourceLines& lines, int line, const std::string& element) {
+  return fmt::format("{}: {}", lines.location(line), element);
 }
 
 /// Runs f(), prefixing the message of an InvalidInput it throws with `where`.
@@ -78,10 +78,10 @@ struct RobotSystemBuilder {
     return j < 0 ? nullptr : &tree.joints[static_cast<std::size_t>(j)];
   }
 
-  std::string where(const RobotJointSpec& j) const { return line_of(model.source, j.line, j.element); }
+  std::string where(const RobotJointSpec& j) const { return line_of(model.lines, j.line, j.element); }
 
   std::string where_link(std::size_t k) const {
-    return line_of(model.source, model.links[k].line,
+    return line_of(model.lines, model.links[k].line,
                    fmt::format("<{} name=\"{}\">", model.format == RobotFormat::mjcf ? "body" : "link",
                                model.links[k].name));
   }

@@ -159,11 +159,11 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
   }
   std::string list;
   for (const RobotDof& d : dofs)
-    list += fmt::format("{}{} \"{}\" (line {})", list.empty() ? "" : ", ",
+    list += fmt::format("{}{} \"{}\" ({})", list.empty() ? "" : ", ",
                         d.kind == RobotDof::Kind::hinge   ? "hinge"
                         : d.kind == RobotDof::Kind::slide ? "slide"
                                                           : "ball",
-                        d.name, d.line);
+                        d.name, model.lines.label(d.line));
   throw InvalidInput(fmt::format(
       "{}: the joints {} of one body are not supported together{}; expected one hinge, slide or ball, two "
       "perpendicular hinges (a universal joint, its axes meeting or not) or three hinges about one point (a "
@@ -183,9 +183,9 @@ void RobotSystemBuilder::add_loops() {
     if (b1 == kWorld) std::swap(b1, b2);
     if (b1 == kWorld || b1 == b2) {
       throw InvalidInput(
-          fmt::format("{}:{}: {}: both sides are fixed to the same body; expected two bodies "
-                      "that move relative to each other",
-                      model.source, loop.line, loop.element));
+          fmt::format("{}: both sides are fixed to the same body; expected two bodies that move relative "
+                      "to each other",
+                      line_of(model.lines, loop.line, loop.element)));
     }
     const Vec3 pa = frame0(b1).inverse() * anchor_space - com(b1);
     const Vec3 pb = frame0(b2).inverse() * anchor_space - com(b2);
@@ -197,7 +197,7 @@ void RobotSystemBuilder::add_loops() {
         sc.system.add_ball(loop.name, b1, pa, b2, pb);
       }
     } catch (const InvalidInput& e) {
-      throw InvalidInput(fmt::format("{}:{}: {}: {}", model.source, loop.line, loop.element, e.what()));
+      throw InvalidInput(fmt::format("{}: {}", line_of(model.lines, loop.line, loop.element), e.what()));
     }
   }
   if (!tree.loops.empty()) {

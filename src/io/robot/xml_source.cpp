@@ -12,6 +12,35 @@
 #include "poinsot/core/error.hpp"
 
 namespace poinsot::io::detail {
+
+std::size_t skip_non_element(std::string_view text, std::size_t i) {
+  const auto past = [&](std::size_t from, std::string_view close) {
+    const std::size_t k = text.find(close, from);
+    return k == std::string_view::npos ? text.size() : k + close.size();
+  };
+  const std::string_view rest = text.substr(i);
+  if (rest.starts_with("<!--")) return past(i + 4, "-->");
+  if (rest.starts_with("<![CDATA[")) return past(i + 9, "]]>");
+  if (rest.starts_with("<?")) return past(i + 2, "?>");
+  if (rest.starts_with("<!") || rest.starts_with("</")) return past(i, ">");
+  return i;
+}
+
+std::size_t start_tag_end(std::string_view text, std::size_t i) {
+  char quote = 0;
+  for (++i; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quote != 0) {
+      if (c == quote) quote = 0;
+    } else if (c == '"' || c == '\'') {
+      quote = c;
+    } else if (c == '>') {
+      return i + 1;
+    }
+  }
+  return text.size();
+}
+
 namespace {
 
 bool is_space(char c) {
@@ -23,43 +52,13 @@ bool is_space(char c) {
 std::vector<std::size_t> start_tags(std::string_view text) {
   std::vector<std::size_t> starts;
   std::size_t i = 0;
-  const auto skip_past = [&](std::string_view close) {
-    const std::size_t k = text.find(close, i);
-    i = k == std::string_view::npos ? text.size() : k + close.size();
-  };
-  while (i < text.size()) {
-    if (text[i] != '<') {
-      ++i;
+  while ((i = text.find('<', i)) != std::string_view::npos) {
+    if (const std::size_t after = skip_non_element(text, i); after != i) {
+      i = after;
       continue;
     }
-    const std::string_view rest = text.substr(i);
-    if (rest.starts_with("<!--")) {
-      i += 4;
-      skip_past("-->");
-    } else if (rest.starts_with("<![CDATA[")) {
-      i += 9;
-      skip_past("]]>");
-    } else if (rest.starts_with("<?")) {
-      i += 2;
-      skip_past("?>");
-    } else if (rest.starts_with("<!") || rest.starts_with("</")) {
-      skip_past(">");
-    } else {
-      starts.push_back(i);
-      // The tag ends at the first '>' outside quotes.
-      char quote = 0;
-      for (++i; i < text.size(); ++i) {
-        const char c = text[i];
-        if (quote != 0) {
-          if (c == quote) quote = 0;
-        } else if (c == '"' || c == '\'') {
-          quote = c;
-        } else if (c == '>') {
-          ++i;
-          break;
-        }
-      }
-    }
+    starts.push_back(i);
+    i = start_tag_end(text, i);
   }
   return starts;
 }
@@ -110,14 +109,18 @@ std::optional<std::vector<double>> parse_numbers(std::string_view text) {
 }
 
 XmlSource::XmlSource(std::string text, std::string source)
-    : text_(std::move(text)), source_(std::move(source)) {
+    : XmlSource(std::move(text), SourceLines{{std::move(source)}, {}}) {}
+
+XmlSource::XmlSource(std::string text, SourceLines lines) : text_(std::move(text)), lines_(std::move(lines)) {
+  const std::string& source = lines_.files.at(0);
   if (doc_.Parse(text_.data(), text_.size()) != tinyxml2::XML_SUCCESS) {
     const char* reason = doc_.ErrorStr();
-    throw InvalidInput(fmt::format("{}:{}: XML error: {}; expected a well-formed XML document", source_,
-                                   doc_.ErrorLineNum(), one_line(reason != nullptr ? reason : "unknown")));
+    throw InvalidInput(fmt::format("{}: XML error: {}; expected a well-formed XML document",
+                                   lines_.location(doc_.ErrorLineNum()),
+                                   one_line(reason != nullptr ? reason : "unknown")));
   }
   if (doc_.RootElement() == nullptr)
-    throw InvalidInput(fmt::format("{}: no XML element; expected a robot model", source_));
+    throw InvalidInput(fmt::format("{}: no XML element; expected a robot model", source));
   // Every top-level element (XML allows one, tinyxml2 accepts several).
   std::vector<const tinyxml2::XMLElement*> all;
   for (const auto* top = doc_.FirstChildElement(); top != nullptr; top = top->NextSiblingElement())
@@ -125,21 +128,21 @@ XmlSource::XmlSource(std::string text, std::string source)
   const std::vector<std::size_t> starts = start_tags(text_);
   if (starts.size() != all.size()) {
     throw InvalidInput(
-        fmt::format("{}: cannot locate the XML elements in the text ({} start tags, {} elements)", source_,
+        fmt::format("{}: cannot locate the XML elements in the text ({} start tags, {} elements)", source,
                     starts.size(), all.size()));
   }
   for (std::size_t k = 0; k < all.size(); ++k) {
     const std::string_view name = all[k]->Name();
     if (text_.compare(starts[k] + 1, name.size(), name) != 0) {
-      throw InvalidInput(fmt::format("{}:{}: cannot locate the XML element <{}> in the text", source_,
-                                     all[k]->GetLineNum(), name));
+      throw InvalidInput(fmt::format("{}: cannot locate the XML element <{}> in the text",
+                                     lines_.location(all[k]->GetLineNum()), name));
     }
     start_.emplace(all[k], starts[k]);
   }
 }
 
 std::string XmlSource::where(const tinyxml2::XMLElement& e) const {
-  return fmt::format("{}:{}: <{}>", source_, e.GetLineNum(), e.Name());
+  return fmt::format("{}: <{}>", lines_.location(e.GetLineNum()), e.Name());
 }
 
 std::size_t XmlSource::start_of(const tinyxml2::XMLElement& e) const {

@@ -19,6 +19,7 @@
 #include <tinyxml2.h>
 
 #include "poinsot/core/types.hpp"
+#include "poinsot/io/robot/robot_model.hpp"
 
 namespace poinsot::io::detail {
 
@@ -33,15 +34,21 @@ class XmlSource {
   /// Parses `text` (named `source` in messages). Throws InvalidInput `SOURCE:LINE: XML error: ...` for
   /// malformed XML (tinyxml2's reason) and when the element offsets cannot be matched.
   XmlSource(std::string text, std::string source);
+  /// The same for a text whose lines come from the files of `lines` (an MJCF text with its <include>
+  /// elements replaced): messages name each element's own file and line.
+  XmlSource(std::string text, SourceLines lines);
   XmlSource(const XmlSource&) = delete;
   XmlSource& operator=(const XmlSource&) = delete;
 
   const std::string& text() const { return text_; }
-  const std::string& source() const { return source_; }
+  const std::string& source() const { return lines_.files[0]; }
+  const SourceLines& lines() const { return lines_; }
   const tinyxml2::XMLElement* root() const { return doc_.RootElement(); }
 
-  /// "SOURCE:LINE: <name>" for messages.
+  /// "SOURCE:LINE: <name>" for messages (the element's own file and line).
   std::string where(const tinyxml2::XMLElement& e) const;
+  /// "line N" for an element of the model's own file, "line N of FILE" for one of an included file.
+  std::string line_label(const tinyxml2::XMLElement& e) const { return lines_.label(e.GetLineNum()); }
 
   /// The value of attribute `name` of `e` (between its quotes), or nothing when `e` has no such attribute.
   std::optional<TextSpan> attribute_span(const tinyxml2::XMLElement& e, std::string_view name) const;
@@ -60,10 +67,17 @@ class XmlSource {
  private:
   std::size_t start_of(const tinyxml2::XMLElement& e) const;
   std::string text_;
-  std::string source_;
+  SourceLines lines_;
   tinyxml2::XMLDocument doc_;
   std::unordered_map<const tinyxml2::XMLElement*, std::size_t> start_;  // offset of the element's '<'
 };
+
+/// The position after the comment, CDATA section, processing instruction, declaration or end tag that starts
+/// at text[i] = '<'; i itself when a start tag starts there. The end of the text for one that is not closed.
+std::size_t skip_non_element(std::string_view text, std::size_t i);
+/// One past the '>' of the start tag at text[i] = '<' (the first '>' outside quoted attribute values); the
+/// end of the text when there is none.
+std::size_t start_tag_end(std::string_view text, std::size_t i);
 
 /// `s` on one line (line breaks as spaces) and at most 80 characters, for messages.
 std::string one_line(std::string s);

@@ -49,7 +49,8 @@ struct GeometryInertia {
 
 struct LinkCheck {
   std::string name;
-  int line = 0;
+  int line = 0;      ///< line of the link (body) element in its file
+  std::string file;  ///< the included file that holds it (MJCF <include>); "" for the model's own
   bool has_inertial = false;
   double mass = 0.0;                 ///< kg
   Vec3 com_link = Vec3::Zero();      ///< m
@@ -84,11 +85,12 @@ std::optional<GeometryInertia> geometry_inertia(const RobotLink& link, double ma
                                                 std::vector<std::string>& notes);
 
 /// The report as one JSON object (the one serialisation shared by the command line and Python): keys
-/// format, source, options, invalid, warnings, links[] with name, line, has_inertial, mass, center_of_mass,
-/// inertia_com (link frame), principal_moments, principal_axes, valid, condition, amount, message,
-/// repair {inertia, moments_before, moments_after, distance} or null, geometry {source, volume, mass,
-/// center_of_mass, inertia_com, box_min, box_max} or null, implied_density, trace_ratio, warnings, notes.
-/// Bytes of names that are not UTF-8 are replaced by U+FFFD; a non-finite number is written as null.
+/// format, source, options, invalid, warnings, links[] with name, line (file: the included file that holds
+/// it, only then), has_inertial, mass, center_of_mass, inertia_com (link frame), principal_moments,
+/// principal_axes, valid, condition, amount, message, repair {inertia, moments_before, moments_after,
+/// distance} or null, geometry {source, volume, mass, center_of_mass, inertia_com, box_min, box_max} or null,
+/// implied_density, trace_ratio, warnings, notes. Bytes of names that are not UTF-8 are replaced by U+FFFD; a
+/// non-finite number is written as null.
 std::string model_check_json(const ModelCheck& check);
 
 /// The report as text for a terminal (one block per link).

@@ -25,6 +25,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "poinsot/core/types.hpp"
@@ -79,10 +80,28 @@ struct RobotLink {
   std::vector<std::string> notes;  ///< what the reader skipped, one line each
 };
 
+/// Where each line of a model's text comes from. An MJCF `<include file="F"/>` is replaced by the children of
+/// F's top-level element, so a line of the text may be a line of F (MuJoCo's rule: F relative to the main
+/// file's folder, included at most once, includes nested).
+struct SourceLines {
+  std::vector<std::string> files;  ///< files[0]: the model's source; then the included files as opened
+  /// Per line of the text (index line − 1): (index in files, line there). Empty: the text is files[0] itself.
+  std::vector<std::pair<int, int>> origin;
+  /// "FILE:LINE" of line `line` (1-based) of the text.
+  std::string location(int line) const;
+  /// "line N" for a line of the model's own file, "line N of FILE" for one of an included file.
+  std::string label(int line) const;
+  /// The file of line `line`: "" for the model's own, else the included file's path.
+  std::string file(int line) const;
+  /// Its line number in that file.
+  int line_in_file(int line) const;
+};
+
 struct RobotModel {
   RobotFormat format = RobotFormat::urdf;
   std::string source;  ///< path, or "<string>"
-  std::string text;    ///< the file's bytes, unchanged
+  std::string text;    ///< the file's bytes, unchanged (MJCF: with its <include> elements replaced)
+  SourceLines lines;   ///< where the lines of `text` come from
   std::vector<RobotLink> links;
 };
 
@@ -90,7 +109,9 @@ struct RobotModel {
 inline constexpr std::size_t kDefaultMaxModelBytes = std::size_t{64} << 20;
 
 /// Reads a model from its text; the format is the root element: <robot> (URDF), <mujoco> (MJCF) or <sdf>.
-/// `source` names the text in messages; relative mesh paths are resolved against `base_dir`. Throws
+/// `source` names the text in messages; relative mesh paths and MJCF <include> files are resolved against
+/// `base_dir`. Throws InvalidInput for an <include> whose file cannot be read (or is larger than
+/// kDefaultMaxModelBytes), is not well-formed XML, or is included twice; otherwise
 /// InvalidInput (one line, `SOURCE:LINE: <element> ...`) for malformed XML, an unknown root, a missing or
 /// malformed number, a non-finite value, or an orientation the reader does not understand.
 RobotModel read_robot_model(std::string text, const std::string& source, const std::string& base_dir = ".");
