@@ -335,9 +335,10 @@ void RobotSystemBuilder::add_body(std::size_t u) {
 
 namespace {
 
-/// A URDF or SDF mesh as drawn: the file's triangles at their scale, in the geometry's frame. MJCF meshes are
-/// not drawn (MuJoCo moves a mesh to its own centre of mass and principal axes). Throws InvalidInput when the
-/// mesh cannot be read (it is then not drawn).
+/// A mesh as drawn: the file's triangles at their scale, in the geometry's frame as the file writes it. For
+/// MJCF this is where MuJoCo shows it too: MuJoCo moves a mesh to its centre of mass and principal axes and
+/// moves the geom's frame back by as much (docs/robot_models.md). Throws InvalidInput when the mesh cannot
+/// be read (it is then not drawn).
 inertia::TriangleMesh drawn_mesh(const LinkGeometry& g) {
   inertia::TriangleMesh mesh = inertia::load_mesh(g.mesh_path);
   for (Vec3& v : mesh.vertices)
@@ -348,8 +349,8 @@ inertia::TriangleMesh drawn_mesh(const LinkGeometry& g) {
 
 }  // namespace
 
-/// Each body's drawn surface (view.html): the shapes and the URDF and SDF meshes of its link and of the
-/// frames merged into it, about its centre of mass in its frame.
+/// Each body's drawn surface (view.html): the shapes and meshes of its link and of the frames merged into it,
+/// about its centre of mass in its frame.
 void RobotSystemBuilder::add_surfaces() {
   std::vector<inertia::TriangleMesh> surfaces(static_cast<std::size_t>(sc.system.body_count()));
   for (std::size_t k = 0; k < place.size(); ++k) {
@@ -358,7 +359,6 @@ void RobotSystemBuilder::add_surfaces() {
     const Vec3 com = inertia[link_of_body[b]].props.com;
     for (const LinkGeometry& g : model.links[k].geometry) {
       const bool mesh = g.shape.kind == "mesh";
-      if (mesh && model.format == RobotFormat::mjcf) continue;
       inertia::TriangleMesh part;
       try {
         part = mesh ? drawn_mesh(g) : inertia::tessellate(g.shape, inertia::kDrawnSurfaceSegments);

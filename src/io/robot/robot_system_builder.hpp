@@ -151,7 +151,7 @@ struct RobotSystemBuilder {
                         const Vec3& c_b);
 
   /// Each body's drawn surface (view.html): the shapes of its link and of the frames merged into it, about
-  /// its centre of mass in its frame; URDF and SDF meshes too (MJCF meshes are not drawn).
+  /// its centre of mass in its frame; meshes too.
   void add_surfaces();
 
   /// The loops that MJCF's <equality> closes: connect as a ball joint, weld as a weld.

@@ -221,6 +221,27 @@ TEST(RobotSystem, UrdfMeshesAreDrawnAsTheFilesTriangles) {
   EXPECT_EQ(missing.body_surfaces[static_cast<std::size_t>(hand)], nullptr);
 }
 
+TEST(RobotSystem, MjcfMeshesAreDrawnInTheGeomFrameAsWritten) {
+  // MuJoCo shows a mesh geom's vertices at the body's and the geom's frames as written, the file's vertices
+  // scaled (it re-centres the mesh and moves the geom's frame back; docs/robot_models.md has the measurement
+  // against MuJoCo). The drawn surface is about the body's centre of mass (<inertial pos>).
+  const multibody::Scenario sc = load_robot_scenario(robots("mesh_geom.xml"));
+  ASSERT_EQ(sc.system.body_count(), 1);
+  const auto& surface = sc.body_surfaces[0];
+  ASSERT_NE(surface, nullptr);
+  const inertia::TriangleMesh raw =
+      inertia::load_mesh(std::string(POINSOT_SOURCE_DIR) + "/examples/meshes/l_bracket.obj");
+  ASSERT_EQ(surface->vertices.size(), raw.vertices.size());
+  const Mat3 R_geom = Eigen::Quaterniond(0.8, -0.3, 0.2, 0.4).normalized().toRotationMatrix();
+  for (std::size_t k = 0; k < raw.vertices.size(); ++k) {
+    const Vec3 expected = R_geom * Vec3(1.5, 1.0, 0.8).cwiseProduct(raw.vertices[k]) +
+                          Vec3(0.05, -0.02, 0.01) - Vec3(0.01, 0.02, -0.01);
+    POINSOT_EXPECT_MATRIX_NEAR(surface->vertices[k], expected, 1e-15);
+  }
+  POINSOT_EXPECT_MATRIX_NEAR(sc.initial.bodies[0].R_space_body,
+                             Eigen::Quaterniond(0.9, 0.1, -0.2, 0.3).normalized().toRotationMatrix(), 1e-15);
+}
+
 TEST(RobotSystem, MjcfJointKinds) {
   const multibody::Scenario sc = load_robot_scenario(robots("joints.xml"));
   EXPECT_EQ(body_names(sc.system), (std::vector<std::string>{"post", "crank", "slider", "bob", "gimbal",
