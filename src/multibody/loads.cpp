@@ -10,7 +10,6 @@
 #include <Eigen/LU>
 
 #include "poinsot/core/error.hpp"
-
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/so3/hat.hpp"
 

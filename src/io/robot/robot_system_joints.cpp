@@ -144,8 +144,10 @@ void RobotSystemBuilder::add_moving_joint(const RobotJointSpec& j, int a, int b,
     if (std::abs(e1.dot(e2.cross(e3))) > 1e-9) {
       const int joint = located([&] { return sc.system.add_ball(name, a, pa, b, pb); });
       // The springs act on the three hinge angles where the second axis is perpendicular to the other two
-      // (their angles are then defined everywhere but at the hinges' gimbal lock; multibody::JointSpring).
-      if (std::abs(e1.dot(e2)) <= 1e-12 && std::abs(e2.dot(e3)) <= 1e-12) {
+      // and the third is not along the first (their angles are then defined everywhere but at the hinges'
+      // gimbal lock; multibody::JointSpring).
+      if (std::abs(e1.dot(e2)) <= 1e-12 && std::abs(e2.dot(e3)) <= 1e-12 &&
+          std::abs(e1.dot(e2.cross(e3))) >= 1e-6) {
         add_spring(joint, 0, multibody::JointSpring::Coordinate::first);
         add_spring(joint, 1, multibody::JointSpring::Coordinate::second);
         add_spring(joint, 2, multibody::JointSpring::Coordinate::third);

@@ -112,6 +112,7 @@ XmlSource::XmlSource(std::string text, std::string source)
     : XmlSource(std::move(text), SourceLines{{std::move(source)}, {}}) {}
 
 XmlSource::XmlSource(std::string text, SourceLines lines) : text_(std::move(text)), lines_(std::move(lines)) {
+  if (lines_.files.empty()) lines_.files = {"<string>"};
   const std::string& source = lines_.files.at(0);
   if (doc_.Parse(text_.data(), text_.size()) != tinyxml2::XML_SUCCESS) {
     const char* reason = doc_.ErrorStr();
