@@ -51,7 +51,8 @@ std::string SourceLines::label(int line) const {
                    : fmt::format("line {} of {}", line_in_file(line), f);
 }
 
-RobotModel read_robot_model(std::string text, const std::string& source, const std::string& base_dir) {
+RobotModel read_robot_model(std::string text, const std::string& source, const std::string& base_dir,
+                            std::size_t max_include_bytes) {
   RobotModel model;
   model.source = source;
   model.lines.files = {source};
@@ -59,7 +60,7 @@ RobotModel read_robot_model(std::string text, const std::string& source, const s
   if (std::string_view(parsed->root()->Name()) == "mujoco" &&
       parsed->text().find("<include") != std::string::npos) {
     detail::ExpandedText e =
-        detail::expand_mjcf_includes(parsed->text(), source, base_dir, kDefaultMaxModelBytes);
+        detail::expand_mjcf_includes(parsed->text(), source, base_dir, max_include_bytes);
     model.lines = e.lines;
     parsed = std::make_unique<const detail::XmlSource>(std::move(e.text), std::move(e.lines));
   }
@@ -85,7 +86,7 @@ RobotModel read_robot_model(std::string text, const std::string& source, const s
 RobotModel load_robot_model(const std::string& path, std::size_t max_bytes) {
   std::string text = read_file_limited(path, "model", max_bytes, "--max-file-bytes");
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
-  return read_robot_model(std::move(text), path, parent.empty() ? "." : parent.string());
+  return read_robot_model(std::move(text), path, parent.empty() ? "." : parent.string(), max_bytes);
 }
 
 namespace detail {

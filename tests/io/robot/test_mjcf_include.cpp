@@ -136,6 +136,12 @@ TEST(MjcfInclude, BadIncludesAreRefusedWithTheirPlace) {
   write(dir / "parts" / "broken.xml", "<mujoco>\n<body>\n</mujoco>\n");
   expect_has(error_of(head + "    <include file=\"parts/broken.xml\"/>\n  </body>\n</mujoco>\n"),
              {"upper.xml:4: <include file=\"parts/broken.xml\">", "broken.xml:", "XML error"});
+  // The limit on the model's size holds for each included file.
+  write(dir / "parts" / "big.xml", "<mujoco>\n<!-- " + std::string(5000, 'x') + " -->\n</mujoco>\n");
+  write(dir / "parts" / "upper.xml", head + "    <include file=\"parts/big.xml\"/>\n  </body>\n</mujoco>\n");
+  expect_has(message_of([&] { load_robot_model((dir / "two.xml").string(), 1000); }),
+             {"upper.xml:4: <include file=\"parts/big.xml\">", "--max-file-bytes"});
+  EXPECT_NO_THROW(load_robot_model((dir / "two.xml").string(), 10000));
   // A file that includes itself is included twice.
   expect_has(error_of(head + "    <include file=\"parts/upper.xml\"/>\n  </body>\n</mujoco>\n"),
              {"is included already"});

@@ -111,13 +111,14 @@ inline constexpr std::size_t kDefaultMaxModelBytes = std::size_t{64} << 20;
 /// Reads a model from its text; the format is the root element: <robot> (URDF), <mujoco> (MJCF) or <sdf>.
 /// `source` names the text in messages; relative mesh paths and MJCF <include> files are resolved against
 /// `base_dir`. Throws InvalidInput for an <include> whose file cannot be read (or is larger than
-/// kDefaultMaxModelBytes), is not well-formed XML, or is included twice; otherwise
+/// `max_include_bytes`), is not well-formed XML, or is included twice; otherwise
 /// InvalidInput (one line, `SOURCE:LINE: <element> ...`) for malformed XML, an unknown root, a missing or
 /// malformed number, a non-finite value, or an orientation the reader does not understand.
-RobotModel read_robot_model(std::string text, const std::string& source, const std::string& base_dir = ".");
+RobotModel read_robot_model(std::string text, const std::string& source, const std::string& base_dir = ".",
+                            std::size_t max_include_bytes = kDefaultMaxModelBytes);
 
-/// Reads the file `path` (at most `max_bytes`). Throws InvalidInput as read_robot_model, and when the file
-/// cannot be read or is larger than the limit.
+/// Reads the file `path` (at most `max_bytes`, and so each file it includes). Throws InvalidInput as
+/// read_robot_model, and when the file cannot be read or is larger than the limit.
 RobotModel load_robot_model(const std::string& path, std::size_t max_bytes = kDefaultMaxModelBytes);
 
 }  // namespace poinsot::io
