@@ -18,6 +18,7 @@
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/io/run/summary.hpp"
 #include "poinsot/io/scenario/scenario_file.hpp"
+#include "poinsot/multibody/joint_types.hpp"
 #include "view_assets.hpp"
 #include "view_data.hpp"
 #include "view_json.hpp"
@@ -158,22 +159,6 @@ json single_body_data(const std::string& dir, const json& summary, const ViewOpt
   return j;
 }
 
-const char* joint_type_name(multibody::JointType type) {
-  switch (type) {
-    case multibody::JointType::ball:
-      return "ball";
-    case multibody::JointType::hinge:
-      return "hinge";
-    case multibody::JointType::weld:
-      return "weld";
-    case multibody::JointType::universal:
-      return "universal";
-    case multibody::JointType::prismatic:
-      return "prismatic";
-  }
-  return "joint";
-}
-
 json multibody_data(const std::string& dir, const json& summary, const ViewOptions& options) {
   const std::string path = (fs::path(dir) / "trajectory.csv").string();
   const std::string diag_path = (fs::path(dir) / "diagnostics.csv").string();
@@ -252,9 +237,8 @@ json multibody_data(const std::string& dir, const json& summary, const ViewOptio
     const std::size_t count = mb->system.joints().size();
     for (std::size_t k = 0; k < count; ++k) {
       const multibody::Joint& jt = mb->system.joints()[k];
-      const char* type = joint_type_name(jt.type);
       joints.push_back({{"name", jt.name},
-                        {"type", type},
+                        {"type", std::string(multibody::joint_type_info(jt.type).name)},
                         {"body_a", jt.body_a},
                         {"point_a", vec(jt.point_a)},
                         {"body_b", jt.body_b},  // −1: the world (point_b in the space frame)
