@@ -1,4 +1,5 @@
 """Shared fixtures of the Python module's tests (run by the ctest entry python.pytest, PYTHONPATH set)."""
+import math
 import os
 from pathlib import Path
 
@@ -7,6 +8,13 @@ import pytest
 
 SOURCE_DIR = Path(os.environ.get("POINSOT_SOURCE_DIR", Path(__file__).resolve().parents[2]))
 EPS = np.finfo(float).eps
+G = 9.81  # the tests' gravity, m/s²
+
+
+def rot_y(angle):
+    """The rotation by `angle` (rad) about y."""
+    c, s = math.cos(angle), math.sin(angle)
+    return np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
 
 
 @pytest.fixture

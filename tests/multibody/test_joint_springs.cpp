@@ -25,6 +25,19 @@ using test::damped_oscillator;
 using test::expect_has;
 using test::message_of;
 
+/// The largest |E − E₀| over `steps` RATTLE steps of `h` from `s` (advanced to the last), E₀ its energy at
+/// the start.
+double worst_energy_error(const System& system, State& s, double h, int steps) {
+  const double e0 = total_energy(system, s);
+  Rattle rattle(system, h);
+  double worst = 0.0;
+  for (int n = 0; n < steps; ++n) {
+    rattle.step(s);
+    worst = std::max(worst, std::abs(total_energy(system, s) - e0));
+  }
+  return worst;
+}
+
 Mat3 rot_z(double a) {
   return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix();
 }
@@ -114,12 +127,7 @@ TEST(JointSprings, WithoutDampingRattleKeepsTheEnergyOfTheSpringBounded) {
   // All the energy starts in the spring: ½ k δ0².
   EXPECT_NEAR(e0, 0.5 * 3.0 * 4.0, 1e-14);
   const double h = 0.01;
-  Rattle rattle(p.system, h);
-  double worst = 0.0;
-  for (int n = 0; n < 20000; ++n) {  // 200 s, about 130 periods
-    rattle.step(s);
-    worst = std::max(worst, std::abs(total_energy(p.system, s) - e0));
-  }
+  const double worst = worst_energy_error(p.system, s, h, 20000);  // 200 s, about 130 periods
   // A symplectic method's energy error stays of order (ωh)² without drift: (ωh)² ≈ 1.8e-3 of e0.
   EXPECT_LT(worst / e0, (p.omega * h) * (p.omega * h));
 }
@@ -306,12 +314,7 @@ TEST(JointSprings, UniversalJointSpringsAreConservative) {
       0.5 * Vec3::UnitX() - 0.4 * (Eigen::AngleAxisd(-1.1, Vec3::UnitX()).toRotationMatrix() * Vec3::UnitY());
   const double e0 = total_energy(p.system, s);
   const double h = 0.005, omega = std::sqrt(3.0 / 0.3);
-  Rattle rattle(p.system, h);
-  double worst = 0.0;
-  for (int n = 0; n < 20000; ++n) {  // 100 s
-    rattle.step(s);
-    worst = std::max(worst, std::abs(total_energy(p.system, s) - e0));
-  }
+  const double worst = worst_energy_error(p.system, s, h, 20000);  // 100 s
   EXPECT_LT(worst / e0, (omega * h) * (omega * h));
 }
 
@@ -431,12 +434,7 @@ TEST(JointSprings, BallJointSpringsAreConservativeAndRefuseTheGimbalLock) {
   project_velocities(t.system, s);
   const double e0 = total_energy(t.system, s);
   const double h = 0.005, omega = std::sqrt(3.0 / 0.3);
-  Rattle rattle(t.system, h);
-  double worst = 0.0;
-  for (int n = 0; n < 20000; ++n) {  // 100 s
-    rattle.step(s);
-    worst = std::max(worst, std::abs(total_energy(t.system, s) - e0));
-  }
+  const double worst = worst_energy_error(t.system, s, h, 20000);  // 100 s
   EXPECT_LT(worst / e0, (omega * h) * (omega * h));
   s.bodies[0].R_space_body = hinges_in_series(t, Vec3(0.3, std::numbers::pi / 2, -0.2));
   std::vector<BodyLoads> loads;

@@ -24,9 +24,9 @@
 ///  * Not modelled (contacts, limits, friction, armature, actuators, tendons, transmissions, the springs of
 ///    MJCF ball joints and of three hinges whose second axis is not perpendicular to the others): listed one
 ///    line each in Scenario::not_modelled, which the run report prints.
-/// Scenario::body_surfaces draws each body as its link's shapes and meshes. Bodies carry their link's name and joints their file joint's name
-/// (two or three MJCF hinges merged into one joint: their names joined by '+'), so reactions and Λ are
-/// reported per link.
+/// Scenario::body_surfaces draws each body as its link's shapes and meshes. Bodies carry their link's name
+/// and joints their file joint's name (two or three MJCF hinges merged into one joint: their names joined by
+/// '+'), so reactions and Λ are reported per link.
 
 #include <map>
 #include <optional>
