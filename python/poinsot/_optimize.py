@@ -83,14 +83,18 @@ class OptimalSolution:
     indirect method, the interval centres for the direct one): ``costate_attitude_body`` p_θ (k, 3),
     ``costate_omega`` p_ω (k, 3), ``switching_function`` σ = J⁻¹ p_ω (k, 3), ``hamiltonian`` H (k,) (NaN
     from the direct method). ``switch_times`` (s,) s and ``switch_axes`` (body axes 0, 1, 2) of a bang-bang
-    control.
+    control (the entries into and exits from its arcs included); ``indirect["rate_bound_arcs"]`` and
+    ``indirect["singular_arcs"]``: lists of dicts (``axis`` 0, 1, 2, ``t_entry`` s, ``t_exit`` s, and ``side``
+    ±1 for a boundary arc ω_axis = side · r).
 
     ``final_time`` s and ``cost`` (s, N²·m²·s or s per objective) of that solution; ``checks`` (dict: the
     Hamiltonian's mean and deviation, the control gap, switching-sign violations, the costate drift, ‖RᵀR − I‖,
     vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, its amplification
     ``replay_amplification`` and ``open_loop_replay_checked``, the re-simulation split at the shooting nodes
     ``split_replay_attitude_error`` rad and ``split_replay_rate_error`` rad/s over ``replay_segments``
-    segments, the direct–indirect cost difference, ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress, the eigenaxis
+    segments, the direct–indirect cost difference, ``torque_bound_excess`` and ``rate_bound_excess`` (relative;
+    ≤ 0 when admissible), ``rate_multiplier_min`` and ``kelley_condition_min`` (the sign conditions of the
+    boundary and singular arcs; ≥ 0), ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress, the eigenaxis
     manoeuvre's cost and the saving, and the arrays ``lambda_body`` (n, 3, 3) J, ``stress_space`` (n, 3, 3)
     N·m, ``momentum_space`` (n, 3)); ``direct`` (DirectSolution) and ``indirect`` (dict of the shooting's
     values and arrays); ``summary`` (the dict of summary.json), ``report`` (the text ``poinsot optimize``

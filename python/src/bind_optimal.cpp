@@ -256,6 +256,15 @@ py::dict indirect_dict(const opt::IndirectSolution& s) {
   const auto n_arcs = static_cast<py::ssize_t>(s.arcs.size());
   o["arc_times"] = array_from_buffer(std::move(bounds), {n_arcs, 2});
   o["arc_torque_body"] = array_from_buffer(std::move(torques), {n_arcs, 3});
+  py::list rate_arcs, singular_arcs;
+  for (const auto& a : s.rate_bound_arcs)
+    rate_arcs.append(py::dict(py::arg("axis") = a.axis, py::arg("side") = a.side,
+                              py::arg("t_entry") = a.t_entry, py::arg("t_exit") = a.t_exit));
+  for (const auto& a : s.singular_arcs)
+    singular_arcs.append(
+        py::dict(py::arg("axis") = a.axis, py::arg("t_entry") = a.t_entry, py::arg("t_exit") = a.t_exit));
+  o["rate_bound_arcs"] = rate_arcs;
+  o["singular_arcs"] = singular_arcs;
   o["t"] = as_array(s.time);
   o["R"] = stack_mat3(s.attitude);
   o["omega_body"] = stack_vec3(s.omega_body);

@@ -256,6 +256,12 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
       best.status = "converged";
       return best;
     }
+    if (options.accept_mesh && options.accept_mesh(best)) {
+      best.status = "refinement stopped at mesh error " + format_number(best.max_mesh_error, 3) + " above " +
+                    format_number(options.mesh_tolerance) + " after " + std::to_string(mesh) +
+                    " mesh iterations: the caller accepted the mesh";
+      return best;
+    }
     std::vector<double> next = refine(nlp->tau(), best.mesh_error, options.mesh_tolerance);
     if (static_cast<int>(next.size()) - 1 > options.max_intervals) {
       failure = "mesh error " + format_number(best.max_mesh_error, 3) + " above " +

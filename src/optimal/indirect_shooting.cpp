@@ -8,12 +8,12 @@
 
 #include <fmt/format.h>
 
+#include "arc_shooting.hpp"
 #include "multiple_shooting.hpp"
 #include "pmp_system.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/core/linear_solvers.hpp"
-#include "rate_bound_shooting.hpp"
 #include "switching_structure.hpp"
 
 namespace poinsot::optimal {
@@ -366,10 +366,10 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     return out;
   }
 
-  // An active rate bound: boundary arcs (rate_bound_shooting.hpp), for minimum time with per-axis bounds.
+  // An active rate bound: boundary arcs (arc_shooting.hpp), for minimum time with per-axis bounds.
   if (double rate_peak = 0.0; detail::rate_bound_active(p, d, rate_peak)) {
     if (p.objective == Objective::minimum_time && p.bound == TorqueBound::per_axis)
-      return detail::solve_rate_bounded(p, d, o);
+      return detail::solve_over_arcs(p, d, o);
     out.status = "not applied: the rate bound is active (peak |ω_i| = " + format_number(rate_peak, 8) +
                  " rad/s); state-constrained arcs are handled for minimum time with per-axis bounds only";
     return out;
@@ -377,10 +377,8 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   SwitchGuess sw = out.bang_bang ? read_switching_structure(p, d) : SwitchGuess{};
   if (p.objective == Objective::minimum_time && p.bound == TorqueBound::norm)
     sw.reversals = read_reversals(p, d);
-  if (!sw.singular.empty()) {
-    out.status = "not applied: " + sw.singular + "; singular arcs are not handled by the shooting method";
-    return out;
-  }
+  // A torque inside its bound over a stretch: singular arcs (arc_shooting.hpp).
+  if (!sw.singular.empty()) return detail::solve_over_arcs(p, d, o);
 
   ShootingSetup setup(p, sw, out.bang_bang);
   Eigen::VectorXd x, F;

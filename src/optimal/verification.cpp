@@ -159,6 +159,19 @@ void measure_admissibility(const ReorientationProblem& p, const IndirectSolution
     mu_min = std::min(mu_min, mu.minCoeff());
   }
   r.rate_multiplier_min = mu_max > 0.0 ? mu_min / mu_max : 0.0;
+  // Kelley's condition on the singular arcs (arc_shooting.hpp): −C_ii = −2 σ·(J⁻¹e_i × e_i) ≥ 0.
+  const Mat3 J_inv = p.inertia_body.inverse();
+  double kelley = std::numeric_limits<double>::infinity();
+  for (const SingularArc& arc : s.singular_arcs) {
+    const Vec3 e = Vec3::Unit(arc.axis);
+    const Vec3 a = (J_inv * e).cross(e);
+    for (std::size_t j = 0; j < s.time.size(); ++j)
+      if (s.time[j] >= arc.t_entry && s.time[j] <= arc.t_exit) {
+        const Vec3& sigma = s.switching_function[j];
+        kelley = std::min(kelley, -sigma.dot(a) / std::max(sigma.norm() * a.norm(), 1e-300));
+      }
+  }
+  r.kelley_condition_min = std::isfinite(kelley) ? kelley : 0.0;
 }
 
 /// Each measured condition against its tolerance: one failure line per condition missed.
@@ -211,6 +224,9 @@ void judge(const ReorientationProblem& p, const IndirectSolution& s, const Verif
   if (!(r.rate_multiplier_min >= -tol.admissibility))
     fail("a rate-bound multiplier is negative: " + format_number(r.rate_multiplier_min, 3) +
          " of the largest");
+  if (!(r.kelley_condition_min >= 0.0))
+    fail("Kelley's condition fails on a singular arc: −∂σ̈/∂u reaches " +
+         format_number(r.kelley_condition_min, 3) + " (relative; a minimum needs ≥ 0)");
   for (std::size_t c = 0; c < p.pointing.size(); ++c)
     if (!(r.pointing.margin[c] > 0.0))
       fail(fmt::format("the {} cone is entered: margin {} rad at t = {} s", p.pointing[c].label(),

@@ -27,6 +27,8 @@
 
 namespace poinsot::optimal {
 
+struct DirectSolution;
+
 struct CollocationOptions {
   int initial_intervals = 10;
   double mesh_tolerance = 1e-7;  ///< the largest accepted ε_k (relative)
@@ -38,6 +40,11 @@ struct CollocationOptions {
   /// Called after every Ipopt iteration (a terminal progress line); empty: not called. Not part of the
   /// result.
   std::function<void(const DirectProgress&)> progress;
+  /// Called with the solution of every mesh that Ipopt solved and whose mesh error is above mesh_tolerance,
+  /// before that mesh is refined; returning true stops the refinement there (the solution is returned with
+  /// converged false and a status that says so). Empty: the refinement runs to mesh_tolerance. The front
+  /// ends stop a state-constrained problem's refinement once the shooting from a mesh verifies the optimum.
+  std::function<bool(const DirectSolution&)> accept_mesh;
 };
 
 /// A collocated trajectory: samples at the nodes and midpoints (times ascending), costates at the interval

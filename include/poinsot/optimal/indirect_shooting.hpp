@@ -37,10 +37,11 @@
 /// Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of σ at the start
 /// of the arc ending there; on each arc the control is continued through σ = 0 without flipping, so the
 /// conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a sphere). The output
-/// samples of a norm-bound torque are refined where it turns fast (σ passing near 0). Active rate bounds:
-/// boundary arcs for minimum time with per-axis bounds (rate_bound_shooting.hpp, single shooting; the other
-/// objectives and bounds are reported "not applied"). Not handled: singular arcs (|u_i| strictly inside its
-/// bound over an interval of the direct solution, off the rate bound).
+/// samples of a norm-bound torque are refined where it turns fast (σ passing near 0). Active rate bounds and
+/// singular arcs (|u_i| strictly inside its bound over a stretch of the direct solution: σ_i ≡ 0, u_i from
+/// σ̈_i = 0), for minimum time with per-axis bounds: boundary and singular arcs with their entry and exit
+/// times as unknowns (arc_shooting.hpp, single shooting; under the other objectives and bounds an active rate
+/// bound is reported "not applied").
 #include <functional>
 #include <string>
 #include <vector>
@@ -79,6 +80,12 @@ struct RateBoundArc {
   double t_entry = 0.0, t_exit = 0.0;
 };
 
+/// A singular arc: σ_axis ≡ 0 on [t_entry, t_exit] (s), u_axis inside its bound, fixed by σ̈_axis = 0.
+struct SingularArc {
+  int axis = 0;  ///< body axis 0, 1, 2
+  double t_entry = 0.0, t_exit = 0.0;
+};
+
 struct IndirectSolution {
   bool converged = false;
   std::string status;  ///< "converged" or what failed
@@ -107,6 +114,8 @@ struct IndirectSolution {
   /// constraints s_k ω_k − r ≤ 0 (units of ṗ_ω; 0 off the arcs). Empty where no rate bound is active.
   std::vector<RateBoundArc> rate_bound_arcs;
   std::vector<Vec3> rate_bound_multiplier;
+  /// Singular arcs (per-axis minimum time), in order of entry; empty where the control is bang-bang.
+  std::vector<SingularArc> singular_arcs;
 
   // Multiple shooting: the interior nodes t_1 … t_{M−1} and the state there, the Newton unknowns that start
   // the segments after the first (empty for single shooting). At convergence the end of segment m − 1 meets

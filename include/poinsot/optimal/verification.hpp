@@ -77,6 +77,10 @@ struct VerificationReport {
   /// Active rate bounds: the smallest multiplier μ_k of the boundary arcs relative to the largest |μ| (must
   /// not be negative: μ ≥ 0 is the minimum principle's sign condition of the state constraint); 0 when none.
   double rate_multiplier_min = 0.0;
+  /// Singular arcs: the generalised Legendre–Clebsch (Kelley) condition −∂σ̈_i/∂u_i = −2 σ·(J⁻¹e_i × e_i) ≥ 0
+  /// of a minimum along a singular arc of axis i, at its smallest over the samples of the arcs, relative to
+  /// 2‖σ‖‖J⁻¹e_i × e_i‖ (a cosine: must not be negative); 0 when there is none.
+  double kelley_condition_min = 0.0;
   /// Pointing constraints (the shooting runs only where the direct solution stays clear of every cone): the
   /// smallest margin of each along the indirect solution (rad: its samples, and 64 points between each two on
   /// the cubic Hermite of the quaternion, PointingMargins::lower_along), which must be positive: an extremal

@@ -100,6 +100,25 @@ std::string report_direct(const OptimalRun& r) {
   return o.str();
 }
 
+/// What happens at the indirect solution's event k: a switch of u_i, a reversal of a norm-bound torque, or
+/// the entry into or the exit from a boundary arc of the rate bound or a singular arc.
+std::string event_name(const optimal::IndirectSolution& s, std::size_t k) {
+  const int axis = s.switch_axes[k];
+  const double t = s.switch_times[k];
+  if (axis < 0) return "reversal of u (σ = 0)";
+  for (const auto& a : s.rate_bound_arcs)
+    if (a.axis == axis && (t == a.t_entry || t == a.t_exit))
+      return fmt::format("{} ω{} = {}r",
+                         t == a.t_entry ? "entry into the boundary arc" : "exit from the boundary arc",
+                         axis + 1, a.side > 0 ? "" : "−");
+  for (const auto& a : s.singular_arcs)
+    if (a.axis == axis && (t == a.t_entry || t == a.t_exit))
+      return fmt::format("{} of u{} (σ{} = 0)",
+                         t == a.t_entry ? "entry into the singular arc" : "exit from the singular arc",
+                         axis + 1, axis + 1);
+  return fmt::format("switch of u{}", axis + 1);
+}
+
 /// The indirect method's lines: the shooting, its switches and reversals, and the checks of the minimum
 /// principle.
 std::string report_indirect(const OptimalRun& r) {
@@ -112,11 +131,9 @@ std::string report_indirect(const OptimalRun& r) {
   if (!r.indirect.time.empty()) {
     o << fmt::format("  final time {} s, cost {}\n", format_number(r.indirect.final_time, 14),
                      format_number(r.indirect.cost, 14));
-    for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k) {
-      const int axis = r.indirect.switch_axes[k];
-      const std::string what = axis >= 0 ? fmt::format("switch of u{}", axis + 1) : "reversal of u (σ = 0)";
-      o << fmt::format("  {} at t = {} s\n", what, format_number(r.indirect.switch_times[k], 12));
-    }
+    for (std::size_t k = 0; k < r.indirect.switch_times.size(); ++k)
+      o << fmt::format("  {} at t = {} s\n", event_name(r.indirect, k),
+                       format_number(r.indirect.switch_times[k], 12));
     const auto& v = r.verification;
     o << "\nchecks:\n"
       << fmt::format("  Hamiltonian: mean {}, max deviation {}\n", format_number(v.hamiltonian_mean, 3),
@@ -140,6 +157,15 @@ std::string report_indirect(const OptimalRun& r) {
               : std::string())
       << fmt::format("  direct vs indirect cost: {} (relative)\n",
                      format_number(v.direct_indirect_difference, 3))
+      << (r.indirect.rate_bound_arcs.empty()
+              ? std::string()
+              : fmt::format("  rate-bound multipliers: smallest {} of the largest (≥ 0 required)\n",
+                            format_number(v.rate_multiplier_min, 3)))
+      << (r.indirect.singular_arcs.empty()
+              ? std::string()
+              : fmt::format(
+                    "  singular arcs: Kelley's condition −∂σ̈/∂u at least {} (relative; ≥ 0 required)\n",
+                    format_number(v.kelley_condition_min, 3)))
       << (p.pointing.empty()
               ? std::string()
               : detail::pointing_lines("  cones along the indirect solution (none active)", p, v.pointing));

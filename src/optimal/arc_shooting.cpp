@@ -1,4 +1,4 @@
-#include "rate_bound_shooting.hpp"
+#include "arc_shooting.hpp"
 
 // GCC 12 reports -Wmaybe-uninitialized, -Wuninitialized and -Wrestrict inside Boost.Odeint's stepper copy
 // constructors when they are inlined here (false positives in library code: the work arrays are resized
@@ -23,23 +23,68 @@ namespace poinsot::optimal::detail {
 namespace {
 
 namespace odeint = boost::numeric::odeint;
-using Kind = RateBoundEvent::Kind;
+using Kind = ArcEvent::Kind;
+using Arc = ArcEvent::Arc;
 
-/// The control of one arc: the bang signs of the free axes and the set of held axes with their sides.
+/// The control of one arc: the bang signs of the free axes, the set of held axes with their sides, and the
+/// set of singular axes.
 struct ArcMode {
   Vec3 sign = Vec3::Ones();
   std::array<bool, 3> held{false, false, false};
   Vec3 side = Vec3::Zero();
+  std::array<bool, 3> singular{false, false, false};
 };
 
-/// u and μ on an arc for the state y (indirect sections of rate_bound_shooting.hpp): u_k = sign_k u_max,k off
-/// the held set A; on A, (J⁻¹u)_A = (J⁻¹(ω × Jω))_A; μ from (J⁻¹)_AA (μ s)_A = (J⁻¹ g)_A.
+/// σ̈ (arc_shooting.hpp) at the body rate ω, switching vector σ = J⁻¹p_ω, attitude costate p_θ and torque u,
+/// off the boundary arcs (no rate multiplier in ṗ_ω).
+Vec3 switching_second_derivative(const Mat3& J, const Mat3& J_inv, const Vec3& w, const Vec3& sigma,
+                                 const Vec3& p_theta, const Vec3& u) {
+  const Vec3 Jw = J * w;
+  const Vec3 w_dot = J_inv * (u - w.cross(Jw));
+  const Vec3 sigma_dot = J_inv * (Jw.cross(sigma) - p_theta) - w.cross(sigma);
+  const Vec3 p_theta_dot = p_theta.cross(w);
+  return J_inv * ((J * w_dot).cross(sigma) + Jw.cross(sigma_dot) - p_theta_dot) - w_dot.cross(sigma) -
+         w.cross(sigma_dot);
+}
+
+/// The singular components u_S of the control on a singular arc: σ̈_S = 0 with the other axes at their bang
+/// values, C_SS u_S = −σ̈_S(u with u_S = 0), C = ∂σ̈/∂u = j(σ) J⁻¹ − J⁻¹ j(σ).
+void singular_control(const Mat3& J, const Mat3& J_inv, const ArcMode& mode, const PmpView& v, Vec3& u) {
+  std::vector<int> S;
+  for (int k = 0; k < 3; ++k)
+    if (mode.singular[static_cast<std::size_t>(k)]) {
+      S.push_back(k);
+      u[k] = 0.0;
+    }
+  const Vec3 sigma = J_inv * v.p_omega;
+  const Vec3 b = switching_second_derivative(J, J_inv, v.omega, sigma, attitude_costate_body(v.R, v.P), u);
+  const Mat3 C = so3::hat(sigma) * J_inv - J_inv * so3::hat(sigma);
+  const auto n = static_cast<Eigen::Index>(S.size());
+  Eigen::MatrixXd M(n, n);
+  Eigen::VectorXd rhs(n);
+  for (Eigen::Index a = 0; a < n; ++a) {
+    for (Eigen::Index e = 0; e < n; ++e)
+      M(a, e) = C(S[static_cast<std::size_t>(a)], S[static_cast<std::size_t>(e)]);
+    rhs[a] = -b[S[static_cast<std::size_t>(a)]];
+  }
+  const Eigen::VectorXd uS = DenseLu(M).solve(rhs);
+  for (Eigen::Index a = 0; a < n; ++a)
+    u[S[static_cast<std::size_t>(a)]] = uS[a];
+}
+
+/// u and μ on an arc for the state y (arc_shooting.hpp): u_k = sign_k u_max,k off the held and singular sets;
+/// on the held set A, (J⁻¹u)_A = (J⁻¹(ω × Jω))_A and μ from (J⁻¹)_AA (μ s)_A = (J⁻¹ g)_A; on the singular
+/// set, σ̈_S = 0 (a singular arc never overlaps a boundary arc: read_arc_structure refuses it).
 void arc_control(const ReorientationProblem& p, const Mat3& J_inv, const ArcMode& mode, const PmpState& y,
                  Vec3& u, Vec3& mu) {
   const PmpView v = unpack(y);
   const Mat3& J = p.inertia_body;
   u = mode.sign.cwiseProduct(p.torque_max);
   mu.setZero();
+  if (mode.singular[0] || mode.singular[1] || mode.singular[2]) {
+    singular_control(J, J_inv, mode, v, u);
+    return;
+  }
   std::vector<int> A;
   for (int k = 0; k < 3; ++k)
     if (mode.held[static_cast<std::size_t>(k)]) A.push_back(k);
@@ -71,9 +116,14 @@ void arc_control(const ReorientationProblem& p, const Mat3& J_inv, const ArcMode
   }
 }
 
-class RateBoundShooter {
+/// How far outside its bound (a multiple of u_max,k) a held or singular torque may go along a Newton iterate
+/// before the shot counts as outside the domain; the converged solution must be within the bound (the
+/// verification checks it).
+constexpr double kControlEnvelope = 4.0;
+
+class ArcShooter {
  public:
-  RateBoundShooter(const ReorientationProblem& p, const RateBoundStructure& s, double tolerance)
+  ArcShooter(const ReorientationProblem& p, const ArcStructure& s, double tolerance)
       : p_(p),
         s_(s),
         tol_(tolerance),
@@ -113,6 +163,7 @@ class RateBoundShooter {
     }
     ArcMode mode;
     mode.sign = s_.initial_sign;
+    bool outside = false;
     PmpState y = pack(R0_, p_.omega_initial, 0.5 * R0_ * so3::hat(x.segment<3>(0)), x.segment<3>(3), 0.0);
     double t0 = 0.0;
     Vec3 u, mu;
@@ -121,6 +172,13 @@ class RateBoundShooter {
       auto rhs = [&](const PmpState& yy, PmpState& dy, double) {
         Vec3 uu, mm;
         arc_control(p_, J_inv_, mode, yy, uu, mm);
+        // A held or singular torque far outside its bound (C_SS nearly singular along a poor iterate): the
+        // shot is outside the domain; the flow is frozen so that the integrator ends at once.
+        if (!uu.allFinite() || (uu.cwiseAbs() - kControlEnvelope * p_.torque_max).maxCoeff() > 0.0) {
+          outside = true;
+          dy.fill(0.0);
+          return;
+        }
         pmp_rhs(p_, J_inv_, yy, dy, uu);
         for (int k = 0; k < 3; ++k)
           dy[21 + k] -= mm[k] * mode.side[k];
@@ -128,10 +186,12 @@ class RateBoundShooter {
       // Events at one time (three axes entering together) leave arcs of zero length: integrated, not
       // sampled, so that no time appears more than twice among the samples (the replayed torque table).
       const int m = t1 - t0 > 1e-12 * T ? std::max(2, samples) : 1;
+      // The last sample is t1 itself, the next arc's first: t0 + (t1 − t0) may round above t1.
+      auto sample_time = [&](int i) { return i + 1 >= m ? t1 : t0 + (t1 - t0) * i / (m - 1); };
       for (int i = 0; i < m; ++i) {
-        const double ts = t0 + (t1 - t0) * i / (m - 1);
+        const double ts = sample_time(i);
         if (i > 0 && t1 > t0) {
-          const double ta = t0 + (t1 - t0) * (i - 1) / (m - 1);
+          const double ta = sample_time(i - 1);
           odeint::integrate_adaptive(
               odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(tol_, tol_), rhs, y, ta, ts,
               (ts - ta) / 4);
@@ -143,28 +203,42 @@ class RateBoundShooter {
         odeint::integrate_adaptive(
             odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(tol_, tol_), rhs, y, t0, t1,
             t1 - t0);
+      if (outside) return false;
       if (a == n) break;
       // The event at t1: its rows, then the next arc's mode.
       const std::size_t k = order[a].second;
-      const RateBoundEvent& e = s_.events[k];
+      const ArcEvent& e = s_.events[k];
       const PmpView v = unpack(y);
       const Vec3 sigma = J_inv_ * v.p_omega;
       const double ubar = p_.torque_max[e.axis];
+      const auto axis = static_cast<std::size_t>(e.axis);
       switch (e.kind) {
         case Kind::sign_change:
           if (F) (*F)[7 + static_cast<int>(k)] = sigma[e.axis] * ubar;
           mode.sign[e.axis] = -mode.sign[e.axis];
           break;
         case Kind::entry:
+          if (e.arc == Arc::singular) {
+            if (F) {
+              const Vec3 Jw = p_.inertia_body * v.omega;
+              const Vec3 sigma_dot =
+                  J_inv_ * (Jw.cross(sigma) - attitude_costate_body(v.R, v.P)) - v.omega.cross(sigma);
+              (*F)[7 + static_cast<int>(k)] = sigma[e.axis] * ubar;
+              (*F)[7 + e.pair] = sigma_dot[e.axis] * ubar * T;
+            }
+            mode.singular[axis] = true;
+            break;
+          }
           if (F) {
             (*F)[7 + static_cast<int>(k)] = (v.omega[e.axis] - e.side * p_.rate_max) * T;
             (*F)[7 + e.pair] = sigma[e.axis] * ubar;
           }
-          mode.held[static_cast<std::size_t>(e.axis)] = true;
+          mode.held[axis] = true;
           mode.side[e.axis] = e.side;
           break;
         case Kind::exit:
-          mode.held[static_cast<std::size_t>(e.axis)] = false;
+          mode.held[axis] = false;
+          mode.singular[axis] = false;
           mode.side[e.axis] = 0.0;
           mode.sign[e.axis] = e.sign_after;
           break;
@@ -193,7 +267,7 @@ class RateBoundShooter {
 
  private:
   const ReorientationProblem& p_;
-  const RateBoundStructure& s_;
+  const ArcStructure& s_;
   double tol_;
   Mat3 J_inv_, R0_, Rf_;
 };
@@ -202,8 +276,8 @@ class RateBoundShooter {
 /// p_θ T, times T) and Newton with a backtracking line search on the max norm; least squares where the
 /// Jacobian is singular. Returns the iterations; `stalled` when no step decreased the residual. Calls
 /// o.on_newton_iteration, when set, after each iteration with the residual.
-int rate_newton(const RateBoundShooter& sh, const ShootingOptions& o, Eigen::VectorXd& x, Eigen::VectorXd& F,
-                double& norm, bool& stalled) {
+int arc_newton(const ArcShooter& sh, const ShootingOptions& o, Eigen::VectorXd& x, Eigen::VectorXd& F,
+               double& norm, bool& stalled) {
   const double tolerance = o.tolerance;
   const int max_iterations = o.max_iterations;
   stalled = false;
@@ -264,143 +338,14 @@ Vec3 direct_costate_omega(const DirectSolution& d, double t) {
 
 }  // namespace
 
-bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, double& peak) {
-  peak = 0.0;
-  for (const auto& w : d.omega_body)
-    peak = std::max(peak, w.cwiseAbs().maxCoeff());
-  return p.has_rate_bound() && peak > p.rate_max * (1.0 - 1e-4);
-}
+namespace {
 
-RateBoundStructure read_rate_bound_structure(const ReorientationProblem& p, const DirectSolution& d) {
-  RateBoundStructure s;
-  if (p.objective != Objective::minimum_time || p.bound != TorqueBound::per_axis) {
-    s.refused = "boundary arcs are handled for minimum time with per-axis torque bounds only";
-    return s;
-  }
-  const double r = p.rate_max, T = d.final_time;
-  const std::size_t N = d.time.size();
-  std::vector<RateBoundEvent> events;
-  for (int i = 0; i < 3; ++i) {
-    // The boundary arcs of axis i: stretches of ≥ 2 samples at the bound.
-    std::vector<std::pair<std::size_t, std::size_t>> arcs;
-    for (std::size_t j = 0; j < N;) {
-      if (std::abs(d.omega_body[j][i]) < (1.0 - 1e-3) * r) {
-        ++j;
-        continue;
-      }
-      std::size_t e = j;
-      const double side = d.omega_body[j][i] > 0 ? 1.0 : -1.0;
-      while (e + 1 < N && d.omega_body[e + 1][i] * side >= (1.0 - 1e-3) * r)
-        ++e;
-      if (e > j) arcs.emplace_back(j, e);
-      j = e + 1;
-    }
-    auto on_arc = [&](std::size_t j) {
-      for (const auto& [a, b] : arcs)
-        if (j >= a && j <= b) return true;
-      return false;
-    };
-    // Saturated samples off the arcs: the signs; an arc between two of them takes the place of a switch.
-    const double umax = p.torque_max[i];
-    int last = -1;
-    double inside_since = -1.0;
-    std::size_t next_arc = 0;
-    for (std::size_t j = 0; j < N; ++j) {
-      if (on_arc(j)) {
-        inside_since = -1.0;
-        continue;
-      }
-      const double u = d.torque_body[j][i];
-      if (std::abs(u) < 0.95 * umax) {
-        if (inside_since < 0.0) inside_since = d.time[j];
-        if (d.time[j] - inside_since > 0.05 * T && s.refused.empty())
-          s.refused = "u" + std::to_string(i + 1) +
-                      " is inside its bound off the rate bound from t = " + format_number(inside_since, 6) +
-                      " s to " + format_number(d.time[j], 6) + " s (a singular arc?)";
-      } else {
-        inside_since = -1.0;
-      }
-      if (std::abs(u) <= 0.5 * umax) continue;
-      const double sign = u > 0 ? 1.0 : -1.0;
-      // Arcs passed since the last saturated sample.
-      bool crossed_arc = false;
-      while (next_arc < arcs.size() && arcs[next_arc].second < j) {
-        const auto [a, b] = arcs[next_arc++];
-        RateBoundEvent enter, leave;
-        enter.kind = Kind::entry;
-        leave.kind = Kind::exit;
-        enter.axis = leave.axis = i;
-        enter.side = leave.side = d.omega_body[a][i] > 0 ? 1.0 : -1.0;
-        enter.time = d.time[a];
-        leave.time = d.time[b];
-        leave.sign_after = sign;
-        events.push_back(enter);
-        events.push_back(leave);
-        crossed_arc = true;
-      }
-      if (last < 0) {
-        s.initial_sign[i] = sign;
-      } else if (!crossed_arc && (u > 0) != (d.torque_body[static_cast<std::size_t>(last)][i] > 0)) {
-        double t0 = d.time[static_cast<std::size_t>(last)];
-        for (std::size_t k = static_cast<std::size_t>(last); k < j; ++k) {
-          const double a = d.torque_body[k][i], b = d.torque_body[k + 1][i];
-          if ((a > 0) != (b > 0)) {
-            t0 = d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
-            break;
-          }
-        }
-        RateBoundEvent e;
-        e.axis = i;
-        e.time = t0;
-        events.push_back(e);
-      }
-      last = static_cast<int>(j);
-    }
-    if (next_arc < arcs.size()) {
-      s.refused = "the rate bound of axis " + std::to_string(i + 1) + " is active up to the final time";
-      return s;
-    }
-  }
-  std::stable_sort(events.begin(), events.end(),
-                   [](const auto& a, const auto& b) { return a.time < b.time; });
-  // Pair each entry with the next exit of its axis.
-  for (std::size_t k = 0; k < events.size(); ++k)
-    if (events[k].kind == Kind::entry)
-      for (std::size_t l = k + 1; l < events.size(); ++l)
-        if (events[l].kind == Kind::exit && events[l].axis == events[k].axis && events[l].pair < 0) {
-          events[k].pair = static_cast<int>(l);
-          events[l].pair = static_cast<int>(k);
-          break;
-        }
-  s.events = events;
-  return s;
-}
-
-IndirectSolution solve_rate_bounded(const ReorientationProblem& p, const DirectSolution& d,
-                                    const ShootingOptions& o) {
+/// Newton from x over the structure s (polished and judged as solve_indirect), then the solution's status,
+/// events and samples. x holds the last iterate on return.
+IndirectSolution shoot_over_arcs(const ReorientationProblem& p, const ArcStructure& s,
+                                 const ShootingOptions& o, Eigen::VectorXd& x) {
   IndirectSolution out;
-  const RateBoundStructure s = read_rate_bound_structure(p, d);
-  if (!s.refused.empty()) {
-    out.status = "not applied: the rate bound is active and " + s.refused;
-    return out;
-  }
-  // Initial costates as solve_indirect: p_θ(0) = R_0ᵀ mean_k(R_k p_θ,k), p_ω(0) extrapolated.
-  Vec3 pi_space = Vec3::Zero();
-  for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
-    const auto it = std::lower_bound(d.time.begin(), d.time.end(), d.costate_time[k]);
-    const std::size_t j =
-        std::min<std::size_t>(static_cast<std::size_t>(it - d.time.begin()), d.time.size() - 1);
-    pi_space += d.attitude[j].toRotationMatrix() * d.costate_attitude_body[k];
-  }
-  pi_space /= static_cast<double>(d.costate_time.size());
-  if (p.free_final_attitude) pi_space.setZero();
-  const RateBoundShooter shooter(p, s, o.integration_tolerance);
-  Eigen::VectorXd x(shooter.size());
-  x.segment<3>(0) = p.attitude_initial.toRotationMatrix().transpose() * pi_space;
-  x.segment<3>(3) = direct_costate_omega(d, 0.0);
-  x[6] = d.final_time;
-  for (std::size_t k = 0; k < s.events.size(); ++k)
-    x[7 + static_cast<int>(k)] = s.events[k].time;
+  const ArcShooter shooter(p, s, o.integration_tolerance);
   Eigen::VectorXd F;
   double norm = shooter.residual(x, F) ? F.cwiseAbs().maxCoeff() : std::numeric_limits<double>::infinity();
   if (!std::isfinite(norm)) {
@@ -408,15 +353,15 @@ IndirectSolution solve_rate_bounded(const ReorientationProblem& p, const DirectS
     return out;
   }
   bool stalled = false;
-  int it = rate_newton(shooter, o, x, F, norm, stalled);
+  int it = arc_newton(shooter, o, x, F, norm, stalled);
   double used_tolerance = o.integration_tolerance;
   if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
     used_tolerance = o.integration_tolerance / 10.0;
-    const RateBoundShooter polish(p, s, used_tolerance);
+    const ArcShooter polish(p, s, used_tolerance);
     if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
       F = Fp;
       norm = Fp.cwiseAbs().maxCoeff();
-      it += rate_newton(polish, o, x, F, norm, stalled);
+      it += arc_newton(polish, o, x, F, norm, stalled);
     }
   }
   const bool floor =
@@ -424,12 +369,15 @@ IndirectSolution solve_rate_bounded(const ReorientationProblem& p, const DirectS
   out.iterations = it;
   out.residual = norm;
   out.converged = norm <= o.tolerance || floor;
-  const std::string arcs =
-      std::to_string((s.events.size() - static_cast<std::size_t>(std::count_if(
-                                            s.events.begin(), s.events.end(),
-                                            [](const auto& e) { return e.kind == Kind::sign_change; }))) /
-                     2) +
-      " boundary arc(s) at the rate bound";
+  auto count_arcs = [&](Arc arc) {
+    return std::count_if(s.events.begin(), s.events.end(),
+                         [arc](const auto& e) { return e.kind == Kind::entry && e.arc == arc; });
+  };
+  const auto boundary = count_arcs(Arc::boundary), singular = count_arcs(Arc::singular);
+  std::string arcs;
+  if (boundary > 0) arcs = std::to_string(boundary) + " boundary arc(s) at the rate bound";
+  if (singular > 0) arcs += (arcs.empty() ? "" : ", ") + std::to_string(singular) + " singular arc(s)";
+  if (arcs.empty()) arcs = "no boundary or singular arc";
   out.status =
       floor ? "converged (residual " + format_number(norm, 3) + " at its round-off floor; " + arcs + ")"
       : out.converged ? "converged (" + arcs + ")"
@@ -445,10 +393,13 @@ IndirectSolution solve_rate_bounded(const ReorientationProblem& p, const DirectS
   for (const auto& [t, k] : order) {
     out.switch_times.push_back(t);
     out.switch_axes.push_back(s.events[k].axis);
-    if (s.events[k].kind == Kind::entry)
-      out.rate_bound_arcs.push_back({s.events[k].axis, s.events[k].side, t, x[7 + s.events[k].pair]});
+    const ArcEvent& e = s.events[k];
+    if (e.kind == Kind::entry && e.arc == Arc::boundary)
+      out.rate_bound_arcs.push_back({e.axis, e.side, t, x[7 + e.pair]});
+    if (e.kind == Kind::entry && e.arc == Arc::singular)
+      out.singular_arcs.push_back({e.axis, t, x[7 + e.pair]});
   }
-  const RateBoundShooter result(p, s, used_tolerance);
+  const ArcShooter result(p, s, used_tolerance);
   const Mat3 J_inv = p.inertia_body.inverse();
   PmpState y;
   Vec3 u;
@@ -468,6 +419,35 @@ IndirectSolution solve_rate_bounded(const ReorientationProblem& p, const DirectS
                      out.cost = v.cost;
                    });
   return out;
+}
+
+}  // namespace
+
+IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
+                                 const ShootingOptions& o) {
+  const ArcStructure s = read_arc_structure(p, d);
+  if (!s.refused.empty()) {
+    IndirectSolution out;
+    out.status = "not applied: " + s.refused;
+    return out;
+  }
+  // Initial costates as solve_indirect: p_θ(0) = R_0ᵀ mean_k(R_k p_θ,k), p_ω(0) extrapolated.
+  Vec3 pi_space = Vec3::Zero();
+  for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
+    const auto it = std::lower_bound(d.time.begin(), d.time.end(), d.costate_time[k]);
+    const std::size_t j =
+        std::min<std::size_t>(static_cast<std::size_t>(it - d.time.begin()), d.time.size() - 1);
+    pi_space += d.attitude[j].toRotationMatrix() * d.costate_attitude_body[k];
+  }
+  pi_space /= static_cast<double>(d.costate_time.size());
+  if (p.free_final_attitude) pi_space.setZero();
+  Eigen::VectorXd x(7 + static_cast<int>(s.events.size()));
+  x.segment<3>(0) = p.attitude_initial.toRotationMatrix().transpose() * pi_space;
+  x.segment<3>(3) = direct_costate_omega(d, 0.0);
+  x[6] = d.final_time;
+  for (std::size_t k = 0; k < s.events.size(); ++k)
+    x[7 + static_cast<int>(k)] = s.events[k].time;
+  return shoot_over_arcs(p, s, o, x);
 }
 
 }  // namespace poinsot::optimal::detail

@@ -1,0 +1,48 @@
+#pragma once
+/// @file arc_structure.hpp (internal)
+/// The arcs of a minimum-time control with per-axis torque bounds read from a direct (collocated) solution:
+/// the initial sign of each u_i, its sign changes, the boundary arcs of an active rate bound and the singular
+/// arcs, in order of time. Seeds the shooting over arcs (arc_shooting.hpp).
+#include <string>
+#include <vector>
+
+#include "poinsot/core/types.hpp"
+#include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/problem.hpp"
+
+namespace poinsot::optimal::detail {
+
+/// One event of a control over bang, boundary and singular arcs: a sign change of u_axis, or the entry into
+/// or the exit from a boundary arc where ω_axis = side · r, or from a singular arc where σ_axis ≡ 0.
+struct ArcEvent {
+  enum class Kind { sign_change, entry, exit };
+  enum class Arc { boundary, singular };
+  Kind kind = Kind::sign_change;
+  Arc arc = Arc::boundary;  ///< entry and exit: the kind of arc
+  int axis = 0;
+  double side = 1.0;        ///< boundary entry and exit: s, the bound ω_axis = s r
+  double time = 0.0;        ///< s, the guess
+  double sign_after = 1.0;  ///< exit: the sign of u_axis after the exit
+  int pair = -1;            ///< entry ↔ exit: the index of the other end of the arc
+};
+
+struct ArcStructure {
+  Vec3 initial_sign = Vec3::Ones();
+  std::vector<ArcEvent> events;  ///< ascending in time
+  std::string refused;           ///< non-empty: why the structure is not one this solver handles
+};
+
+/// The largest |ω_i| of the direct solution, and whether it reaches the bound (to 1e-4 relative).
+bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, double& peak);
+
+/// Reads the structure from the direct solution: a boundary arc of axis k is a stretch of at least two
+/// samples with |ω_k| ≥ (1 − 1e-3) r (none without a rate bound); a singular arc of axis k is a stretch off
+/// its boundary arcs, longer than 5 % of T, of samples with |u_k| < 0.95 u_max,k (gaps of up to three samples
+/// closer to the bound, the collocation's ringing on such arcs, are bridged); the sign changes of u_k between
+/// samples outside its arcs where |u_k| > u_max,k / 2 are switches, except one whose bracket contains an arc
+/// of the same axis (the arc takes its place: the sign after the exit is the next saturated sample's).
+/// `refused` names a problem that is not minimum time with per-axis bounds, a boundary arc that lasts to the
+/// final time, or a singular arc that overlaps a boundary arc or reaches t = 0 or T.
+ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d);
+
+}  // namespace poinsot::optimal::detail
