@@ -48,7 +48,7 @@ Vec3 switching_second_derivative(const Mat3& J, const Mat3& J_inv, const Vec3& w
 }
 
 /// The singular components u_S of the control on a singular arc: σ̈_S = 0 with the other axes at their bang
-/// values, C_SS u_S = −σ̈_S(u with u_S = 0), C = ∂σ̈/∂u = j(σ) J⁻¹ − J⁻¹ j(σ).
+/// values, C_SS u_S = −σ̈_S(u with u_S = 0), C = ∂σ̈/∂u (switching_torque_gain).
 void singular_control(const Mat3& J, const Mat3& J_inv, const ArcMode& mode, const PmpView& v, Vec3& u) {
   std::vector<int> S;
   for (int k = 0; k < 3; ++k)
@@ -58,7 +58,7 @@ void singular_control(const Mat3& J, const Mat3& J_inv, const ArcMode& mode, con
     }
   const Vec3 sigma = J_inv * v.p_omega;
   const Vec3 b = switching_second_derivative(J, J_inv, v.omega, sigma, attitude_costate_body(v.R, v.P), u);
-  const Mat3 C = so3::hat(sigma) * J_inv - J_inv * so3::hat(sigma);
+  const Mat3 C = switching_torque_gain(J_inv, sigma);
   const auto n = static_cast<Eigen::Index>(S.size());
   Eigen::MatrixXd M(n, n);
   Eigen::VectorXd rhs(n);

@@ -25,10 +25,11 @@ struct SampleArc {
   Arc arc = Arc::boundary;
 };
 
-/// The boundary arcs of axis i: stretches of ≥ 2 samples with |ω_i| ≥ (1 − 1e-3) r.
+/// The boundary arcs of axis i: stretches of ≥ 2 samples with |ω_i| ≥ (1 − 1e-3) r; none where the rate bound
+/// is not active (rate_bound_active).
 std::vector<SampleArc> boundary_arcs(const ReorientationProblem& p, const DirectSolution& d, int i) {
   std::vector<SampleArc> arcs;
-  if (!p.has_rate_bound()) return arcs;
+  if (double peak = 0.0; !rate_bound_active(p, d, peak)) return arcs;
   const double r = p.rate_max;
   const std::size_t N = d.time.size();
   for (std::size_t j = 0; j < N;) {

@@ -44,6 +44,13 @@ inline Vec3 attitude_costate_body(const Mat3& R, const Mat3& P) {
   return so3::vee(M - M.transpose());
 }
 
+/// C(σ) = ∂σ̈/∂u = j(σ) J⁻¹ − J⁻¹ j(σ): how the torque enters the second derivative of the switching vector
+/// σ = J⁻¹p_ω off the boundary arcs (arc_shooting.hpp). Its diagonal C_ii = 2 σ·(J⁻¹e_i × e_i) fixes the
+/// singular control of axis i and must not be positive along a singular arc (Kelley's condition).
+inline Mat3 switching_torque_gain(const Mat3& J_inv, const Vec3& sigma) {
+  return so3::hat(sigma) * J_inv - J_inv * so3::hat(sigma);
+}
+
 /// The running cost L(u) of the objective (1 + ε‖u‖² includes the time term of the free-time objectives).
 inline double running_cost(const ReorientationProblem& p, const Vec3& u) {
   switch (p.objective) {

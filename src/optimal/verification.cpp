@@ -129,8 +129,8 @@ void measure_replays(const ReorientationProblem& p, const IndirectSolution& s, V
   }
 }
 
-/// Admissibility along the samples (the torque and rate bounds, the pointing cones' margins) and the sign of
-/// the rate-bound multipliers.
+/// Admissibility along the samples (the torque and rate bounds, the pointing cones' margins), the sign of the
+/// rate-bound multipliers, and Kelley's condition on the singular arcs.
 void measure_admissibility(const ReorientationProblem& p, const IndirectSolution& s, VerificationReport& r) {
   r.torque_bound_excess = -1.0;
   for (std::size_t j = 0; j < s.time.size(); ++j) {
@@ -159,16 +159,17 @@ void measure_admissibility(const ReorientationProblem& p, const IndirectSolution
     mu_min = std::min(mu_min, mu.minCoeff());
   }
   r.rate_multiplier_min = mu_max > 0.0 ? mu_min / mu_max : 0.0;
-  // Kelley's condition on the singular arcs (arc_shooting.hpp): −C_ii = −2 σ·(J⁻¹e_i × e_i) ≥ 0.
+  // Kelley's condition on the singular arcs (arc_shooting.hpp): −C_ii ≥ 0, relative to 2‖σ‖‖J⁻¹e_i × e_i‖.
   const Mat3 J_inv = p.inertia_body.inverse();
   double kelley = std::numeric_limits<double>::infinity();
   for (const SingularArc& arc : s.singular_arcs) {
-    const Vec3 e = Vec3::Unit(arc.axis);
-    const Vec3 a = (J_inv * e).cross(e);
+    const int i = arc.axis;
+    const double scale = 2.0 * (J_inv * Vec3::Unit(i)).cross(Vec3::Unit(i)).norm();
     for (std::size_t j = 0; j < s.time.size(); ++j)
       if (s.time[j] >= arc.t_entry && s.time[j] <= arc.t_exit) {
         const Vec3& sigma = s.switching_function[j];
-        kelley = std::min(kelley, -sigma.dot(a) / std::max(sigma.norm() * a.norm(), 1e-300));
+        const double gain = detail::switching_torque_gain(J_inv, sigma)(i, i);
+        kelley = std::min(kelley, -gain / std::max(scale * sigma.norm(), 1e-300));
       }
   }
   r.kelley_condition_min = std::isfinite(kelley) ? kelley : 0.0;
