@@ -1,6 +1,7 @@
 """scripts/optimal_benchmark.py, the random-problem benchmark of `poinsot optimize`: its generator (valid,
 deterministic scenario files for every family) and a small fixed-seed run (the CI's version of the
 benchmark; the full table in docs/measurements/optimal_control.md comes from larger runs)."""
+import json
 import os
 import subprocess
 import sys
@@ -49,8 +50,17 @@ def test_fixed_seed_run_is_valid_and_verifies_the_tuned_families(source_dir, tmp
         pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
     families = ["per_axis", "norm", "energy", "spin", "rate", "detumble", "nonprincipal"]
     r = bench(source_dir, "--poinsot", exe, "--seed", 1, "--n", 1, "--family", ",".join(families),
-              "--expect-verified", ",".join(families), "--cpu-limit", 60, "--json", tmp_path / "r.json")
+              "--expect-verified", ",".join(families), "--cpu-limit", 60, "--json", tmp_path / "r.json",
+              "--keep", tmp_path / "k")
     assert r.returncode == 0, r.stdout + r.stderr
     lines = r.stdout.splitlines()
     assert lines[0].startswith("| family | problems | verified | converged (direct) | failed |")
     assert [line.split("|")[1].strip() for line in lines[2:]] == families
+    # The rate-bounded problem: the refinement stopped at the first mesh from which the shooting over its
+    # boundary arcs verified, above the mesh tolerance (docs/optimal_control.md, "Rate-bounded problems stop
+    # refining once verified"), the arcs and the multipliers' sign in summary.json.
+    summary = json.loads((tmp_path / "k" / "rate_1_0-out" / "summary.json").read_text())
+    assert summary["outcome"] == "optimal"
+    assert not summary["direct"]["converged"] and "refinement stopped" in summary["direct"]["status"]
+    assert 0.0 < summary["direct"]["mesh_error"] <= 1e-4
+    assert summary["indirect"]["rate_bound_arcs"] and summary["checks"]["rate_multiplier_min"] >= 0.0
