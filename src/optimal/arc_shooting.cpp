@@ -35,13 +35,18 @@ struct ArcMode {
   std::array<bool, 3> singular{false, false, false};
 };
 
-/// σ̈ (arc_shooting.hpp) at the body rate ω, switching vector σ = J⁻¹p_ω, attitude costate p_θ and torque u,
-/// off the boundary arcs (no rate multiplier in ṗ_ω).
+/// σ̇ = J⁻¹(Jω × σ − p_θ) − ω × σ (arc_shooting.hpp) at the body rate ω, switching vector σ = J⁻¹p_ω and
+/// attitude costate p_θ, off the boundary arcs (no rate multiplier in ṗ_ω).
+Vec3 switching_rate(const Mat3& J, const Mat3& J_inv, const Vec3& w, const Vec3& sigma, const Vec3& p_theta) {
+  return J_inv * ((J * w).cross(sigma) - p_theta) - w.cross(sigma);
+}
+
+/// σ̈ (arc_shooting.hpp) at the same point and the torque u, off the boundary arcs.
 Vec3 switching_second_derivative(const Mat3& J, const Mat3& J_inv, const Vec3& w, const Vec3& sigma,
                                  const Vec3& p_theta, const Vec3& u) {
   const Vec3 Jw = J * w;
   const Vec3 w_dot = J_inv * (u - w.cross(Jw));
-  const Vec3 sigma_dot = J_inv * (Jw.cross(sigma) - p_theta) - w.cross(sigma);
+  const Vec3 sigma_dot = switching_rate(J, J_inv, w, sigma, p_theta);
   const Vec3 p_theta_dot = p_theta.cross(w);
   return J_inv * ((J * w_dot).cross(sigma) + Jw.cross(sigma_dot) - p_theta_dot) - w_dot.cross(sigma) -
          w.cross(sigma_dot);
@@ -220,9 +225,8 @@ class ArcShooter {
         case Kind::entry:
           if (e.arc == Arc::singular) {
             if (F) {
-              const Vec3 Jw = p_.inertia_body * v.omega;
               const Vec3 sigma_dot =
-                  J_inv_ * (Jw.cross(sigma) - attitude_costate_body(v.R, v.P)) - v.omega.cross(sigma);
+                  switching_rate(p_.inertia_body, J_inv_, v.omega, sigma, attitude_costate_body(v.R, v.P));
               (*F)[7 + static_cast<int>(k)] = sigma[e.axis] * ubar;
               (*F)[7 + e.pair] = sigma_dot[e.axis] * ubar * T;
             }
