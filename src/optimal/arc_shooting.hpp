@@ -3,8 +3,7 @@
 /// The indirect method for minimum time with per-axis torque bounds |u_i| ≤ u_max,i over arcs that are not
 /// all bang-bang: boundary arcs of an active rate bound |ω_i| ≤ r, on which one or more rates ride the bound,
 /// ω_k = s_k r (s_k = ±1), and singular arcs, on which a switching function σ_i vanishes identically and u_i
-/// lies inside its bound. Single shooting (docs/optimal_control_theory.md, section 3, "Active rate bounds"
-/// and "Singular arcs").
+/// lies inside its bound. Single shooting (docs/optimal_control_arcs.md).
 ///
 /// Boundary arcs. The rate bound c_k = s_k ω_k − r ≤ 0 is a first-order state constraint (ċ_k = s_k ω̇_k
 /// holds u). It is adjoined directly: 𝓛 = H + Σ μ_k c_k with μ_k ≥ 0, zero off the boundary arcs, so that on
