@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "poinsot/core/format.hpp"
+#include "switching_structure.hpp"
 
 namespace poinsot::optimal::detail {
 
@@ -152,17 +153,9 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
       if (last < 0) {
         s.initial_sign[i] = sign;
       } else if (!crossed_arc && (u > 0) != (d.torque_body[static_cast<std::size_t>(last)][i] > 0)) {
-        double t0 = d.time[static_cast<std::size_t>(last)];
-        for (std::size_t k = static_cast<std::size_t>(last); k < j; ++k) {
-          const double a = d.torque_body[k][i], b = d.torque_body[k + 1][i];
-          if ((a > 0) != (b > 0)) {
-            t0 = d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
-            break;
-          }
-        }
         ArcEvent e;
         e.axis = i;
-        e.time = t0;
+        e.time = torque_sign_change(d, i, static_cast<std::size_t>(last), j);
         events.push_back(e);
       }
       last = static_cast<int>(j);

@@ -44,6 +44,14 @@ std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSo
   return out;
 }
 
+double torque_sign_change(const DirectSolution& d, int axis, std::size_t from, std::size_t to) {
+  for (std::size_t k = from; k < to; ++k) {
+    const double a = d.torque_body[k][axis], b = d.torque_body[k + 1][axis];
+    if ((a > 0) != (b > 0)) return d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
+  }
+  return d.time[from];
+}
+
 SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d) {
   SwitchGuess g;
   const double T = d.final_time;
@@ -66,15 +74,7 @@ SwitchGuess read_switching_structure(const ReorientationProblem& p, const Direct
         g.initial_sign[i] = u > 0 ? 1.0 : -1.0;
       } else if ((u > 0) != (d.torque_body[last][i] > 0)) {
         // zero of the piecewise-linear interpolant between the last two saturated samples
-        double t0 = d.time[last];
-        for (std::size_t k = last; k < j; ++k) {
-          const double a = d.torque_body[k][i], b = d.torque_body[k + 1][i];
-          if ((a > 0) != (b > 0)) {
-            t0 = d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
-            break;
-          }
-        }
-        g.times.push_back(t0);
+        g.times.push_back(torque_sign_change(d, i, static_cast<std::size_t>(last), j));
         g.axes.push_back(i);
       }
       last = static_cast<int>(j);

@@ -27,6 +27,10 @@ struct SwitchGuess {
 /// the time is the zero of the component along the earlier torque, linearly interpolated.
 std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSolution& d);
 
+/// The time (s) of the first sign change of u_i between samples `from` and `to` of the direct solution: the
+/// zero of its piecewise-linear interpolant; the time of `from` when u_i keeps its sign.
+double torque_sign_change(const DirectSolution& d, int axis, std::size_t from, std::size_t to);
+
 /// Per-axis bounds: the sign changes of each u_i between saturated samples (|u_i| > u_max,i / 2), each at the
 /// zero of the piecewise-linear interpolant; `singular` names an axis whose torque stays inside 95 % of its
 /// bound for more than 5 % of T.
