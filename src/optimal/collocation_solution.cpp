@@ -67,7 +67,7 @@ DirectSolution extract_solution(const CollocationNlp& nlp, const std::vector<dou
   s.node_time.push_back(t.back());
   if (!y.empty())
     for (int k = 0; k < nlp.intervals(); ++k) {
-      const Vec7 lambda = -Eigen::Map<const Vec7>(y.data() + CollocationNlp::defect_row(k));
+      const Vec7 lambda = nlp.costate(y, k);
       const IntervalSample mid = sample_interval(nlp, z, k, 0.5);
       const Vec4 q = mid.x.head<4>();
       s.costate_time.push_back(t[nlp.interval_first_point(k) + 1]);

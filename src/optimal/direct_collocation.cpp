@@ -44,8 +44,7 @@ void torque_free_motion(const CollocationNlp& nlp, double T, std::vector<Mat3>& 
   Vec3 wk = p.omega_initial;
   double tau_prev = 0.0;
   for (int pt = 0; pt < nlp.points(); ++pt) {
-    const int k = pt / 2;
-    const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
+    const double tau = nlp.mesh().point_fraction(pt);
     for (int i = 0; i < 16; ++i) {
       const double h = (tau - tau_prev) * T / 16.0;
       const Vec3 w_mid = wk + 0.5 * h * wdot(wk);
@@ -94,8 +93,7 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
   double tau_prev = 0.0;
   Quat q_prev = p.attitude_initial;
   for (int pt = 0; pt < nlp.points(); ++pt) {
-    const int k = pt / 2;
-    const double tau = pt % 2 == 0 ? nlp.tau()[k] : 0.5 * (nlp.tau()[k] + nlp.tau()[k + 1]);
+    const double tau = nlp.mesh().point_fraction(pt);
     Vec3 w = (spinning ? Vec3(spin_omega[pt] + tau * (p.omega_final - spin_omega_end))
                        : Vec3((1.0 - tau) * p.omega_initial + tau * p.omega_final)) +
              rotvec / T + std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
@@ -133,7 +131,7 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
     for (int i = 0; i < 3; ++i)
       z[kP * pt + 4 + i] = w[i];
   }
-  z[nlp.time_index()] = T;
+  if (nlp.free_time()) z[nlp.time_index()] = T;
   return z;
 }
 
@@ -143,8 +141,7 @@ std::vector<double> interpolate(const CollocationNlp& prev, const std::vector<do
   std::vector<double> out(next.num_variables(), 0.0);
   int k = 0;
   for (int pt = 0; pt < next.points(); ++pt) {
-    const int kn = pt / 2;
-    const double tau = pt % 2 == 0 ? next.tau()[kn] : 0.5 * (next.tau()[kn] + next.tau()[kn + 1]);
+    const double tau = next.mesh().point_fraction(pt);
     while (k + 1 < prev.intervals() && prev.tau()[k + 1] <= tau)
       ++k;
     const double s = std::clamp((tau - prev.tau()[k]) / (prev.tau()[k + 1] - prev.tau()[k]), 0.0, 1.0);
@@ -152,16 +149,15 @@ std::vector<double> interpolate(const CollocationNlp& prev, const std::vector<do
     Eigen::Map<Vec7>(out.data() + kP * pt) = smp.x;
     Eigen::Map<Vec4>(out.data() + kP * pt + 7) = smp.v;
   }
-  out[next.time_index()] = z[prev.time_index()];
+  if (next.free_time()) out[next.time_index()] = z[prev.time_index()];
   return out;
 }
 
-/// Splits every interval whose error exceeds the tolerance into 2 … 5 pieces (ε ∝ h⁴ on a smooth arc).
+/// Splits every interval whose error exceeds the tolerance (detail::refinement_pieces).
 std::vector<double> refine(const std::vector<double>& tau, const std::vector<double>& err, double tol) {
   std::vector<double> out{0.0};
   for (std::size_t k = 0; k + 1 < tau.size(); ++k) {
-    int pieces = 1;
-    if (err[k] > tol) pieces = std::clamp(static_cast<int>(std::ceil(std::pow(err[k] / tol, 0.25))), 2, 5);
+    const int pieces = detail::refinement_pieces(err[k], tol);
     for (int i = 1; i <= pieces; ++i)
       out.push_back(tau[k] + (tau[k + 1] - tau[k]) * i / pieces);
   }
@@ -416,7 +412,7 @@ DirectSolution continue_widened(const ReorientationProblem& original, const Dire
                           previous.torque_body[pt][2]};
     std::copy(v, v + 10, z.begin() + static_cast<std::ptrdiff_t>(kP * pt));  // ν = 0
   }
-  z[nlp->time_index()] = previous.final_time;
+  if (nlp->free_time()) z[nlp->time_index()] = previous.final_time;
   DirectSolution out = refine_mesh(problem, std::move(nlp), std::move(z), options, previous);
   out.pointing_widening = margins.cone;
   out.wheel_momentum_margin = margins.momentum;

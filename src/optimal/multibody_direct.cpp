@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "hermite_simpson_dae.hpp"
+#include "hermite_simpson_nlp.hpp"
 #include "multibody_controls.hpp"
 #include "multibody_final_conditions.hpp"
 #include "multibody_minimal_model.hpp"
@@ -24,7 +24,7 @@ namespace poinsot::optimal {
 namespace {
 
 using detail::CollocationModel;
-using detail::HermiteSimpsonDae;
+using detail::HermiteSimpsonNlp;
 using detail::PathInequalityNlp;
 using detail::PointFunctions;
 using detail::SparseNlp;
@@ -41,10 +41,15 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
                              const MultibodyOptions& options, Decode decode, Encode state_vector, Naive naive,
                              std::chrono::steady_clock::time_point start) {
   const bool free_time = problem.objective == MultibodyObjective::minimum_time;
-  const detail::FreeFinalTime time_bounds{problem.final_time_min, problem.final_time_max,
-                                          problem.energy_weight};
-  const HermiteSimpsonDae base(model, problem.intervals, problem.final_time, y0, final_rows, final_rows * yf,
-                               free_time ? &time_bounds : nullptr, problem.mesh);
+  const HermiteSimpsonNlp base(
+      model,
+      problem.mesh.empty() ? detail::CollocationMesh::uniform(problem.intervals)
+                           : detail::CollocationMesh::from_fractions(problem.mesh),
+      y0, final_rows, final_rows * yf,
+      free_time ? detail::CollocationTime{0.0, {problem.final_time_min}, {problem.final_time_max}}
+                : detail::CollocationTime::at(problem.final_time),
+      free_time ? detail::CollocationObjective{1.0, problem.energy_weight}
+                : detail::CollocationObjective{0.0, 1.0});
   std::vector<double> rate_max;
   for (const RateBound& b : problem.rate_bounds)
     rate_max.push_back(b.rate_max);
@@ -62,6 +67,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   const double T_guess =
       free_time && options.warm_start != nullptr ? options.warm_start->time.back() : problem.final_time;
   if (free_time) guess[static_cast<std::size_t>(base.time_index())] = T_guess;
+  const std::vector<double> guess_times = base.point_times(guess.data());
   for (int p = 0; p < base.points(); ++p) {
     const double s = static_cast<double>(p) / (base.points() - 1);
     Eigen::Map<Eigen::VectorXd> y(guess.data() + nw * p, ny);
@@ -70,7 +76,7 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
       continue;
     }
     const MultibodyOptimum& warm = *options.warm_start;
-    const double t = base.point_time(p, T_guess);
+    const double t = guess_times[static_cast<std::size_t>(p)];
     const auto after = std::upper_bound(warm.time.begin(), warm.time.end(), t);
     const std::size_t j =
         std::min(static_cast<std::size_t>(std::max(after - warm.time.begin(), std::ptrdiff_t{1})),
@@ -104,17 +110,17 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
                           : fmt::format("not converged: {}, also when restarted with {} other settings",
                                         sol.status, run.restarts);
   out.cost = sol.objective;
-  const double T = base.final_time(sol.x.data());
   std::vector<double> g(static_cast<std::size_t>(nlp.num_constraints()));
   nlp.constraints(sol.x.data(), g.data());
   std::vector<double> lo, up, glo, gup;
   nlp.bounds(lo, up, glo, gup);
   for (std::size_t r = 0; r < g.size(); ++r)
     out.max_constraint_error = std::max({out.max_constraint_error, glo[r] - g[r], g[r] - gup[r]});
+  const std::vector<double> times = base.point_times(sol.x.data());
   for (int p = 0; p < base.points(); ++p) {
     const double* w = sol.x.data() + nw * p;
-    out.time.push_back(base.point_time(p, T));
-    out.states.push_back(decode(w, base.point_time(p, T)));
+    out.time.push_back(times[static_cast<std::size_t>(p)]);
+    out.states.push_back(decode(w, times[static_cast<std::size_t>(p)]));
     Eigen::VectorXd u(static_cast<Eigen::Index>(model.control_indices().size()));
     for (std::size_t k = 0; k < model.control_indices().size(); ++k)
       u(static_cast<Eigen::Index>(k)) = w[model.control_indices()[k]];

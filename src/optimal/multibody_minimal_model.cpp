@@ -336,7 +336,7 @@ MultibodyMinimalModel::MultibodyMinimalModel(const MultibodyProblem& problem) {
   path_ = std::make_unique<MinimalInverseDynamicsRows>(tree_, point_size());
 }
 
-void MultibodyMinimalModel::variable_bounds(bool, double* lower, double* upper) const {
+void MultibodyMinimalModel::variable_bounds(const PointRole&, double* lower, double* upper) const {
   for (int i = 0; i < point_size(); ++i) {
     lower[i] = -1e20;
     upper[i] = 1e20;

@@ -41,7 +41,7 @@
 #include <memory>
 #include <vector>
 
-#include "hermite_simpson_dae.hpp"
+#include "hermite_simpson_nlp.hpp"
 #include "poinsot/optimal/multibody_problem.hpp"
 
 namespace poinsot::optimal::detail {
@@ -92,7 +92,7 @@ class MultibodyMinimalModel final : public CollocationModel {
   const PointFunctions& rhs() const override { return rhs_; }
   const PointFunctions& first_path() const override { return *path_; }
   const PointFunctions& path() const override { return *path_; }
-  void variable_bounds(bool first_node, double* lower, double* upper) const override;
+  void variable_bounds(const PointRole& role, double* lower, double* upper) const override;
 
   /// y = (q, ν) of a consistent state (θ in (−π, π]; each quaternion of the sign nearest its initial value,
   /// so that attitudes within a half-turn of it are encoded continuously).

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "collocation_mesh.hpp"
 #include "multibody_controls.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/projected_rk4.hpp"
@@ -60,16 +61,12 @@ MultibodyRefinement refine_multibody(MultibodyProblem problem, MultibodyOptions 
         {problem.intervals, worst, out.optimum.cost, out.optimum.nlp_iterations, out.optimum.status});
     out.tolerance_met = out.optimum.converged && worst <= tolerance;
     if (out.tolerance_met || !out.optimum.converged || round == max_rounds) break;
-    // Split every interval whose error exceeds the tolerance.
+    // Split every interval whose error exceeds the tolerance (the rule of every collocation mesh).
     std::vector<double> mesh;
     for (std::size_t k = 0; k < errors.size(); ++k) {
       const double d = problem.mesh.empty() ? 1.0 / problem.intervals : problem.mesh[k];
-      if (errors[k] > tolerance) {
-        mesh.push_back(0.5 * d);
-        mesh.push_back(0.5 * d);
-      } else {
-        mesh.push_back(d);
-      }
+      const int pieces = detail::refinement_pieces(errors[k], tolerance);
+      mesh.insert(mesh.end(), static_cast<std::size_t>(pieces), d / pieces);
     }
     if (mesh.size() > 2000) break;
     double sum = 0.0;

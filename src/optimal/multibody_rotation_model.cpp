@@ -281,7 +281,8 @@ void MultibodyRotationModel::build_path(QuadraticFunctions& out, bool first_node
   out.finish();
 }
 
-void MultibodyRotationModel::variable_bounds(bool first_node, double* lower, double* upper) const {
+void MultibodyRotationModel::variable_bounds(const PointRole& role, double* lower, double* upper) const {
+  const bool first_node = role.first;
   for (int i = 0; i < size_; ++i) {
     lower[i] = -kNoBound;
     upper[i] = kNoBound;

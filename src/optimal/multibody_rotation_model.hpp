@@ -29,7 +29,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "hermite_simpson_dae.hpp"
+#include "hermite_simpson_nlp.hpp"
 #include "poinsot/multibody/multipliers.hpp"
 #include "poinsot/optimal/multibody_problem.hpp"
 
@@ -43,7 +43,7 @@ class MultibodyRotationModel final : public CollocationModel {
   const PointFunctions& rhs() const override { return rhs_; }
   const PointFunctions& first_path() const override { return first_path_; }
   const PointFunctions& path() const override { return path_; }
-  void variable_bounds(bool first_node, double* lower, double* upper) const override;
+  void variable_bounds(const PointRole& role, double* lower, double* upper) const override;
 
   /// With `stabilisation_step` c > 0, every stabilising variable at every point but node 0 is bounded by
   /// σ = c/h (h = T/N): |S_kl| ≤ σ (1/s), |μ| ≤ σ for a joint's perpendicularity rows and σ ℓ for its point

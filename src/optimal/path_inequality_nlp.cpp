@@ -3,7 +3,7 @@
 
 namespace poinsot::optimal::detail {
 
-PathInequalityNlp::PathInequalityNlp(const HermiteSimpsonDae& base, const PointFunctions& rows,
+PathInequalityNlp::PathInequalityNlp(const HermiteSimpsonNlp& base, const PointFunctions& rows,
                                      std::vector<double> lower, std::vector<double> upper)
     : base_(base), rows_(rows), lower_(std::move(lower)), upper_(std::move(upper)) {}
 

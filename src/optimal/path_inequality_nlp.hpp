@@ -1,20 +1,20 @@
 #pragma once
 /// @file path_inequality_nlp.hpp (internal)
-/// A collocation NLP (hermite_simpson_dae.hpp) with path inequalities added: lower ≤ c(w_p) ≤ upper at every
+/// A collocation NLP (hermite_simpson_nlp.hpp) with path inequalities added: lower ≤ c(w_p) ≤ upper at every
 /// collocation point p but the first (whose state is given), for point functions c of the model's point
 /// variables. The rows come after the base NLP's; the variables, the bounds on them and the objective are
 /// the base's. Used for the bounds on joint rates of the multibody transcriptions (multibody_direct.cpp).
 /// Entries of the Hessian may repeat the base's positions: Ipopt sums repeated triplets.
 #include <vector>
 
-#include "hermite_simpson_dae.hpp"
+#include "hermite_simpson_nlp.hpp"
 
 namespace poinsot::optimal::detail {
 
 class PathInequalityNlp final : public SparseNlp {
  public:
   /// `rows` must outlive this object; lower and upper have one entry per row of `rows`.
-  PathInequalityNlp(const HermiteSimpsonDae& base, const PointFunctions& rows, std::vector<double> lower,
+  PathInequalityNlp(const HermiteSimpsonNlp& base, const PointFunctions& rows, std::vector<double> lower,
                     std::vector<double> upper);
 
   int num_variables() const override { return base_.num_variables(); }
@@ -37,7 +37,7 @@ class PathInequalityNlp final : public SparseNlp {
   int constrained_points() const { return base_.points() - 1; }  ///< points 1 … 2N
   const double* point(const double* x, int k) const { return x + base_.model().point_size() * (k + 1); }
 
-  const HermiteSimpsonDae& base_;
+  const HermiteSimpsonNlp& base_;
   const PointFunctions& rows_;
   std::vector<double> lower_, upper_;
 };

@@ -2,7 +2,7 @@
 /// @file point_functions.hpp (internal)
 /// A vector of scalar functions c(w) of the variables w of one collocation point, with a fixed sparsity
 /// pattern for the Jacobian ∂c/∂w and for the lower triangle of the Hessian of a weighted sum Σ_r y_r ∇²c_r.
-/// The collocation engine (hermite_simpson_dae.hpp) assembles the NLP from these; the rotation-matrix model
+/// The collocation engine (hermite_simpson_nlp.hpp) assembles the NLP from these; the rotation-matrix model
 /// implements them as polynomials of degree 2 (QuadraticFunctions below), the minimal-coordinate model by
 /// forward automatic differentiation.
 #include <utility>

@@ -19,7 +19,7 @@ std::vector<double> random_point(const CollocationNlp& nlp, unsigned seed) {
   std::vector<double> z(nlp.num_variables());
   for (auto& v : z)
     v = d(rng);
-  for (int a = 0; a < nlp.phases(); ++a)
+  for (int a = 0; a < nlp.phases() && nlp.free_time(); ++a)
     z[nlp.duration_index(a)] = 3.0 + d(rng);
   return z;
 }

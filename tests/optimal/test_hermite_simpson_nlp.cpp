@@ -1,6 +1,6 @@
 // The exact derivatives of the differential-algebraic Hermite–Simpson NLP, for both multibody point models
 // (rotation-matrix and minimal coordinates), against central finite differences.
-#include "../../src/optimal/hermite_simpson_dae.hpp"
+#include "../../src/optimal/hermite_simpson_nlp.hpp"
 
 #include <gtest/gtest.h>
 
@@ -94,80 +94,116 @@ void check_derivatives(const SparseNlp& nlp, unsigned seed) {
   }
 }
 
-TEST(HermiteSimpsonDae, RotationMatrixModelDerivativesAreExact) {
+// The transcription at the fixed final time T, on N equal intervals or on the given fractions.
+HermiteSimpsonNlp at_fixed_time(const CollocationModel& model, int N, double T, const Eigen::VectorXd& y0,
+                                const Eigen::MatrixXd& rows, const Eigen::VectorXd& values,
+                                std::vector<double> fractions = {}) {
+  return HermiteSimpsonNlp(
+      model,
+      fractions.empty() ? CollocationMesh::uniform(N) : CollocationMesh::from_fractions(std::move(fractions)),
+      y0, rows, values, CollocationTime::at(T), CollocationObjective{0.0, 1.0});
+}
+
+// The transcription with a free final time T ∈ [0.5, 3] s and the objective T + 0.3 ∫ Σ u² dt.
+HermiteSimpsonNlp at_free_time(const CollocationModel& model, CollocationMesh mesh, const Eigen::VectorXd& y0,
+                               const Eigen::MatrixXd& rows, const Eigen::VectorXd& values) {
+  const auto phases = static_cast<std::size_t>(mesh.phases());
+  return HermiteSimpsonNlp(
+      model, std::move(mesh), y0, rows, values,
+      CollocationTime{0.0, std::vector<double>(phases, 0.5), std::vector<double>(phases, 3.0)},
+      CollocationObjective{1.0, 0.3});
+}
+
+TEST(HermiteSimpsonNlp, RotationMatrixModelDerivativesAreExact) {
   MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 2);
   p.actuators.push_back({ActuatorKind::body_torque, 1, 5.0});  // a body torque as well
   const MultibodyRotationModel model(p);
   const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
   const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
-  const HermiteSimpsonDae nlp(model, 1, 1.5, y0, rows, Eigen::VectorXd::Zero(3));
+  const HermiteSimpsonNlp nlp = at_fixed_time(model, 1, 1.5, y0, rows, Eigen::VectorXd::Zero(3));
   check_derivatives(nlp, 7);
 }
 
-TEST(HermiteSimpsonDae, MinimalModelDerivativesAreExact) {
+TEST(HermiteSimpsonNlp, MinimalModelDerivativesAreExact) {
   const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 2);
   const MultibodyMinimalModel model(p);
   const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
   const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(4, 4);
-  const HermiteSimpsonDae nlp(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(4));
+  const HermiteSimpsonNlp nlp = at_fixed_time(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(4));
   check_derivatives(nlp, 11);
 }
 
-TEST(HermiteSimpsonDae, FloatingBaseMinimalModelDerivativesAreExact) {
+TEST(HermiteSimpsonNlp, FloatingBaseMinimalModelDerivativesAreExact) {
   // The base's quaternion (of any norm: R(e/|e|)), its angular velocity and the centre of mass eliminated.
   const MultibodyProblem p = testing::offset_reaction_wheel();
   const MultibodyMinimalModel model(p);
   ASSERT_TRUE(model.tree().floating);
   const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
   const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
-  const HermiteSimpsonDae nlp(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(3));
+  const HermiteSimpsonNlp nlp = at_fixed_time(model, 2, 1.5, y0, rows, Eigen::VectorXd::Zero(3));
   check_derivatives(nlp, 29);
 }
 
-TEST(HermiteSimpsonDae, BallJointMinimalModelDerivativesAreExact) {
+TEST(HermiteSimpsonNlp, BallJointMinimalModelDerivativesAreExact) {
   // The falling cat: a floating base and a ball joint (a relative quaternion) with three motors.
   const MultibodyProblem p = testing::falling_cat(0.5, 3.0, 1.0, 2);
   const MultibodyMinimalModel model(p);
   ASSERT_TRUE(model.tree().links[1].ball);
   const Eigen::VectorXd y0 = model.state_vector(p.initial_state);
   const Eigen::MatrixXd rows = Eigen::MatrixXd::Identity(3, model.state_size());
-  const HermiteSimpsonDae nlp(model, 2, 1.0, y0, rows, Eigen::VectorXd::Zero(3));
+  const HermiteSimpsonNlp nlp = at_fixed_time(model, 2, 1.0, y0, rows, Eigen::VectorXd::Zero(3));
   check_derivatives(nlp, 31);
 }
 
-TEST(HermiteSimpsonDae, FreeFinalTimeDerivativesAreExact) {
+TEST(HermiteSimpsonNlp, FreeFinalTimeDerivativesAreExact) {
   // T is the last variable: its Jacobian column (the defects' f-terms / T) and its Hessian row (the f-terms'
   // second derivatives / T, the objective's 2εŵu) against the same central differences.
-  const FreeFinalTime free{0.5, 3.0, 0.3};
   MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 2);
   p.actuators.push_back({ActuatorKind::body_torque, 1, 5.0});
   const MultibodyRotationModel rotation(p);
-  const HermiteSimpsonDae nlp_r(rotation, 1, 1.5, rotation.state_vector(p.initial_state),
-                                Eigen::MatrixXd::Identity(3, rotation.state_size()), Eigen::VectorXd::Zero(3),
-                                &free);
+  const HermiteSimpsonNlp nlp_r =
+      at_free_time(rotation, CollocationMesh::uniform(1), rotation.state_vector(p.initial_state),
+                   Eigen::MatrixXd::Identity(3, rotation.state_size()), Eigen::VectorXd::Zero(3));
   ASSERT_EQ(nlp_r.num_variables(), nlp_r.time_index() + 1);
   check_derivatives(nlp_r, 13);
   const MultibodyProblem q = testing::two_link_arm(1.0, 0.5, 1.5, 2);
   const MultibodyMinimalModel minimal(q);
-  const HermiteSimpsonDae nlp_m(minimal, 2, 1.5, minimal.state_vector(q.initial_state),
-                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), &free);
+  const HermiteSimpsonNlp nlp_m =
+      at_free_time(minimal, CollocationMesh::uniform(2), minimal.state_vector(q.initial_state),
+                   Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4));
   check_derivatives(nlp_m, 17);
 }
 
-TEST(HermiteSimpsonDae, UnequalMeshDerivativesAreExact) {
+TEST(HermiteSimpsonNlp, UnequalMeshDerivativesAreExact) {
   // Intervals of T Δτ_k with unequal Δτ_k, at fixed and at free final time.
   const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 3);
   const MultibodyMinimalModel minimal(p);
   const std::vector<double> fractions{0.2, 0.5, 0.3};
-  const HermiteSimpsonDae fixed(minimal, 3, 1.5, minimal.state_vector(p.initial_state),
-                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), nullptr,
-                                fractions);
-  EXPECT_DOUBLE_EQ(fixed.point_time(3, 1.5), 1.5 * 0.45);  // the second interval's midpoint
+  const HermiteSimpsonNlp fixed =
+      at_fixed_time(minimal, 3, 1.5, minimal.state_vector(p.initial_state), Eigen::MatrixXd::Identity(4, 4),
+                    Eigen::VectorXd::Zero(4), fractions);
+  std::vector<double> x(static_cast<std::size_t>(fixed.num_variables()), 0.0);
+  EXPECT_DOUBLE_EQ(fixed.point_times(x.data())[3], 1.5 * 0.45);  // the second interval's midpoint
   check_derivatives(fixed, 19);
-  const FreeFinalTime free{0.5, 3.0, 0.3};
-  const HermiteSimpsonDae timed(minimal, 3, 1.5, minimal.state_vector(p.initial_state),
-                                Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4), &free, fractions);
+  const HermiteSimpsonNlp timed =
+      at_free_time(minimal, CollocationMesh::from_fractions(fractions), minimal.state_vector(p.initial_state),
+                   Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4));
   check_derivatives(timed, 23);
+}
+
+TEST(HermiteSimpsonNlp, PhasedMeshOfCoupledBodiesDerivativesAreExact) {
+  // Phases are a property of the mesh, for coupled bodies as for one: two phases of the arm, each with its
+  // own duration variable, a duplicated node and the state's continuity rows between them.
+  const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 3);
+  const MultibodyMinimalModel minimal(p);
+  const HermiteSimpsonNlp nlp = at_free_time(
+      minimal, CollocationMesh::from_nodes({0.0, 0.4, 1.0, 0.0, 1.0}, {2, 1}),
+      minimal.state_vector(p.initial_state), Eigen::MatrixXd::Identity(4, 4), Eigen::VectorXd::Zero(4));
+  EXPECT_EQ(nlp.points(), 2 * 3 + 2);
+  EXPECT_EQ(nlp.num_variables(), minimal.point_size() * nlp.points() + 2);
+  // Rows: the defects, the path rows of every point, 4 continuity rows, the 4 final rows.
+  EXPECT_EQ(nlp.num_constraints(), nlp.path_row(nlp.points()) + 4 + 4);
+  check_derivatives(nlp, 37);
 }
 
 // The largest number of structural non-zeros in one column and in one row of the triplets (rows, cols).
@@ -186,7 +222,7 @@ std::pair<int, int> densest_line(const std::vector<int>& rows, const std::vector
   return {largest(per_col), largest(per_row)};
 }
 
-TEST(HermiteSimpsonDae, RotationMatrixSparsityGrowsByAFixedBlockPerInterval) {
+TEST(HermiteSimpsonNlp, RotationMatrixSparsityGrowsByAFixedBlockPerInterval) {
   // The KKT matrix Ipopt factorises is banded only if no variable or row couples all intervals: at fixed T
   // the Jacobian's and the Hessian's non-zeros must grow by the same count per interval, and their densest
   // column and row must not grow with N (a dense line makes the sparse factorisation fill in). Counted on
@@ -198,7 +234,7 @@ TEST(HermiteSimpsonDae, RotationMatrixSparsityGrowsByAFixedBlockPerInterval) {
   std::vector<int> jacobian, hessian;
   std::vector<std::pair<int, int>> jacobian_lines, hessian_lines;
   for (const int n : {4, 8, 16}) {
-    const HermiteSimpsonDae nlp(model, n, 1.5, y0, rows, y0);
+    const HermiteSimpsonNlp nlp = at_fixed_time(model, n, 1.5, y0, rows, y0);
     std::vector<int> r(static_cast<std::size_t>(nlp.jacobian_nonzeros())), c(r.size());
     nlp.jacobian_structure(r.data(), c.data());
     jacobian.push_back(nlp.jacobian_nonzeros());

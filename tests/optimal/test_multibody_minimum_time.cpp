@@ -2,7 +2,7 @@
 // whose optimum is bang-bang (u = ū, then −ū from T/2) with T* = 2 √(Θ I / ū), I the inertia about the hinge.
 // Both transcriptions with a free final time against T*, the mesh's blur of the switch shrinking with N, the
 // re-simulation of the control history, the energy regularisation, and the bad inputs. (The exactness of the
-// derivatives with respect to T: test_hermite_simpson_dae.cpp.)
+// derivatives with respect to T: test_hermite_simpson_nlp.cpp.)
 #include <gtest/gtest.h>
 
 #include <cmath>

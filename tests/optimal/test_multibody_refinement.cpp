@@ -46,9 +46,9 @@ TEST(MultibodyRefinement, ArmIntervalsAreSplitUntilTheLocalErrorMeetsTheToleranc
     GTEST_SKIP()
         << "3.6 s in release, 142 s under ASan; the unequal-mesh test runs the same transcription there";
   // The arm (minimal coordinates) from 8 equal intervals, tolerance 1e-3 rad on each interval's local error.
-  // Measured: N = 8, 16, 20, 22 with largest local errors 1.4e-1, 2.8e-2, 1.7e-2, 6.7e-4 rad; on 22 equal
-  // intervals the largest is 5.1e-3 and the re-simulation misses the target by 1.6e-1 rad against 2.0e-2 on
-  // the refined mesh (costs 39.2913 and 39.3470 N²·m²·s; 39.35276577 on 128 equal intervals).
+  // Measured: N = 8, 22 with largest local errors 1.4e-1, 7.9e-4 rad; on 22 equal intervals the largest is
+  // 5.1e-3 and the re-simulation misses the target by 1.6e-1 rad against 2.0e-2 on the refined mesh (costs
+  // 39.2913 and 39.3472 N²·m²·s; 39.35276577 on 128 equal intervals).
   const MultibodyProblem p = testing::two_link_arm(1.0, 0.5, 1.5, 8);
   MultibodyOptions o;
   o.coordinates = MultibodyCoordinates::minimal;

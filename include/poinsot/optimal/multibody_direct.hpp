@@ -16,7 +16,7 @@
 ///   second order.
 ///
 /// Both minimise ∫ Σ u_i² dt at fixed T, or T + ε ∫ Σ u_i² dt with T free (the problem's objective;
-/// hermite_simpson_dae.hpp scales time as t = T τ), from the full initial state to the final state, on N
+/// hermite_simpson_nlp.hpp scales time as t = T τ), from the full initial state to the final state, on N
 /// equal intervals, with the problem's rate bounds |q̇_j| ≤ r_j as inequality rows at every collocation point
 /// but the first (θ̇ in minimal coordinates; n_a·ω_a − n_b·ω_b with ω = vee(RᵀV), bilinear, in rotation-matrix
 /// ones). The naive initial guess is used unless MultibodyOptions::warm_start is given: every state

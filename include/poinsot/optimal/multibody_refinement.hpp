@@ -1,8 +1,10 @@
 #pragma once
 /// @file multibody_refinement.hpp
 /// Mesh refinement for the multibody transcriptions (multibody_direct.hpp): the intervals where the
-/// collocated motion departs most from the motion its own control produces are split in two, and the problem
-/// is solved again from the previous optimum, until every interval's error is below a tolerance.
+/// collocated motion departs most from the motion its own control produces are split, by the rule of every
+/// collocation mesh (2 to 5 equal pieces, more the further the error is above the tolerance: the error of
+/// Hermite–Simpson falls as h⁴), and the problem is solved again from the previous optimum, until every
+/// interval's error is below a tolerance.
 ///
 /// The error of interval k (interval_errors): the optimum's state at node k integrated over [t_k, t_k+1] by
 /// the multibody projected RK4 (`steps` steps, the control by control_at at each step's midpoint) against
@@ -36,7 +38,7 @@ struct MultibodyRefinement {
 };
 
 /// Solves `problem` on its mesh, then, while some interval's error exceeds `tolerance` (rad, > 0) and fewer
-/// than `max_rounds` refinements were made, splits every such interval in two and solves again from the
+/// than `max_rounds` refinements were made, splits every such interval and solves again from the
 /// previous optimum (MultibodyOptions::warm_start is replaced). Stops at a round that does not converge, or
 /// before a mesh beyond 2000 intervals. Throws InvalidInput for an invalid problem (validate), tolerance ≤ 0
 /// or max_rounds < 0.
