@@ -198,6 +198,15 @@ detail::IpoptSettings first_settings(const CollocationOptions& options) {
   return ipopt;
 }
 
+/// How far the optimum of a refined mesh may rise above the previous mesh's, relative to it: the interpolated
+/// start is that optimum, and refining moves the cost by about the mesh error (here at most ten times the
+/// previous mesh's, and 1e-3). A larger rise is Ipopt leaving for another, worse local optimum (a keep-out
+/// slew went from T = 4.3309 s at mesh error 1.5e-7 to 5.7371 s on the next mesh); such a solution is
+/// refused, and Ipopt restarted from the same start with settings that keep it (detail::restart_settings).
+double allowed_cost_rise(const DirectSolution& previous) {
+  return std::max(10.0 * previous.max_mesh_error, 1e-3);
+}
+
 /// The mesh refinement from `nlp` and its start `z`; the counts of `before` (a previous solve) are added to.
 DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<CollocationNlp> nlp,
                            std::vector<double> z, const CollocationOptions& options,
@@ -215,17 +224,27 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
         options.progress(DirectProgress{mesh, nlp->intervals(), attempt, i, f, inf});
       };
     }
+    const auto stays_near_previous = [&](const detail::NlpSolution& s) {
+      return !have_previous || s.objective <= previous.cost * (1.0 + allowed_cost_rise(previous));
+    };
     detail::RestartedSolution run = detail::solve_with_restarts(
         *nlp, z, first_settings(options),
-        [](const detail::NlpSolution& s) { return s.solved || s.acceptable; }, progress);
+        [&](const detail::NlpSolution& s) { return (s.solved || s.acceptable) && stays_near_previous(s); },
+        progress);
     detail::NlpSolution& solution = run.solution;
     nlp_iterations += run.iterations;
     restarts += run.restarts;
     if (!run.accepted) {
-      failure = fmt::format(
-          "Ipopt did not converge (status {}: {}) on mesh {} with {} intervals, also when "
-          "restarted with {} other settings",
-          solution.return_code, solution.status, mesh, nlp->intervals(), run.restarts);
+      failure = (solution.solved || solution.acceptable)
+                    ? fmt::format(
+                          "Ipopt left the previous mesh's optimum on mesh {} with {} intervals (cost {} "
+                          "against {}), also when restarted with {} other settings",
+                          mesh, nlp->intervals(), format_number(solution.objective, 8),
+                          format_number(previous.cost, 8), run.restarts)
+                    : fmt::format(
+                          "Ipopt did not converge (status {}: {}) on mesh {} with {} intervals, also "
+                          "when restarted with {} other settings",
+                          solution.return_code, solution.status, mesh, nlp->intervals(), run.restarts);
       if (have_previous) {  // the previous mesh's solution, which Ipopt solved, is the result
         best = std::move(previous);
         failure += fmt::format("; the solution of mesh {} ({} intervals, mesh error {}) is kept", mesh - 1,

@@ -131,6 +131,30 @@ TEST(DirectCollocation, RestartsIpoptWhereItFails) {
       << failed.status;
 }
 
+// A refined mesh keeps the previous mesh's optimum: a minimum-time slew by 126° with a keep-out cone across
+// the eigenaxis path (problem 2 of seed 1 of the benchmark's keep_out family), whose meshes 1 to 7 converge
+// to T = 4.3309 s (mesh error 1.5e-7 on mesh 7), and on mesh 8 Ipopt's default settings leave that optimum
+// for another, T = 5.7371 s (measured). That solution is refused and Ipopt restarted from the same start; the
+// refinement ends at the first optimum, to the mesh tolerance's digits.
+TEST(DirectCollocation, ARefinedMeshKeepsThePreviousMeshsOptimum) {
+  if (::poinsot::test::sanitized())
+    GTEST_SKIP() << "eight meshes up to 200 intervals: about 10 s of CPU in release, minutes under ASan";
+  ReorientationProblem p;
+  p.inertia_body = Vec3(0.6989330853018104, 1.7632969110206467, 2.3353355437012726).asDiagonal();
+  p.torque_max = Vec3(1.1894756866460752, 0.700899717035054, 0.5829724160388572);
+  p.attitude_final = Quat(Eigen::AngleAxisd(
+      2.199519863305892, Vec3(0.25805221746274803, -0.01161339937086546, -0.9660611688799065).normalized()));
+  p.objective = Objective::minimum_time;
+  p.pointing.push_back({"sun", PointingKind::keep_out,
+                        Vec3(0.7663976296779167, -0.6086807280840867, -0.20528625010725188).normalized(),
+                        Vec3(-0.30522047423208887, -0.7957519123598893, -0.5230863753579496).normalized(),
+                        0.6289426771914396});
+  const DirectSolution d = solve_direct(p, {});
+  ASSERT_TRUE(d.converged) << d.status;
+  EXPECT_GT(d.nlp_restarts, 0);
+  EXPECT_NEAR(d.final_time, 4.3309049662, 1e-6);
+}
+
 TEST(DirectCollocation, RejectsBadOptions) {
   CollocationOptions opt;
   opt.initial_intervals = 1;
