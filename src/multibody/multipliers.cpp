@@ -47,16 +47,12 @@ ExactMultipliers multipliers_from_accelerations(const System& system, const std:
     out.omega_dot_body[i] = accelerations[i].tail<3>();
     phi[i] = loads[i].phi_body;
   }
-  for (std::size_t j = 0; j < nj; ++j) {
-    const Joint& joint = system.joints()[j];
-    const JointVector lambda = -minus_lambda.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
-    const JointLoads jl =
-        joint_loads(joint, side_state(bodies, joint.body_a), side_state(bodies, joint.body_b), lambda);
-    out.joint_force_space[j] = jl.force_a_space;
-    out.joint_torque_space[j] = jl.torque_a_space;
-    phi[static_cast<std::size_t>(joint.body_a)] += jl.phi_a_body;
-    if (joint.body_b != kWorld) phi[static_cast<std::size_t>(joint.body_b)] += jl.phi_b_body;
-  }
+  add_joint_loads(
+      system, bodies,
+      [&](int j, const Joint& joint) -> JointVector {
+        return -minus_lambda.segment(solver.joint_offset(j), joint.rows());
+      },
+      out, phi);
   for (std::size_t i = 0; i < nb; ++i) {
     const Mat3 W = so3::hat(bodies[i].omega_body);
     const Mat3 L = (W * W + so3::hat(out.omega_dot_body[i])) * system.bodies()[i].poinsot - phi[i];

@@ -61,11 +61,15 @@ ConstraintViolation constraint_violation(const System& system, const State& stat
   return v;
 }
 
-void check_consistent(const System& system, const State& state) {
+void check_body_count(const System& system, const State& state) {
   if (state.bodies.size() != static_cast<std::size_t>(system.body_count())) {
     throw InvalidInput(
         fmt::format("multibody: state has {} bodies; expected {}", state.bodies.size(), system.body_count()));
   }
+}
+
+void check_consistent(const System& system, const State& state) {
+  check_body_count(system, state);
   for (std::size_t i = 0; i < state.bodies.size(); ++i) {
     const BodyState& s = state.bodies[i];
     const std::string what = fmt::format("multibody body '{}'", system.bodies()[i].name);

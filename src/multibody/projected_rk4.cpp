@@ -11,6 +11,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/multibody/loads.hpp"
+#include "poinsot/multibody/observables.hpp"
 #include "poinsot/so3/cayley.hpp"
 #include "poinsot/so3/hat.hpp"
 #include "poinsot/so3/projection.hpp"
@@ -151,10 +152,8 @@ struct ProjectedRk4::Impl {
   }
 
   void step(State& state) {
+    check_body_count(system, state);
     const auto nb = state.bodies.size();
-    if (nb != static_cast<std::size_t>(system.body_count())) {
-      throw InvalidInput(fmt::format("multibody: state has {} bodies; expected {}", nb, system.body_count()));
-    }
     bool resumed = have_first;
     for (std::size_t i = 0; resumed && i < nb; ++i)
       resumed = same_state(state.bodies[i], end[i]);

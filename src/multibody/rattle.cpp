@@ -9,10 +9,12 @@
 
 #include <fmt/format.h>
 
+#include "acceleration_multipliers.hpp"
 #include "poinsot/core/check.hpp"
 #include "poinsot/core/error.hpp"
 #include "poinsot/multibody/constraints.hpp"
 #include "poinsot/multibody/loads.hpp"
+#include "poinsot/multibody/observables.hpp"
 #include "poinsot/so3/hat.hpp"
 
 namespace poinsot::multibody {
@@ -159,16 +161,12 @@ struct Rattle::Impl {
                         const std::vector<BodyLoads>& applied, const std::vector<Mat3>& rtrddk) {
     for (std::size_t i = 0; i < bodies.size(); ++i)
       phi[i] = applied[i].phi_body;
-    for (std::size_t j = 0; j < G_a.size(); ++j) {
-      const Joint& joint = system.joints()[j];
-      const JointVector l = lam.segment(solver.joint_offset(static_cast<int>(j)), joint.rows());
-      const JointLoads jl = joint_loads(joint, bodies[static_cast<std::size_t>(joint.body_a)],
-                                        side_state(bodies, joint.body_b), l);
-      out.joint_force_space[j] = jl.force_a_space;
-      out.joint_torque_space[j] = jl.torque_a_space;
-      phi[static_cast<std::size_t>(joint.body_a)] += jl.phi_a_body;
-      if (joint.body_b != kWorld) phi[static_cast<std::size_t>(joint.body_b)] += jl.phi_b_body;
-    }
+    detail::add_joint_loads(
+        system, bodies,
+        [&](int j, const Joint& joint) -> JointVector {
+          return lam.segment(solver.joint_offset(j), joint.rows());
+        },
+        out, phi);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
       const Mat3 L = rtrddk[i] - phi[i];
       out.Lambda_body[i] = 0.5 * (L + L.transpose());
@@ -415,10 +413,8 @@ struct Rattle::Impl {
   }
 
   void step(State& state) {
+    check_body_count(system, state);
     const auto nb = state.bodies.size();
-    if (nb != static_cast<std::size_t>(system.body_count())) {
-      throw InvalidInput(fmt::format("multibody: state has {} bodies; expected {}", nb, system.body_count()));
-    }
     if (!factored_for(state.bodies)) {  // a new trajectory: no history to warm-start from
       factor_at(state.bodies);
       for (Substep& s : substeps)

@@ -24,6 +24,9 @@ struct ConstraintViolation {
 };
 ConstraintViolation constraint_violation(const System& system, const State& state);
 
+/// Throws InvalidInput unless `state` has one entry per body of `system`.
+void check_body_count(const System& system, const State& state);
+
 /// Throws InvalidInput unless `state` has one entry per body, every R is a rotation to 1e-9 and every joint
 /// holds to 1e-9 relative to System::length_scale() (positions) — a state the integrator can start from.
 void check_consistent(const System& system, const State& state);
