@@ -71,8 +71,8 @@ class MultibodyOptimalSolution:
 class _Prepared:
     """A MultibodyProblem with the option names of ``poinsot.optimize``: ``initial_intervals`` sets the
     (equal) intervals, ``stabilisation_step``, ``warm_start`` (the mesh sequence) and ``no_twist`` replace the
-    problem's (MultibodyProblem.with_options); the mesh refinement's options are refused (multibody meshes are
-    not refined)."""
+    problem's (MultibodyProblem.with_options); the single body's mesh-refinement options are refused (a
+    multibody mesh is refined only where the re-simulation misses the target)."""
 
     scenario: Any
     plots: bool = False
@@ -81,8 +81,8 @@ class _Prepared:
                      stabilisation_step=None, warm_start=None, no_twist=None) -> "_Prepared":
         for name, value in (("mesh_tolerance", mesh_tolerance), ("max_mesh_iterations", max_mesh_iterations)):
             if value is not None:
-                raise ValueError(f"{name}: multibody problems are solved on equal intervals without mesh "
-                                 "refinement; expected None (set initial_intervals, or intervals in the file)")
+                raise ValueError(f"{name}: multibody problems take no mesh-refinement options; expected None (set "
+                                 "initial_intervals, or intervals in the file)")
         return _Prepared(self.scenario.with_options(intervals=initial_intervals,
                                                     stabilisation_step=stabilisation_step,
                                                     warm_start=warm_start, no_twist=no_twist))
@@ -113,4 +113,4 @@ def solve_multibody(prepared: _Prepared, out_dir: str) -> MultibodyOptimalSoluti
         v_space=raw["v_space"], omega_body=raw["omega_body"], controls=raw["controls"], control_names=names,
         joint_force_space=raw["joint_force_space"], joint_torque_space=raw["joint_torque_space"],
         Lambda_body=raw["Lambda_body"], replay=summary["replay"], summary=summary, report=raw["report"],
-        problem=scenario, out_dir=out_dir or None)
+        problem=raw["scenario"], out_dir=out_dir or None)

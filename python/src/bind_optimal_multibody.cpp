@@ -185,6 +185,7 @@ py::dict run_dict(const io::MultibodyOptimalRun& run) {
   py::dict d;
   d["summary"] = io::multibody_optimal_summary_json(run);
   d["report"] = io::multibody_optimal_report(run);
+  d["scenario"] = run.scenario;  // with the last mesh's intervals (refined where the target was missed)
   d["optimal"] = run.optimal;
   d["status"] = run.status;
   d["cost"] = o.cost;

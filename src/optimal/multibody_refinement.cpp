@@ -42,6 +42,24 @@ std::vector<double> interval_errors(const MultibodyProblem& problem, const Multi
   return out;
 }
 
+MultibodyProblem with_refined_mesh(MultibodyProblem problem, const std::vector<double>& errors,
+                                   double tolerance) {
+  std::vector<double> mesh;
+  for (std::size_t k = 0; k < errors.size(); ++k) {
+    const double d = problem.mesh.empty() ? 1.0 / problem.intervals : problem.mesh[k];
+    const int pieces = detail::refinement_pieces(errors[k], tolerance);
+    mesh.insert(mesh.end(), static_cast<std::size_t>(pieces), d / pieces);
+  }
+  double sum = 0.0;
+  for (const double d : mesh)
+    sum += d;
+  for (double& d : mesh)
+    d /= sum;  // a change at round-off: validate asks for a sum of 1 to 1e-12
+  problem.mesh = std::move(mesh);
+  problem.intervals = static_cast<int>(problem.mesh.size());
+  return problem;
+}
+
 MultibodyRefinement refine_multibody(MultibodyProblem problem, MultibodyOptions options, double tolerance,
                                      int max_rounds) {
   if (!(tolerance > 0.0) || max_rounds < 0) {
@@ -61,22 +79,10 @@ MultibodyRefinement refine_multibody(MultibodyProblem problem, MultibodyOptions 
         {problem.intervals, worst, out.optimum.cost, out.optimum.nlp_iterations, out.optimum.status});
     out.tolerance_met = out.optimum.converged && worst <= tolerance;
     if (out.tolerance_met || !out.optimum.converged || round == max_rounds) break;
-    // Split every interval whose error exceeds the tolerance (the rule of every collocation mesh).
-    std::vector<double> mesh;
-    for (std::size_t k = 0; k < errors.size(); ++k) {
-      const double d = problem.mesh.empty() ? 1.0 / problem.intervals : problem.mesh[k];
-      const int pieces = detail::refinement_pieces(errors[k], tolerance);
-      mesh.insert(mesh.end(), static_cast<std::size_t>(pieces), d / pieces);
-    }
-    if (mesh.size() > 2000) break;
-    double sum = 0.0;
-    for (const double d : mesh)
-      sum += d;
-    for (double& d : mesh)
-      d /= sum;  // a change at round-off: validate asks for a sum of 1 to 1e-12
+    MultibodyProblem refined = with_refined_mesh(problem, errors, tolerance);
+    if (refined.intervals > 2000) break;
     previous = out.optimum;
-    problem.mesh = std::move(mesh);
-    problem.intervals = static_cast<int>(problem.mesh.size());
+    problem = std::move(refined);
     options.warm_start = &previous;
   }
   out.problem = problem;

@@ -230,11 +230,32 @@ def test_non_convergence_exit_1_files_say_so(cli, tmp_path):
 
 def test_a_mesh_too_coarse_for_the_target_is_not_an_optimum(cli, tmp_path):
     # Converged, but the re-simulated control misses the target by more than a tolerance far below the
-    # coarse mesh's error (2 intervals in R-coordinates).
+    # coarse mesh's error (2 intervals in R-coordinates), also after the three refinements of the mesh.
     out = tmp_path / "out"
     r = cli("optimize", write(tmp_path, "rotation_matrix", 2, "target_tolerance = 1e-9"), "--out", out)
     assert r.returncode == 1
     assert "not converged: the re-simulated control misses the target" in r.stdout
+    assert "also after 3 refinements of the mesh" in r.stdout
+
+
+def test_a_mesh_that_misses_the_target_is_refined_until_it_reaches_it(cli, tmp_path):
+    # R-coordinates on 2 intervals miss a target of 1e-4 (the transcription's error in cos θ, sin θ); the
+    # intervals with the largest local errors are split, 2 → 7 → 23 intervals (measured), each solve from the
+    # previous optimum, until the re-simulation reaches it; the cost moves towards the closed form.
+    out = tmp_path / "out"
+    r = cli("optimize", write(tmp_path, "rotation_matrix", 2, "target_tolerance = 1e-4"), "--out", out)
+    assert r.returncode == 0, r.stdout + r.stderr
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["optimal"] is True
+    stages = summary["problem"]["mesh_sequence"]
+    assert [s["intervals"] for s in stages] == [2, 7]
+    assert summary["problem"]["intervals"] == 23
+    exact = 12 * I_HINGE**2 * THETA**2 / T**3
+    errors = [abs(s["cost"] / exact - 1) for s in stages] + [abs(summary["solution"]["cost"] / exact - 1)]
+    assert errors[2] < errors[1] < errors[0], errors
+    assert summary["replay"]["attitude_error"] <= 1e-4
+    status, names, rows = csv(out / "control.csv")
+    assert len(rows) == 2 * 23 + 1
 
 
 def test_reruns_are_bit_identical(cli, tmp_path):

@@ -22,6 +22,12 @@ namespace poinsot::optimal {
 std::vector<double> interval_errors(const MultibodyProblem& problem, const MultibodyOptimum& optimum,
                                     int steps = 16);
 
+/// `problem` with every interval whose error (`errors`, interval order, as interval_errors gives them)
+/// exceeds `tolerance` split by the rule of every collocation mesh (2 to 5 equal pieces), its mesh given as
+/// fractions (MultibodyProblem::mesh, summing to 1) and its intervals counted again.
+MultibodyProblem with_refined_mesh(MultibodyProblem problem, const std::vector<double>& errors,
+                                   double tolerance);
+
 struct MultibodyRefinementRound {
   int intervals = 0;
   double max_error = 0.0;  ///< the largest interval error (rad)

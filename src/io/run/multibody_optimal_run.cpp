@@ -15,6 +15,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/io/run/summary.hpp"
+#include "poinsot/optimal/multibody_refinement.hpp"
 #include "report_format.hpp"
 
 namespace poinsot::io {
@@ -79,6 +80,9 @@ double velocity_bound(const MultibodyOptimalScenario& sc) {
   return sc.target_tolerance * std::max(1.0, sc.problem.system.length_scale()) / sc.problem.final_time;
 }
 
+/// How many times the mesh is refined where the re-simulated control misses the target.
+constexpr int kTargetRefinements = 3;
+
 /// The largest |q̇| of hinge `joint` over the collocation points (rad/s).
 double peak_rate(const MultibodyOptimalRun& r, int joint) {
   double peak = 0.0;
@@ -112,25 +116,51 @@ MultibodyOptimalRun run_multibody_optimal(const MultibodyOptimalScenario& sc,
     r.mesh_stages.push_back({n, previous.status, previous.nlp_iterations, previous.cost});
     options.warm_start = &previous;
   }
-  ++mesh;
-  r.optimum = optimal::solve_multibody(sc.problem, options);
-  if (progress) progress({"replay", {}});
-  std::string failure = r.optimum.converged ? "" : r.optimum.status.substr(r.optimum.status.find(':') + 2);
-  try {
-    r.replay = optimal::replay_controls(sc.problem, r.optimum, sc.replay_steps);
-    const double L = sc.problem.system.length_scale();
-    r.target_reached = r.replay.attitude_error <= sc.target_tolerance &&
-                       r.replay.position_error <= sc.target_tolerance * L &&
-                       r.replay.velocity_error <= velocity_bound(sc);
-    if (!r.target_reached && failure.empty()) {
-      failure = fmt::format(
-          "the re-simulated control misses the target (attitude {} rad, position {} m, velocity {}; "
-          "tolerance {}): expected more intervals",
-          report_number(r.replay.attitude_error, 3), report_number(r.replay.position_error, 3),
-          report_number(r.replay.velocity_error, 3), report_number(sc.target_tolerance, 3));
+  optimal::MultibodyProblem problem = sc.problem;
+  std::string replay_failure;
+  const auto solve_and_replay = [&] {
+    ++mesh;
+    r.optimum = optimal::solve_multibody(problem, options);
+    if (progress) progress({"replay", {}});
+    replay_failure.clear();
+    r.target_reached = false;
+    try {
+      r.replay = optimal::replay_controls(problem, r.optimum, sc.replay_steps);
+      const double L = problem.system.length_scale();
+      r.target_reached = r.replay.attitude_error <= sc.target_tolerance &&
+                         r.replay.position_error <= sc.target_tolerance * L &&
+                         r.replay.velocity_error <= velocity_bound(sc);
+    } catch (const ComputationFailed& e) {
+      replay_failure = fmt::format("the re-simulation failed: {}", e.what());
     }
-  } catch (const ComputationFailed& e) {
-    if (failure.empty()) failure = fmt::format("the re-simulation failed: {}", e.what());
+  };
+  solve_and_replay();
+  // A converged optimum whose re-simulation misses the target: the mesh is too coarse where the collocated
+  // motion departs most from the motion of its own control. The intervals whose local error is within a
+  // factor 100 of the largest are split (optimal::with_refined_mesh: the worst into 4 pieces, those within a
+  // factor 16 of the tolerance into 2) and the problem solved again from the optimum. Measured on the arm
+  // family of the random-problem benchmark: a factor 10 (halving) left one problem of 24 a hair outside its
+  // target after three rounds, a factor 100 none.
+  for (int round = 0;
+       round < kTargetRefinements && r.optimum.converged && !r.target_reached && replay_failure.empty();
+       ++round) {
+    const std::vector<double> errors = optimal::interval_errors(problem, r.optimum);
+    r.mesh_stages.push_back({problem.intervals, r.optimum.status, r.optimum.nlp_iterations, r.optimum.cost});
+    previous = r.optimum;
+    options.warm_start = &previous;
+    problem =
+        optimal::with_refined_mesh(problem, errors, 0.01 * *std::max_element(errors.begin(), errors.end()));
+    solve_and_replay();
+  }
+  r.scenario.problem = problem;
+  std::string failure =
+      r.optimum.converged ? replay_failure : r.optimum.status.substr(r.optimum.status.find(':') + 2);
+  if (failure.empty() && !r.target_reached) {
+    failure = fmt::format(
+        "the re-simulated control misses the target (attitude {} rad, position {} m, velocity {}; "
+        "tolerance {}), also after {} refinements of the mesh: expected more intervals",
+        report_number(r.replay.attitude_error, 3), report_number(r.replay.position_error, 3),
+        report_number(r.replay.velocity_error, 3), report_number(sc.target_tolerance, 3), kTargetRefinements);
   }
   r.optimal = failure.empty();
   r.status = r.optimal ? "optimal" : "not converged: " + failure;
