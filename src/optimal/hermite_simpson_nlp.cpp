@@ -49,23 +49,17 @@ void HermiteSimpsonNlp::build_jacobian_structure() {
     jac_rows_.push_back(row);
     jac_cols_.push_back(col);
   };
-  // In the order jacobian_values() writes the entries. The identity terms of y_k and y_{k+1} share the entry
-  // of f's diagonal term ∂f_r/∂y_r where f has one (no repeated triplets: they enlarge the KKT matrix that
-  // MUMPS analyses).
+  // In the order jacobian_values() writes the entries.
   const auto& fp = model_.rhs().jacobian_pattern();
-  rhs_diagonal_.assign(static_cast<std::size_t>(ny), false);
-  for (const auto& [r, v] : fp)
-    if (r == v) rhs_diagonal_[static_cast<std::size_t>(r)] = true;
   for (int k = 0; k < intervals(); ++k) {
     const int d = defect_row(k), m = d + ny;
     const int w0 = nw * mesh_.interval_first_point(k), wm = w0 + nw, w1 = wm + nw;
     for (int r = 0; r < ny; ++r) {
-      const bool shared = rhs_diagonal_[static_cast<std::size_t>(r)];
-      if (!shared) add(d + r, w1 + r);
-      if (!shared) add(d + r, w0 + r);
+      add(d + r, w1 + r);
+      add(d + r, w0 + r);
       add(m + r, wm + r);
-      if (!shared) add(m + r, w0 + r);
-      if (!shared) add(m + r, w1 + r);
+      add(m + r, w0 + r);
+      add(m + r, w1 + r);
     }
     for (const int w : {w0, wm, w1})
       for (const auto& [r, v] : fp)
@@ -92,47 +86,42 @@ void HermiteSimpsonNlp::build_jacobian_structure() {
 }
 
 void HermiteSimpsonNlp::build_hessian_structure() {
-  // One local numbering per kind of point (its block's entries are the union of the patterns), then the
-  // points' blocks one after the other: no entry is shared between two points.
-  for (const bool first : {false, true}) {
-    PointHessian& ph = point_hessian_[first ? 1 : 0];
-    std::map<IndexPair, int> index;
-    const auto entry = [&](int i, int j) {
-      const IndexPair key{std::max(i, j), std::min(i, j)};
-      const auto [it, added] = index.emplace(key, static_cast<int>(ph.block.size()));
-      if (added) ph.block.push_back(key);
-      return it->second;
-    };
-    for (const auto& [i, j] : model_.rhs().hessian_pattern())
-      ph.rhs.push_back(entry(i, j));
-    for (const auto& [i, j] : (first ? model_.first_path() : model_.path()).hessian_pattern())
-      ph.path.push_back(entry(i, j));
-    for (const int c : model_.control_indices())
-      ph.objective.push_back(entry(c, c));
-    if (!free_time()) continue;
-    std::map<int, int> column;
-    const auto time_entry = [&](int v) {
-      const auto [it, added] = column.emplace(v, static_cast<int>(ph.block.size() + ph.time_columns.size()));
-      if (added) ph.time_columns.push_back(v);
-      return it->second;
-    };
-    for (const auto& [r, v] : model_.rhs().jacobian_pattern())
-      ph.time_rhs.push_back(time_entry(v));
-    for (const int c : model_.control_indices())
-      ph.time_objective.push_back(time_entry(c));
-  }
+  // The union of the points' patterns.
   const int nw = model_.point_size();
+  std::map<IndexPair, int> index;
+  const auto entry = [&](int i, int j) {
+    const IndexPair key{std::max(i, j), std::min(i, j)};
+    const auto [it, added] = index.emplace(key, static_cast<int>(hess_rows_.size()));
+    if (added) {
+      hess_rows_.push_back(key.first);
+      hess_cols_.push_back(key.second);
+    }
+    return it->second;
+  };
+  const auto n = static_cast<std::size_t>(points());
+  hess_rhs_.resize(n);
+  hess_path_.resize(n);
+  hess_objective_.resize(n);
   for (int p = 0; p < points(); ++p) {
-    const PointHessian& ph = point_hessian_[mesh_.first_of_phase(p) ? 1 : 0];
-    hess_begin_.push_back(static_cast<int>(hess_rows_.size()));
-    for (const auto& [i, j] : ph.block) {
-      hess_rows_.push_back(nw * p + i);
-      hess_cols_.push_back(nw * p + j);
-    }
-    for (const int v : ph.time_columns) {
-      hess_rows_.push_back(duration_index(mesh_.point_phase(p)));
-      hess_cols_.push_back(nw * p + v);
-    }
+    const int off = nw * p;
+    const auto pu = static_cast<std::size_t>(p);
+    for (const auto& [i, j] : model_.rhs().hessian_pattern())
+      hess_rhs_[pu].push_back(entry(off + i, off + j));
+    for (const auto& [i, j] : path_of(p).hessian_pattern())
+      hess_path_[pu].push_back(entry(off + i, off + j));
+    for (const int c : model_.control_indices())
+      hess_objective_[pu].push_back(entry(off + c, off + c));
+  }
+  if (!free_time()) return;
+  hess_time_rhs_.resize(n);
+  hess_time_objective_.resize(n);
+  for (int p = 0; p < points(); ++p) {
+    const auto pu = static_cast<std::size_t>(p);
+    const int D = duration_index(mesh_.point_phase(p));
+    for (const auto& [r, v] : model_.rhs().jacobian_pattern())
+      hess_time_rhs_[pu].push_back(entry(D, nw * p + v));
+    for (const int c : model_.control_indices())
+      hess_time_objective_[pu].push_back(entry(D, nw * p + c));
   }
 }
 
@@ -260,38 +249,31 @@ void HermiteSimpsonNlp::jacobian_values(const double* x, double* values) const {
   const int ny = model_.state_size();
   const int nw = model_.point_size();
   const auto nf = model_.rhs().jacobian_pattern().size();
-  // ∂f/∂w at the interval's three points (its nodes are evaluated twice, once for each interval: one buffer
-  // for the whole mesh would be large enough to be mapped and zeroed by the kernel at every call).
-  std::vector<double> df(3 * nf);
-  const auto& fp = model_.rhs().jacobian_pattern();
-  // The identity terms that share f's diagonal entries (build_jacobian_structure): ∂D/∂y_k = −I, ∂D/∂y_{k+1}
-  // = I, ∂M/∂y_k = ∂M/∂y_{k+1} = −½ I.
-  const double d_identity[3] = {-1.0, 0.0, 1.0}, m_identity[2] = {-0.5, -0.5};
+  std::vector<double> df(nf * static_cast<std::size_t>(points()));
+  for (int p = 0; p < points(); ++p)
+    model_.rhs().jacobian_values(x + nw * p, df.data() + nf * static_cast<std::size_t>(p));
   double* out = values;
   for (int k = 0; k < intervals(); ++k) {
     for (int r = 0; r < ny; ++r) {
-      const bool shared = rhs_diagonal_[static_cast<std::size_t>(r)];
-      if (!shared) *out++ = 1.0;
-      if (!shared) *out++ = -1.0;
       *out++ = 1.0;
-      if (!shared) *out++ = -0.5;
-      if (!shared) *out++ = -0.5;
+      *out++ = -1.0;
+      *out++ = 1.0;
+      *out++ = -0.5;
+      *out++ = -0.5;
     }
     const int p0 = mesh_.interval_first_point(k);
-    for (int s = 0; s < 3; ++s)
-      model_.rhs().jacobian_values(x + nw * (p0 + s), df.data() + nf * static_cast<std::size_t>(s));
     const double h = interval_step(x, k);
     const double dw[3] = {-h / 6.0, -4.0 * h / 6.0, -h / 6.0};
     for (int s = 0; s < 3; ++s) {
-      const double* d = df.data() + nf * static_cast<std::size_t>(s);
+      const double* d = df.data() + nf * static_cast<std::size_t>(p0 + s);
       for (std::size_t e = 0; e < nf; ++e)
-        *out++ = dw[s] * d[e] + (fp[e].first == fp[e].second ? d_identity[s] : 0.0);
+        *out++ = dw[s] * d[e];
     }
     const double mw[2] = {-h / 8.0, h / 8.0};
     for (int s = 0; s < 2; ++s) {
-      const double* d = df.data() + nf * static_cast<std::size_t>(2 * s);
+      const double* d = df.data() + nf * static_cast<std::size_t>(p0 + 2 * s);
       for (std::size_t e = 0; e < nf; ++e)
-        *out++ = mw[s] * d[e] + (fp[e].first == fp[e].second ? m_identity[s] : 0.0);
+        *out++ = mw[s] * d[e];
     }
   }
   for (int p = 0; p < points(); ++p) {
@@ -363,25 +345,25 @@ void HermiteSimpsonNlp::hessian_values(const double* x, double sigma, const doub
     // yᵀg holds Δ (c_unit · f_p): the f_p terms of the defects of the intervals that hold point p.
     const Eigen::VectorXd c_unit = defect_weight(p, y);
     const Eigen::VectorXd weights = D * c_unit;
-    const PointHessian& ph = point_hessian_[mesh_.first_of_phase(p) ? 1 : 0];
-    double* block = values + hess_begin_[pu];
-    local.resize(ph.rhs.size());
+    const auto& rp = hess_rhs_[pu];
+    local.resize(rp.size());
     model_.rhs().hessian_values(x + nw * p, weights.data(), local.data());
-    for (std::size_t e = 0; e < ph.rhs.size(); ++e)
-      block[ph.rhs[e]] += local[e];
-    local.resize(ph.path.size());
+    for (std::size_t e = 0; e < rp.size(); ++e)
+      values[rp[e]] += local[e];
+    const auto& pp = hess_path_[pu];
+    local.resize(pp.size());
     path_of(p).hessian_values(x + nw * p, y + path_row(p), local.data());
-    for (std::size_t e = 0; e < ph.path.size(); ++e)
-      block[ph.path[e]] += local[e];
-    for (const int entry : ph.objective)
-      block[entry] += 2.0 * sigma * alpha * D * w;
+    for (std::size_t e = 0; e < pp.size(); ++e)
+      values[pp[e]] += local[e];
+    for (const int entry : hess_objective_[pu])
+      values[entry] += 2.0 * sigma * alpha * D * w;
     if (!free_time()) continue;
     // The (Δ, w_p) entries: c_unitᵀ ∂f_p/∂w_p, and the objective's 2 α w_p u_p.
     model_.rhs().jacobian_values(x + nw * p, df.data());
     for (std::size_t n = 0; n < fp.size(); ++n)
-      block[ph.time_rhs[n]] += c_unit(fp[n].first) * df[n];
+      values[hess_time_rhs_[pu][n]] += c_unit(fp[n].first) * df[n];
     for (std::size_t c = 0; c < controls.size(); ++c)
-      block[ph.time_objective[c]] += 2.0 * sigma * alpha * w * x[nw * p + controls[c]];
+      values[hess_time_objective_[pu][c]] += 2.0 * sigma * alpha * w * x[nw * p + controls[c]];
   }
 }
 

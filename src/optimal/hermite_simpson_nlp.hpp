@@ -137,22 +137,13 @@ class HermiteSimpsonNlp final : public SparseNlp {
   Eigen::VectorXd final_values_;
   CollocationTime time_;
   CollocationObjective objective_;
-  std::vector<bool> rhs_diagonal_;  // per state row r: f's pattern has ∂f_r/∂y_r
   std::vector<int> jac_rows_, jac_cols_;
   std::vector<int> hess_rows_, hess_cols_;
-  /// The Hessian entries of one point, the same for every point of a kind (the first of a phase, or any
-  /// other): the union of the patterns of f, of c and of the objective in the point's block, then the (Δ, w)
-  /// entries when the time is free, numbered from the point's first entry.
-  struct PointHessian {
-    std::vector<IndexPair> block;     ///< (i, j), i ≥ j, point variables
-    std::vector<int> time_columns;    ///< w of the (Δ, w) entries
-    std::vector<int> rhs, path;       ///< per Hessian pattern entry of f, of c: the local entry
-    std::vector<int> objective;       ///< per control: the local entry of (u, u)
-    std::vector<int> time_rhs;        ///< per Jacobian pattern entry of f: the local (Δ, w) entry
-    std::vector<int> time_objective;  ///< per control: the local (Δ, u) entry
-  };
-  PointHessian point_hessian_[2];  // [0]: not the first point of its phase, [1]: the first
-  std::vector<int> hess_begin_;    // per point: its first global entry
+  std::vector<std::vector<int>> hess_rhs_, hess_path_;  // per point: local pattern entry → global entry
+  std::vector<std::vector<int>> hess_objective_;        // per point: control k → global entry
+  // Free final time, per point: the (Δ, w) entries of the f-terms (per rhs Jacobian entry) and of the
+  // objective (per control).
+  std::vector<std::vector<int>> hess_time_rhs_, hess_time_objective_;
 };
 
 }  // namespace poinsot::optimal::detail
