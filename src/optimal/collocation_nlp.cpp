@@ -10,8 +10,6 @@ namespace poinsot::optimal::detail {
 
 namespace {
 
-constexpr double kNoDurationBound = 2e19;  // above Ipopt's default "infinite" bound (1e19)
-
 CollocationTime single_body_time(const ReorientationProblem& problem, int phases) {
   if (!problem.free_final_time()) {
     if (phases != 1)
@@ -22,7 +20,7 @@ CollocationTime single_body_time(const ReorientationProblem& problem, int phases
   CollocationTime time;
   const auto P = static_cast<std::size_t>(phases);
   time.lower.assign(P, phases == 1 ? 0.5 * minimum_duration_bound(problem) : 0.0);
-  time.upper.assign(P, kNoDurationBound);
+  time.upper.assign(P, kNoBound);
   return time;
 }
 

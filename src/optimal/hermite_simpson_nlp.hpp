@@ -32,6 +32,9 @@
 
 namespace poinsot::optimal::detail {
 
+/// The bound that stands for "none" (above Ipopt's default nlp_upper_bound_inf = 1e19, so Ipopt drops it).
+inline constexpr double kNoBound = 2e19;
+
 /// Where a point sits in the mesh, for the bounds on its variables.
 struct PointRole {
   int phase = 0;

@@ -12,8 +12,6 @@
 namespace poinsot::optimal::detail {
 namespace {
 
-constexpr double kNoBound = 1e20;  // Ipopt reads |bound| ≥ 1e19 as none
-
 double epsilon(int i, int j, int k) {  // the Levi-Civita symbol
   return static_cast<double>((i - j) * (j - k) * (k - i)) / 2.0;
 }

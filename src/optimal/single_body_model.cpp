@@ -8,11 +8,9 @@ namespace poinsot::optimal::detail {
 
 namespace {
 
-constexpr double kNoBound = 2e19;  // above Ipopt's default "infinite" bound (nlp_upper_bound_inf = 1e19)
-
 /// f(w) of collocation_dynamics.hpp as point functions, its Hessian ∇²(cᵀf) exact
-/// (CollocationDynamics::weighted_hessian). Both patterns are dense (7 × 11 and the lower triangle of 11 × 11)
-/// although some entries are always zero: with the exact sparse blocks MUMPS orders the KKT matrix of the
+/// (CollocationDynamics::weighted_hessian). Both patterns are dense (7 × 11 and the lower triangle of 11 ×
+/// 11) although some entries are always zero: with the exact sparse blocks MUMPS orders the KKT matrix of the
 /// single body worse, and Betts' direct solve took 20 to 50 % longer (bench_optimal, measured alternately).
 class RigidBodyRhs final : public PointFunctions {
  public:
