@@ -119,8 +119,9 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
                  : spinning            ? Mat3(spin_R[pt] * so3::exp(tau * rotvec))
                                        : Mat3(R0 * so3::exp(tau * rotvec)));
     // The sign of q: that of q_0 (continuous along the eigenaxis path, which turns by at most π); along a
-    // spin over several turns, that of the previous point, so that the guess is continuous.
-    const Quat& q_ref = spinning && pt > 0 ? q_prev : p.attitude_initial;
+    // spin or a tumble over several turns, that of the previous point, so that the guess is continuous (a
+    // sign flip between two points is a Simpson defect of 2 that Ipopt has to repair).
+    const Quat& q_ref = (spinning || p.free_final_attitude) && pt > 0 ? q_prev : p.attitude_initial;
     const Quat qs =
         q.w() * q_ref.w() + q.vec().dot(q_ref.vec()) < 0 ? Quat(-q.w(), -q.x(), -q.y(), -q.z()) : q;
     q_prev = qs;
@@ -215,7 +216,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
   DirectSolution best, previous;  // previous: the last mesh Ipopt solved
   bool have_previous = false;
   std::string failure;
-  int nlp_iterations = before.nlp_iterations, restarts = before.nlp_restarts;
+  int nlp_iterations = before.nlp_iterations, restarts = before.nlp_restarts, loosened = before.nlp_loosened;
   for (int it = 0; it < options.max_mesh_iterations; ++it) {
     const int mesh = before.mesh_iterations + it + 1;
     detail::RestartProgress progress;
@@ -234,6 +235,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     detail::NlpSolution& solution = run.solution;
     nlp_iterations += run.iterations;
     restarts += run.restarts;
+    if (run.loosened) ++loosened;
     if (!run.accepted) {
       failure = (solution.solved || solution.acceptable)
                     ? fmt::format(
@@ -266,6 +268,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     best.mesh_iterations = mesh;
     best.nlp_iterations = nlp_iterations;
     best.nlp_restarts = restarts;
+    best.nlp_loosened = loosened;
     if (best.max_mesh_error <= options.mesh_tolerance) {
       best.converged = true;
       best.status = "converged";
@@ -292,6 +295,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
   }
   best.nlp_iterations = nlp_iterations;
   best.nlp_restarts = restarts;
+  best.nlp_loosened = loosened;
   best.status = failure.empty() ? "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
                                       format_number(options.mesh_tolerance) + " after " +
                                       std::to_string(best.mesh_iterations) + " mesh iterations"

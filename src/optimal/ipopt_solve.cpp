@@ -1,11 +1,13 @@
 // Ipopt's view of a SparseNlp (sparse_nlp.hpp).
 #include <dlfcn.h>
 #include <IpIpoptApplication.hpp>
+#include <IpIpoptCalculatedQuantities.hpp>
 #include <IpSolveStatistics.hpp>
 #include <IpTNLP.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -122,10 +124,13 @@ class SparseNlpAdapter : public Ipopt::TNLP {
     y_.assign(lambda, lambda + m);
     f_ = f;
   }
-  bool intermediate_callback(Ipopt::AlgorithmMode, Ipopt::Index iteration, Ipopt::Number objective,
+  bool intermediate_callback(Ipopt::AlgorithmMode mode, Ipopt::Index iteration, Ipopt::Number objective,
                              Ipopt::Number infeasibility, Ipopt::Number, Ipopt::Number, Ipopt::Number,
                              Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Index,
-                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+                             const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities* quantities) override {
+    // The restoration phase's quantities are those of its own problem, not of this NLP.
+    if (mode == Ipopt::RegularMode && quantities != nullptr)
+      smallest_error_ = std::min(smallest_error_, quantities->curr_nlp_error());
     if (settings_.on_iteration) settings_.on_iteration(iteration, objective, infeasibility);
     return true;
   }
@@ -133,12 +138,14 @@ class SparseNlpAdapter : public Ipopt::TNLP {
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
   double f() const { return f_; }
+  double smallest_error() const { return smallest_error_; }
 
  private:
   const SparseNlp& nlp_;
   std::vector<double> x_, y_;
   const IpoptSettings& settings_;
   double f_ = 0.0;
+  double smallest_error_ = std::numeric_limits<double>::infinity();
 };
 
 const char* status_words(Ipopt::ApplicationReturnStatus s) {
@@ -190,18 +197,34 @@ RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<do
                                       const std::function<bool(const NlpSolution&)>& accept,
                                       const RestartProgress& progress) {
   RestartedSolution out;
-  for (int attempt = 0; attempt < kIpoptAttempts; ++attempt) {
-    IpoptSettings ipopt = restart_settings(first, attempt);
+  int run = 0;
+  // One Ipopt run with `ipopt`; true when `accept` takes its solution.
+  const auto solve = [&](IpoptSettings ipopt) {
     if (progress) {
-      ipopt.on_iteration = [&progress, attempt](int iteration, double objective, double infeasibility) {
-        progress(attempt, iteration, objective, infeasibility);
+      ipopt.on_iteration = [&progress, run](int iteration, double objective, double infeasibility) {
+        progress(run, iteration, objective, infeasibility);
       };
     }
     out.solution = solve_with_ipopt(nlp, start, ipopt);
     out.iterations += out.solution.iterations;
-    out.restarts = attempt;
-    if (accept(out.solution)) {
-      out.accepted = true;
+    out.restarts = run++;
+    out.accepted = accept(out.solution);
+    return out.accepted;
+  };
+  bool stall_rerun = false;
+  for (int attempt = 0; attempt < kIpoptAttempts; ++attempt) {
+    const IpoptSettings ipopt = restart_settings(first, attempt);
+    if (solve(ipopt)) break;
+    const NlpSolution& failed = out.solution;
+    if (stall_rerun || failed.solved || failed.acceptable ||
+        !(failed.smallest_error <= kStallToleranceFactor * ipopt.tolerance))
+      continue;
+    stall_rerun = true;
+    IpoptSettings loosened = ipopt;
+    loosened.tolerance = kStallToleranceFactor * ipopt.tolerance;
+    loosened.acceptable_tolerance = std::max(loosened.acceptable_tolerance, loosened.tolerance);
+    if (solve(loosened)) {
+      out.loosened = true;
       break;
     }
   }
@@ -239,6 +262,8 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
   out.x = adapter->x();
   out.y = adapter->y();
   out.objective = adapter->f();
+  out.tolerance = settings.tolerance;
+  out.smallest_error = adapter->smallest_error();
   return out;
 }
 

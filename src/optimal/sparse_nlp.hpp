@@ -5,6 +5,7 @@
 /// the lower triangle (row ≥ col) of the Hessian of the Lagrangian σ f + yᵀg are given as triplets whose
 /// structure is fixed.
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ struct NlpSolution {
   std::string status;       ///< "solved", or Ipopt's return status in words
   int iterations = 0;       ///< Ipopt iterations
   double objective = 0.0;
+  double tolerance = 0.0;  ///< the tolerance Ipopt was given (IpoptSettings::tolerance)
+  /// The smallest scaled optimality error (Ipopt's overall NLP error, the quantity it compares with its
+  /// tolerance) among the iterates of the regular phase; +∞ when there were none.
+  double smallest_error = std::numeric_limits<double>::infinity();
   std::vector<double> x;  ///< the last iterate (the start when Ipopt stopped before finalising)
   std::vector<double>
       y;  ///< constraint multipliers (Lagrangian σ f + yᵀg); empty when Ipopt did not finalise
@@ -82,12 +87,24 @@ inline constexpr int kIpoptAttempts = 3;
 /// iterations. Throws InvalidInput for another attempt number.
 IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
 
+/// How far above its tolerance Ipopt may stop on an NLP where it stalls. On a near-singular KKT system (an
+/// unstable motion over many turns, whose phase is a near-null direction) Ipopt's iterates can come within a
+/// few times its tolerance and then wander at the level of the linear solver's rounding, never meeting it,
+/// along a path that depends on the BLAS. An attempt that fails after an iterate met this factor times its
+/// tolerance is run again from the same start with the tolerance so loosened (solve_with_restarts): the same
+/// path, stopped at the first iterate that meets it. 100 keeps a KKT error of 1e-8 for the default 1e-10,
+/// far below any mesh error that the direct solutions are refined to; what the direct solution seeds (the
+/// shooting, the verification) does not rest on it.
+inline constexpr double kStallToleranceFactor = 100.0;
+
 /// What solve_with_restarts did.
 struct RestartedSolution {
   NlpSolution solution;  ///< of the accepted attempt, else of the last one
   int iterations = 0;    ///< Ipopt iterations of every attempt
-  int restarts = 0;      ///< attempts after the first (0 to kIpoptAttempts − 1)
+  int restarts = 0;      ///< Ipopt runs after the first (0 to kIpoptAttempts)
   bool accepted = false;
+  /// The accepted solution met kStallToleranceFactor times the tolerance only: the attempt stalled above it.
+  bool loosened = false;
 };
 
 /// Called after every Ipopt iteration of solve_with_restarts: the attempt (0: the first settings), then the
@@ -96,8 +113,11 @@ using RestartProgress =
     std::function<void(int attempt, int iteration, double objective, double infeasibility)>;
 
 /// Solves `nlp` from `start` with the settings `first`; while `accept` refuses the solution, again from the
-/// same start with restart_settings' next settings, kIpoptAttempts attempts at most. `progress`, if not
-/// empty, sees every iteration. Throws what solve_with_ipopt throws.
+/// same start with restart_settings' next settings, kIpoptAttempts attempts at most. The first attempt that
+/// fails (neither solved nor acceptable) after an iterate came within kStallToleranceFactor of its
+/// tolerance is run once more, at once, with its tolerance so loosened (`loosened` when that is accepted).
+/// `progress`, if not empty, sees every iteration, with the run's number (0: the first settings). Throws
+/// what solve_with_ipopt throws.
 RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<double>& start,
                                       const IpoptSettings& first,
                                       const std::function<bool(const NlpSolution&)>& accept,

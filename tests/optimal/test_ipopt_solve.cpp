@@ -1,6 +1,7 @@
 // Ipopt behind the SparseNlp interface and the restarts of the direct methods: a two-variable program with a
 // known optimum, solved; the restart settings in their documented order; solve_with_restarts makes at most
-// kIpoptAttempts attempts from the same start, stops at the first accepted one and counts every iteration.
+// kIpoptAttempts attempts from the same start, stops at the first accepted one and counts every iteration; an
+// attempt that stalls near its tolerance is rerun with the tolerance loosened.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,6 +48,40 @@ class Projection final : public SparseNlp {
   void hessian_values(const double*, double sigma, const double*, double* v) const override {
     v[0] = v[1] = 2.0 * sigma;
   }
+};
+
+/// The projection whose objective gradient carries a deterministic error of ±`noise` that alternates from
+/// one evaluation to the next: the rounding of a near-singular KKT system, in miniature. Ipopt's scaled
+/// optimality error then cannot fall far below `noise`.
+class NoisyProjection final : public SparseNlp {
+ public:
+  explicit NoisyProjection(double noise) : noise_(noise) {}
+  int num_variables() const override { return exact_.num_variables(); }
+  int num_constraints() const override { return exact_.num_constraints(); }
+  void bounds(std::vector<double>& xl, std::vector<double>& xu, std::vector<double>& gl,
+              std::vector<double>& gu) const override {
+    exact_.bounds(xl, xu, gl, gu);
+  }
+  double objective(const double* x) const override { return exact_.objective(x); }
+  void objective_gradient(const double* x, double* g) const override {
+    exact_.objective_gradient(x, g);
+    sign_ = -sign_;
+    g[0] += sign_ * noise_;
+  }
+  void constraints(const double* x, double* g) const override { exact_.constraints(x, g); }
+  int jacobian_nonzeros() const override { return exact_.jacobian_nonzeros(); }
+  void jacobian_structure(int* rows, int* cols) const override { exact_.jacobian_structure(rows, cols); }
+  void jacobian_values(const double* x, double* v) const override { exact_.jacobian_values(x, v); }
+  int hessian_nonzeros() const override { return exact_.hessian_nonzeros(); }
+  void hessian_structure(int* rows, int* cols) const override { exact_.hessian_structure(rows, cols); }
+  void hessian_values(const double* x, double sigma, const double* y, double* v) const override {
+    exact_.hessian_values(x, sigma, y, v);
+  }
+
+ private:
+  Projection exact_;
+  double noise_;
+  mutable double sign_ = 1.0;
 };
 
 TEST(IpoptSolve, SolvesAProgramWithAKnownOptimum) {
@@ -104,6 +139,47 @@ TEST(IpoptSolve, RestartsStopAtTheFirstAcceptedAttemptAndCountEveryIteration) {
     // Every attempt starts from the same point and solves this program.
     EXPECT_TRUE(r.solution.solved);
     EXPECT_NEAR(r.solution.x[1], 1.0, 1e-9);
+  }
+}
+
+}  // namespace
+}  // namespace poinsot::optimal::detail
+
+namespace poinsot::optimal::detail {
+namespace {
+
+// An attempt that stalls within kStallToleranceFactor of its tolerance is run again, once and at once, with
+// the tolerance loosened, and stops there; one that stalls farther away is not, and the restarts go on.
+TEST(IpoptSolve, AnAttemptThatStallsNearItsToleranceIsRerunWithTheToleranceLoosened) {
+  IpoptSettings first;
+  first.tolerance = 1e-10;
+  first.acceptable_tolerance = first.tolerance;  // as the direct methods set it: no acceptable level below
+  first.max_iterations = 60;
+  const auto solved = [](const NlpSolution& s) { return s.solved || s.acceptable; };
+  {
+    // Gradient noise 1e-9: the error stays above 1e-10 but comes below 100 × 1e-10.
+    const NoisyProjection nlp(1e-9);
+    const NlpSolution alone = solve_with_ipopt(nlp, {3.0, -4.0}, first);
+    ASSERT_FALSE(alone.solved || alone.acceptable) << alone.status;
+    ASSERT_GT(alone.smallest_error, first.tolerance);
+    ASSERT_LE(alone.smallest_error, kStallToleranceFactor * first.tolerance);
+    const RestartedSolution r = solve_with_restarts(nlp, {3.0, -4.0}, first, solved);
+    EXPECT_TRUE(r.accepted);
+    EXPECT_TRUE(r.loosened);
+    EXPECT_EQ(r.restarts, 1);  // the first settings, then their rerun at the loosened tolerance
+    EXPECT_EQ(r.solution.tolerance, kStallToleranceFactor * first.tolerance);
+    EXPECT_LE(r.solution.smallest_error, r.solution.tolerance);
+    EXPECT_NEAR(r.solution.x[0], 0.0, 1e-7);  // the optimum of the exact program, to the noise's effect
+    EXPECT_NEAR(r.solution.x[1], 1.0, 1e-7);
+  }
+  {
+    // Gradient noise 1e-6: no iterate comes within the factor; the three attempts fail, none loosened.
+    const NoisyProjection nlp(1e-6);
+    const RestartedSolution r = solve_with_restarts(nlp, {3.0, -4.0}, first, solved);
+    EXPECT_FALSE(r.accepted);
+    EXPECT_FALSE(r.loosened);
+    EXPECT_EQ(r.restarts, kIpoptAttempts - 1);
+    EXPECT_GT(r.solution.smallest_error, kStallToleranceFactor * first.tolerance);
   }
 }
 

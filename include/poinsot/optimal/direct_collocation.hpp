@@ -88,6 +88,8 @@ struct DirectSolution {
   int mesh_iterations = 0;
   int nlp_iterations = 0;  ///< Ipopt iterations, summed over the mesh iterations
   int nlp_restarts = 0;    ///< Ipopt runs restarted with other settings after a failure (see solve_direct)
+  /// Meshes whose NLP Ipopt met only at 100 times nlp_tolerance, having stalled above it (see solve_direct).
+  int nlp_loosened = 0;
 };
 
 /// Throws InvalidInput (one line naming the field) unless 2 ≤ initial_intervals ≤ max_intervals,
@@ -101,8 +103,11 @@ void validate(const CollocationOptions& options);
 /// solution interpolated) with other settings before the method gives up: first the monotone barrier from
 /// μ = 1e-4 with the start kept where it is (bound_push 1e-9: the start is near a solution, the default
 /// μ = 0.1 and push 1e-2 move it away), then the adaptive barrier with the same start options and twice the
-/// iterations. When every attempt fails on a refined mesh, the previous mesh's solution (Ipopt solved it:
-/// `nlp_solved`) is the result, and the status says what failed.
+/// iterations. An attempt that fails after an iterate came within 100 times Ipopt's tolerance (Ipopt
+/// stalled at the level of its linear solver's rounding, as on the tumbling racket's first mesh) is run once
+/// more from the same start with the tolerance so loosened, and stops at that iterate (`nlp_loosened`
+/// counts such meshes). When every attempt fails on a refined mesh, the previous mesh's solution (Ipopt
+/// solved it: `nlp_solved`) is the result, and the status says what failed.
 DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options = {});
 
 /// Continues the mesh refinement of `previous` (a solve_direct result for the same problem: its mesh and

@@ -78,8 +78,14 @@ std::string report_direct(const OptimalRun& r) {
       "{} Ipopt iterations{}\n  final time {} s, cost {}\n",
       r.direct.status, r.direct.node_time.empty() ? 0 : r.direct.node_time.size() - 1,
       r.direct.mesh_iterations, format_number(r.direct.max_mesh_error, 3), r.direct.nlp_iterations,
-      r.direct.nlp_restarts > 0 ? fmt::format(" ({} restarts with other settings)", r.direct.nlp_restarts)
-                                : std::string(),
+      r.direct.nlp_restarts > 0
+          ? fmt::format(
+                " ({} restarts with other settings{})", r.direct.nlp_restarts,
+                r.direct.nlp_loosened > 0
+                    ? fmt::format("; {} mesh(es) solved to 100 times Ipopt's tolerance, where it stalled",
+                                  r.direct.nlp_loosened)
+                    : std::string())
+          : std::string(),
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));
   if (r.optimal && !r.direct.converged)
     o << "  the mesh tolerance was not met; the indirect solution is verified on its own\n";
