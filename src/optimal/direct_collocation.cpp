@@ -216,7 +216,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
   DirectSolution best, previous;  // previous: the last mesh Ipopt solved
   bool have_previous = false;
   std::string failure;
-  int nlp_iterations = before.nlp_iterations, restarts = before.nlp_restarts, loosened = before.nlp_loosened;
+  int nlp_iterations = before.nlp_iterations, restarts = before.nlp_restarts, stalled = before.nlp_stalled;
   for (int it = 0; it < options.max_mesh_iterations; ++it) {
     const int mesh = before.mesh_iterations + it + 1;
     detail::RestartProgress progress;
@@ -235,7 +235,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     detail::NlpSolution& solution = run.solution;
     nlp_iterations += run.iterations;
     restarts += run.restarts;
-    if (run.loosened) ++loosened;
+    if (run.stalled) ++stalled;
     if (!run.accepted) {
       failure = (solution.solved || solution.acceptable)
                     ? fmt::format(
@@ -268,7 +268,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     best.mesh_iterations = mesh;
     best.nlp_iterations = nlp_iterations;
     best.nlp_restarts = restarts;
-    best.nlp_loosened = loosened;
+    best.nlp_stalled = stalled;
     if (best.max_mesh_error <= options.mesh_tolerance) {
       best.converged = true;
       best.status = "converged";
@@ -295,7 +295,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
   }
   best.nlp_iterations = nlp_iterations;
   best.nlp_restarts = restarts;
-  best.nlp_loosened = loosened;
+  best.nlp_stalled = stalled;
   best.status = failure.empty() ? "mesh error " + format_number(best.max_mesh_error, 3) + " above " +
                                       format_number(options.mesh_tolerance) + " after " +
                                       std::to_string(best.mesh_iterations) + " mesh iterations"

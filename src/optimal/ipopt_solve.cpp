@@ -129,16 +129,23 @@ class SparseNlpAdapter : public Ipopt::TNLP {
                              Ipopt::Number, Ipopt::Number, Ipopt::Number, Ipopt::Index,
                              const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities* quantities) override {
     // The restoration phase's quantities are those of its own problem, not of this NLP.
-    if (mode == Ipopt::RegularMode && quantities != nullptr)
-      smallest_error_ = std::min(smallest_error_, quantities->curr_nlp_error());
+    if (mode == Ipopt::RegularMode && quantities != nullptr) {
+      // The scaled error is Ipopt's own test; the unscaled one keeps large multipliers (dependent
+      // constraints) from scaling a poor iterate's dual infeasibility away.
+      const double error = std::max(quantities->curr_nlp_error(), quantities->unscaled_curr_nlp_error());
+      smallest_error_ = std::min(smallest_error_, error);
+      stopped_at_error_ = settings_.stop_at_error > 0.0 && error <= settings_.stop_at_error;
+    }
     if (settings_.on_iteration) settings_.on_iteration(iteration, objective, infeasibility);
-    return true;
+    return !stopped_at_error_;
   }
 
   const std::vector<double>& x() const { return x_; }
   const std::vector<double>& y() const { return y_; }
   double f() const { return f_; }
   double smallest_error() const { return smallest_error_; }
+  /// The run was stopped at an iterate that met IpoptSettings::stop_at_error.
+  bool stopped_at_error() const { return stopped_at_error_; }
 
  private:
   const SparseNlp& nlp_;
@@ -146,6 +153,7 @@ class SparseNlpAdapter : public Ipopt::TNLP {
   const IpoptSettings& settings_;
   double f_ = 0.0;
   double smallest_error_ = std::numeric_limits<double>::infinity();
+  bool stopped_at_error_ = false;
 };
 
 const char* status_words(Ipopt::ApplicationReturnStatus s) {
@@ -220,11 +228,10 @@ RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<do
         !(failed.smallest_error <= kStallToleranceFactor * ipopt.tolerance))
       continue;
     stall_rerun = true;
-    IpoptSettings loosened = ipopt;
-    loosened.tolerance = kStallToleranceFactor * ipopt.tolerance;
-    loosened.acceptable_tolerance = std::max(loosened.acceptable_tolerance, loosened.tolerance);
-    if (solve(loosened)) {
-      out.loosened = true;
+    IpoptSettings retrace = ipopt;
+    retrace.stop_at_error = kStallToleranceFactor * ipopt.tolerance;
+    if (solve(retrace)) {
+      out.stalled = true;
       break;
     }
   }
@@ -254,15 +261,19 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
   const SingleBlasThread one_blas_thread;  // bit-identical results with a threaded OpenBLAS
   const Ipopt::ApplicationReturnStatus status = app->OptimizeTNLP(adapter);
   NlpSolution out;
-  out.solved = status == Ipopt::Solve_Succeeded;
+  const bool stopped = status == Ipopt::User_Requested_Stop && adapter->stopped_at_error();
+  out.solved = status == Ipopt::Solve_Succeeded || stopped;
   out.acceptable = status == Ipopt::Solved_To_Acceptable_Level;
   out.return_code = static_cast<int>(status);
-  out.status = status_words(status);
+  out.status = stopped ? fmt::format(
+                             "solved to {} (optimality error), where Ipopt stalled above its "
+                             "tolerance {}",
+                             settings.stop_at_error, settings.tolerance)
+                       : status_words(status);
   if (auto stats = app->Statistics(); Ipopt::IsValid(stats)) out.iterations = stats->IterationCount();
   out.x = adapter->x();
   out.y = adapter->y();
   out.objective = adapter->f();
-  out.tolerance = settings.tolerance;
   out.smallest_error = adapter->smallest_error();
   return out;
 }

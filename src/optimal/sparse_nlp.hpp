@@ -48,21 +48,26 @@ struct IpoptSettings {
   /// instead of 1e-2 (bound_push, bound_frac and their slack counterparts), so the barrier does not move
   /// the start away from where it is.
   bool warm_start = false;
+  /// When positive, the run stops at the first iterate of the regular phase whose optimality error (as in
+  /// NlpSolution::smallest_error) is at most this, and counts as solved (solve_with_restarts' rerun of an
+  /// attempt that stalled); 0: Ipopt's own termination only.
+  double stop_at_error = 0.0;
   /// Called after every Ipopt iteration with its number, the objective and the constraint violation (the
   /// terminal progress of `poinsot optimize`); empty: not called.
   std::function<void(int iteration, double objective, double infeasibility)> on_iteration;
 };
 
 struct NlpSolution {
-  bool solved = false;      ///< Ipopt returned Solve_Succeeded
+  /// Ipopt returned Solve_Succeeded, or the run stopped at an iterate that met IpoptSettings::stop_at_error
+  bool solved = false;
   bool acceptable = false;  ///< Ipopt returned Solved_To_Acceptable_Level
   int return_code = 0;      ///< Ipopt's ApplicationReturnStatus as a number
   std::string status;       ///< "solved", or Ipopt's return status in words
   int iterations = 0;       ///< Ipopt iterations
   double objective = 0.0;
-  double tolerance = 0.0;  ///< the tolerance Ipopt was given (IpoptSettings::tolerance)
-  /// The smallest scaled optimality error (Ipopt's overall NLP error, the quantity it compares with its
-  /// tolerance) among the iterates of the regular phase; +∞ when there were none.
+  /// The smallest optimality error among the iterates of the regular phase, each the larger of Ipopt's
+  /// overall NLP error (scaled: the quantity it compares with its tolerance) and its unscaled version; +∞
+  /// when there were none.
   double smallest_error = std::numeric_limits<double>::infinity();
   std::vector<double> x;  ///< the last iterate (the start when Ipopt stopped before finalising)
   std::vector<double>
@@ -91,10 +96,10 @@ IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
 /// unstable motion over many turns, whose phase is a near-null direction) Ipopt's iterates can come within a
 /// few times its tolerance and then wander at the level of the linear solver's rounding, never meeting it,
 /// along a path that depends on the BLAS. An attempt that fails after an iterate met this factor times its
-/// tolerance is run again from the same start with the tolerance so loosened (solve_with_restarts): the same
-/// path, stopped at the first iterate that meets it. 100 keeps a KKT error of 1e-8 for the default 1e-10,
-/// far below any mesh error that the direct solutions are refined to; what the direct solution seeds (the
-/// shooting, the verification) does not rest on it.
+/// tolerance is run again with the same settings from the same start (solve_with_restarts), which retraces
+/// its path, and stopped at the first iterate that meets the factor (IpoptSettings::stop_at_error). 100 keeps
+/// a KKT error of 1e-8 for the default 1e-10, far below any mesh error that the direct solutions are refined
+/// to; what the direct solution seeds (the shooting, the verification) does not rest on it.
 inline constexpr double kStallToleranceFactor = 100.0;
 
 /// What solve_with_restarts did.
@@ -103,8 +108,9 @@ struct RestartedSolution {
   int iterations = 0;    ///< Ipopt iterations of every attempt
   int restarts = 0;      ///< Ipopt runs after the first (0 to kIpoptAttempts)
   bool accepted = false;
-  /// The accepted solution met kStallToleranceFactor times the tolerance only: the attempt stalled above it.
-  bool loosened = false;
+  /// The accepted solution is the first iterate of a stalled attempt that met kStallToleranceFactor times its
+  /// tolerance.
+  bool stalled = false;
 };
 
 /// Called after every Ipopt iteration of solve_with_restarts: the attempt (0: the first settings), then the
@@ -115,7 +121,7 @@ using RestartProgress =
 /// Solves `nlp` from `start` with the settings `first`; while `accept` refuses the solution, again from the
 /// same start with restart_settings' next settings, kIpoptAttempts attempts at most. The first attempt that
 /// fails (neither solved nor acceptable) after an iterate came within kStallToleranceFactor of its
-/// tolerance is run once more, at once, with its tolerance so loosened (`loosened` when that is accepted).
+/// tolerance is run once more, at once, and stopped at that iterate (`stalled` when that is accepted).
 /// `progress`, if not empty, sees every iteration, with the run's number (0: the first settings). Throws
 /// what solve_with_ipopt throws.
 RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<double>& start,

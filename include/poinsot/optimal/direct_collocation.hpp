@@ -88,8 +88,9 @@ struct DirectSolution {
   int mesh_iterations = 0;
   int nlp_iterations = 0;  ///< Ipopt iterations, summed over the mesh iterations
   int nlp_restarts = 0;    ///< Ipopt runs restarted with other settings after a failure (see solve_direct)
-  /// Meshes whose NLP Ipopt met only at 100 times nlp_tolerance, having stalled above it (see solve_direct).
-  int nlp_loosened = 0;
+  /// Meshes whose NLP solution is the first iterate within 100 times nlp_tolerance of an Ipopt run that
+  /// stalled above it (see solve_direct).
+  int nlp_stalled = 0;
 };
 
 /// Throws InvalidInput (one line naming the field) unless 2 ≤ initial_intervals ≤ max_intervals,
@@ -105,9 +106,9 @@ void validate(const CollocationOptions& options);
 /// μ = 0.1 and push 1e-2 move it away), then the adaptive barrier with the same start options and twice the
 /// iterations. An attempt that fails after an iterate came within 100 times Ipopt's tolerance (Ipopt
 /// stalled at the level of its linear solver's rounding, as on the tumbling racket's first mesh) is run once
-/// more from the same start with the tolerance so loosened, and stops at that iterate (`nlp_loosened`
-/// counts such meshes). When every attempt fails on a refined mesh, the previous mesh's solution (Ipopt
-/// solved it: `nlp_solved`) is the result, and the status says what failed.
+/// more with the same settings from the same start, which retraces its path, and is stopped at the first
+/// such iterate (`nlp_stalled` counts such meshes). When every attempt fails on a refined mesh, the previous
+/// mesh's solution (Ipopt solved it: `nlp_solved`) is the result, and the status says what failed.
 DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options = {});
 
 /// Continues the mesh refinement of `previous` (a solve_direct result for the same problem: its mesh and

@@ -81,9 +81,9 @@ std::string report_direct(const OptimalRun& r) {
       r.direct.nlp_restarts > 0
           ? fmt::format(
                 " ({} restarts with other settings{})", r.direct.nlp_restarts,
-                r.direct.nlp_loosened > 0
+                r.direct.nlp_stalled > 0
                     ? fmt::format("; {} mesh(es) solved to 100 times Ipopt's tolerance, where it stalled",
-                                  r.direct.nlp_loosened)
+                                  r.direct.nlp_stalled)
                     : std::string())
           : std::string(),
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));

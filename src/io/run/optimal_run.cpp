@@ -345,7 +345,7 @@ std::string optimal_summary_json(const OptimalRun& r) {
                  {"nlp_iterations", r.direct.nlp_iterations},
                  {"nlp_solved", r.direct.nlp_solved},
                  {"nlp_restarts", r.direct.nlp_restarts},
-                 {"nlp_loosened", r.direct.nlp_loosened},
+                 {"nlp_stalled", r.direct.nlp_stalled},
                  {"optimum_from", direct_optimum_source(r)}};
   const auto finite_or_null = [](double x) {
     return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json();
