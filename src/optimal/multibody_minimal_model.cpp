@@ -338,12 +338,12 @@ MultibodyMinimalModel::MultibodyMinimalModel(const MultibodyProblem& problem) {
 
 void MultibodyMinimalModel::variable_bounds(const PointRole&, double* lower, double* upper) const {
   for (int i = 0; i < point_size(); ++i) {
-    lower[i] = -1e20;
-    upper[i] = 1e20;
+    lower[i] = -kNoBound;
+    upper[i] = kNoBound;
   }
   for (std::size_t k = 0; k < controls_.size(); ++k) {
-    lower[controls_[k]] = -std::min(bounds_[k], 1e20);
-    upper[controls_[k]] = std::min(bounds_[k], 1e20);
+    lower[controls_[k]] = -std::min(bounds_[k], kNoBound);
+    upper[controls_[k]] = std::min(bounds_[k], kNoBound);
   }
 }
 
