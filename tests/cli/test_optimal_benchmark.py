@@ -64,3 +64,27 @@ def test_fixed_seed_run_is_valid_and_verifies_the_tuned_families(source_dir, tmp
     assert not summary["direct"]["converged"] and "refinement stopped" in summary["direct"]["status"]
     assert 0.0 < summary["direct"]["mesh_error"] <= 1e-4
     assert summary["indirect"]["rate_bound_arcs"] and summary["checks"]["rate_multiplier_min"] >= 0.0
+
+
+@pytest.mark.slow_under_sanitizers
+def test_a_rate_bounded_structure_the_shooting_refuses_stops_refining_once_its_replay_meets_the_target(
+        source_dir, tmp_path):
+    """Problem 2 of seed 2 of the rate family: a singular arc overlaps a boundary arc of the rate bound, which
+    the shooting refuses. Read from two meshes in a row, that makes the direct solution the answer, and its
+    refinement stops at the first mesh whose re-simulation meets the target (docs/optimal_control.md,
+    "Rate-bounded problems stop refining once verified"): "converged (direct …)", exit 3, above the mesh
+    tolerance, the replay within its target."""
+    exe = os.environ.get("POINSOT_CLI")
+    if not exe:
+        pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
+    r = bench(source_dir, "--poinsot", exe, "--seed", 2, "--first", 2, "--n", 1, "--family", "rate",
+              "--cpu-limit", 120, "--keep", tmp_path / "k")
+    assert r.returncode == 0, r.stdout + r.stderr
+    summary = json.loads((tmp_path / "k" / "rate_2_2-out" / "summary.json").read_text())
+    assert summary["outcome"] == "converged_direct", summary["status"]
+    assert "overlaps a boundary arc of the rate bound" in summary["status"]
+    assert summary["indirect"]["status"].startswith("not applied")
+    assert not summary["direct"]["converged"] and "the caller accepted the mesh" in summary["direct"]["status"]
+    assert summary["direct"]["mesh_error"] > 1e-7  # the default mesh_tolerance, which the file keeps
+    replay = summary["direct_replay"]
+    assert replay["run"] and replay["scaled_error"] <= replay["tolerance"]

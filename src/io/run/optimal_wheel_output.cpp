@@ -64,10 +64,10 @@ std::string wheel_momentum_values(const optimal::DirectSolution& d, std::size_t 
   return out;
 }
 
-bool wheel_bounds_held(const OptimalRun& r) {
-  const auto& w = r.scenario.problem.wheels;
+bool wheel_bounds_held(const optimal::ReorientationProblem& problem, const optimal::DirectReplay& replay) {
+  const auto& w = problem.wheels;
   return !(w && w->has_momentum_bound()) ||
-         r.direct_replay.wheel_momentum_excess <= optimal::wheel_momentum_replay_tolerance;
+         replay.wheel_momentum_excess <= optimal::wheel_momentum_replay_tolerance;
 }
 
 nlohmann::ordered_json wheels_json(const OptimalRun& r) {

@@ -24,9 +24,9 @@ std::string wheel_momentum_columns(const optimal::ReorientationProblem& problem)
 /// ",h1,h2,h3" of sample k of a direct solution with wheels (N·m·s), "" without wheels.
 std::string wheel_momentum_values(const optimal::DirectSolution& direct, std::size_t k);
 
-/// Whether the direct re-simulation meets every finite wheel-momentum bound to
+/// Whether a direct solution's re-simulation `replay` meets every finite wheel-momentum bound of `problem` to
 /// wheel_momentum_replay_tolerance (true without bounds): a condition of "converged (direct …)".
-bool wheel_bounds_held(const OptimalRun& run);
+bool wheel_bounds_held(const optimal::ReorientationProblem& problem, const optimal::DirectReplay& replay);
 
 /// summary.json's "reaction_wheels" (null without wheels): axes (rows), spin inertias, bounds, the initial,
 /// final and peak momenta, the tightening of the bounds at the collocation points, the replay's excess and
