@@ -55,7 +55,7 @@ TEST(IntegratorFactory, DefaultsAreRegistryEntries) {
 // The user documentation is prose, not generated: this keeps its lists of methods complete.
 TEST(IntegratorFactory, DocumentationNamesEveryMethod) {
   const auto read = [](const char* path) {
-    std::ifstream in(std::string(POINSOT_SOURCE_DIR) + "/" + path);
+    std::ifstream in(std::string(POINSOT_SOURCE_DIR "/") + path);
     std::stringstream text;
     text << in.rdbuf();
     return text.str();

@@ -21,7 +21,7 @@ using test::expect_has;
 using test::max_abs_diff;
 
 std::string data(const std::string& name) {
-  return std::string(POINSOT_TEST_DATA_DIR) + "/models/" + name;
+  return std::string(POINSOT_TEST_DATA_DIR "/models/") + name;
 }
 
 std::map<std::string, LinkCheck> by_name(const ModelCheck& c) {

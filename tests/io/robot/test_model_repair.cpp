@@ -25,7 +25,7 @@ namespace {
 using test::max_abs_diff;
 
 std::string model_path(const std::string& name) {
-  return std::string(POINSOT_TEST_DATA_DIR) + "/models/" + name;
+  return std::string(POINSOT_TEST_DATA_DIR "/models/") + name;
 }
 
 std::string bytes_of(const std::string& path) {

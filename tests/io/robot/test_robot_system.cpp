@@ -35,7 +35,7 @@ using test::max_abs_diff;
 using test::message_of;
 
 std::string robots(const std::string& name) {
-  return std::string(POINSOT_TEST_DATA_DIR) + "/models/robots/" + name;
+  return std::string(POINSOT_TEST_DATA_DIR "/models/robots/") + name;
 }
 
 /// Joint types by name.

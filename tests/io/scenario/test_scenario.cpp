@@ -223,8 +223,9 @@ TEST(Scenario, TorqueKeysMatchTheirType) {
 }
 
 TEST(Scenario, MethodNamesAreChecked) {
-  expect_has(error_of(std::string(kMinimal) + "[integrator]\nmethod = \"euler\"\n"),
-             {"got \"euler\", expected one of exact, rk4, dopri5, dop853, dlm, rattle"});
+  std::string text = kMinimal;
+  text += "[integrator]\nmethod = \"euler\"\n";
+  expect_has(error_of(text), {"got \"euler\", expected one of exact, rk4, dopri5, dop853, dlm, rattle"});
 }
 
 TEST(Scenario, OverridesAreValidatedLikeTheFile) {
