@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 
 #include "poinsot/core/error.hpp"
+#include "poinsot/optimal/direct_collocation.hpp"
 #include "sparse_nlp.hpp"
 
 namespace poinsot::optimal::detail {
@@ -225,11 +226,11 @@ RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<do
     if (solve(ipopt)) break;
     const NlpSolution& failed = out.solution;
     if (stall_rerun || failed.solved || failed.acceptable ||
-        !(failed.smallest_error <= kStallToleranceFactor * ipopt.tolerance))
+        !(failed.smallest_error <= nlp_stall_tolerance_factor * ipopt.tolerance))
       continue;
     stall_rerun = true;
     IpoptSettings retrace = ipopt;
-    retrace.stop_at_error = kStallToleranceFactor * ipopt.tolerance;
+    retrace.stop_at_error = nlp_stall_tolerance_factor * ipopt.tolerance;
     if (solve(retrace)) {
       out.stalled = true;
       break;

@@ -92,35 +92,25 @@ inline constexpr int kIpoptAttempts = 3;
 /// iterations. Throws InvalidInput for another attempt number.
 IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
 
-/// How far above its tolerance Ipopt may stop on an NLP where it stalls. On a near-singular KKT system (an
-/// unstable motion over many turns, whose phase is a near-null direction) Ipopt's iterates can come within a
-/// few times its tolerance and then wander at the level of the linear solver's rounding, never meeting it,
-/// along a path that depends on the BLAS. An attempt that fails after an iterate met this factor times its
-/// tolerance is run again with the same settings from the same start (solve_with_restarts), which retraces
-/// its path, and stopped at the first iterate that meets the factor (IpoptSettings::stop_at_error). 100 keeps
-/// a KKT error of 1e-8 for the default 1e-10, far below any mesh error that the direct solutions are refined
-/// to; what the direct solution seeds (the shooting, the verification) does not rest on it.
-inline constexpr double kStallToleranceFactor = 100.0;
-
 /// What solve_with_restarts did.
 struct RestartedSolution {
   NlpSolution solution;  ///< of the accepted attempt, else of the last one
   int iterations = 0;    ///< Ipopt iterations of every attempt
   int restarts = 0;      ///< Ipopt runs after the first (0 to kIpoptAttempts)
   bool accepted = false;
-  /// The accepted solution is the first iterate of a stalled attempt that met kStallToleranceFactor times its
-  /// tolerance.
+  /// The accepted solution is the first iterate of a stalled attempt that met nlp_stall_tolerance_factor
+  /// times its tolerance.
   bool stalled = false;
 };
 
-/// Called after every Ipopt iteration of solve_with_restarts: the attempt (0: the first settings), then the
+/// Called after every Ipopt iteration of solve_with_restarts: the run (0: the first settings), then the
 /// arguments of IpoptSettings::on_iteration.
 using RestartProgress =
     std::function<void(int attempt, int iteration, double objective, double infeasibility)>;
 
 /// Solves `nlp` from `start` with the settings `first`; while `accept` refuses the solution, again from the
 /// same start with restart_settings' next settings, kIpoptAttempts attempts at most. The first attempt that
-/// fails (neither solved nor acceptable) after an iterate came within kStallToleranceFactor of its
+/// fails (neither solved nor acceptable) after an iterate came within nlp_stall_tolerance_factor of its
 /// tolerance is run once more, at once, and stopped at that iterate (`stalled` when that is accepted).
 /// `progress`, if not empty, sees every iteration, with the run's number (0: the first settings). Throws
 /// what solve_with_ipopt throws.

@@ -47,6 +47,16 @@ struct CollocationOptions {
   std::function<bool(const DirectSolution&)> accept_mesh;
 };
 
+/// How far above its tolerance Ipopt may stop on an NLP where it stalls. On a near-singular KKT system (an
+/// unstable motion over many turns, whose phase is a near-null direction) Ipopt's iterates can come within a
+/// few times its tolerance and then wander at the level of the linear solver's rounding, never meeting it,
+/// along a path that depends on the BLAS. An attempt that fails after an iterate met this factor times its
+/// tolerance is run again with the same settings from the same start (the restarts of solve_direct and of
+/// the multibody solves), which retraces its path, and is stopped at the first iterate that meets the factor.
+/// 100 keeps a KKT error of 1e-8 for the default 1e-10, far below any mesh error that the direct solutions
+/// are refined to; what the direct solution seeds (the shooting, the verification) does not rest on it.
+inline constexpr double nlp_stall_tolerance_factor = 100.0;
+
 /// A collocated trajectory: samples at the nodes and midpoints (times ascending), costates at the interval
 /// centres.
 struct DirectSolution {
@@ -88,8 +98,8 @@ struct DirectSolution {
   int mesh_iterations = 0;
   int nlp_iterations = 0;  ///< Ipopt iterations, summed over the mesh iterations
   int nlp_restarts = 0;    ///< Ipopt runs restarted with other settings after a failure (see solve_direct)
-  /// Meshes whose NLP solution is the first iterate within 100 times nlp_tolerance of an Ipopt run that
-  /// stalled above it (see solve_direct).
+  /// Meshes whose NLP solution is the first iterate within nlp_stall_tolerance_factor times nlp_tolerance of
+  /// an Ipopt run that stalled above it (see solve_direct).
   int nlp_stalled = 0;
 };
 
@@ -104,7 +114,8 @@ void validate(const CollocationOptions& options);
 /// solution interpolated) with other settings before the method gives up: first the monotone barrier from
 /// μ = 1e-4 with the start kept where it is (bound_push 1e-9: the start is near a solution, the default
 /// μ = 0.1 and push 1e-2 move it away), then the adaptive barrier with the same start options and twice the
-/// iterations. An attempt that fails after an iterate came within 100 times Ipopt's tolerance (Ipopt
+/// iterations. An attempt that fails after an iterate came within nlp_stall_tolerance_factor times Ipopt's
+/// tolerance (Ipopt
 /// stalled at the level of its linear solver's rounding, as on the tumbling racket's first mesh) is run once
 /// more with the same settings from the same start, which retraces its path, and is stopped at the first
 /// such iterate (`nlp_stalled` counts such meshes). When every attempt fails on a refined mesh, the previous

@@ -10,7 +10,8 @@ namespace poinsot::optimal {
 struct DirectProgress {
   int mesh_iteration = 0;  ///< 1, 2, ... (the first mesh is 1)
   int intervals = 0;
-  int restart = 0;  ///< 0: the first attempt on this mesh; 1, 2: Ipopt restarted with other settings
+  /// 0: the first Ipopt run on this mesh; then Ipopt restarted with other settings, or a stalled run retraced
+  int restart = 0;
   int nlp_iteration = 0;
   double objective = 0.0;
   double infeasibility = 0.0;  ///< Ipopt's constraint violation

@@ -82,8 +82,8 @@ std::string report_direct(const OptimalRun& r) {
           ? fmt::format(
                 " ({} restarts with other settings{})", r.direct.nlp_restarts,
                 r.direct.nlp_stalled > 0
-                    ? fmt::format("; {} mesh(es) solved to 100 times Ipopt's tolerance, where it stalled",
-                                  r.direct.nlp_stalled)
+                    ? fmt::format("; {} mesh(es) solved to {} times Ipopt's tolerance, where it stalled",
+                                  r.direct.nlp_stalled, optimal::nlp_stall_tolerance_factor)
                     : std::string())
           : std::string(),
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));

@@ -141,6 +141,12 @@ void run_phased(OptimalRun& r) {
 
 namespace {
 
+/// Whether the shooting refused the problem's structure (solve_indirect's "not applied: …"), as opposed to
+/// trying it and failing.
+bool shooting_refused(const optimal::IndirectSolution& s) {
+  return s.status.starts_with("not applied");
+}
+
 /// `status` without a leading "not applied: " or "not converged: " (it follows "not verified: ").
 std::string reason_of(const std::string& status) {
   for (const std::string_view prefix : {"not applied: ", "not converged: "})
@@ -200,7 +206,7 @@ void explain_failure(OptimalRun& r) {
   }
   if (!r.indirect.converged) {
     r.failed_phase = "indirect method (shooting)";
-    const bool not_applied = r.indirect.status.starts_with("not applied");
+    const bool not_applied = shooting_refused(r.indirect);
     if (r.outcome == OptimalOutcome::converged_direct) {
       r.advice = not_applied
                      ? "nothing in the scenario: the shooting method does not handle this structure; the "
@@ -267,9 +273,8 @@ OptimalRun run_optimal(const OptimalScenario& sc,
     collocation.accept_mesh = [&](const optimal::DirectSolution& d) {
       if (!(d.max_mesh_error <= kEarlyShootingMeshError) || d.costate_time.size() < 2) return false;
       optimal::IndirectSolution s = optimal::solve_indirect(sc.problem, d, shooting);
-      if (s.status.starts_with("not applied")) {
+      if (shooting_refused(s))
         return ++refusals_in_a_row >= 2 && replay_meets_target(r, optimal::replay_direct(sc.problem, d));
-      }
       refusals_in_a_row = 0;
       if (!s.converged || s.rate_bound_arcs.empty() || !optimal::verify(sc.problem, d, s).passed)
         return false;
