@@ -22,6 +22,7 @@
 #include "poinsot/io/run/optimal_run.hpp"
 #include "poinsot/io/scenario/scenario_file.hpp"
 #include "progress_line.hpp"
+#include "sparse_solver_memory.hpp"
 
 namespace poinsot::cli {
 
@@ -88,6 +89,7 @@ void optimize_multibody(const OptimizeOptions& o) {
 }
 
 void optimize(const OptimizeOptions& o) {
+  keep_freed_memory_for_factorisations();
   if (io::is_multibody_scenario(o.scenario)) return optimize_multibody(o);
   const io::OptimalScenario sc = io::load_optimal_scenario(o.scenario);  // throws for bad input: exit 2
   const std::string dir = !o.out.empty() ? o.out : !sc.out_dir.empty() ? sc.out_dir : sc.name + "-optimize";
