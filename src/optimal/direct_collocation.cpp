@@ -274,11 +274,13 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
       best.status = "converged";
       return best;
     }
-    if (options.accept_mesh && options.accept_mesh(best)) {
-      best.status = "refinement stopped at mesh error " + format_number(best.max_mesh_error, 3) + " above " +
-                    format_number(options.mesh_tolerance) + " after " + std::to_string(mesh) +
-                    " mesh iterations: the caller accepted the mesh";
-      return best;
+    if (options.accept_mesh) {
+      if (const std::optional<std::string> reason = options.accept_mesh(best)) {
+        best.status = "refinement stopped at mesh error " + format_number(best.max_mesh_error, 3) +
+                      " above " + format_number(options.mesh_tolerance) + " after " + std::to_string(mesh) +
+                      " mesh iterations: " + *reason;
+        return best;
+      }
     }
     std::vector<double> next = refine(nlp->tau(), best.mesh_error, options.mesh_tolerance);
     if (static_cast<int>(next.size()) - 1 > options.max_intervals) {

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "optimal_test_problems.hpp"
 #include "poinsot/core/error.hpp"
@@ -95,6 +97,48 @@ TEST(DirectCollocation, ContinuesTheRefinementOfAPreviousSolution) {
   DirectSolution broken = coarse;
   broken.time.pop_back();
   EXPECT_THROW(continue_direct(p, broken, opt), InvalidInput);
+}
+
+// CollocationOptions::accept_mesh sees every solved mesh above the tolerance and stops the refinement at the
+// first for which it gives a reason, which the status carries; the solution is that mesh's, not converged.
+// Refused every time, the refinement runs to the tolerance as without the callback, to the same cost (the
+// same meshes and Ipopt runs).
+TEST(DirectCollocation, AcceptMeshStopsTheRefinementWithItsReason) {
+  const auto p = testing::sphere_energy_problem(kJ, kTheta, Vec3(0.0, 1.0, 1.0), kT);
+  CollocationOptions opt;
+  opt.initial_intervals = 4;
+  opt.mesh_tolerance = 1e-8;
+  const DirectSolution plain = solve_direct(p, opt);
+  ASSERT_TRUE(plain.converged) << plain.status;
+  ASSERT_GE(plain.mesh_iterations, 3) << "the test needs meshes above the tolerance";
+
+  std::vector<double> seen;
+  opt.accept_mesh = [&](const DirectSolution& d) -> std::optional<std::string> {
+    seen.push_back(d.max_mesh_error);
+    return std::nullopt;
+  };
+  const DirectSolution refused = solve_direct(p, opt);
+  ASSERT_TRUE(refused.converged) << refused.status;
+  EXPECT_EQ(refused.cost, plain.cost);
+  EXPECT_EQ(static_cast<int>(seen.size()), plain.mesh_iterations - 1);  // all but the converged last mesh
+  for (double e : seen)
+    EXPECT_GT(e, opt.mesh_tolerance);
+
+  const double stop_below = seen[1] * 1.0001;  // the second mesh's error: the second call accepts
+  int calls = 0;
+  opt.accept_mesh = [&](const DirectSolution& d) -> std::optional<std::string> {
+    ++calls;
+    if (d.max_mesh_error <= stop_below) return "a reason of the caller's";
+    return std::nullopt;
+  };
+  const DirectSolution stopped = solve_direct(p, opt);
+  EXPECT_FALSE(stopped.converged);
+  EXPECT_TRUE(stopped.nlp_solved);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(stopped.mesh_iterations, 2);
+  EXPECT_EQ(stopped.max_mesh_error, seen[1]);
+  EXPECT_NE(stopped.status.find("refinement stopped at mesh error"), std::string::npos) << stopped.status;
+  EXPECT_TRUE(stopped.status.ends_with(": a reason of the caller's")) << stopped.status;
 }
 
 // Ipopt restarted with other settings where it fails: Bilimoria & Wie's slew (sphere, |u_i| ≤ 1, π about x)

@@ -18,6 +18,7 @@
 /// yᵀg; minimum principle H = L + λᵀf). The body attitude costate is p_θ = ½ M(q)ᵀ λ_q (so that λ_qᵀq̇ =
 /// p_θᵀω), p_ω = λ_ω.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,10 +42,11 @@ struct CollocationOptions {
   /// result.
   std::function<void(const DirectProgress&)> progress;
   /// Called with the solution of every mesh that Ipopt solved and whose mesh error is above mesh_tolerance,
-  /// before that mesh is refined; returning true stops the refinement there (the solution is returned with
-  /// converged false and a status that says so). Empty: the refinement runs to mesh_tolerance. The front
-  /// ends stop a state-constrained problem's refinement once the shooting from a mesh verifies the optimum.
-  std::function<bool(const DirectSolution&)> accept_mesh;
+  /// before that mesh is refined; returning a reason stops the refinement there (the solution is returned
+  /// with converged false and the status "refinement stopped at mesh error … after N mesh iterations:
+  /// <reason>"), std::nullopt refines on. Empty: the refinement runs to mesh_tolerance. The front ends stop
+  /// it once the shooting from a mesh verifies the optimum (io::run_optimal).
+  std::function<std::optional<std::string>(const DirectSolution&)> accept_mesh;
 };
 
 /// How far above its tolerance Ipopt may stop on an NLP where it stalls. On a near-singular KKT system (an

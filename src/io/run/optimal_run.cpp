@@ -3,7 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <numbers>
+#include <optional>
 #include <sstream>
+#include <string>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -247,10 +249,26 @@ void explain_failure(OptimalRun& r) {
 
 }  // namespace
 
-/// The mesh error (relative) from which a rate-bounded problem's direct solutions are handed to the shooting
-/// before the refinement ends (run_optimal): the verification compares the direct and indirect costs to 1e-3
-/// only, and checks the indirect solution on its own.
+/// The mesh error (relative) from which run_optimal hands each mesh's direct solution to the shooting and
+/// stops refining once the optimum verifies from it. The mesh then only seeds the shooting (its switching
+/// structure and costates); the answer is the indirect solution, checked on its own and against the
+/// phase-per-arc re-solve, which does not depend on the mesh either. Refining on to the default tolerance
+/// 1e-7 added three to five meshes of a few intervals each at the switches (the error of a discontinuous
+/// control shrinks as O(h) there; with a rate bound, at the junctions of its boundary arcs), and Ipopt leaves
+/// its start on each refined mesh and needs about thirty iterations to come back. Handed over from 1e-4, 1e-5
+/// or 1e-6, the benchmark's per_axis, spin and nonprincipal problems verify alike, and 1e-4 takes the least
+/// CPU (measurements/optimal_control.md, "The random-problem benchmark").
 constexpr double kEarlyShootingMeshError = 1e-4;
+
+/// Whether run_optimal stops the refinement once the shooting verifies: with a rate bound, and where the
+/// direct optimum that the indirect solution is checked against does not rest on the mesh, that is where the
+/// phase-per-arc re-solve runs (minimum time under a per-axis bound, without wheels or cones: run_phased).
+/// A smooth control's direct optimum is the mesh's own, and it is refined to the tolerance.
+bool stops_refining_once_verified(const OptimalScenario& sc) {
+  const optimal::ReorientationProblem& p = sc.problem;
+  return p.has_rate_bound() || (sc.phased && p.objective == optimal::Objective::minimum_time &&
+                                p.bound == optimal::TorqueBound::per_axis && !p.wheels && p.pointing.empty());
+}
 
 OptimalRun run_optimal(const OptimalScenario& sc,
                        const std::function<void(const OptimalProgress&)>& progress) {
@@ -259,30 +277,33 @@ OptimalRun run_optimal(const OptimalScenario& sc,
   optimal::CollocationOptions collocation = sc.collocation;
   if (progress) collocation.progress = [&](const optimal::DirectProgress& d) { progress({"direct", d}); };
   optimal::ShootingOptions shooting = sc.shooting;
-  // An active rate bound: the mesh error converges slowly at the junctions of the boundary arcs, while the
-  // shooting needs only the structure and its start. From a mesh error of kEarlyShootingMeshError on, each
-  // mesh's solution is handed to the shooting, and the refinement stops at the first mesh from which the
-  // optimum verifies (with its boundary arcs: the inactive rate bound of Betts' problem never stops it).
-  // Where the shooting refuses the structure read from two meshes in a row (a singular arc overlapping a
-  // boundary arc), the direct solution is the answer, and the refinement stops at the first mesh whose
-  // re-simulation meets the target: what "converged (direct …)" asks of it, without refining to the mesh
-  // tolerance (which took 2408 intervals and 160 s of CPU on problem 2 of the benchmark's rate family).
+  // Where stops_refining_once_verified, from a mesh error of kEarlyShootingMeshError on, each mesh's solution
+  // is handed to the shooting, and the refinement stops at the first mesh from which the optimum verifies.
+  // With a rate bound, where the shooting refuses the structure read from two meshes in a row (a singular arc
+  // overlapping a boundary arc), the direct solution is the answer, and the refinement stops at the first
+  // such mesh whose re-simulation meets the target: what "converged (direct …)" asks of it, without refining
+  // to the mesh tolerance (which took 2408 intervals and 160 s of CPU on problem 2 of the benchmark's rate
+  // family).
+  const bool rate_bounded = sc.problem.has_rate_bound();
   bool verified_early = false;
   int refusals_in_a_row = 0;
-  if (sc.problem.has_rate_bound()) {
-    collocation.accept_mesh = [&](const optimal::DirectSolution& d) {
-      if (!(d.max_mesh_error <= kEarlyShootingMeshError) || d.costate_time.size() < 2) return false;
+  if (stops_refining_once_verified(sc))
+    collocation.accept_mesh = [&](const optimal::DirectSolution& d) -> std::optional<std::string> {
+      if (!(d.max_mesh_error <= kEarlyShootingMeshError) || d.costate_time.size() < 2) return std::nullopt;
       optimal::IndirectSolution s = optimal::solve_indirect(sc.problem, d, shooting);
-      if (shooting_refused(s))
-        return ++refusals_in_a_row >= 2 && replay_meets_target(r, optimal::replay_direct(sc.problem, d));
+      if (shooting_refused(s)) {
+        if (rate_bounded && ++refusals_in_a_row >= 2 &&
+            replay_meets_target(r, optimal::replay_direct(sc.problem, d)))
+          return "the shooting refused the structures of this mesh and the previous one, and this "
+                 "one's re-simulation meets the target";
+        return std::nullopt;
+      }
       refusals_in_a_row = 0;
-      if (!s.converged || s.rate_bound_arcs.empty() || !optimal::verify(sc.problem, d, s).passed)
-        return false;
+      if (!s.converged || !optimal::verify(sc.problem, d, s).passed) return std::nullopt;
       r.indirect = std::move(s);
       verified_early = true;
-      return true;
+      return "the minimum principle verified from this mesh";
     };
-  }
   r.direct = optimal::solve_direct(sc.problem, collocation);
   if (progress) progress({"phased", {}});
   run_phased(r);
