@@ -30,13 +30,16 @@ void* openblas_symbol(const char* name) {
   return dlsym(RTLD_DEFAULT, name);
 }
 
-/// MUMPS' fill-reducing ordering of the KKT matrix (Ipopt's mumps_pivot_order, MUMPS' ICNTL(7)): 0, the
-/// approximate minimum degree (AMD), which has no random choices. Ipopt's default (7) lets MUMPS choose, and
-/// for the larger matrices (the phase-per-arc re-solve of a per-axis slew: 8246 variables) it chose SCOTCH,
-/// whose ordering Debian's build randomises: the same problem then gave another ordering, other rounding
-/// and another Ipopt path from run to run (6, 7 or 9 iterations, switch times differing by 1e-12 s). AMD is
-/// as fast on the benchmark's problems (measurements/optimal_control.md, "Speed").
-constexpr int kMumpsOrderingAmd = 0;
+/// MUMPS' fill-reducing ordering of the KKT matrix (Ipopt's mumps_pivot_order, MUMPS' ICNTL(7)): 6, the
+/// approximate minimum degree with quasi-dense rows detected (QAMD), which has no random choices. Ipopt's
+/// default (7) lets MUMPS choose, and for the larger matrices (the phase-per-arc re-solve of a per-axis slew:
+/// 8246 variables) it chose SCOTCH, whose ordering was not reproducible (also with SCOTCH's random generator
+/// reset to a fixed seed at the start): the same problem gave other rounding and another Ipopt path from run
+/// to run (6, 7 or 9 iterations, switch times differing by 1e-12 s). Of the reproducible orderings, QAMD
+/// verified the most problems of the benchmark; plain AMD (0) was a quarter faster on the two-link arm and
+/// the keep-out slews but left two more problems of seed 2 at the CPU limit (measurements/optimal_control.md,
+/// "Speed").
+constexpr int kMumpsOrderingQamd = 6;
 
 /// One BLAS thread while Ipopt runs, so that its results are bit-identical from run to run on a machine.
 /// MUMPS calls the BLAS that Debian's alternatives select for libblas.so.3: the reference BLAS, or OpenBLAS
@@ -265,7 +268,7 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
       app->Options()->SetNumericValue(option, 1e-9);
   if (settings.exact_bounds) app->Options()->SetNumericValue("bound_relax_factor", 0.0);
   app->Options()->SetIntegerValue("mumps_scaling", settings.mumps_scaling);
-  app->Options()->SetIntegerValue("mumps_pivot_order", kMumpsOrderingAmd);
+  app->Options()->SetIntegerValue("mumps_pivot_order", kMumpsOrderingQamd);
   if (app->Initialize() != Ipopt::Solve_Succeeded) throw ComputationFailed("ipopt: initialisation failed");
   Ipopt::SmartPtr<SparseNlpAdapter> adapter = new SparseNlpAdapter(nlp, start, settings);
   const SingleBlasThread one_blas_thread;  // bit-identical results with a threaded OpenBLAS
