@@ -314,7 +314,8 @@ def test_racket_spin_example_needs_multiple_shooting(cli, tmp_path, source_dir):
 
 # Problem 3 of seed 1 of the benchmark's per_axis family (scripts/optimal_benchmark.py): its phase-per-arc
 # re-solve has 8246 variables, a KKT matrix large enough for MUMPS' automatic choice to take SCOTCH's
-# randomised ordering, which gave 6, 7 or 9 Ipopt iterations from run to run before the ordering was fixed.
+# ordering, which was not reproducible: 6, 7 or 9 Ipopt iterations from run to run before the ordering was
+# fixed (src/optimal/ipopt_solve.cpp).
 ASYMMETRIC_SLEW = """
 [body]
 principal_moments = [23.26529831691374, 7.595956649905315, 18.163857427599442]
@@ -329,8 +330,8 @@ orientation = { axis_angle = { axis = [-0.07280999592312733, 0.9016653168339858,
 
 @pytest.mark.slow_under_sanitizers
 def test_the_same_scenario_gives_bit_identical_files(cli, tmp_path):
-    """Results are deterministic: every file of two runs is byte for byte the same, the phase-per-arc re-solve
-    included (MUMPS' ordering without random choices, one BLAS thread)."""
+    """Results are deterministic: every file of three runs is byte for byte the same, the phase-per-arc
+    re-solve included (MUMPS' ordering without random choices, one BLAS thread)."""
     scenario = write(tmp_path, ASYMMETRIC_SLEW)
     outs = [tmp_path / "a", tmp_path / "b", tmp_path / "c"]
     for out in outs:
