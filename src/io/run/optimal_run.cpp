@@ -257,7 +257,7 @@ void explain_failure(OptimalRun& r) {
 /// control shrinks as O(h) there; with a rate bound, at the junctions of its boundary arcs), and Ipopt leaves
 /// its start on each refined mesh and needs about thirty iterations to come back. Handed over from 1e-4, 1e-5
 /// or 1e-6, the benchmark's per_axis, spin and nonprincipal problems verify alike, and 1e-4 takes the least
-/// CPU (measurements/optimal_control.md, "The random-problem benchmark").
+/// CPU (measurements/optimal_control.md, "Speed").
 constexpr double kEarlyShootingMeshError = 1e-4;
 
 /// Whether run_optimal stops the refinement once the shooting verifies: with a rate bound, and where the
