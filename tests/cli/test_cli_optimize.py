@@ -311,37 +311,3 @@ def test_racket_spin_example_needs_multiple_shooting(cli, tmp_path, source_dir):
     assert summary["status"].startswith("converged (direct; minimum principle not verified: shooting residual")
     assert abs(summary["direct"]["cost"] / (12 * 0.01638**2 * 0.5**2 / 30.0**3) - 1) < 1e-5
 
-
-# Problem 3 of seed 1 of the benchmark's per_axis family (scripts/optimal_benchmark.py): its phase-per-arc
-# re-solve has 8246 variables, a KKT matrix large enough for MUMPS' automatic choice to take SCOTCH's
-# ordering, which was not reproducible: 6, 7 or 9 Ipopt iterations from run to run before the ordering was
-# fixed (src/optimal/ipopt_solve.cpp).
-ASYMMETRIC_SLEW = """
-[body]
-principal_moments = [23.26529831691374, 7.595956649905315, 18.163857427599442]
-[optimal_control]
-objective = "minimum_time"
-torque_bound = "per_axis"
-torque_max = [0.8383697378663568, 1.7659804953816813, 1.0158174746439608]
-[optimal_control.final]
-orientation = { axis_angle = { axis = [-0.07280999592312733, 0.9016653168339858, -0.4262609070890059], angle = 1.1456749741595735 } }
-"""
-
-
-@pytest.mark.slow_under_sanitizers
-def test_the_same_scenario_gives_bit_identical_files(cli, tmp_path):
-    """Results are deterministic: every file of three runs is byte for byte the same, the phase-per-arc
-    re-solve included (MUMPS' ordering without random choices, one BLAS thread)."""
-    scenario = write(tmp_path, ASYMMETRIC_SLEW)
-    outs = [tmp_path / "a", tmp_path / "b", tmp_path / "c"]
-    for out in outs:
-        r = cli("optimize", scenario, "--out", out)
-        assert r.returncode == 0, r.stdout + r.stderr
-    summary = json.loads((outs[0] / "summary.json").read_text())
-    assert summary["phased"]["applied"] and summary["phased"]["converged"]
-    names = sorted(p.name for p in outs[0].iterdir())
-    assert names == ["control.csv", "costates.csv", "report.txt", "summary.json", "trajectory.csv"]
-    for out in outs[1:]:
-        assert sorted(p.name for p in out.iterdir()) == names
-        for name in names:
-            assert (out / name).read_bytes() == (outs[0] / name).read_bytes(), name
