@@ -93,6 +93,25 @@ void pair_arc_ends(std::vector<ArcEvent>& events) {
         }
 }
 
+/// Whether body axis i is a principal axis of J (J⁻¹e_i ∥ e_i, to 1e-12 of J⁻¹'s largest entry): there
+/// C_ii = 2σ·(J⁻¹e_i × e_i) vanishes for every σ, so u_i does not enter σ̈_i.
+bool principal_axis(const Mat3& J_inv, int i) {
+  const double scale = J_inv.cwiseAbs().maxCoeff();
+  for (int j = 0; j < 3; ++j)
+    if (j != i && std::abs(J_inv(i, j)) > 1e-12 * scale) return false;
+  return true;
+}
+
+/// The end of a refusal for a singular arc of axis i of order two (u_i first enters the fourth derivative of
+/// σ_i): such an arc cannot join a bang arc with finitely many switches; the control chatters at its
+/// junctions (Fuller's phenomenon), which a shooting over a finite sequence of arcs cannot represent.
+std::string order_two_reason(int i) {
+  const std::string u = "u" + std::to_string(i + 1);
+  return "a singular arc of order two (" + u + " does not enter the second derivative of σ" +
+         std::to_string(i + 1) + "), whose junctions with bang arcs chatter; the shooting handles singular " +
+         "arcs of order one only";
+}
+
 }  // namespace
 
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d) {
@@ -102,16 +121,38 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
     return s;
   }
   const std::size_t N = d.time.size();
+  const Mat3 J_inv = p.inertia_body.inverse();
+  std::vector<std::vector<SampleArc>> boundary(3), singular(3);
+  for (int i = 0; i < 3; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    boundary[k] = boundary_arcs(p, d, i);
+    singular[k] = singular_arcs(p, d, i, boundary[k]);
+  }
+  // Whether a singular arc of another axis shares a sample with `a` (axis i): C_SS of the pair may then be
+  // regular though C_ii = 0.
+  auto shared = [&](int i, const SampleArc& a) {
+    for (int k = 0; k < 3; ++k)
+      if (k != i)
+        for (const SampleArc& b : singular[static_cast<std::size_t>(k)])
+          if (b.first <= a.last && a.first <= b.last) return true;
+    return false;
+  };
   std::vector<ArcEvent> events;
   std::vector<std::pair<double, double>> boundary_spans, singular_spans;
   for (int i = 0; i < 3; ++i) {
-    std::vector<SampleArc> arcs = boundary_arcs(p, d, i);
-    for (const SampleArc& a : singular_arcs(p, d, i, arcs)) {
+    std::vector<SampleArc> arcs = boundary[static_cast<std::size_t>(i)];
+    const bool principal = principal_axis(J_inv, i);
+    for (const SampleArc& a : singular[static_cast<std::size_t>(i)]) {
+      const std::string inside = "u" + std::to_string(i + 1) +
+                                 " is inside its bound from t = " + format_number(d.time[a.first], 6) +
+                                 " s to " + format_number(d.time[a.last], 6) + " s, ";
+      if (principal && !shared(i, a)) {
+        s.refused = inside + "about a principal axis: " + order_two_reason(i);
+        return s;
+      }
       if (a.first == 0 || a.last + 1 == N) {
-        s.refused = "u" + std::to_string(i + 1) +
-                    " is inside its bound from t = " + format_number(d.time[a.first], 6) + " s to " +
-                    format_number(d.time[a.last], 6) + " s, a singular arc at the " +
-                    (a.first == 0 ? "start" : "end") + " of the manoeuvre";
+        s.refused =
+            inside + "a singular arc at the " + (a.first == 0 ? "start" : "end") + " of the manoeuvre";
         return s;
       }
       arcs.push_back(a);

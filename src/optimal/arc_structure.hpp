@@ -42,7 +42,9 @@ bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, d
 /// of u_k between samples outside its arcs where |u_k| > u_max,k / 2 are switches, except one whose bracket
 /// contains an arc of the same axis (the arc takes its place: the sign after the exit is the next saturated
 /// sample's). `refused` names a problem that is not minimum time with per-axis bounds, a boundary arc that
-/// lasts to the final time, or a singular arc that overlaps a boundary arc or reaches t = 0 or T.
+/// lasts to the final time, a singular arc of order two (about a principal axis, where u_i does not enter σ̈_i,
+/// and sharing no sample with a singular arc of another axis), or a singular arc that overlaps a boundary arc
+/// or reaches t = 0 or T.
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d);
 
 }  // namespace poinsot::optimal::detail

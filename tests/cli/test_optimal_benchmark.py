@@ -81,11 +81,11 @@ def test_fixed_seed_run_is_valid_and_verifies_the_tuned_families(source_dir, tmp
 @pytest.mark.slow_under_sanitizers
 def test_a_rate_bounded_structure_the_shooting_refuses_stops_refining_once_its_replay_meets_the_target(
         source_dir, tmp_path):
-    """Problem 2 of seed 2 of the rate family: a singular arc overlaps a boundary arc of the rate bound, which
-    the shooting refuses. Read from two meshes in a row, that makes the direct solution the answer, and its
-    refinement stops at the first mesh whose re-simulation meets the target (docs/optimal_control.md,
-    "Minimum-time problems stop refining once verified"): "converged (direct …)", exit 3, above the mesh
-    tolerance, the replay within its target."""
+    """Problem 2 of seed 2 of the rate family: u3 inside its bound over a stretch about a principal axis, a
+    singular arc of order two, which the shooting refuses. Read from two meshes in a row, that makes the direct
+    solution the answer, and its refinement stops at the first mesh whose re-simulation meets the target
+    (docs/optimal_control.md, "Minimum-time problems stop refining once verified"): "converged (direct …)",
+    exit 3, above the mesh tolerance, the replay within its target."""
     exe = os.environ.get("POINSOT_CLI")
     if not exe:
         pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
@@ -94,7 +94,7 @@ def test_a_rate_bounded_structure_the_shooting_refuses_stops_refining_once_its_r
     assert r.returncode == 0, r.stdout + r.stderr
     summary = json.loads((tmp_path / "k" / "rate_2_2-out" / "summary.json").read_text())
     assert summary["outcome"] == "converged_direct", summary["status"]
-    assert "overlaps a boundary arc of the rate bound" in summary["status"]
+    assert "about a principal axis: a singular arc of order two" in summary["status"]
     assert summary["indirect"]["status"].startswith("not applied")
     assert not summary["direct"]["converged"] and "re-simulation meets the target" in summary["direct"]["status"]
     assert summary["direct"]["mesh_error"] > 1e-7  # the default mesh_tolerance, which the file keeps

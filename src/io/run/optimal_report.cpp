@@ -107,16 +107,26 @@ std::string report_direct(const OptimalRun& r) {
 }
 
 /// What happens at the indirect solution's event k: a switch of u_i, a reversal of a norm-bound torque, or
-/// the entry into or the exit from a boundary arc of the rate bound or a singular arc.
+/// the entry into or the exit from a boundary arc of the rate bound or a singular arc. Two events of one axis
+/// at one time (k − 1 and k) are an exit from a boundary arc and the entry into the next, in that order, or
+/// the entry into and the exit from an arc of zero length.
 std::string event_name(const optimal::IndirectSolution& s, std::size_t k) {
   const int axis = s.switch_axes[k];
   const double t = s.switch_times[k];
   if (axis < 0) return "reversal of u (σ = 0)";
+  const bool second_at_this_time = k > 0 && s.switch_axes[k - 1] == axis && s.switch_times[k - 1] == t;
+  const optimal::RateBoundArc *ending = nullptr, *starting = nullptr;
   for (const auto& a : s.rate_bound_arcs)
-    if (a.axis == axis && (t == a.t_entry || t == a.t_exit))
-      return fmt::format("{} ω{} = {}r",
-                         t == a.t_entry ? "entry into the boundary arc" : "exit from the boundary arc",
-                         axis + 1, a.side > 0 ? "" : "−");
+    if (a.axis == axis) {
+      if (a.t_exit == t && a.t_entry < t) ending = &a;
+      if (a.t_entry == t) starting = &a;
+    }
+  const bool exit = ending && !(starting && second_at_this_time);
+  if (const optimal::RateBoundArc* a = exit ? ending : starting)
+    return fmt::format("{} ω{} = {}r",
+                       exit || (a->t_exit == t && second_at_this_time) ? "exit from the boundary arc"
+                                                                       : "entry into the boundary arc",
+                       axis + 1, a->side > 0 ? "" : "−");
   for (const auto& a : s.singular_arcs)
     if (a.axis == axis && (t == a.t_entry || t == a.t_exit))
       return fmt::format("{} of u{} (σ{} = 0)",

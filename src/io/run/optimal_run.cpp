@@ -279,12 +279,11 @@ OptimalRun run_optimal(const OptimalScenario& sc,
   optimal::ShootingOptions shooting = sc.shooting;
   // Where stops_refining_once_verified, from a mesh error of kEarlyShootingMeshError on, each mesh's solution
   // is handed to the shooting, and the refinement stops at the first mesh from which the optimum verifies.
-  // With a rate bound, where the shooting refuses the structure read from two meshes in a row (a singular arc
-  // overlapping a boundary arc), the direct solution is the answer, and the refinement stops at the first
-  // such mesh whose re-simulation meets the target: what "converged (direct …)" asks of it, without refining
-  // to the mesh tolerance (which took 2408 intervals and 160 s of CPU on problem 2 of the benchmark's rate
-  // family).
-  const bool rate_bounded = sc.problem.has_rate_bound();
+  // Where the shooting refuses the structure read from two meshes in a row (a singular arc of order two, a
+  // singular arc overlapping a boundary arc), the direct solution is the answer, and the refinement stops at
+  // the first such mesh whose re-simulation meets the target: what "converged (direct …)" asks of it, without
+  // refining to the mesh tolerance (which took 2408 intervals and 160 s of CPU on problem 2 of the
+  // benchmark's rate family).
   bool verified_early = false;
   int refusals_in_a_row = 0;
   if (stops_refining_once_verified(sc))
@@ -292,8 +291,7 @@ OptimalRun run_optimal(const OptimalScenario& sc,
       if (!(d.max_mesh_error <= kEarlyShootingMeshError) || d.costate_time.size() < 2) return std::nullopt;
       optimal::IndirectSolution s = optimal::solve_indirect(sc.problem, d, shooting);
       if (shooting_refused(s)) {
-        if (rate_bounded && ++refusals_in_a_row >= 2 &&
-            replay_meets_target(r, optimal::replay_direct(sc.problem, d)))
+        if (++refusals_in_a_row >= 2 && replay_meets_target(r, optimal::replay_direct(sc.problem, d)))
           return "the shooting refused the structures of this mesh and the previous one, and this "
                  "one's re-simulation meets the target";
         return std::nullopt;

@@ -59,5 +59,25 @@ TEST(OptimalRun, OutcomesAndExitCodes) {
   EXPECT_STREQ(outcome_name(OptimalOutcome::not_converged), "not_converged");
 }
 
+// The report's events where boundary arcs of one axis meet (an exit and the next entry at one time, as the
+// shooting converges where the direct solution dipped off the bound for a few samples) and for an arc of zero
+// length (entry, then exit); the events are given in the order of the shooting's unknowns.
+TEST(OptimalRun, ReportNamesTheEventsOfBoundaryArcsThatMeet) {
+  OptimalRun r;
+  r.scenario = parse_optimal_scenario(kEnergy, "energy.toml", ".");
+  r.indirect.time = {0.0, 4.0};
+  r.indirect.rate_bound_arcs = {{1, -1.0, 0.5, 2.0}, {1, -1.0, 2.0, 3.5}, {2, 1.0, 3.0, 3.0}};
+  r.indirect.switch_times = {0.5, 2.0, 2.0, 3.0, 3.0, 3.5};
+  r.indirect.switch_axes = {1, 1, 1, 2, 2, 1};
+  EXPECT_NE(optimal_report(r).find("  entry into the boundary arc ω2 = −r at t = 0.5 s\n"
+                                   "  exit from the boundary arc ω2 = −r at t = 2 s\n"
+                                   "  entry into the boundary arc ω2 = −r at t = 2 s\n"
+                                   "  entry into the boundary arc ω3 = r at t = 3 s\n"
+                                   "  exit from the boundary arc ω3 = r at t = 3 s\n"
+                                   "  exit from the boundary arc ω2 = −r at t = 3.5 s\n"),
+            std::string::npos)
+      << optimal_report(r);
+}
+
 }  // namespace
 }  // namespace poinsot::io
