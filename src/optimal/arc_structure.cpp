@@ -48,8 +48,8 @@ std::vector<SampleArc> boundary_arcs(const ReorientationProblem& p, const Direct
   return arcs;
 }
 
-/// The singular arcs of axis i off its boundary arcs: stretches longer than 5 % of T of samples with |u_i| <
-/// 0.95 u_max,i, bridging gaps of up to three samples (read_arc_structure).
+/// The singular arcs of axis i off its boundary arcs: stretches longer than kShortestSingularArc of T of
+/// samples with |u_i| < 0.95 u_max,i, bridging gaps of up to three samples (read_arc_structure).
 std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const DirectSolution& d, int i,
                                      const std::vector<SampleArc>& boundary) {
   auto on_boundary = [&](std::size_t j) {
@@ -74,7 +74,8 @@ std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const Direct
         break;
       }
     }
-    if (d.time[last] - d.time[j] > 0.05 * d.final_time) arcs.push_back({j, last, Arc::singular});
+    if (d.time[last] - d.time[j] > kShortestSingularArc * d.final_time)
+      arcs.push_back({j, last, Arc::singular});
     j = last + 1;
   }
   return arcs;

@@ -64,7 +64,7 @@ SwitchGuess read_switching_structure(const ReorientationProblem& p, const Direct
       const bool saturated = std::abs(u) > 0.5 * umax;
       if (std::abs(u) < 0.95 * umax) {
         if (inside_since < 0.0) inside_since = d.time[j];
-        if (d.time[j] - inside_since > 0.05 * T && g.singular.empty())
+        if (d.time[j] - inside_since > kShortestSingularArc * T && g.singular.empty())
           g.singular = singular_arc_message(i, inside_since, d.time[j]);
       } else {
         inside_since = -1.0;
