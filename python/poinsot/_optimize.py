@@ -88,10 +88,12 @@ class OptimalSolution:
     ±1 for a boundary arc ω_axis = side · r).
 
     ``final_time`` s and ``cost`` (s, N²·m²·s or s per objective) of that solution; ``checks`` (dict: the
-    Hamiltonian's mean and deviation, the control gap, switching-sign violations, the costate drift, ‖RᵀR − I‖,
-    vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, its amplification
-    ``replay_amplification`` and ``open_loop_replay_checked``, the re-simulation split at the shooting nodes
-    ``split_replay_attitude_error`` rad and ``split_replay_rate_error`` rad/s over ``replay_segments``
+    Hamiltonian's mean and deviation, the control gap with ``control_gap_time`` s and ``control_gap_axis``
+    (0, 1, 2; −1 without per-axis bounds) where it is largest and ``control_gap_where_order_two`` (there both
+    other rates ride their bound about principal axes: a chattering), switching-sign violations, the costate
+    drift, ‖RᵀR − I‖, vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, its
+    amplification ``replay_amplification`` and ``open_loop_replay_checked``, the re-simulation split at the
+    shooting nodes ``split_replay_attitude_error`` rad and ``split_replay_rate_error`` rad/s over ``replay_segments``
     segments, the direct–indirect cost difference, ``torque_bound_excess`` and ``rate_bound_excess`` (relative;
     ≤ 0 when admissible), ``rate_multiplier_min`` and ``kelley_condition_min`` (the sign conditions of the
     boundary and singular arcs; ≥ 0), ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress, the eigenaxis

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "pmp_system.hpp"
 #include "poinsot/core/format.hpp"
 #include "switching_structure.hpp"
 
@@ -92,15 +93,6 @@ void pair_arc_ends(std::vector<ArcEvent>& events) {
           events[l].pair = static_cast<int>(k);
           break;
         }
-}
-
-/// Whether body axis i is a principal axis of J (J⁻¹e_i ∥ e_i, to 1e-12 of J⁻¹'s largest entry): there
-/// C_ii = 2σ·(J⁻¹e_i × e_i) vanishes for every σ, so u_i does not enter σ̈_i.
-bool principal_axis(const Mat3& J_inv, int i) {
-  const double scale = J_inv.cwiseAbs().maxCoeff();
-  for (int j = 0; j < 3; ++j)
-    if (j != i && std::abs(J_inv(i, j)) > 1e-12 * scale) return false;
-  return true;
 }
 
 /// The end of a refusal for a singular arc of axis i of order two (u_i first enters the fourth derivative of

@@ -3,6 +3,7 @@
 /// The canonical system of the minimum principle in (R, ω, P, p_ω) (indirect_shooting.hpp), packed in one
 /// array for the Runge–Kutta–Fehlberg integrator: y = (R column-major 9, ω 3, P column-major 9, p_ω 3, ∫L 1).
 #include <array>
+#include <cmath>
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/optimal/problem.hpp"
@@ -49,6 +50,15 @@ inline Vec3 attitude_costate_body(const Mat3& R, const Mat3& P) {
 /// singular control of axis i and must not be positive along a singular arc (Kelley's condition).
 inline Mat3 switching_torque_gain(const Mat3& J_inv, const Vec3& sigma) {
   return so3::hat(sigma) * J_inv - J_inv * so3::hat(sigma);
+}
+
+/// Whether body axis i is a principal axis of J (J⁻¹e_i ∥ e_i, to 1e-12 of J⁻¹'s largest entry): there C_ii
+/// vanishes for every σ, so u_i does not enter σ̈_i, and a singular arc of u_i is of order two.
+inline bool principal_axis(const Mat3& J_inv, int i) {
+  const double scale = J_inv.cwiseAbs().maxCoeff();
+  for (int j = 0; j < 3; ++j)
+    if (j != i && std::abs(J_inv(i, j)) > 1e-12 * scale) return false;
+  return true;
 }
 
 /// The running cost L(u) of the objective (1 + ε‖u‖² includes the time term of the free-time objectives).

@@ -103,6 +103,37 @@ def test_a_rate_bounded_structure_the_shooting_refuses_stops_refining_once_its_r
 
 
 @pytest.mark.slow_under_sanitizers
+def test_an_extremal_that_chatters_into_an_order_two_arc_stops_the_refinement_with_its_reason(source_dir,
+                                                                                              tmp_path):
+    """Problem 6 of seed 1 of the rate family: while ω1 and ω3 ride their bound (principal axes), u2 switches
+    five times in 0.29 s. The shooting over those switches converges, and its extremal has u2 of the sign of
+    σ2 between two of them (gap 6.1e-9): the chattering into a singular arc of u2 of order two
+    (docs/optimal_control_arcs.md). The verification says where and why; two such meshes in a row whose replay
+    meets the target stop the refinement ("converged (direct …)", exit 3), where it went on to the mesh
+    tolerance (2623 intervals, about ten times the CPU) for the same verdict."""
+    exe = os.environ.get("POINSOT_CLI")
+    if not exe:
+        pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
+    r = bench(source_dir, "--poinsot", exe, "--seed", 1, "--first", 6, "--n", 1, "--family", "rate",
+              "--cpu-limit", 120, "--keep", tmp_path / "k")
+    assert r.returncode == 0, r.stdout + r.stderr
+    summary = json.loads((tmp_path / "k" / "rate_1_6-out" / "summary.json").read_text())
+    assert summary["outcome"] == "converged_direct", summary["status"]
+    assert "the control does not minimise H" in summary["status"]
+    assert "(u2), where the other two rates ride their bound about principal axes" in summary["status"]
+    assert "chattering into a singular arc of order two" in summary["status"]
+    assert summary["advice"].startswith("nothing in the scenario")
+    checks = summary["checks"]
+    assert checks["control_gap_where_order_two"] and checks["control_gap_axis"] == 1
+    assert 2.59 < checks["control_gap_time"] < 2.88
+    direct = summary["direct"]
+    assert not direct["converged"] and "switch where a singular arc is of order two" in direct["status"]
+    assert direct["mesh_error"] > 1e-7
+    replay = summary["direct_replay"]
+    assert replay["run"] and replay["scaled_error"] <= replay["tolerance"]
+
+
+@pytest.mark.slow_under_sanitizers
 def test_the_same_scenario_gives_bit_identical_files(cli, source_dir, tmp_path):
     """Results are deterministic: every file of three runs is byte for byte the same, the phase-per-arc
     re-solve included. Problem 3 of seed 1 of the per_axis family: its re-solve has 8246 variables, a KKT matrix

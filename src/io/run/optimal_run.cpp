@@ -240,6 +240,12 @@ void explain_failure(OptimalRun& r) {
     return;
   }
   r.failed_phase = "verification";
+  if (r.verification.control_gap_where_order_two && r.outcome == OptimalOutcome::converged_direct) {
+    r.advice =
+        "nothing in the scenario: the optimum chatters into a singular arc of order two, which the shooting "
+        "method cannot represent; the direct solution is the answer, checked by its re-simulation";
+    return;
+  }
   r.advice = fmt::format(
       "the shooting converged but a check failed: a smaller mesh_tolerance (now {}) or more shooting_nodes "
       "(now {}) may lead it to the optimum; a failing re-simulation of an unstable motion needs more "
@@ -283,24 +289,37 @@ OptimalRun run_optimal(const OptimalScenario& sc,
   // singular arc overlapping a boundary arc), the direct solution is the answer, and the refinement stops at
   // the first such mesh whose re-simulation meets the target: what "converged (direct …)" asks of it, without
   // refining to the mesh tolerance (which took 2408 intervals and 160 s of CPU on problem 2 of the
-  // benchmark's rate family).
+  // benchmark's rate family). So too where the extremals of two meshes in a row miss the minimum of H where a
+  // singular arc would be of order two (VerificationReport::control_gap_where_order_two): their switches
+  // stand for a chattering that no finer mesh turns into a verified extremal.
   bool verified_early = false;
-  int refusals_in_a_row = 0;
+  int unverifiable_in_a_row = 0;
   if (stops_refining_once_verified(sc))
     collocation.accept_mesh = [&](const optimal::DirectSolution& d) -> std::optional<std::string> {
       if (!(d.max_mesh_error <= kEarlyShootingMeshError) || d.costate_time.size() < 2) return std::nullopt;
       optimal::IndirectSolution s = optimal::solve_indirect(sc.problem, d, shooting);
-      if (shooting_refused(s)) {
-        if (++refusals_in_a_row >= 2 && replay_meets_target(r, optimal::replay_direct(sc.problem, d)))
-          return "the shooting refused the structures of this mesh and the previous one, and this "
-                 "one's re-simulation meets the target";
+      const bool refused = shooting_refused(s);
+      bool chattering = false;
+      if (!refused && s.converged) {
+        const optimal::VerificationReport v = optimal::verify(sc.problem, d, s);
+        if (v.passed) {
+          r.indirect = std::move(s);
+          verified_early = true;
+          return "the minimum principle verified from this mesh";
+        }
+        chattering = v.control_gap_where_order_two;
+      }
+      if (!refused && !chattering) {
+        unverifiable_in_a_row = 0;
         return std::nullopt;
       }
-      refusals_in_a_row = 0;
-      if (!s.converged || !optimal::verify(sc.problem, d, s).passed) return std::nullopt;
-      r.indirect = std::move(s);
-      verified_early = true;
-      return "the minimum principle verified from this mesh";
+      if (++unverifiable_in_a_row < 2 || !replay_meets_target(r, optimal::replay_direct(sc.problem, d)))
+        return std::nullopt;
+      return refused
+                 ? "the shooting refused the structures of this mesh and the previous one, and this one's "
+                   "re-simulation meets the target"
+                 : "the extremals of this mesh and the previous one switch where a singular arc is of order "
+                   "two (a chattering), and this one's re-simulation meets the target";
     };
   r.direct = optimal::solve_direct(sc.problem, collocation);
   if (progress) progress({"phased", {}});
@@ -439,6 +458,9 @@ std::string optimal_summary_json(const OptimalRun& r) {
                  {"hamiltonian_mean", v.hamiltonian_mean},
                  {"hamiltonian_deviation", v.hamiltonian_deviation},
                  {"control_gap", v.control_gap},
+                 {"control_gap_time", v.control_gap_time},
+                 {"control_gap_axis", v.control_gap_axis},
+                 {"control_gap_where_order_two", v.control_gap_where_order_two},
                  {"switching_sign_violations", v.switching_sign_violations},
                  {"costate_drift", v.costate_drift},
                  {"orthogonality", v.orthogonality},
