@@ -171,6 +171,7 @@ class ArcShooter {
     bool outside = false;
     PmpState y = pack(R0_, p_.omega_initial, 0.5 * R0_ * so3::hat(x.segment<3>(0)), x.segment<3>(3), 0.0);
     double t0 = 0.0;
+    double last_sample = -T;  // the time of the last sample observed
     Vec3 u, mu;
     for (std::size_t a = 0; a <= n; ++a) {
       const double t1 = a < n ? order[a].first : T;
@@ -188,8 +189,11 @@ class ArcShooter {
         for (int k = 0; k < 3; ++k)
           dy[21 + k] -= mm[k] * mode.side[k];
       };
-      // Events at one time (three axes entering together) leave arcs of zero length: integrated, not
-      // sampled, so that no time appears more than twice among the samples (the replayed torque table).
+      // Events at one time (three axes entering together, an exit and a switch of one axis) leave arcs of
+      // zero length: integrated, not sampled, so that no time appears more than twice among the samples (the
+      // replayed torque table). The next arc's first sample takes the time of the last one sampled: events
+      // that Newton left a few ulps apart would otherwise give two samples that far apart, across which the
+      // table's cubic interpolant takes a slope of order 1/ulp.
       const int m = t1 - t0 > 1e-12 * T ? std::max(2, samples) : 1;
       // The last sample is t1 itself, the next arc's first: t0 + (t1 − t0) may round above t1.
       auto sample_time = [&](int i) { return i + 1 >= m ? t1 : t0 + (t1 - t0) * i / (m - 1); };
@@ -202,7 +206,10 @@ class ArcShooter {
               (ts - ta) / 4);
         }
         arc_control(p_, J_inv_, mode, y, u, mu);
-        if (m > 1) observe(ts, y, u, mu);
+        if (m > 1) {
+          last_sample = i == 0 && ts - last_sample <= 1e-12 * T ? last_sample : ts;
+          observe(last_sample, y, u, mu);
+        }
       }
       if (m == 1 && t1 > t0)
         odeint::integrate_adaptive(

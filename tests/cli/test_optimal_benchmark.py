@@ -134,6 +134,31 @@ def test_an_extremal_that_chatters_into_an_order_two_arc_stops_the_refinement_wi
 
 
 @pytest.mark.slow_under_sanitizers
+def test_events_that_meet_leave_no_samples_an_ulp_apart(source_dir, tmp_path):
+    """Problem 3 of seed 2 of the rate family: the shooting over its four boundary arcs converges with the
+    exit from the arc of ω3 and a switch of u3 a few ulps apart (an arc of zero length). Sampled at both times,
+    the table that the verification replays had two rows an ulp apart, across which its cubic interpolant
+    reached 1e12 N·m, and DOP853 crawled at steps of 1e-11 s (the CPU limit). The next arc's first sample
+    takes the last sample's time (src/optimal/arc_shooting.cpp): verified, and every two distinct sample times
+    of the files are more than 1e-12 T apart."""
+    exe = os.environ.get("POINSOT_CLI")
+    if not exe:
+        pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
+    r = bench(source_dir, "--poinsot", exe, "--seed", 2, "--first", 3, "--n", 1, "--family", "rate",
+              "--cpu-limit", 60, "--keep", tmp_path / "k")
+    assert r.returncode == 0, r.stdout + r.stderr
+    out = tmp_path / "k" / "rate_2_3-out"
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["outcome"] == "optimal", summary["status"]
+    assert summary["indirect"]["rate_bound_arcs"]
+    rows = [line for line in (out / "control.csv").read_text().splitlines()
+            if line and not line.startswith("#")][1:]
+    times = [float(line.split(",")[0]) for line in rows]
+    gaps = [b - a for a, b in zip(times, times[1:]) if b != a]
+    assert min(gaps) > 1e-12 * summary["indirect"]["final_time"]
+
+
+@pytest.mark.slow_under_sanitizers
 def test_the_same_scenario_gives_bit_identical_files(cli, source_dir, tmp_path):
     """Results are deterministic: every file of three runs is byte for byte the same, the phase-per-arc
     re-solve included. Problem 3 of seed 1 of the per_axis family: its re-solve has 8246 variables, a KKT matrix
