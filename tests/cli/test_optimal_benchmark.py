@@ -17,6 +17,29 @@ def bench(source_dir, *args, timeout=240):
                           timeout=timeout, env={**os.environ})
 
 
+def run_one(source_dir, tmp_path, family, seed, index, cpu_limit=120):
+    """Problem `index` of `seed` of `family` through the tool (POINSOT_CLI): its output folder and
+    summary.json."""
+    exe = os.environ.get("POINSOT_CLI")
+    if not exe:
+        pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
+    r = bench(source_dir, "--poinsot", exe, "--seed", seed, "--first", index, "--n", 1, "--family", family,
+              "--cpu-limit", cpu_limit, "--keep", tmp_path / "k")
+    assert r.returncode == 0, r.stdout + r.stderr
+    out = tmp_path / "k" / f"{family}_{seed}_{index}-out"
+    return out, json.loads((out / "summary.json").read_text())
+
+
+def assert_direct_answer_stopped_early(summary):
+    """A "converged (direct …)" answer whose refinement stopped above the default mesh tolerance 1e-7 (which
+    the benchmark's files keep), its replay within its target."""
+    assert summary["outcome"] == "converged_direct", summary["status"]
+    assert not summary["direct"]["converged"] and "re-simulation meets the target" in summary["direct"]["status"]
+    assert summary["direct"]["mesh_error"] > 1e-7
+    replay = summary["direct_replay"]
+    assert replay["run"] and replay["scaled_error"] <= replay["tolerance"]
+
+
 def test_generator_is_deterministic_per_family_seed_and_index(source_dir, tmp_path):
     a, b, c = tmp_path / "a", tmp_path / "b", tmp_path / "c"
     for d, seed in ((a, 7), (b, 7), (c, 8)):
@@ -86,20 +109,10 @@ def test_a_rate_bounded_structure_the_shooting_refuses_stops_refining_once_its_r
     solution the answer, and its refinement stops at the first mesh whose re-simulation meets the target
     (docs/optimal_control.md, "Minimum-time problems stop refining once verified"): "converged (direct …)",
     exit 3, above the mesh tolerance, the replay within its target."""
-    exe = os.environ.get("POINSOT_CLI")
-    if not exe:
-        pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
-    r = bench(source_dir, "--poinsot", exe, "--seed", 2, "--first", 2, "--n", 1, "--family", "rate",
-              "--cpu-limit", 120, "--keep", tmp_path / "k")
-    assert r.returncode == 0, r.stdout + r.stderr
-    summary = json.loads((tmp_path / "k" / "rate_2_2-out" / "summary.json").read_text())
-    assert summary["outcome"] == "converged_direct", summary["status"]
+    _, summary = run_one(source_dir, tmp_path, "rate", 2, 2)
+    assert_direct_answer_stopped_early(summary)
     assert "about a principal axis: a singular arc of order two" in summary["status"]
     assert summary["indirect"]["status"].startswith("not applied")
-    assert not summary["direct"]["converged"] and "re-simulation meets the target" in summary["direct"]["status"]
-    assert summary["direct"]["mesh_error"] > 1e-7  # the default mesh_tolerance, which the file keeps
-    replay = summary["direct_replay"]
-    assert replay["run"] and replay["scaled_error"] <= replay["tolerance"]
 
 
 @pytest.mark.slow_under_sanitizers
@@ -111,14 +124,9 @@ def test_an_extremal_that_chatters_into_an_order_two_arc_stops_the_refinement_wi
     (docs/optimal_control_arcs.md). The verification says where and why; two such meshes in a row whose replay
     meets the target stop the refinement ("converged (direct …)", exit 3), where it went on to the mesh
     tolerance (2623 intervals, about ten times the CPU) for the same verdict."""
-    exe = os.environ.get("POINSOT_CLI")
-    if not exe:
-        pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
-    r = bench(source_dir, "--poinsot", exe, "--seed", 1, "--first", 6, "--n", 1, "--family", "rate",
-              "--cpu-limit", 120, "--keep", tmp_path / "k")
-    assert r.returncode == 0, r.stdout + r.stderr
-    summary = json.loads((tmp_path / "k" / "rate_1_6-out" / "summary.json").read_text())
-    assert summary["outcome"] == "converged_direct", summary["status"]
+    _, summary = run_one(source_dir, tmp_path, "rate", 1, 6)
+    assert_direct_answer_stopped_early(summary)
+    assert "switch where a singular arc is of order two" in summary["direct"]["status"]
     assert "the control does not minimise H" in summary["status"]
     assert "(u2), where the other two rates ride their bound about principal axes" in summary["status"]
     assert "chattering into a singular arc of order two" in summary["status"]
@@ -126,11 +134,6 @@ def test_an_extremal_that_chatters_into_an_order_two_arc_stops_the_refinement_wi
     checks = summary["checks"]
     assert checks["control_gap_where_order_two"] and checks["control_gap_axis"] == 1
     assert 2.59 < checks["control_gap_time"] < 2.88
-    direct = summary["direct"]
-    assert not direct["converged"] and "switch where a singular arc is of order two" in direct["status"]
-    assert direct["mesh_error"] > 1e-7
-    replay = summary["direct_replay"]
-    assert replay["run"] and replay["scaled_error"] <= replay["tolerance"]
 
 
 @pytest.mark.slow_under_sanitizers
@@ -141,14 +144,7 @@ def test_events_that_meet_leave_no_samples_an_ulp_apart(source_dir, tmp_path):
     reached 1e12 N·m, and DOP853 crawled at steps of 1e-11 s (the CPU limit). The next arc's first sample
     takes the last sample's time (src/optimal/arc_shooting.cpp): verified, and every two distinct sample times
     of the files are more than 1e-12 T apart."""
-    exe = os.environ.get("POINSOT_CLI")
-    if not exe:
-        pytest.fail("POINSOT_CLI is not set: run these tests through ctest")
-    r = bench(source_dir, "--poinsot", exe, "--seed", 2, "--first", 3, "--n", 1, "--family", "rate",
-              "--cpu-limit", 60, "--keep", tmp_path / "k")
-    assert r.returncode == 0, r.stdout + r.stderr
-    out = tmp_path / "k" / "rate_2_3-out"
-    summary = json.loads((out / "summary.json").read_text())
+    out, summary = run_one(source_dir, tmp_path, "rate", 2, 3, cpu_limit=60)
     assert summary["outcome"] == "optimal", summary["status"]
     assert summary["indirect"]["rate_bound_arcs"]
     rows = [line for line in (out / "control.csv").read_text().splitlines()
