@@ -88,20 +88,20 @@ class OptimalSolution:
     ±1 for a boundary arc ω_axis = side · r).
 
     ``final_time`` s and ``cost`` (s, N²·m²·s or s per objective) of that solution; ``checks`` (dict: the
-    Hamiltonian's mean and deviation, the control gap with ``control_gap_time`` s and ``control_gap_axis``
-    (0, 1, 2; −1 without per-axis bounds) where it is largest and ``control_gap_where_order_two`` (there both
-    other rates ride their bound about principal axes: a chattering), switching-sign violations, the costate
-    drift, ‖RᵀR − I‖, vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, its
-    amplification ``replay_amplification`` and ``open_loop_replay_checked``, the re-simulation split at the
-    shooting nodes ``split_replay_attitude_error`` rad and ``split_replay_rate_error`` rad/s over ``replay_segments``
-    segments, the direct–indirect cost difference, ``torque_bound_excess`` and ``rate_bound_excess`` (relative;
-    ≤ 0 when admissible), ``rate_multiplier_min`` and ``kelley_condition_min`` (the sign conditions of the
-    boundary and singular arcs; ≥ 0), ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress, the eigenaxis
-    manoeuvre's cost and the saving, and the arrays ``lambda_body`` (n, 3, 3) J, ``stress_space`` (n, 3, 3)
-    N·m, ``momentum_space`` (n, 3)); ``direct`` (DirectSolution) and ``indirect`` (dict of the shooting's
-    values and arrays); ``summary`` (the dict of summary.json), ``report`` (the text ``poinsot optimize``
-    prints), ``out_dir`` (where the files went, or None), ``figures`` (paths of the PNGs drawn), ``kind``
-    ("rigid_body"), ``problem`` (the poinsot.optimal.ReorientationProblem solved).
+    Hamiltonian's mean and deviation, the control gap with ``control_gap_time`` s and ``control_gap_axis`` (0, 1, 2;
+    −1 without per-axis bounds) where it is largest and ``control_gap_where_order_two`` (a gap above its tolerance
+    there, where both other rates ride their bound about principal axes: a chattering), switching-sign violations,
+    the costate drift, ‖RᵀR − I‖, vee(Λ − Λᵀ) − u, the DOP853 re-simulation's attitude and rate errors, its
+    amplification ``replay_amplification`` and ``open_loop_replay_checked``, the re-simulation split at the shooting
+    nodes ``split_replay_attitude_error`` rad and ``split_replay_rate_error`` rad/s over ``replay_segments``
+    segments, the direct–indirect cost difference, ``torque_bound_excess`` and ``rate_bound_excess`` (relative; ≤ 0
+    when admissible), ``rate_multiplier_min`` and ``kelley_condition_min`` (the sign conditions of the boundary and
+    singular arcs; ≥ 0), ``passed`` and ``failures``); ``interpretation`` (dict: peak Tresca and von Mises stress,
+    the eigenaxis manoeuvre's cost and the saving, and the arrays ``lambda_body`` (n, 3, 3) J, ``stress_space`` (n,
+    3, 3) N·m, ``momentum_space`` (n, 3)); ``direct`` (DirectSolution) and ``indirect`` (dict of the shooting's
+    values and arrays); ``summary`` (the dict of summary.json), ``report`` (the text ``poinsot optimize`` prints),
+    ``out_dir`` (where the files went, or None), ``figures`` (paths of the PNGs drawn), ``kind`` ("rigid_body"),
+    ``problem`` (the poinsot.optimal.ReorientationProblem solved).
     ``phased`` (dict, summary.json's "phased"): the phase-per-arc re-solve of a minimum-time bang-bang direct
     solution (``enabled``, ``applied``, ``status``, ``converged``, and when applied ``intervals_per_arc``,
     ``final_time`` s, ``cost``, ``switch_times`` s, ``nlp_iterations``); ``direct_optimum_from`` ("phased" or

@@ -50,9 +50,10 @@ struct VerificationReport {
   double control_gap = 0.0;            ///< max relative H(u) − min_v H(v)
   double control_gap_time = 0.0;       ///< s, the sample of the largest gap
   int control_gap_axis = -1;  ///< per-axis bounds: the axis of the largest term of that gap; −1 otherwise
-  /// The largest gap lies where the other two rates ride their bound (boundary arcs of both) about principal
-  /// axes: there σ = σ_i e_i, u_i first enters the fourth derivative of σ_i, a singular arc of u_i is of
-  /// order two, and an extremal with finitely many switches of u_i cannot be its chattering approach.
+  /// The largest gap exceeds its tolerance where the other two rates ride their bound (boundary arcs of both)
+  /// about principal axes: there σ = σ_i e_i, u_i first enters the fourth derivative of σ_i, a singular arc
+  /// of u_i is of order two, and an extremal with finitely many switches of u_i cannot be its chattering
+  /// approach.
   bool control_gap_where_order_two = false;
   int switching_sign_violations = 0;  ///< samples with u_i σ_i > 0 where |σ_i| is not negligible
   double costate_drift = 0.0;  ///< max ‖R p_θ − R_0 p_θ(0)‖ / max(‖p_θ(0)‖, max ‖p_ω‖/T)
