@@ -194,7 +194,8 @@ class ArcShooter {
       // replayed torque table). The next arc's first sample takes the time of the last one sampled: events
       // that Newton left a few ulps apart would otherwise give two samples that far apart, across which the
       // table's cubic interpolant takes a slope of order 1/ulp.
-      const int m = t1 - t0 > 1e-12 * T ? std::max(2, samples) : 1;
+      const double zero_length = 1e-12 * T;
+      const int m = t1 - t0 > zero_length ? std::max(2, samples) : 1;
       // The last sample is t1 itself, the next arc's first: t0 + (t1 − t0) may round above t1.
       auto sample_time = [&](int i) { return i + 1 >= m ? t1 : t0 + (t1 - t0) * i / (m - 1); };
       for (int i = 0; i < m; ++i) {
@@ -207,7 +208,7 @@ class ArcShooter {
         }
         arc_control(p_, J_inv_, mode, y, u, mu);
         if (m > 1) {
-          last_sample = i == 0 && ts - last_sample <= 1e-12 * T ? last_sample : ts;
+          last_sample = i == 0 && ts - last_sample <= zero_length ? last_sample : ts;
           observe(last_sample, y, u, mu);
         }
       }

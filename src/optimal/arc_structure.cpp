@@ -136,9 +136,7 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
     std::vector<SampleArc> arcs = boundary[static_cast<std::size_t>(i)];
     const bool principal = principal_axis(J_inv, i);
     for (const SampleArc& a : singular[static_cast<std::size_t>(i)]) {
-      const std::string inside = "u" + std::to_string(i + 1) +
-                                 " is inside its bound from t = " + format_number(d.time[a.first], 6) +
-                                 " s to " + format_number(d.time[a.last], 6) + " s, ";
+      const std::string inside = inside_bound_message(i, d.time[a.first], d.time[a.last]) + ", ";
       if (principal && !shared(i, a)) {
         s.refused = inside + "about a principal axis: " + order_two_reason(i);
         return s;

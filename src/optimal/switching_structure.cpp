@@ -7,19 +7,17 @@
 
 namespace poinsot::optimal::detail {
 
-namespace {
 // Built by appending: GCC 12 reports a false -Wrestrict for "literal" + std::string here.
-std::string singular_arc_message(int axis, double t0, double t1) {
+std::string inside_bound_message(int axis, double t0, double t1) {
   std::string m = "u";
   m += std::to_string(axis + 1);
   m += " is inside its bound from t = ";
   m += format_number(t0, 6);
   m += " s to ";
   m += format_number(t1, 6);
-  m += " s (a singular arc?)";
+  m += " s";
   return m;
 }
-}  // namespace
 
 std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSolution& d) {
   std::vector<double> out;
@@ -65,7 +63,7 @@ SwitchGuess read_switching_structure(const ReorientationProblem& p, const Direct
       if (std::abs(u) < 0.95 * umax) {
         if (inside_since < 0.0) inside_since = d.time[j];
         if (d.time[j] - inside_since > kShortestSingularArc * T && g.singular.empty())
-          g.singular = singular_arc_message(i, inside_since, d.time[j]);
+          g.singular = inside_bound_message(i, inside_since, d.time[j]) + " (a singular arc?)";
       } else {
         inside_since = -1.0;
       }

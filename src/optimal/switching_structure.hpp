@@ -20,6 +20,10 @@ namespace poinsot::optimal::detail {
 /// which the verification rejected.
 constexpr double kShortestSingularArc = 0.02;
 
+/// "u<axis + 1> is inside its bound from t = <t0> s to <t1> s": the start of every message about a stretch of
+/// direct samples that may be a singular arc.
+std::string inside_bound_message(int axis, double t0, double t1);
+
 // Sign changes of u_i in the direct solution: the switching structure of a bang-bang control.
 struct SwitchGuess {
   Vec3 initial_sign = Vec3::Ones();
