@@ -103,11 +103,13 @@ TEST(Constraints, LoadsAreTheVirtualWorkOfTheMultiplier) {
     const Vec3 pa_dot = a.v_space + Oa.cross(a.R_space_body * joint.point_a);
     // Body b receives the force at the point of space where it acts on a: its own point B (plus h n for
     // offset axes) for point rows, the current position of point A for the line rows of a sliding joint.
-    const Vec3 arm_b =
-        joint.sliding
-            ? Vec3(a.x_space + a.R_space_body * joint.point_a - b.x_space)
-            : Vec3(b.R_space_body * joint.point_b + joint.axis_offset * cross_pin_normal(joint, a, b));
-    const Vec3 pb_dot = b.v_space + Ob.cross(arm_b);
+    const Vec3 arm_b = joint.sliding ? Vec3(a.x_space + a.R_space_body * joint.point_a - b.x_space)
+                                     : Vec3(b.R_space_body * joint.point_b);
+    // h n only for offset axes (as point_rows_value): a ball joint has no pin axes to cross, and 0 times
+    // their unset values may be NaN.
+    const Vec3 offset =
+        joint.axis_offset != 0.0 ? Vec3(joint.axis_offset * cross_pin_normal(joint, a, b)) : Vec3::Zero();
+    const Vec3 pb_dot = b.v_space + Ob.cross(joint.sliding ? arm_b : Vec3(arm_b + offset));
     const double loads_power = l.force_a_space.dot(pa_dot) - l.force_a_space.dot(pb_dot) +
                                l.torque_a_space.dot(Oa) - l.torque_a_space.dot(Ob);
     EXPECT_NEAR(power, loads_power, 1e-13);
