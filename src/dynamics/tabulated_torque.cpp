@@ -36,6 +36,11 @@ TabulatedTorque::TabulatedTorque(std::vector<double> time, std::vector<Vec3> tor
           fmt::format("{}: row {}: t = {} s is below the previous row's {} s; expected "
                       "times in ascending order",
                       source_, i + 1, format_number(time_[i]), format_number(time_[i - 1])));
+    // Times that differ by rounding only (a switch computed twice) are one time: a jump. Kept apart, the
+    // piece between them would be an ulp long and a cubic through it would reach 1/ulp.
+    if (i > 0 && time_[i] - time_[i - 1] <=
+                     same_time * std::max({std::abs(time_[0]), std::abs(time_[i]), time_[i] - time_[0]}))
+      time_[i] = time_[i - 1];
     if (i > 1 && time_[i] == time_[i - 2])
       throw InvalidInput(
           fmt::format("{}: row {}: a third row at t = {} s; expected at most two rows (the "

@@ -5,6 +5,7 @@
 #include "poinsot/dynamics/tabulated_torque.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -124,6 +125,32 @@ TEST(TabulatedTorque, InterpolatesByLocalCubicsOnEachArc) {
     return e;
   };
   EXPECT_NEAR(largest_error(40) / largest_error(80), 16.0, 1.6);
+}
+
+// Two times an ulp apart (a switch time computed twice) are one time, a jump: the cubic of the arc after it
+// is the one of the same table written with a repeated time, and stays between the rows' values. Kept apart,
+// the piece of one ulp would put the cubic through four rows with weights of order 1/ulp.
+TEST(TabulatedTorque, TimesThatDifferByRoundingOnlyAreAJump) {
+  const double t1 = 1.0, t1_next = std::nextafter(t1, 2.0);
+  const std::vector<Vec3> u{Vec3(1, 0, 0), Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 0)};
+  const TabulatedTorque rounded({0.0, t1, t1_next, 2.0, 3.0}, u, "rounded", TableInterpolation::cubic);
+  const TabulatedTorque jump({0.0, t1, t1, 2.0, 3.0}, u, "jump", TableInterpolation::cubic);
+  EXPECT_EQ(rounded.time(), jump.time());
+  EXPECT_EQ(rounded.breakpoints(), (std::vector<double>{0.0, 1.0, 2.0, 3.0}));
+  for (const double x : {0.5, 1.0, 1.2, 1.7, 2.5}) {
+    EXPECT_EQ(at(rounded, x), at(jump, x)) << x;
+    EXPECT_LE(at(rounded, x).norm(), 1.5) << x;
+  }
+  // Rows at a larger distance stay apart: 1e-9 of the span is a piece, not rounding.
+  const TabulatedTorque apart({0.0, t1, t1 + 1e-9, 2.0, 3.0}, u, "apart");
+  EXPECT_EQ(apart.breakpoints().size(), 5U);
+  // A third row within rounding of a jump is a third row at one time.
+  try {
+    TabulatedTorque({0.0, t1, t1, t1_next, 3.0}, u, "table.csv");
+    ADD_FAILURE() << "a third row an ulp after a jump accepted";
+  } catch (const InvalidInput& e) {
+    EXPECT_NE(std::string(e.what()).find("at most two rows"), std::string::npos) << e.what();
+  }
 }
 
 TEST(TabulatedTorque, RejectsMalformedTables) {

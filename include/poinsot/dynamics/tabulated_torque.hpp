@@ -5,7 +5,9 @@
 ///
 /// Interpolation (the one used wherever a sampled control is replayed, the optimal layer's verification too):
 ///  - two rows with the same time are a jump: the first holds the left limit, the second the right one; the
-///    rows between two jumps (or the table's ends) form an arc;
+///    rows between two jumps (or the table's ends) form an arc; a row within `same_time` (relative to the
+///    table's span and its times' magnitude) of the previous one has the same time, a difference that is
+///    rounding only (a switch time computed twice);
 ///  - between two rows with t_i < t_{i+1} (a piece), TableInterpolation::linear (the default) takes the line
 ///    through them: error O(Δt² τ̈), never outside the two rows' values, exact for a piecewise-linear profile;
 ///  - TableInterpolation::cubic takes the cubic through four rows of the piece's arc, i − 1 … i + 2 (at the
@@ -39,9 +41,12 @@ const char* table_interpolation_name(TableInterpolation interpolation);
 
 class TabulatedTorque final : public TorqueModel {
  public:
+  /// Two row times closer than this, relative to max(|t_first|, |t_i|, t_i − t_first), are one time.
+  static constexpr double same_time = 1e-12;
+
   /// Rows (t_i s, τ_i N·m). Throws InvalidInput naming `source` and the row (1-based) for: fewer than two
   /// rows, a non-finite value, a time below the previous one, three rows at one time, or a first or last
-  /// time that is a jump.
+  /// time that is a jump (times within `same_time` of each other counting as one).
   TabulatedTorque(std::vector<double> time, std::vector<Vec3> torque_body, std::string source,
                   TableInterpolation interpolation = TableInterpolation::linear);
 
