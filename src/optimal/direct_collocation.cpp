@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -208,10 +207,20 @@ double allowed_cost_rise(const DirectSolution& previous) {
   return std::max(10.0 * previous.max_mesh_error, 1e-3);
 }
 
-/// The mesh refinement from `nlp` and its start `z`; the counts of `before` (a previous solve) are added to.
+/// What the path constraints imposed at the collocation points are tightened by so that they hold between
+/// them: every cone widened by δ (rad; PointingConstraint::widened), every wheel-momentum bound scaled by
+/// 1 − ε.
+struct PathMargins {
+  double cone = 0.0;      ///< δ (rad)
+  double momentum = 0.0;  ///< ε (relative)
+};
+
+/// The mesh refinement from `nlp` and its start `z`, an NLP of the problem tightened by `margins`, which
+/// each mesh's solution records (also for CollocationOptions::accept_mesh); the counts of `before` (a
+/// previous solve) are added to.
 DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<CollocationNlp> nlp,
                            std::vector<double> z, const CollocationOptions& options,
-                           const DirectSolution& before) {
+                           const DirectSolution& before, const PathMargins& margins) {
   std::vector<double> y;
   DirectSolution best, previous;  // previous: the last mesh Ipopt solved
   bool have_previous = false;
@@ -257,6 +266,8 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
           y = std::move(solution.y);
         }
         best = detail::extract_solution(*nlp, z, y);
+        best.pointing_widening = margins.cone;
+        best.wheel_momentum_margin = margins.momentum;
         best.mesh_iterations = mesh;
       }
       break;
@@ -264,6 +275,8 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     z = std::move(solution.x);
     y = std::move(solution.y);
     best = detail::extract_solution(*nlp, z, y);
+    best.pointing_widening = margins.cone;
+    best.wheel_momentum_margin = margins.momentum;
     best.nlp_solved = true;
     best.mesh_iterations = mesh;
     best.nlp_iterations = nlp_iterations;
@@ -304,14 +317,6 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
                                 : failure;
   return best;
 }
-
-/// What the path constraints imposed at the collocation points are tightened by so that they hold between
-/// them: every cone widened by δ (rad; PointingConstraint::widened), every wheel-momentum bound scaled by
-/// 1 − ε.
-struct PathMargins {
-  double cone = 0.0;      ///< δ (rad)
-  double momentum = 0.0;  ///< ε (relative)
-};
 
 PathMargins margins_of(const DirectSolution& s) {
   return {s.pointing_widening, s.wheel_momentum_margin};
@@ -394,7 +399,8 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
                                                : 2.0 * minimum_duration_bound(problem);
   std::vector<double> z = initial_guess(*nlp, T0);
   return meet_path_constraints_between_points(
-      problem, refine_mesh(problem, std::move(nlp), std::move(z), options, DirectSolution{}), options);
+      problem, refine_mesh(problem, std::move(nlp), std::move(z), options, DirectSolution{}, PathMargins{}),
+      options);
 }
 
 DirectSolution continue_direct(const ReorientationProblem& problem, const DirectSolution& previous,
@@ -438,10 +444,7 @@ DirectSolution continue_widened(const ReorientationProblem& original, const Dire
     std::copy(v, v + 10, z.begin() + static_cast<std::ptrdiff_t>(kP * pt));  // ν = 0
   }
   if (nlp->free_time()) z[nlp->time_index()] = previous.final_time;
-  DirectSolution out = refine_mesh(problem, std::move(nlp), std::move(z), options, previous);
-  out.pointing_widening = margins.cone;
-  out.wheel_momentum_margin = margins.momentum;
-  return out;
+  return refine_mesh(problem, std::move(nlp), std::move(z), options, previous, margins);
 }
 
 /// The margin (rad) below which a pointing constraint counts as active on a direct solution, beyond the

@@ -8,7 +8,10 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "optimal_test_problems.hpp"
 #include "poinsot/core/error.hpp"
@@ -147,6 +150,38 @@ TEST(PointingConstraint, AConeAcrossThePathForcesADetourWhoseCostRisesContinuous
   // between ε = 0.01 and 0.05 rad.
   const double exponent = std::log(rises[1] / rises[0]) / std::log(intrusions[1] / intrusions[0]);
   EXPECT_NEAR(exponent, 2.0, 0.3);
+}
+
+// The cones are widened where the replay of a mesh's solution crosses them between the collocation points,
+// and the meshes of the widened solves are handed to CollocationOptions::accept_mesh with the widening they
+// were solved with: what active_pointing_constraint (and the shooting's refusal) measures the margin from.
+// Seen with a widening of 0, a solution on the widened edge of an active cone would pass for clear of it.
+TEST(PointingConstraint, AcceptMeshSeesTheWideningOfEachMesh) {
+  const double theta = kAlpha + 0.05;
+  const ReorientationProblem p = sun_problem(theta);
+  CollocationOptions opt;
+  opt.initial_intervals = 16;
+  opt.mesh_tolerance = 1e-8;
+  std::vector<double> widenings;
+  std::vector<bool> active;
+  opt.accept_mesh = [&](const DirectSolution& d) -> std::optional<std::string> {
+    widenings.push_back(d.pointing_widening);
+    active.push_back(!active_pointing_constraint(p, d).empty());
+    // Stopped above the tolerance, each widened solve starts from a mesh that is not converged either.
+    return d.max_mesh_error <= 1e-4 ? std::optional<std::string>("a reason of the caller's") : std::nullopt;
+  };
+  const DirectSolution d = solve_direct(p, opt);
+  ASSERT_TRUE(d.nlp_solved) << d.status;
+  ASSERT_GT(d.pointing_widening, 0.0) << "the test needs a widened solve";
+  ASSERT_FALSE(widenings.empty());
+  EXPECT_EQ(widenings.front(), 0.0);  // the first solve: the cones as given
+  std::size_t widened = 0;
+  for (std::size_t k = 0; k < widenings.size(); ++k) {
+    EXPECT_TRUE(active[k]) << "mesh " << k << ", widening " << widenings[k];
+    EXPECT_LE(widenings[k], d.pointing_widening);  // a widening only grows
+    if (widenings[k] > 0.0) ++widened;
+  }
+  EXPECT_GT(widened, 0U) << "no mesh of the widened solves reached accept_mesh";
 }
 
 // Keep-in: the boresight x must stay within 80° of x while the body turns 150° about z at minimum energy
