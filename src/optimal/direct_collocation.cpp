@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -198,6 +199,27 @@ detail::IpoptSettings first_settings(const CollocationOptions& options) {
   return ipopt;
 }
 
+/// The first Ipopt settings on a refined mesh of a problem with cones, whose start is the previous mesh's
+/// optimum interpolated: kept off its bounds by 1e-9 only (IpoptSettings::warm_start), the barrier started at
+/// μ = 1e-6 instead of 0.1, and the bound multipliers at μ/slack
+/// (IpoptSettings::bound_multipliers_from_barrier), large on the bounds that the bang-bang control rides and
+/// small elsewhere, instead of 1 on every bound. With Ipopt's defaults the barrier pushed the start off the
+/// control's bounds and took about thirty iterations to come back on every mesh, and sometimes left for
+/// another local optimum; on the benchmark's keep_out problems, refined to the mesh tolerance (the
+/// phase-per-arc re-solve does not run with cones), this halves the Ipopt iterations
+/// (measurements/optimal_control.md, "keep_out"). Without cones the refinement stops after a few meshes,
+/// where the gain is small, and on the sphere's rate- and norm-bounded slews, whose multipliers are not
+/// unique, the warm start's multipliers seeded the shooting to another extremal or beyond its tolerance:
+/// there the first settings stay Ipopt's. Where it fails, the restarts are those of a first mesh
+/// (detail::restart_settings).
+detail::IpoptSettings refined_mesh_settings(const CollocationOptions& options) {
+  detail::IpoptSettings ipopt = first_settings(options);
+  ipopt.warm_start = true;
+  ipopt.mu_init = 1e-6;
+  ipopt.bound_multipliers_from_barrier = true;
+  return ipopt;
+}
+
 /// How far the optimum of a refined mesh may rise above the previous mesh's, relative to it: the interpolated
 /// start is that optimum, and refining moves the cost by about the mesh error (here at most ten times the
 /// previous mesh's, and 1e-3). A larger rise is Ipopt leaving for another, worse local optimum (a keep-out
@@ -238,7 +260,8 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
       return !have_previous || s.objective <= previous.cost * (1.0 + allowed_cost_rise(previous));
     };
     detail::RestartedSolution run = detail::solve_with_restarts(
-        *nlp, z, first_settings(options),
+        *nlp, z,
+        have_previous && !problem.pointing.empty() ? refined_mesh_settings(options) : first_settings(options),
         [&](const detail::NlpSolution& s) { return (s.solved || s.acceptable) && stays_near_previous(s); },
         progress);
     detail::NlpSolution& solution = run.solution;

@@ -204,12 +204,18 @@ IpoptSettings restart_settings(const IpoptSettings& first, int attempt) {
         fmt::format("restart_settings: attempt {}; expected 0 to {}", attempt, kIpoptAttempts - 1));
   }
   IpoptSettings ipopt = first;
-  if (attempt >= 1) ipopt.warm_start = true;
+  if (attempt >= 1) {
+    ipopt.warm_start = true;
+    ipopt.bound_multipliers_from_barrier = false;
+  }
   if (attempt == 1) {
     ipopt.mu_strategy = "monotone";
     ipopt.mu_init = 1e-4;
   }
-  if (attempt == 2) ipopt.max_iterations = 2 * first.max_iterations;
+  if (attempt == 2) {
+    ipopt.mu_init = 0.0;
+    ipopt.max_iterations = 2 * first.max_iterations;
+  }
   return ipopt;
 }
 
@@ -267,6 +273,8 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
   if (settings.warm_start)
     for (const char* option : {"bound_push", "bound_frac", "slack_bound_push", "slack_bound_frac"})
       app->Options()->SetNumericValue(option, 1e-9);
+  if (settings.bound_multipliers_from_barrier)
+    app->Options()->SetStringValue("bound_mult_init_method", "mu-based");
   if (settings.exact_bounds) app->Options()->SetNumericValue("bound_relax_factor", 0.0);
   app->Options()->SetIntegerValue("mumps_scaling", settings.mumps_scaling);
   app->Options()->SetIntegerValue("mumps_pivot_order", kMumpsOrderingQamd);

@@ -48,6 +48,10 @@ struct IpoptSettings {
   /// instead of 1e-2 (bound_push, bound_frac and their slack counterparts), so the barrier does not move
   /// the start away from where it is.
   bool warm_start = false;
+  /// The bound multipliers start at μ_init/slack (Ipopt's bound_mult_init_method "mu-based") instead of 1:
+  /// with warm_start and a small mu_init, a start on its bounds keeps the complementarity of a converged
+  /// iterate there, and the inactive bounds' multipliers start near 0.
+  bool bound_multipliers_from_barrier = false;
   /// When positive, the run stops at the first iterate of the regular phase whose optimality error (as in
   /// NlpSolution::smallest_error) is at most this, and counts as solved (solve_with_restarts' rerun of an
   /// attempt that stalled); 0: Ipopt's own termination only.
@@ -88,8 +92,9 @@ inline constexpr int kIpoptAttempts = 3;
 /// The settings of attempt `attempt` (0 to kIpoptAttempts − 1) on one NLP, from the same start, after the
 /// attempts before it failed: 0 is `first`; 1 the monotone (Fiacco–McCormick) barrier from μ = 1e-4 with the
 /// start kept off its bounds by 1e-9 only (IpoptSettings::warm_start), for a start that is near a solution
-/// where the adaptive barrier wandered off; 2 the first settings with the warm start and twice the
-/// iterations. Throws InvalidInput for another attempt number.
+/// where the adaptive barrier wandered off; 2 the first settings with the warm start, Ipopt's own μ_init and
+/// twice the iterations. Both restarts start the bound multipliers at 1 (Ipopt's default), whatever `first`
+/// did. Throws InvalidInput for another attempt number.
 IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
 
 /// What solve_with_restarts did.

@@ -1,5 +1,6 @@
 // Ipopt behind the SparseNlp interface and the restarts of the direct methods: a two-variable program with a
-// known optimum, solved; the restart settings in their documented order; solve_with_restarts makes at most
+// known optimum, solved; a warm start on an active bound, which stays there; the restart settings in their
+// documented order; solve_with_restarts makes at most
 // kIpoptAttempts attempts from the same start, stops at the first accepted one and counts every iteration; an
 // attempt that stalls near its tolerance is retraced and stopped where it came within the factor.
 #include <gtest/gtest.h>
@@ -116,6 +117,69 @@ TEST(IpoptSolve, RestartSettingsAreTheMonotoneBarrierThenTwiceTheIterations) {
   EXPECT_EQ(a2.max_iterations, 80);
   EXPECT_THROW(restart_settings(first, kIpoptAttempts), InvalidInput);
   EXPECT_THROW(restart_settings(first, -1), InvalidInput);
+}
+
+// A refined mesh's first settings (a warm start with the bound multipliers from the barrier) are not carried
+// into the restarts, which are those of a cold first attempt.
+TEST(IpoptSolve, RestartsStartTheBoundMultipliersAtIpoptsDefault) {
+  IpoptSettings warm;
+  warm.warm_start = true;
+  warm.mu_init = 1e-6;
+  warm.bound_multipliers_from_barrier = true;
+  EXPECT_TRUE(restart_settings(warm, 0).bound_multipliers_from_barrier);
+  EXPECT_EQ(restart_settings(warm, 0).mu_init, 1e-6);
+  const IpoptSettings a1 = restart_settings(warm, 1), a2 = restart_settings(warm, 2);
+  EXPECT_FALSE(a1.bound_multipliers_from_barrier);
+  EXPECT_EQ(a1.mu_init, 1e-4);
+  EXPECT_FALSE(a2.bound_multipliers_from_barrier);
+  EXPECT_EQ(a2.mu_init, 0.0);  // Ipopt's own
+  EXPECT_TRUE(a2.warm_start);
+}
+
+/// The projection with x ≥ 1/2: the optimum (1/2, 1/2) on the bound, f = 5/2.
+class BoundedProjection final : public SparseNlp {
+ public:
+  int num_variables() const override { return exact_.num_variables(); }
+  int num_constraints() const override { return exact_.num_constraints(); }
+  void bounds(std::vector<double>& xl, std::vector<double>& xu, std::vector<double>& gl,
+              std::vector<double>& gu) const override {
+    exact_.bounds(xl, xu, gl, gu);
+    xl[0] = 0.5;
+  }
+  double objective(const double* x) const override { return exact_.objective(x); }
+  void objective_gradient(const double* x, double* g) const override { exact_.objective_gradient(x, g); }
+  void constraints(const double* x, double* g) const override { exact_.constraints(x, g); }
+  int jacobian_nonzeros() const override { return exact_.jacobian_nonzeros(); }
+  void jacobian_structure(int* rows, int* cols) const override { exact_.jacobian_structure(rows, cols); }
+  void jacobian_values(const double* x, double* v) const override { exact_.jacobian_values(x, v); }
+  int hessian_nonzeros() const override { return exact_.hessian_nonzeros(); }
+  void hessian_structure(int* rows, int* cols) const override { exact_.hessian_structure(rows, cols); }
+  void hessian_values(const double* x, double sigma, const double* y, double* v) const override {
+    exact_.hessian_values(x, sigma, y, v);
+  }
+
+ private:
+  Projection exact_;
+};
+
+// Started at its optimum, on an active bound: Ipopt's defaults push the start 1e-2 off the bound and begin
+// the barrier at μ = 0.1, and come back in several iterations; the warm start (push 1e-9, μ = 1e-6, the bound
+// multiplier at μ/slack) stays there and needs fewer. Both end at the optimum.
+TEST(IpoptSolve, AWarmStartOnAnActiveBoundStaysAtTheOptimum) {
+  const std::vector<double> optimum{0.5, 0.5};
+  const NlpSolution cold = solve_with_ipopt(BoundedProjection(), optimum, IpoptSettings{});
+  IpoptSettings settings;
+  settings.warm_start = true;
+  settings.mu_init = 1e-6;
+  settings.bound_multipliers_from_barrier = true;
+  const NlpSolution warm = solve_with_ipopt(BoundedProjection(), optimum, settings);
+  for (const NlpSolution* s : {&cold, &warm}) {
+    ASSERT_TRUE(s->solved) << s->status;
+    EXPECT_NEAR(s->x[0], 0.5, 1e-8);
+    // Ipopt relaxes the bound by 1e-8 (bound_relax_factor), and f' = 4x = 2 along x + y = 1 there.
+    EXPECT_NEAR(s->objective, 2.5, 3e-8);
+  }
+  EXPECT_LT(warm.iterations, cold.iterations);
 }
 
 TEST(IpoptSolve, RestartsStopAtTheFirstAcceptedAttemptAndCountEveryIteration) {
