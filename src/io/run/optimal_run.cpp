@@ -294,6 +294,12 @@ OptimalRun run_optimal(const OptimalScenario& sc,
   // stand for a chattering that no finer mesh turns into a verified extremal.
   bool verified_early = false;
   int unverifiable_in_a_row = 0;
+  // The shooting from the mesh at which a refused or chattering structure stopped the refinement, and that
+  // mesh's cost and size: the indirect part of the answer unless a widening of the path constraints solved
+  // another mesh after it.
+  std::optional<optimal::IndirectSolution> shot_at_stop;
+  double stop_cost = 0.0;
+  std::size_t stop_nodes = 0;
   if (stops_refining_once_verified(sc))
     collocation.accept_mesh = [&](const optimal::DirectSolution& d) -> std::optional<std::string> {
       if (!(d.max_mesh_error <= kEarlyShootingMeshError) || d.costate_time.size() < 2) return std::nullopt;
@@ -315,6 +321,9 @@ OptimalRun run_optimal(const OptimalScenario& sc,
       }
       if (++unverifiable_in_a_row < 2 || !replay_meets_target(r, optimal::replay_direct(sc.problem, d)))
         return std::nullopt;
+      shot_at_stop = std::move(s);
+      stop_cost = d.cost;
+      stop_nodes = d.node_time.size();
       return refused
                  ? "the shooting refused the structures of this mesh and the previous one, and this one's "
                    "re-simulation meets the target"
@@ -331,7 +340,11 @@ OptimalRun run_optimal(const OptimalScenario& sc,
       progress({"indirect", {}, ++newton_iterations, residual});
     };
   }
-  if (!verified_early && r.direct.costate_time.size() >= 2)
+  const bool shot_this_mesh =
+      shot_at_stop && r.direct.cost == stop_cost && r.direct.node_time.size() == stop_nodes;
+  if (shot_this_mesh)
+    r.indirect = std::move(*shot_at_stop);
+  else if (!verified_early && r.direct.costate_time.size() >= 2)
     r.indirect = optimal::solve_indirect(sc.problem, r.direct, shooting);
   if (progress) progress({"verification", {}});
   if (!r.indirect.time.empty()) {
