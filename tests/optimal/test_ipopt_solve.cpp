@@ -15,14 +15,16 @@
 namespace poinsot::optimal::detail {
 namespace {
 
-/// min (x − 1)² + (y − 2)² subject to x + y = 1: the optimum (0, 1), multiplier y_g = 2 (∇f + y_g ∇g = 0).
+/// min (x − 1)² + (y − 2)² subject to x + y = 1, |x|, |y| ≤ 10: the optimum (0, 1), multiplier y_g = 2
+/// (∇f + y_g ∇g = 0). With x ≥ x_min > 0 instead, the optimum is on that bound: (x_min, 1 − x_min).
 class Projection final : public SparseNlp {
  public:
+  explicit Projection(double x_min = -10.0) : x_min_(x_min) {}
   int num_variables() const override { return 2; }
   int num_constraints() const override { return 1; }
   void bounds(std::vector<double>& xl, std::vector<double>& xu, std::vector<double>& gl,
               std::vector<double>& gu) const override {
-    xl.assign(2, -10.0);
+    xl = {x_min_, -10.0};
     xu.assign(2, 10.0);
     gl.assign(1, 1.0);
     gu.assign(1, 1.0);
@@ -50,6 +52,9 @@ class Projection final : public SparseNlp {
   void hessian_values(const double*, double sigma, const double*, double* v) const override {
     v[0] = v[1] = 2.0 * sigma;
   }
+
+ private:
+  double x_min_;
 };
 
 /// The projection with its constraint given twice, the second copy shifted by `gap`: x + y = 1 and
@@ -136,43 +141,18 @@ TEST(IpoptSolve, RestartsStartTheBoundMultipliersAtIpoptsDefault) {
   EXPECT_TRUE(a2.warm_start);
 }
 
-/// The projection with x ≥ 1/2: the optimum (1/2, 1/2) on the bound, f = 5/2.
-class BoundedProjection final : public SparseNlp {
- public:
-  int num_variables() const override { return exact_.num_variables(); }
-  int num_constraints() const override { return exact_.num_constraints(); }
-  void bounds(std::vector<double>& xl, std::vector<double>& xu, std::vector<double>& gl,
-              std::vector<double>& gu) const override {
-    exact_.bounds(xl, xu, gl, gu);
-    xl[0] = 0.5;
-  }
-  double objective(const double* x) const override { return exact_.objective(x); }
-  void objective_gradient(const double* x, double* g) const override { exact_.objective_gradient(x, g); }
-  void constraints(const double* x, double* g) const override { exact_.constraints(x, g); }
-  int jacobian_nonzeros() const override { return exact_.jacobian_nonzeros(); }
-  void jacobian_structure(int* rows, int* cols) const override { exact_.jacobian_structure(rows, cols); }
-  void jacobian_values(const double* x, double* v) const override { exact_.jacobian_values(x, v); }
-  int hessian_nonzeros() const override { return exact_.hessian_nonzeros(); }
-  void hessian_structure(int* rows, int* cols) const override { exact_.hessian_structure(rows, cols); }
-  void hessian_values(const double* x, double sigma, const double* y, double* v) const override {
-    exact_.hessian_values(x, sigma, y, v);
-  }
-
- private:
-  Projection exact_;
-};
-
-// Started at its optimum, on an active bound: Ipopt's defaults push the start 1e-2 off the bound and begin
-// the barrier at μ = 0.1, and come back in several iterations; the warm start (push 1e-9, μ = 1e-6, the bound
-// multiplier at μ/slack) stays there and needs fewer. Both end at the optimum.
+// The projection with x ≥ 1/2 started at its optimum (1/2, 1/2), f = 5/2, on the active bound: Ipopt's
+// defaults push the start 1e-2 off the bound and begin the barrier at μ = 0.1, and come back in several
+// iterations; the warm start (push 1e-9, μ = 1e-6, the bound multiplier at μ/slack) stays there and needs
+// fewer. Both end at the optimum.
 TEST(IpoptSolve, AWarmStartOnAnActiveBoundStaysAtTheOptimum) {
   const std::vector<double> optimum{0.5, 0.5};
-  const NlpSolution cold = solve_with_ipopt(BoundedProjection(), optimum, IpoptSettings{});
+  const NlpSolution cold = solve_with_ipopt(Projection(0.5), optimum, IpoptSettings{});
   IpoptSettings settings;
   settings.warm_start = true;
   settings.mu_init = 1e-6;
   settings.bound_multipliers_from_barrier = true;
-  const NlpSolution warm = solve_with_ipopt(BoundedProjection(), optimum, settings);
+  const NlpSolution warm = solve_with_ipopt(Projection(0.5), optimum, settings);
   for (const NlpSolution* s : {&cold, &warm}) {
     ASSERT_TRUE(s->solved) << s->status;
     EXPECT_NEAR(s->x[0], 0.5, 1e-8);
