@@ -14,7 +14,9 @@ T fixed), spin (minimum time from a spin about a random axis to rest), rate (min
 bound), detumble (minimum time to rest, free final attitude), nonprincipal (minimum time, per-axis bounds, a
 full inertia tensor), keep_out (minimum time, per-axis bounds, turns of 60° … 180°, a random boresight kept
 15° … 40° from a direction within half that angle of the boresight's position halfway along the eigenaxis
-turn, and at least 5° more from it at both ends: a cone across the eigenaxis path), arm (the two-link arm of examples/optimal/two_link_arm.toml to a random target at
+turn, and at least 5° more from it at both ends: a cone across the eigenaxis path), keep_in (the same turns, a
+random boresight kept within a cone about the bisector of its start and end directions, 3° … 15° wider than
+half their angle), arm (the two-link arm of examples/optimal/two_link_arm.toml to a random target at
 minimum energy, minimal coordinates). Rigid bodies: principal moments J1 ≤ J2 ≤ J3 ≤ J1 + J2 with J3/J1 ≤ 4,
 scaled by 10^U(−1, 1) kg·m²; rest-to-rest turns of 20° … 180° about a random axis; bounds U(0.5, 2) N·m per
 axis (ū U(0.5, 2) N·m for a norm bound).
@@ -42,7 +44,8 @@ import tempfile
 import time
 from pathlib import Path
 
-FAMILIES = ("per_axis", "norm", "energy", "spin", "rate", "detumble", "nonprincipal", "keep_out", "arm")
+FAMILIES = ("per_axis", "norm", "energy", "spin", "rate", "detumble", "nonprincipal", "keep_out", "keep_in",
+            "arm")
 
 
 def _moments(rng: random.Random) -> list[float]:
@@ -103,6 +106,22 @@ def _keep_out_cone(rng: random.Random, axis: list[float], angle: float) -> list[
                     f"direction_space = {_fmt(sun)}", f"half_angle = {_fmt(half)}"]
 
 
+def _keep_in_cone(rng: random.Random, axis: list[float], angle: float) -> list[str]:
+    """A [[optimal_control.keep_in]] table about the bisector of a random boresight's start and end directions
+    (family keep_in), 3° … 15° wider than half their angle: redrawn until they are at least 10° apart."""
+    while True:
+        boresight = _unit(rng)
+        end = [sum(r * b for r, b in zip(row, boresight)) for row in _rotation(axis, angle)]
+        between = math.acos(max(-1.0, min(1.0, sum(a * b for a, b in zip(boresight, end)))))
+        if between < math.radians(10.0):
+            continue
+        bisector = [a + b for a, b in zip(boresight, end)]
+        n = math.sqrt(sum(x * x for x in bisector))
+        half = 0.5 * between + math.radians(rng.uniform(3.0, 15.0))
+        return ["[[optimal_control.keep_in]]", 'name = "antenna"', f"boresight_body = {_fmt(boresight)}",
+                f"direction_space = {_fmt([x / n for x in bisector])}", f"half_angle = {_fmt(half)}"]
+
+
 def _rigid_body(family: str, rng: random.Random) -> str:
     """The scenario text of a single-body family's problem."""
     moments = _moments(rng)
@@ -112,7 +131,7 @@ def _rigid_body(family: str, rng: random.Random) -> str:
     body = f"principal_moments = {_fmt(moments)}"
     lines = ["[optimal_control]"]
     initial: list[str] = []
-    cones: list[str] = []  # [[optimal_control.keep_out]] tables, after the final state
+    cones: list[str] = []  # [[optimal_control.keep_out]] or keep_in tables, after the final state
     final = [f"orientation = {{ axis_angle = {{ axis = {_fmt(axis)}, angle = {_fmt(angle)} }} }}"]
     if family == "per_axis":
         lines += ['objective = "minimum_time"', 'torque_bound = "per_axis"', f"torque_max = {_fmt(per_axis)}"]
@@ -145,6 +164,11 @@ def _rigid_body(family: str, rng: random.Random) -> str:
         final = [f"orientation = {{ axis_angle = {{ axis = {_fmt(axis)}, angle = {_fmt(angle)} }} }}"]
         lines += ['objective = "minimum_time"', 'torque_bound = "per_axis"', f"torque_max = {_fmt(per_axis)}"]
         cones = _keep_out_cone(rng, axis, angle)
+    elif family == "keep_in":
+        angle = math.radians(rng.uniform(60.0, 180.0))
+        final = [f"orientation = {{ axis_angle = {{ axis = {_fmt(axis)}, angle = {_fmt(angle)} }} }}"]
+        lines += ['objective = "minimum_time"', 'torque_bound = "per_axis"', f"torque_max = {_fmt(per_axis)}"]
+        cones = _keep_in_cone(rng, axis, angle)
     elif family == "nonprincipal":
         R = _rotation(_unit(rng), rng.uniform(0.0, math.pi))
         J = [[sum(R[i][k] * moments[k] * R[j][k] for k in range(3)) for j in range(3)] for i in range(3)]
