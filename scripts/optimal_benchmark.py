@@ -159,16 +159,11 @@ def _rigid_body(family: str, rng: random.Random) -> str:
         initial = [f"omega_body = {_fmt([rate * x for x in _unit(rng)])}"]
         final = ["free_attitude = true"]
         lines += ['objective = "minimum_time"', 'torque_bound = "norm"', f"torque_max = {_fmt(norm)}"]
-    elif family == "keep_out":
+    elif family in ("keep_out", "keep_in"):
         angle = math.radians(rng.uniform(60.0, 180.0))
         final = [f"orientation = {{ axis_angle = {{ axis = {_fmt(axis)}, angle = {_fmt(angle)} }} }}"]
         lines += ['objective = "minimum_time"', 'torque_bound = "per_axis"', f"torque_max = {_fmt(per_axis)}"]
-        cones = _keep_out_cone(rng, axis, angle)
-    elif family == "keep_in":
-        angle = math.radians(rng.uniform(60.0, 180.0))
-        final = [f"orientation = {{ axis_angle = {{ axis = {_fmt(axis)}, angle = {_fmt(angle)} }} }}"]
-        lines += ['objective = "minimum_time"', 'torque_bound = "per_axis"', f"torque_max = {_fmt(per_axis)}"]
-        cones = _keep_in_cone(rng, axis, angle)
+        cones = (_keep_out_cone if family == "keep_out" else _keep_in_cone)(rng, axis, angle)
     elif family == "nonprincipal":
         R = _rotation(_unit(rng), rng.uniform(0.0, math.pi))
         J = [[sum(R[i][k] * moments[k] * R[j][k] for k in range(3)) for j in range(3)] for i in range(3)]
