@@ -179,8 +179,8 @@ TEST(DirectCollocation, RestartsIpoptWhereItFails) {
 // the eigenaxis path (problem 2 of seed 1 of the benchmark's keep_out family), whose meshes 1 to 7 converge
 // to T = 4.3309 s (mesh error 1.5e-7 on mesh 7), and on mesh 8 Ipopt's default settings left that optimum
 // for another, T = 5.7371 s (measured; such a solution is refused, and Ipopt restarted from the same start).
-// With cones a refined mesh starts warm (its barrier at μ = 1e-6, the bound multipliers at μ/slack), and Ipopt
-// stays at the first optimum on every mesh, without a restart, to the mesh tolerance's digits.
+// With cones a refined mesh starts warm (its barrier at μ = 1e-6, the bound multipliers at μ/slack), and
+// Ipopt stays at the first optimum on every mesh, without a restart, to the mesh tolerance's digits.
 TEST(DirectCollocation, ARefinedMeshKeepsThePreviousMeshsOptimum) {
   if (::poinsot::test::sanitized())
     GTEST_SKIP() << "eight meshes up to 200 intervals: about 3 s of CPU in release, minutes under ASan";
