@@ -16,6 +16,7 @@
 #include "pmp_system.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/core/linear_solvers.hpp"
+#include "poinsot/dynamics/tabulated_torque.hpp"
 #include "poinsot/so3/exp_log.hpp"
 
 namespace poinsot::optimal::detail {
@@ -193,8 +194,9 @@ class ArcShooter {
       // zero length: integrated, not sampled, so that no time appears more than twice among the samples (the
       // replayed torque table). The next arc's first sample takes the time of the last one sampled: events
       // that Newton left a few ulps apart would otherwise give two samples that far apart, across which the
-      // table's cubic interpolant takes a slope of order 1/ulp.
-      const double zero_length = 1e-12 * T;
+      // table's cubic interpolant takes a slope of order 1/ulp. Zero length is what the table reads as one
+      // time (TabulatedTorque::same_time).
+      const double zero_length = dynamics::TabulatedTorque::same_time * T;
       const int m = t1 - t0 > zero_length ? std::max(2, samples) : 1;
       // The last sample is t1 itself, the next arc's first: t0 + (t1 − t0) may round above t1.
       auto sample_time = [&](int i) { return i + 1 >= m ? t1 : t0 + (t1 - t0) * i / (m - 1); };
