@@ -37,11 +37,11 @@
 /// Each such reversal time is an unknown with the condition σ(t_k)·ŝ = 0, ŝ the direction of σ at the start
 /// of the arc ending there; on each arc the control is continued through σ = 0 without flipping, so the
 /// conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a sphere). The output
-/// samples of a norm-bound torque are refined where it turns fast (σ passing near 0). Active rate bounds and
-/// singular arcs (|u_i| strictly inside its bound over a stretch of the direct solution: σ_i ≡ 0, u_i from
-/// σ̈_i = 0), for minimum time with per-axis bounds: boundary and singular arcs with their entry and exit
-/// times as unknowns (arc_shooting.hpp, single shooting; under the other objectives and bounds an active rate
-/// bound is reported "not applied").
+/// samples of a norm-bound torque are refined where it turns fast (σ passing near 0), those of a smooth
+/// torque (the other objectives) where it curves. Active rate bounds and singular arcs (|u_i| strictly inside
+/// its bound over a stretch of the direct solution: σ_i ≡ 0, u_i from σ̈_i = 0), for minimum time with
+/// per-axis bounds: boundary and singular arcs with their entry and exit times as unknowns (arc_shooting.hpp,
+/// single shooting; under the other objectives and bounds an active rate bound is reported "not applied").
 #include <functional>
 #include <string>
 #include <vector>
@@ -56,7 +56,8 @@ struct ShootingOptions {
   double tolerance = 1e-12;  ///< on the scaled residual (max norm)
   int max_iterations = 40;
   double integration_tolerance = 1e-13;  ///< RKF78 rtol and atol
-  int samples_per_arc = 64;              ///< output samples on each arc (ends included)
+  /// Output samples on each arc (ends included), before those of a smooth or norm-bound torque are refined.
+  int samples_per_arc = 64;
   /// M, the number of shooting segments (1 … 1000; nodes at mT/M, each moved by less than half a segment to
   /// keep a quarter segment from the guessed switches and reversals): 1 is single shooting; with M > 1 the
   /// state and costates at the M − 1 interior nodes are unknowns too, started from the direct solution, and
