@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "pmp_system.hpp"
@@ -140,12 +141,14 @@ class ArcShooter {
   int size() const { return 7 + static_cast<int>(s_.events.size()); }
   double final_time(const Eigen::VectorXd& x) const { return x[6]; }
 
-  /// Integrates 0 → T; observe(t, y, u, μ) at `samples` points of each arc (ends included). At each entry
-  /// the rows of its arc are written into F (when given). False outside the domain (T ≤ 0, events outside
-  /// (0, T), an exit before its entry, two events of one axis out of their order).
+  /// Integrates 0 → T; observe(t, y, u, μ) at `samples` points of each arc (ends included), and with
+  /// `resolve` between them where the torque curves (kMaxSmoothSampleCurvature: a held or singular torque,
+  /// smooth inside its arc). At each entry the rows of its arc are written into F (when given). False outside
+  /// the domain (T ≤ 0, events outside (0, T), an exit before its entry, two events of one axis out of their
+  /// order).
   template <class Observer>
-  bool integrate(const Eigen::VectorXd& x, int samples, PmpState& end, Vec3& u_end, Eigen::VectorXd* F,
-                 Observer&& observe) const {
+  bool integrate(const Eigen::VectorXd& x, int samples, bool resolve, PmpState& end, Vec3& u_end,
+                 Eigen::VectorXd* F, Observer&& observe) const {
     const double T = x[6];
     if (!(T > 0.0)) return false;
     const std::size_t n = s_.events.size();
@@ -172,7 +175,8 @@ class ArcShooter {
     bool outside = false;
     PmpState y = pack(R0_, p_.omega_initial, 0.5 * R0_ * so3::hat(x.segment<3>(0)), x.segment<3>(3), 0.0);
     double t0 = 0.0;
-    double last_sample = -T;  // the time of the last sample observed
+    double last_sample = -T;    // the time of the last sample observed
+    double torque_scale = 0.0;  // the largest ‖u‖ sampled so far (resolve)
     Vec3 u, mu;
     for (std::size_t a = 0; a <= n; ++a) {
       const double t1 = a < n ? order[a].first : T;
@@ -200,19 +204,46 @@ class ArcShooter {
       const int m = t1 - t0 > zero_length ? std::max(2, samples) : 1;
       // The last sample is t1 itself, the next arc's first: t0 + (t1 − t0) may round above t1.
       auto sample_time = [&](int i) { return i + 1 >= m ? t1 : t0 + (t1 - t0) * i / (m - 1); };
-      for (int i = 0; i < m; ++i) {
-        const double ts = sample_time(i);
-        if (i > 0 && t1 > t0) {
-          const double ta = sample_time(i - 1);
-          odeint::integrate_adaptive(
-              odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(tol_, tol_), rhs, y, ta, ts,
-              (ts - ta) / 4);
+      auto step = [&](double from, double to) {
+        odeint::integrate_adaptive(
+            odeint::make_controlled<odeint::runge_kutta_fehlberg78<PmpState>>(tol_, tol_), rhs, y, from, to,
+            (to - from) / 4);
+      };
+      // Integrates y from ta to ts and observes it there; with `resolve`, an interval across which the torque
+      // curves more than kMaxSmoothSampleCurvature allows is halved and integrated again from ta.
+      const std::function<void(double, double, int)> advance = [&](double ta, double ts, int depth) {
+        if (!resolve) {
+          step(ta, ts);
+          arc_control(p_, J_inv_, mode, y, u, mu);
+          observe(ts, y, u, mu);
+          return;
         }
-        arc_control(p_, J_inv_, mode, y, u, mu);
-        if (m > 1) {
-          last_sample = i == 0 && ts - last_sample <= zero_length ? last_sample : ts;
-          observe(last_sample, y, u, mu);
+        const PmpState y_a = y;
+        Vec3 u_a, u_m, u_b, unused;
+        arc_control(p_, J_inv_, mode, y, u_a, unused);
+        const double mid = 0.5 * (ta + ts);
+        step(ta, mid);
+        arc_control(p_, J_inv_, mode, y, u_m, unused);
+        step(mid, ts);
+        arc_control(p_, J_inv_, mode, y, u_b, mu);
+        torque_scale = std::max({torque_scale, u_a.norm(), u_m.norm(), u_b.norm()});
+        if (depth < kMaxSampleHalvings &&
+            (u_a - 2.0 * u_m + u_b).norm() > kMaxSmoothSampleCurvature * torque_scale) {
+          y = y_a;
+          advance(ta, mid, depth + 1);
+          advance(mid, ts, depth + 1);
+          return;
         }
+        u = u_b;
+        observe(ts, y, u, mu);
+      };
+      arc_control(p_, J_inv_, mode, y, u, mu);
+      if (m > 1) {
+        last_sample = t0 - last_sample <= zero_length ? last_sample : t0;
+        observe(last_sample, y, u, mu);
+        for (int i = 1; i < m; ++i)
+          advance(sample_time(i - 1), sample_time(i), 0);
+        last_sample = t1;
       }
       if (m == 1 && t1 > t0)
         odeint::integrate_adaptive(
@@ -268,7 +299,8 @@ class ArcShooter {
     F.setZero(size());
     PmpState y;
     Vec3 u;
-    if (!integrate(x, 2, y, u, &F, [](double, const PmpState&, const Vec3&, const Vec3&) {})) return false;
+    if (!integrate(x, 2, false, y, u, &F, [](double, const PmpState&, const Vec3&, const Vec3&) {}))
+      return false;
     const PmpView v = unpack(y);
     const double T = x[6];
     const Mat3 E = Rf_.transpose() * v.R;
@@ -417,7 +449,7 @@ IndirectSolution shoot_over_arcs(const ReorientationProblem& p, const ArcStructu
   const Mat3 J_inv = p.inertia_body.inverse();
   PmpState y;
   Vec3 u;
-  result.integrate(x, o.samples_per_arc, y, u, nullptr,
+  result.integrate(x, o.samples_per_arc, true, y, u, nullptr,
                    [&](double t, const PmpState& yy, const Vec3& uu, const Vec3& mu) {
                      const PmpView v = unpack(yy);
                      out.time.push_back(t);

@@ -24,10 +24,8 @@ namespace odeint = boost::numeric::odeint;
 /// The largest turn (rad) of a norm-bound torque between two output samples: the replay's local cubic then
 /// errs by about ū (0.02)⁴/4! ≈ 7e-9 ū in the fastest turn.
 constexpr double kMaxSampleTurn = 0.02;
-/// The largest second difference ‖u_a − 2u_m + u_b‖ over an output sample interval (a, m its midpoint, b),
-/// relative to ū for a norm-bound minimum-time torque, and to the largest ‖u‖ sampled so far on the segment
-/// for the smooth torques of the other objectives. The second difference is about h²‖ü‖/4, and the replay's
-/// cubic through four samples errs by up to 3h⁴‖u⁽⁴⁾‖/128 between the middle two.
+/// The largest second difference ‖u_a − 2u_m + u_b‖/ū of a norm-bound torque over an output sample interval
+/// (a, m its midpoint, b).
 constexpr double kMaxSampleCurvature = 1e-4;
 /// The largest turn (rad) of a norm-bound torque over one piece of the shooting residual's integration.
 constexpr double kMaxPieceTurn = 0.5;
@@ -136,8 +134,8 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
   // long piece RKF78's stages can straddle a fast turn and its error estimate miss it (a random slew then
   // converged with H(T) = 0 while H(0) = −2.7e-8, the samples' refined integration showing the gap).
   // The smooth torques of the other objectives (u = −σ/2 or −σ/(2w), clipped to the bound) have their output
-  // intervals halved by the second difference alone (64 uniform samples replayed random minimum-energy slews
-  // of 4.5 and 15 s 1.0e-6 and 1.5e-6 rad off, above the replay's threshold of 1e-6 rad).
+  // intervals halved by the second difference alone (kMaxSmoothSampleCurvature; 64 uniform samples replayed
+  // random minimum-energy slews of 4.5 and 15 s 1.0e-6 and 1.5e-6 rad off, above the replay's threshold).
   const bool refine = !bang_ && p_.objective == Objective::minimum_time && p_.bound == TorqueBound::norm;
   const bool refine_smooth = !bang_ && p_.objective != Objective::minimum_time && observe;
   double smooth_scale = 0.0;  // the largest ‖u‖ sampled so far on the segment
@@ -180,11 +178,11 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
       }
       const Vec3 u_b = control(y);
       if (refine_smooth) smooth_scale = std::max({smooth_scale, u_a.norm(), u_m.norm(), u_b.norm()});
-      const double curvature_scale = refine_smooth ? smooth_scale : u_a.norm();
-      const bool curved =
-          by_curvature && (u_a - 2.0 * u_m + u_b).norm() > kMaxSampleCurvature * curvature_scale;
+      const double curvature_limit =
+          refine_smooth ? kMaxSmoothSampleCurvature * smooth_scale : kMaxSampleCurvature * u_a.norm();
+      const bool curved = by_curvature && (u_a - 2.0 * u_m + u_b).norm() > curvature_limit;
       const bool turned = refine && std::atan2(u_a.cross(u_b).norm(), u_a.dot(u_b)) > max_turn;
-      if ((refine || refine_smooth) && depth < 30 && (curved || turned)) {
+      if ((refine || refine_smooth) && depth < kMaxSampleHalvings && (curved || turned)) {
         y = y_a;
         advance(ta, mid, depth + 1);
         advance(mid, ts, depth + 1);

@@ -96,9 +96,9 @@ TEST(IndirectShooting, SphereMinimumEnergyCost) {
 // 13 of seed 2 of the benchmark's energy family: the torque −σ/2 is smooth, and its DOP853 replay from the
 // samples (a local cubic between them) must reach the target far inside the threshold of 1e-6 rad. With 64
 // uniform samples (0.24 s apart) the replay missed by 1.5e-6 rad and the extremal, converged to 1e-12, was
-// not verified; the samples are now halved until their second difference is below 1e-4 of the torque's norm,
-// and the miss is 2.6e-8 rad (amplification 2): a tenth of the threshold is required. Oracles: the minimum
-// principle's checks, the direct optimum's cost (1e-3), the independent replay.
+// not verified; the samples are now halved until their second difference is below 1e-5 of the torque's
+// largest norm, and the miss is 4.4e-10 rad (amplification 2): a tenth of the threshold is required. Oracles:
+// the minimum principle's checks, the direct optimum's cost (1e-3), the independent replay.
 TEST(IndirectShooting, MinimumEnergySamplesResolveTheTorqueForItsReplay) {
   ReorientationProblem p;
   p.inertia_body = Vec3(4.632836403703844, 13.398713278902793, 12.4839605668905).asDiagonal();

@@ -38,10 +38,11 @@
 /// of the arc ending there; on each arc the control is continued through σ = 0 without flipping, so the
 /// conditions are smooth. This assumes σ turns by less than 90° along an arc (exact for a sphere). The output
 /// samples of a norm-bound torque are refined where it turns fast (σ passing near 0), those of a smooth
-/// torque (the other objectives) where it curves. Active rate bounds and singular arcs (|u_i| strictly inside
-/// its bound over a stretch of the direct solution: σ_i ≡ 0, u_i from σ̈_i = 0), for minimum time with
-/// per-axis bounds: boundary and singular arcs with their entry and exit times as unknowns (arc_shooting.hpp,
-/// single shooting; under the other objectives and bounds an active rate bound is reported "not applied").
+/// torque (the other objectives, or one held on a boundary or singular arc) where it curves. Active rate
+/// bounds and singular arcs (|u_i| strictly inside its bound over a stretch of the direct solution: σ_i ≡ 0,
+/// u_i from σ̈_i = 0), for minimum time with per-axis bounds: boundary and singular arcs with their entry and
+/// exit times as unknowns (arc_shooting.hpp, single shooting; under the other objectives and bounds an active
+/// rate bound is reported "not applied").
 #include <functional>
 #include <string>
 #include <vector>
