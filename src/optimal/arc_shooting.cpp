@@ -175,8 +175,8 @@ class ArcShooter {
     bool outside = false;
     PmpState y = pack(R0_, p_.omega_initial, 0.5 * R0_ * so3::hat(x.segment<3>(0)), x.segment<3>(3), 0.0);
     double t0 = 0.0;
-    double last_sample = -T;    // the time of the last sample observed
-    double torque_scale = 0.0;  // the largest ‖u‖ sampled so far (resolve)
+    double last_sample = -T;       // the time of the last sample observed
+    SmoothSampleRule smooth_rule;  // with `resolve`
     Vec3 u, mu;
     for (std::size_t a = 0; a <= n; ++a) {
       const double t1 = a < n ? order[a].first : T;
@@ -219,16 +219,14 @@ class ArcShooter {
           return;
         }
         const PmpState y_a = y;
-        Vec3 u_a, u_m, u_b, unused;
-        arc_control(p_, J_inv_, mode, y, u_a, unused);
+        const Vec3 u_a = u;  // the torque at ta, the sample observed last
+        Vec3 u_m, u_b, unused;
         const double mid = 0.5 * (ta + ts);
         step(ta, mid);
         arc_control(p_, J_inv_, mode, y, u_m, unused);
         step(mid, ts);
         arc_control(p_, J_inv_, mode, y, u_b, mu);
-        torque_scale = std::max({torque_scale, u_a.norm(), u_m.norm(), u_b.norm()});
-        if (depth < kMaxSampleHalvings &&
-            (u_a - 2.0 * u_m + u_b).norm() > kMaxSmoothSampleCurvature * torque_scale) {
+        if (depth < kMaxSampleHalvings && smooth_rule.curves(u_a, u_m, u_b)) {
           y = y_a;
           advance(ta, mid, depth + 1);
           advance(mid, ts, depth + 1);

@@ -225,16 +225,7 @@ detail::IpoptSettings refined_mesh_settings(const CollocationOptions& options) {
   return ipopt;
 }
 
-/// How far the optimum of a refined mesh may rise above the previous mesh's, relative to it: the interpolated
-/// start is that optimum, and refining moves the cost by about the mesh error (here at most ten times the
-/// previous mesh's, and 1e-3). A larger rise is Ipopt leaving for another, worse local optimum (a keep-out
-/// slew went from T = 4.3309 s at mesh error 1.5e-7 to 5.7371 s on the next mesh); such a solution is
-/// refused, and Ipopt restarted from the same start with settings that keep it (detail::restart_settings).
-double allowed_cost_rise(const DirectSolution& previous) {
-  return std::max(10.0 * previous.max_mesh_error, 1e-3);
-}
-
-/// The optima of one refined mesh that the cost-rise guard (allowed_cost_rise) refused, one per Ipopt
+/// The optima of one refined mesh that the cost-rise guard (detail::allowed_cost_rise) refused, one per Ipopt
 /// attempt. Where every attempt was solved and refused and their optima agree to the allowed rise, the rise
 /// is the refined mesh's own, not Ipopt leaving: on a coarse mesh a cone is met at the collocation points
 /// only, and the finer mesh, which sees more of the path, goes further round it (a keep-out slew rose by
@@ -292,7 +283,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
       };
     }
     const auto stays_near_previous = [&](const detail::NlpSolution& s) {
-      return !have_previous || s.objective <= previous.cost * (1.0 + allowed_cost_rise(previous));
+      return !have_previous || s.objective <= previous.cost * (1.0 + detail::allowed_cost_rise(previous));
     };
     // The start is an optimum: the previous mesh's, or (it = 0) that of `before` on the same mesh.
     const bool start_is_optimum = have_previous || (it == 0 && before.nlp_solved);
@@ -311,7 +302,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     restarts += run.restarts;
     if (run.stalled) ++stalled;
     if (!run.accepted && have_previous) {
-      if (std::optional<detail::NlpSolution> lowest = refused.agreed(allowed_cost_rise(previous))) {
+      if (std::optional<detail::NlpSolution> lowest = refused.agreed(detail::allowed_cost_rise(previous))) {
         run.solution = std::move(*lowest);
         run.accepted = true;
       }

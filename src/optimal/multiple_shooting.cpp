@@ -138,7 +138,7 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
   // random minimum-energy slews of 4.5 and 15 s 1.0e-6 and 1.5e-6 rad off, above the replay's threshold).
   const bool refine = !bang_ && p_.objective == Objective::minimum_time && p_.bound == TorqueBound::norm;
   const bool refine_smooth = !bang_ && p_.objective != Objective::minimum_time && observe;
-  double smooth_scale = 0.0;  // the largest ‖u‖ sampled so far on the segment
+  SmoothSampleRule smooth_rule;
   const double max_turn = observe ? kMaxSampleTurn : kMaxPieceTurn;
   for (std::size_t a = 0; a + 1 < cuts.size(); ++a) {
     const double t0 = cuts[a], t1 = cuts[a + 1];
@@ -177,10 +177,10 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
         step(ta, ts);
       }
       const Vec3 u_b = control(y);
-      if (refine_smooth) smooth_scale = std::max({smooth_scale, u_a.norm(), u_m.norm(), u_b.norm()});
-      const double curvature_limit =
-          refine_smooth ? kMaxSmoothSampleCurvature * smooth_scale : kMaxSampleCurvature * u_a.norm();
-      const bool curved = by_curvature && (u_a - 2.0 * u_m + u_b).norm() > curvature_limit;
+      const bool curved =
+          refine_smooth
+              ? smooth_rule.curves(u_a, u_m, u_b)
+              : refine && observe && (u_a - 2.0 * u_m + u_b).norm() > kMaxSampleCurvature * u_a.norm();
       const bool turned = refine && std::atan2(u_a.cross(u_b).norm(), u_a.dot(u_b)) > max_turn;
       if ((refine || refine_smooth) && depth < kMaxSampleHalvings && (curved || turned)) {
         y = y_a;

@@ -2,6 +2,7 @@
 /// @file pmp_system.hpp (internal)
 /// The canonical system of the minimum principle in (R, ω, P, p_ω) (indirect_shooting.hpp), packed in one
 /// array for the Runge–Kutta–Fehlberg integrator: y = (R column-major 9, ω 3, P column-major 9, p_ω 3, ∫L 1).
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -104,5 +105,19 @@ inline void pmp_rhs(const ReorientationProblem& p, const Mat3& J_inv, const PmpS
 /// arc of 2.9 s replayed 2.6e-7 rad off (a quarter of the threshold), 1e-5 3e-8 rad.
 inline constexpr double kMaxSmoothSampleCurvature = 1e-5;
 inline constexpr int kMaxSampleHalvings = 30;
+
+/// The halving rule of kMaxSmoothSampleCurvature along one integration, which keeps the largest ‖u‖ seen.
+class SmoothSampleRule {
+ public:
+  /// Whether the output interval with torques u_a, u_m (its midpoint) and u_b is to be halved; their norms
+  /// join the scale first.
+  bool curves(const Vec3& u_a, const Vec3& u_m, const Vec3& u_b) {
+    largest_ = std::max({largest_, u_a.norm(), u_m.norm(), u_b.norm()});
+    return (u_a - 2.0 * u_m + u_b).norm() > kMaxSmoothSampleCurvature * largest_;
+  }
+
+ private:
+  double largest_ = 0.0;
+};
 
 }  // namespace poinsot::optimal::detail
