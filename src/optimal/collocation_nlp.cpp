@@ -52,14 +52,14 @@ CollocationPhases checked(CollocationPhases phases, std::size_t nodes) {
 CollocationNlp::CollocationNlp(const ReorientationProblem& problem, std::vector<double> tau)
     : model_(problem, {}),
       nlp_(model_, CollocationMesh::from_nodes(tau, {static_cast<int>(tau.size()) - 1}),
-           model_.initial_state(), model_.final_rows(), Eigen::VectorXd::Zero(model_.final_rows().rows()),
-           single_body_time(problem, 1), single_body_objective(problem)) {}
+           model_.initial_state(), model_.final_rows(), model_.final_values(), single_body_time(problem, 1),
+           single_body_objective(problem)) {}
 
 CollocationNlp::CollocationNlp(const ReorientationProblem& problem, std::vector<double> tau,
                                CollocationPhases phases)
     : model_(problem, checked(std::move(phases), tau.size())),
       nlp_(model_, CollocationMesh::from_nodes(std::move(tau), model_.phases().intervals),
-           model_.initial_state(), model_.final_rows(), Eigen::VectorXd::Zero(model_.final_rows().rows()),
+           model_.initial_state(), model_.final_rows(), model_.final_values(),
            single_body_time(problem, static_cast<int>(model_.phases().intervals.size())),
            single_body_objective(problem)) {}
 

@@ -218,11 +218,7 @@ detail::IpoptSettings first_settings(const CollocationOptions& options) {
 /// its tolerance: there the first settings stay Ipopt's. Where it fails, the restarts are those of a first
 /// mesh (detail::restart_settings).
 detail::IpoptSettings refined_mesh_settings(const CollocationOptions& options) {
-  detail::IpoptSettings ipopt = first_settings(options);
-  ipopt.warm_start = true;
-  ipopt.mu_init = 1e-6;
-  ipopt.bound_multipliers_from_barrier = true;
-  return ipopt;
+  return detail::near_solution_settings(first_settings(options));
 }
 
 /// The optima of one refined mesh that the cost-rise guard (detail::allowed_cost_rise) refused, one per Ipopt

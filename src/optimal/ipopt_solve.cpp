@@ -219,6 +219,13 @@ IpoptSettings restart_settings(const IpoptSettings& first, int attempt) {
   return ipopt;
 }
 
+IpoptSettings near_solution_settings(IpoptSettings base) {
+  base.warm_start = true;
+  base.mu_init = 1e-6;
+  base.bound_multipliers_from_barrier = true;
+  return base;
+}
+
 RestartedSolution solve_with_restarts(const SparseNlp& nlp, const std::vector<double>& start,
                                       const IpoptSettings& first,
                                       const std::function<bool(const NlpSolution&)>& accept,

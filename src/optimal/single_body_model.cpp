@@ -152,11 +152,11 @@ Eigen::VectorXd SingleBodyModel::initial_state() const {
 }
 
 Eigen::MatrixXd SingleBodyModel::final_rows() const {
-  if (problem_.free_final_attitude) return Eigen::MatrixXd::Zero(0, kStateVars);
+  if (final_row_count() == 0) return Eigen::MatrixXd::Zero(0, kStateVars);
   // Left multiplication by a = q_f* = (w, −v): rows 1..3 of [[a0, −avᵀ], [av, a0 I + j(av)]].
   const Quat& qf = problem_.attitude_final;
   const Vec3 av = -qf.vec();
-  Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(3, kStateVars);
+  Eigen::MatrixXd rows = Eigen::MatrixXd::Zero(final_row_count(), kStateVars);
   rows.col(0) = av;
   rows.block<3, 3>(0, 1) = qf.w() * Mat3::Identity() + hat(av);
   return rows;

@@ -58,8 +58,10 @@ class SingleBodyModel final : public CollocationModel {
   const CollocationPhases& phases() const { return phases_; }
   /// y₀ = (q₀, ω₀).
   Eigen::VectorXd initial_state() const;
-  /// vec(q_f* ⊗ q) = 0 on the last q: 3 rows (none when the final attitude is free), and their values.
+  /// vec(q_f* ⊗ q) = 0 on the last q: the rows (3; none when the final attitude is free) …
   Eigen::MatrixXd final_rows() const;
+  /// … and their values, 0.
+  Eigen::VectorXd final_values() const { return Eigen::VectorXd::Zero(final_row_count()); }
   /// The rows of pointing constraint c and of wheel k's momentum bound within path().
   int pointing_offset(int c) const { return 1 + norm_rows() + c; }
   int momentum_offset(int k) const {
@@ -68,6 +70,7 @@ class SingleBodyModel final : public CollocationModel {
   bool momentum_bounded() const { return momentum_bounded_; }
 
  private:
+  int final_row_count() const { return problem_.free_final_attitude ? 0 : 3; }
   int norm_rows() const { return problem_.bound == TorqueBound::norm ? 1 : 0; }
   void build_paths();
 

@@ -97,6 +97,12 @@ inline constexpr int kIpoptAttempts = 3;
 /// did. Throws InvalidInput for another attempt number.
 IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
 
+/// `base` for a start at the solution of a nearby program (a previous mesh's optimum, on its bounds): the
+/// start kept off its bounds by 1e-9 only (IpoptSettings::warm_start), the barrier from μ = 1e-6 and the
+/// bound multipliers from μ/slack (IpoptSettings::bound_multipliers_from_barrier), so that Ipopt starts with
+/// the complementarity of a converged iterate instead of pushing the start off its active bounds.
+IpoptSettings near_solution_settings(IpoptSettings base);
+
 /// What solve_with_restarts did.
 struct RestartedSolution {
   NlpSolution solution;  ///< of the accepted attempt, else of the last one

@@ -148,11 +148,8 @@ TEST(IpoptSolve, RestartsStartTheBoundMultipliersAtIpoptsDefault) {
 TEST(IpoptSolve, AWarmStartOnAnActiveBoundStaysAtTheOptimum) {
   const std::vector<double> optimum{0.5, 0.5};
   const NlpSolution cold = solve_with_ipopt(Projection(0.5), optimum, IpoptSettings{});
-  IpoptSettings settings;
-  settings.warm_start = true;
-  settings.mu_init = 1e-6;
-  settings.bound_multipliers_from_barrier = true;
-  const NlpSolution warm = solve_with_ipopt(Projection(0.5), optimum, settings);
+  const NlpSolution warm =
+      solve_with_ipopt(Projection(0.5), optimum, near_solution_settings(IpoptSettings{}));
   for (const NlpSolution* s : {&cold, &warm}) {
     ASSERT_TRUE(s->solved) << s->status;
     EXPECT_NEAR(s->x[0], 0.5, 1e-8);
