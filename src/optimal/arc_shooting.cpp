@@ -468,8 +468,8 @@ IndirectSolution shoot_over_arcs(const ReorientationProblem& p, const ArcStructu
 }  // namespace
 
 IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
-                                 const ShootingOptions& o) {
-  const ArcStructure s = read_arc_structure(p, d);
+                                 const ShootingOptions& o, double shortest_singular_arc) {
+  const ArcStructure s = read_arc_structure(p, d, shortest_singular_arc);
   if (!s.refused.empty()) {
     IndirectSolution out;
     out.status = "not applied: " + s.refused;

@@ -52,6 +52,7 @@ namespace poinsot::optimal::detail {
 /// solve_indirect). Fills the solution's samples, its events (switch_times, switch_axes), rate_bound_arcs
 /// and singular_arcs. Single shooting only (options.shooting_nodes is not used: these horizons are short).
 IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
-                                 const ShootingOptions& options);
+                                 const ShootingOptions& options,
+                                 double shortest_singular_arc = kShortestSingularArc);
 
 }  // namespace poinsot::optimal::detail

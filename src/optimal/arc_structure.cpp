@@ -52,7 +52,7 @@ std::vector<SampleArc> boundary_arcs(const ReorientationProblem& p, const Direct
 /// The singular arcs of axis i off its boundary arcs: stretches longer than kShortestSingularArc of T of
 /// samples with |u_i| < 0.95 u_max,i, bridging gaps of up to three samples (read_arc_structure).
 std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const DirectSolution& d, int i,
-                                     const std::vector<SampleArc>& boundary) {
+                                     const std::vector<SampleArc>& boundary, double shortest) {
   auto on_boundary = [&](std::size_t j) {
     return std::any_of(boundary.begin(), boundary.end(),
                        [j](const SampleArc& a) { return j >= a.first && j <= a.last; });
@@ -75,8 +75,7 @@ std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const Direct
         break;
       }
     }
-    if (d.time[last] - d.time[j] > kShortestSingularArc * d.final_time)
-      arcs.push_back({j, last, Arc::singular});
+    if (d.time[last] - d.time[j] > shortest * d.final_time) arcs.push_back({j, last, Arc::singular});
     j = last + 1;
   }
   return arcs;
@@ -107,7 +106,8 @@ std::string order_two_reason(int i) {
 
 }  // namespace
 
-ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d) {
+ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
+                                double shortest_singular_arc) {
   ArcStructure s;
   if (p.objective != Objective::minimum_time || p.bound != TorqueBound::per_axis) {
     s.refused = "boundary and singular arcs are handled for minimum time with per-axis torque bounds only";
@@ -119,7 +119,7 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
   for (int i = 0; i < 3; ++i) {
     const auto k = static_cast<std::size_t>(i);
     boundary[k] = boundary_arcs(p, d, i);
-    singular[k] = singular_arcs(p, d, i, boundary[k]);
+    singular[k] = singular_arcs(p, d, i, boundary[k], shortest_singular_arc);
   }
   // Whether a singular arc of another axis shares a sample with `a` (axis i): C_SS of the pair may then be
   // regular though C_ii = 0.

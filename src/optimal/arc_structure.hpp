@@ -9,6 +9,7 @@
 #include "poinsot/core/types.hpp"
 #include "poinsot/optimal/direct_collocation.hpp"
 #include "poinsot/optimal/problem.hpp"
+#include "switching_structure.hpp"
 
 namespace poinsot::optimal::detail {
 
@@ -45,6 +46,7 @@ bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, d
 /// boundary arc that lasts to the final time, a singular arc of order two (about a principal axis, where u_i
 /// does not enter σ̈_i, and sharing no sample with a singular arc of another axis), or a singular arc that
 /// overlaps a boundary arc or reaches t = 0 or T.
-ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d);
+ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
+                                double shortest_singular_arc = kShortestSingularArc);
 
 }  // namespace poinsot::optimal::detail

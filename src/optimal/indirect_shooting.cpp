@@ -316,6 +316,15 @@ void fill_solution(const ReorientationProblem& p, const SwitchGuess& sw, const S
   }
 }
 
+/// Whether a bang-bang extremal's control has σ_i's sign at a sample on an axis i that is not principal.
+bool grazes_off_principal(const ReorientationProblem& p, const IndirectSolution& s) {
+  const Eigen::Vector3i violations = detail::switching_sign_violations(s);
+  const Mat3 J_inv = p.inertia_body.inverse();
+  for (int i = 0; i < 3; ++i)
+    if (violations[i] > 0 && !detail::principal_axis(J_inv, i)) return true;
+  return false;
+}
+
 }  // namespace
 
 Vec3 minimising_control(const ReorientationProblem& p, const Vec3& costate_omega) {
@@ -418,6 +427,15 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
                                : "not converged: shooting residual " + format_number(norm, 3) + " after " +
                                      std::to_string(it) + " Newton iterations";
   fill_solution(p, sw, setup.shooter(used), x, out);
+  // A σ_i that grazes 0 along a bang arc, where the extremal's control takes σ_i's sign: the direct control
+  // may be inside its bound there over a stretch too short for read_switching_structure to call it a singular
+  // arc. Shot over the singular arcs of at least kShortestGrazedSingularArc of T instead, where that
+  // converges and the axis is not principal (about a principal axis a singular arc is of order two, and the
+  // grazing is the extremal's finite stand-in for the chattering into it: optimal_control_arcs.md).
+  if (out.bang_bang && out.converged && grazes_off_principal(p, out)) {
+    IndirectSolution over_arcs = detail::solve_over_arcs(p, d, o, detail::kShortestGrazedSingularArc);
+    if (over_arcs.converged) return over_arcs;
+  }
   return out;
 }
 

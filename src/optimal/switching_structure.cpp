@@ -42,6 +42,20 @@ std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSo
   return out;
 }
 
+Eigen::Vector3i switching_sign_violations(const IndirectSolution& s) {
+  double sigma_max = 0.0;
+  for (const Vec3& sigma : s.switching_function)
+    sigma_max = std::max(sigma_max, sigma.cwiseAbs().maxCoeff());
+  Eigen::Vector3i violations = Eigen::Vector3i::Zero();
+  for (std::size_t j = 0; j < s.time.size(); ++j)
+    for (int i = 0; i < 3; ++i) {
+      const double sigma = s.switching_function[j][i];
+      if (s.torque_body[j][i] * sigma > 0.0 && std::abs(sigma) > kSwitchingSignDeadZone * sigma_max)
+        ++violations[i];
+    }
+  return violations;
+}
+
 double torque_sign_change(const DirectSolution& d, int axis, std::size_t from, std::size_t to) {
   for (std::size_t k = from; k < to; ++k) {
     const double a = d.torque_body[k][axis], b = d.torque_body[k + 1][axis];

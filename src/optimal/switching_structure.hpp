@@ -9,6 +9,7 @@
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/problem.hpp"
 
 namespace poinsot::optimal::detail {
@@ -19,6 +20,24 @@ namespace poinsot::optimal::detail {
 /// lasts 4.1 % of T; read as part of a bang arc, it gave an extremal 1.2e-4 slower than the direct optimum,
 /// which the verification rejected.
 constexpr double kShortestSingularArc = 0.02;
+
+/// The shortest stretch (fraction of T) of direct samples inside the bound that the shooting takes for a
+/// singular arc once a bang-bang extremal has failed the minimum principle there (switching_sign_violations):
+/// shorter stretches than kShortestSingularArc are mostly the collocation's passage through a switch, but a
+/// σ_i that grazes 0 along a bang arc tells that such a stretch is a short singular arc. Problem 5 of seed 3
+/// of the benchmark's nonprincipal family: u3 inside its bound from 1.1290 s to 1.1736 s (0.95 % of T); the
+/// bang-bang extremal has u3 of σ3's sign at 6 samples (σ3 within 3.2e-6 of max |σ| of 0 from 1.12 s to
+/// 1.21 s), and the extremal over a singular arc of u3 from 1.1288 s to 1.1722 s verifies, 1.2e-7 s faster.
+constexpr double kShortestGrazedSingularArc = 0.005;
+
+/// The dead zone of a bang-bang extremal's switching function, relative to max |σ_i| over the extremal: a
+/// sample with |σ_i| below it does not count as u_i having σ_i's sign. It is above the round-off of σ at a
+/// switch, where the shooting pins σ_i(t_s) = 0 (5e-14 relative on the benchmark's problems).
+constexpr double kSwitchingSignDeadZone = 1e-9;
+
+/// For each axis i, the samples of a bang-bang extremal where u_i has the sign of σ_i, |σ_i| above the dead
+/// zone: where the control does not minimise H = … + σ·u (none for an extremal whose switches are σ's zeros).
+Eigen::Vector3i switching_sign_violations(const IndirectSolution& s);
 
 /// "u<axis + 1> is inside its bound from t = <t0> s to <t1> s": the start of every message about a stretch of
 /// direct samples that may be a singular arc.

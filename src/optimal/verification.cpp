@@ -12,6 +12,7 @@
 #include "poinsot/core/error.hpp"
 #include "poinsot/core/format.hpp"
 #include "poinsot/so3/distance.hpp"
+#include "switching_structure.hpp"
 
 namespace poinsot::optimal {
 
@@ -46,13 +47,12 @@ void measure_necessary_conditions(const ReorientationProblem& p, const IndirectS
   for (const auto& q : s.costate_omega)
     p_omega_max = std::max(p_omega_max, q.norm());
   const double costate_scale = std::max({pi0.norm(), p_omega_max / s.final_time, 1e-300});
-  double sigma_max = 0.0;
   double control_scale = 0.0;
   for (std::size_t j = 0; j < s.time.size(); ++j) {
     const Vec3& sg = s.switching_function[j];
-    sigma_max = std::max(sigma_max, sg.cwiseAbs().maxCoeff());
     control_scale = std::max(control_scale, sg.norm() * minimising_control(p, s.costate_omega[j]).norm());
   }
+  if (s.bang_bang) r.switching_sign_violations = detail::switching_sign_violations(s).sum();
   for (std::size_t j = 0; j < s.time.size(); ++j) {
     r.hamiltonian_deviation =
         std::max(r.hamiltonian_deviation, std::abs(s.hamiltonian[j] - r.hamiltonian_mean));
@@ -72,9 +72,6 @@ void measure_necessary_conditions(const ReorientationProblem& p, const IndirectS
         terms.maxCoeff(&r.control_gap_axis);
       }
     }
-    if (s.bang_bang)
-      for (int i = 0; i < 3; ++i)
-        if (u[i] * sigma[i] > 0.0 && std::abs(sigma[i]) > 1e-9 * sigma_max) ++r.switching_sign_violations;
     r.costate_drift =
         std::max(r.costate_drift, (s.attitude[j] * s.costate_attitude_body[j] - pi0).norm() / costate_scale);
     r.orthogonality =
