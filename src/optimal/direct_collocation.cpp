@@ -200,6 +200,15 @@ detail::IpoptSettings first_settings(const CollocationOptions& options) {
   return ipopt;
 }
 
+/// The most iterations of the first Ipopt run on a mesh whose start is an optimum (the previous mesh's or,
+/// for a widening, the same mesh's); a run that has not converged by then goes on to the restarts
+/// (detail::restart_settings). On the 64 problems of seed 3 of the benchmark's per_axis, spin, rate and
+/// keep_out families, such a first run took at most 130 iterations where it converged; two ran to their
+/// 1000 iterations without converging (12 s on the second mesh of spin problem 3, 66 s on the fourth of
+/// per_axis problem 15, both about a singular arc of order two), and the monotone restart solved them in 22
+/// and 127.
+constexpr int kFirstIterationsFromAnOptimum = 300;
+
 /// The first Ipopt settings on a mesh of a problem with cones whose start is an optimum (the previous mesh's,
 /// interpolated, or that of the same mesh before its cones were widened, continue_widened): kept off its
 /// bounds by 1e-9 only (IpoptSettings::warm_start), the barrier started at
@@ -284,10 +293,12 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     // The start is an optimum: the previous mesh's, or (it = 0) that of `before` on the same mesh.
     const bool start_is_optimum = have_previous || (it == 0 && before.nlp_solved);
     RefusedRises refused;
+    detail::IpoptSettings settings = start_is_optimum && !problem.pointing.empty()
+                                         ? refined_mesh_settings(options)
+                                         : first_settings(options);
+    if (start_is_optimum) settings.first_attempt_max_iterations = kFirstIterationsFromAnOptimum;
     detail::RestartedSolution run = detail::solve_with_restarts(
-        *nlp, z,
-        start_is_optimum && !problem.pointing.empty() ? refined_mesh_settings(options)
-                                                      : first_settings(options),
+        *nlp, z, settings,
         [&](const detail::NlpSolution& s) {
           const bool solved = s.solved || s.acceptable, near = stays_near_previous(s);
           refused.record(s, solved && !near);

@@ -204,6 +204,8 @@ IpoptSettings restart_settings(const IpoptSettings& first, int attempt) {
         fmt::format("restart_settings: attempt {}; expected 0 to {}", attempt, kIpoptAttempts - 1));
   }
   IpoptSettings ipopt = first;
+  if (attempt == 0 && first.first_attempt_max_iterations > 0)
+    ipopt.max_iterations = std::min(first.max_iterations, first.first_attempt_max_iterations);
   if (attempt >= 1) {
     ipopt.warm_start = true;
     ipopt.bound_multipliers_from_barrier = false;

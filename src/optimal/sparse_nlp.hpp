@@ -34,6 +34,9 @@ struct IpoptSettings {
   /// Ipopt's acceptable_tol: a run stopped at this level counts as `acceptable`; 0 keeps Ipopt's default.
   double acceptable_tolerance = 0.0;
   int max_iterations = 1000;
+  /// When positive, the first attempt of solve_with_restarts stops after at most this many iterations; the
+  /// restarts keep max_iterations (restart_settings).
+  int first_attempt_max_iterations = 0;
   int print_level = 0;  ///< Ipopt's print_level (0 = silent)
   /// bound_relax_factor = 0: the bounds are met exactly instead of Ipopt's default relaxation by 1e-8.
   bool exact_bounds = false;
@@ -90,11 +93,12 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
 inline constexpr int kIpoptAttempts = 3;
 
 /// The settings of attempt `attempt` (0 to kIpoptAttempts − 1) on one NLP, from the same start, after the
-/// attempts before it failed: 0 is `first`; 1 the monotone (Fiacco–McCormick) barrier from μ = 1e-4 with the
-/// start kept off its bounds by 1e-9 only (IpoptSettings::warm_start), for a start that is near a solution
-/// where the adaptive barrier wandered off; 2 the first settings with the warm start, Ipopt's own μ_init and
-/// twice the iterations. Both restarts start the bound multipliers at 1 (Ipopt's default), whatever `first`
-/// did. Throws InvalidInput for another attempt number.
+/// attempts before it failed: 0 is `first` (its iterations capped at first_attempt_max_iterations); 1 the
+/// monotone (Fiacco–McCormick) barrier from μ = 1e-4 with the start kept off its bounds by 1e-9 only
+/// (IpoptSettings::warm_start), for a start that is near a solution where the adaptive barrier wandered off;
+/// 2 the first settings with the warm start, Ipopt's own μ_init and twice the iterations. Both restarts start
+/// the bound multipliers at 1 (Ipopt's default), whatever `first` did. Throws InvalidInput for another
+/// attempt number.
 IpoptSettings restart_settings(const IpoptSettings& first, int attempt);
 
 /// `base` for a start at the solution of a nearby program (a previous mesh's optimum, on its bounds): the

@@ -124,6 +124,29 @@ TEST(IpoptSolve, RestartSettingsAreTheMonotoneBarrierThenTwiceTheIterations) {
   EXPECT_THROW(restart_settings(first, -1), InvalidInput);
 }
 
+// A cap on the first attempt's iterations (a start at a nearby optimum that has not converged by then is
+// stalling) ends that attempt early and leaves the restarts their iterations: the projection from (3, −4)
+// needs more than one iteration, so the first attempt, capped at one, fails, and the monotone restart
+// solves it with the full limit.
+TEST(IpoptSolve, TheFirstAttemptsCapLeavesTheRestartsTheirIterations) {
+  IpoptSettings first;
+  first.max_iterations = 40;
+  first.first_attempt_max_iterations = 1;
+  EXPECT_EQ(restart_settings(first, 0).max_iterations, 1);
+  EXPECT_EQ(restart_settings(first, 1).max_iterations, 40);
+  EXPECT_EQ(restart_settings(first, 2).max_iterations, 80);
+  std::vector<int> last_iteration(kIpoptAttempts, 0);
+  const RestartedSolution r = solve_with_restarts(
+      Projection(), {3.0, -4.0}, first, [](const NlpSolution& s) { return s.solved; },
+      [&](int attempt, int iteration, double, double) {
+        last_iteration[static_cast<std::size_t>(attempt)] = iteration;
+      });
+  ASSERT_TRUE(r.accepted);
+  EXPECT_EQ(r.restarts, 1);
+  EXPECT_EQ(last_iteration[0], 1);
+  EXPECT_GT(last_iteration[1], 1);
+}
+
 // A refined mesh's first settings (a warm start with the bound multipliers from the barrier) are not carried
 // into the restarts, which are those of a cold first attempt.
 TEST(IpoptSolve, RestartsStartTheBoundMultipliersAtIpoptsDefault) {
