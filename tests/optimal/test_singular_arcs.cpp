@@ -116,7 +116,7 @@ TEST(SingularArcs, ALongSingularArcIsSampledFinelyEnoughForItsReplay) {
 // forbids; the shooting then reads the singular arcs of at least kShortestGrazedSingularArc of T and shoots
 // over them. Oracles: the verification (H constant, the control minimising H, Kelley's condition, the DOP853
 // replay) and the direct method's final time, to its mesh error (at mesh tolerance 1e-5 the direct T
-// is 5.5e-5 relative above the extremal's; 2.3e-7 at 1e-7, which takes 3.7 s).
+// is 5.5e-5 relative above the extremal's; 1.3e-7 at 1e-7, which takes 3.7 s).
 TEST(SingularArcs, AShortSingularArcWhereTheBangBangExtremalFailsIsShotOverInstead) {
   if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release (the direct phase)";
   ReorientationProblem p;
