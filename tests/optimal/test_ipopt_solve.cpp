@@ -135,7 +135,7 @@ TEST(IpoptSolve, TheFirstAttemptsCapLeavesTheRestartsTheirIterations) {
   EXPECT_EQ(restart_settings(first, 0).max_iterations, 1);
   EXPECT_EQ(restart_settings(first, 1).max_iterations, 40);
   EXPECT_EQ(restart_settings(first, 2).max_iterations, 80);
-  std::vector<int> last_iteration(kIpoptAttempts, 0);
+  std::vector<int> last_iteration(kIpoptAttempts + 1, 0);  // by run: the attempts and at most one retrace
   const RestartedSolution r = solve_with_restarts(
       Projection(), {3.0, -4.0}, first, [](const NlpSolution& s) { return s.solved; },
       [&](int attempt, int iteration, double, double) {
