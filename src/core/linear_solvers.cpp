@@ -58,6 +58,23 @@ Eigen::VectorXd SparseLu::solve(const Eigen::VectorXd& b) const {
   return impl_->lu.solve(b);
 }
 
+struct ThinSvd::Impl {
+  // `mutable`: the threshold is a parameter of each solve, not a state of the decomposition.
+  mutable Eigen::BDCSVD<Eigen::MatrixXd> svd;
+};
+
+ThinSvd::ThinSvd(const Eigen::MatrixXd& A)
+    : impl_(std::make_unique<Impl>(
+          Impl{Eigen::BDCSVD<Eigen::MatrixXd>(A, Eigen::ComputeThinU | Eigen::ComputeThinV)})) {}
+ThinSvd::~ThinSvd() = default;
+ThinSvd::ThinSvd(ThinSvd&&) noexcept = default;
+ThinSvd& ThinSvd::operator=(ThinSvd&&) noexcept = default;
+
+Eigen::VectorXd ThinSvd::solve(const Eigen::VectorXd& b, double relative_threshold) const {
+  impl_->svd.setThreshold(relative_threshold);
+  return impl_->svd.solve(b);
+}
+
 RightSingularVectors right_singular_vectors(const Eigen::MatrixXd& A) {
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
   return {svd.singularValues(), svd.matrixV()};

@@ -8,7 +8,6 @@
 #pragma GCC diagnostic ignored "-Wuninitialized"
 
 #include <Eigen/Dense>
-#include <Eigen/SVD>
 #include <Eigen/SparseCore>
 #include <algorithm>
 #include <boost/numeric/odeint.hpp>
@@ -364,16 +363,14 @@ NewtonStep newton_step(const Shooter& shooter, Eigen::VectorXd& x, Eigen::Vector
   // range. 1e-8 leaves out what that error cannot resolve; the smaller levels keep the directions that are
   // weakly determined but computed well enough (on the tumbling racket a single level of 1e-12 stalls at
   // a residual of 7e-6 where 1e-8 goes on to 1e-8).
-  Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(jac), Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const ThinSvd svd{Eigen::MatrixXd(jac)};
   Eigen::VectorXd x_svd = x, F_svd = F;
   double norm_svd = lu_ok ? norm_lu : norm;
   bool svd_ok = false;
   for (const double threshold : {1e-8, 1e-10, 1e-12}) {
-    svd.setThreshold(threshold);
     Eigen::VectorXd x_t = x, F_t = F;
     double norm_t = norm;
-    if (shooting_line_search(shooter, Eigen::VectorXd(svd.solve(-F)), x_t, F_t, norm_t) &&
-        norm_t < norm_svd) {
+    if (shooting_line_search(shooter, svd.solve(-F, threshold), x_t, F_t, norm_t) && norm_t < norm_svd) {
       x_svd = x_t;
       F_svd = F_t;
       norm_svd = norm_t;

@@ -66,6 +66,27 @@ class SparseLu {
   std::unique_ptr<Impl> impl_;
 };
 
+/// A = U Σ Vᵀ, the thin singular value decomposition of a dense A by Eigen's divide-and-conquer SVD
+/// (`BDCSVD<MatrixXd>(A, ComputeThinU | ComputeThinV)`), kept for least-squares solves that leave out the
+/// small singular values.
+class ThinSvd {
+ public:
+  explicit ThinSvd(const Eigen::MatrixXd& A);
+  ~ThinSvd();
+  ThinSvd(ThinSvd&&) noexcept;
+  ThinSvd& operator=(ThinSvd&&) noexcept;
+  ThinSvd(const ThinSvd&) = delete;
+  ThinSvd& operator=(const ThinSvd&) = delete;
+
+  /// The minimum-norm least-squares solution x = V Σ⁺ Uᵀ b, where Σ⁺ inverts only the singular values above
+  /// `relative_threshold` × the largest and sets the others to zero (Eigen's `setThreshold` then `solve`).
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b, double relative_threshold) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
 /// The singular values of A, non-increasing, and the full n×n matrix V of its right singular vectors
 /// (A = U Σ Vᵀ), by Eigen's two-sided Jacobi SVD (`JacobiSVD<MatrixXd>(A, ComputeFullV)`; QR-preconditioned,
 /// accurate to round-off relative to the largest singular value).
