@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include <Eigen/Eigenvalues>
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
 #include "../../src/optimal/multibody_minimal_model.hpp"
@@ -49,7 +49,9 @@ TEST(MultibodyFloatingBase, MassMatrixIsTheKineticEnergys) {
   model.equations_of_motion(y, Eigen::VectorXd::Zero(1), M, bias);
   ASSERT_EQ(M.rows(), 4);
   EXPECT_LT((M - M.transpose()).norm(), 1e-13 * M.norm());
-  EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(M).eigenvalues().minCoeff(), 0.1);
+  // M − 0.1 I has a Cholesky factor exactly when M's least eigenvalue is above 0.1.
+  const Eigen::MatrixXd shifted = M - 0.1 * Eigen::MatrixXd::Identity(M.rows(), M.cols());
+  EXPECT_EQ(Eigen::LLT<Eigen::MatrixXd>(shifted).info(), Eigen::Success);
   const Eigen::VectorXd nu = y.tail(4);
   const multibody::State s = model.state_of(y.data(), 0.0);
   EXPECT_NEAR(0.5 * nu.dot(M * nu), multibody::kinetic_energy(p.system, s), 1e-13);
