@@ -465,16 +465,9 @@ IndirectSolution shoot_over_arcs(const ReorientationProblem& p, const ArcStructu
   return out;
 }
 
-}  // namespace
-
-IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
-                                 const ShootingOptions& o, double shortest_singular_arc) {
-  const ArcStructure s = read_arc_structure(p, d, shortest_singular_arc);
-  if (!s.refused.empty()) {
-    IndirectSolution out;
-    out.status = "not applied: " + s.refused;
-    return out;
-  }
+/// Shoots over the arcs of `s` from the direct solution's costates and final time.
+IndirectSolution shoot_from_direct(const ReorientationProblem& p, const DirectSolution& d,
+                                   const ShootingOptions& o, const ArcStructure& s) {
   // Initial costates as solve_indirect: p_θ(0) = R_0ᵀ mean_k(R_k p_θ,k), p_ω(0) extrapolated.
   Vec3 pi_space = Vec3::Zero();
   for (std::size_t k = 0; k < d.costate_time.size(); ++k) {
@@ -492,6 +485,26 @@ IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolu
   for (std::size_t k = 0; k < s.events.size(); ++k)
     x[7 + static_cast<int>(k)] = s.events[k].time;
   return shoot_over_arcs(p, s, o, x);
+}
+
+}  // namespace
+
+IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
+                                 const ShootingOptions& o, double shortest_singular_arc) {
+  const ArcStructure s = read_arc_structure(p, d, shortest_singular_arc);
+  if (s.refused.empty()) return shoot_from_direct(p, d, o, s);
+  IndirectSolution out;
+  out.status = "not applied: " + s.refused;
+  if (s.singular_at_start < 0) return out;
+  // The direct solution starts on a singular arc: shot as a short bang arc of either sign before its entry.
+  for (const double sign : {1.0, -1.0}) {
+    const ArcStructure entered = read_arc_structure(p, d, shortest_singular_arc, sign);
+    if (!entered.refused.empty()) break;
+    IndirectSolution shot = shoot_from_direct(p, d, o, entered);
+    if (shot.converged) return shot;
+  }
+  out.status += " (shot as a short bang arc of either sign before its entry: not converged)";
+  return out;
 }
 
 }  // namespace poinsot::optimal::detail

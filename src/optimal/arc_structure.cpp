@@ -107,7 +107,7 @@ std::string order_two_reason(int i) {
 }  // namespace
 
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
-                                double shortest_singular_arc) {
+                                double shortest_singular_arc, double start_bang_sign) {
   ArcStructure s;
   if (p.objective != Objective::minimum_time || p.bound != TorqueBound::per_axis) {
     s.refused = "boundary and singular arcs are handled for minimum time with per-axis torque bounds only";
@@ -141,12 +141,15 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
         s.refused = inside + "about a principal axis: " + order_two_reason(i);
         return s;
       }
-      if (a.first == 0 || a.last + 1 == N) {
+      const bool at_start = a.first == 0 && a.last + 1 < N;
+      if (at_start) s.singular_at_start = i;
+      if (a.last + 1 == N || (at_start && start_bang_sign == 0.0)) {
         s.refused =
             inside + "a singular arc at the " + (a.first == 0 ? "start" : "end") + " of the manoeuvre";
         return s;
       }
       arcs.push_back(a);
+      if (at_start) arcs.back().first = 1;
     }
     std::sort(arcs.begin(), arcs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const SampleArc& a : arcs)
@@ -196,6 +199,7 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
       s.refused = "the rate bound of axis " + std::to_string(i + 1) + " is active up to the final time";
       return s;
     }
+    if (s.singular_at_start == i) s.initial_sign[i] = start_bang_sign;
   }
   for (const auto& [a, b] : singular_spans)
     for (const auto& [c, e] : boundary_spans)

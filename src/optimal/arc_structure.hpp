@@ -31,6 +31,11 @@ struct ArcStructure {
   Vec3 initial_sign = Vec3::Ones();
   std::vector<ArcEvent> events;  ///< ascending in time
   std::string refused;           ///< non-empty: why the structure is not one this solver handles
+  /// The axis of a singular arc that the direct solution starts on (−1: none). An extremal cannot start on
+  /// a singular arc (σ_i(0) = σ̇_i(0) = 0 are two conditions for the one unknown of its exit time), so the
+  /// direct solution's stands for a bang arc too short for its mesh before the entry: read_arc_structure
+  /// with `start_bang_sign` ±1 reads it so.
+  int singular_at_start = -1;
 };
 
 /// The largest |ω_i| of the direct solution, and whether it reaches the bound (to 1e-4 relative).
@@ -45,8 +50,10 @@ bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, d
 /// the next saturated sample's). `refused` names a problem that is not minimum time with per-axis bounds, a
 /// boundary arc that lasts to the final time, a singular arc of order two (about a principal axis, where u_i
 /// does not enter σ̈_i, and sharing no sample with a singular arc of another axis), or a singular arc that
-/// overlaps a boundary arc or reaches t = 0 or T.
+/// overlaps a boundary arc or reaches t = 0 or T. With `start_bang_sign` ±1, a singular arc that reaches
+/// t = 0 is read as entered at the direct solution's second sample, after a bang arc of u_i with that sign.
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
-                                double shortest_singular_arc = kShortestSingularArc);
+                                double shortest_singular_arc = kShortestSingularArc,
+                                double start_bang_sign = 0.0);
 
 }  // namespace poinsot::optimal::detail

@@ -141,5 +141,36 @@ TEST(SingularArcs, AShortSingularArcWhereTheBangBangExtremalFailsIsShotOverInste
   EXPECT_EQ(v.switching_sign_violations, 0);
 }
 
+// A direct solution that starts on a singular arc (problem 7 of the nonprincipal family, seed 4: u3 inside
+// its bound from t = 0 to 1.245 s, σ3 ≈ 0 there). No extremal starts on one: σ3(0) = σ̇3(0) = 0 would be two
+// conditions for the one unknown of its exit time. The shooting reads it as a bang arc of u3 too short for
+// the mesh, then the entry, and converges with the entry at about 1.1 ms. Oracles: the verification (H
+// constant, the control minimising H on the short bang arc too, Kelley's condition, the DOP853 replay) and
+// the direct method's final time, to its mesh error at tolerance 1e-5.
+TEST(SingularArcs, ASingularArcFromTheStartIsEnteredAfterAShortBangArc) {
+  if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1.4 s in release (the direct phase)";
+  ReorientationProblem p;
+  p.inertia_body << 4.1070678545966155, -0.3233920515888571, -1.0292724106673279,  //
+      -0.3233920515888571, 3.946972091130114, -1.7467021369242648,                 //
+      -1.0292724106673279, -1.7467021369242648, 3.2840103594322994;
+  p.torque_max = Vec3(1.4011725094924592, 0.9970113243399173, 1.710428615219346);
+  p.attitude_final = Quat(Eigen::AngleAxisd(
+      2.0293415593799256, Vec3(0.7503949589655889, 0.566830887792189, -0.34001492644257697).normalized()));
+  DirectSolution d;
+  IndirectSolution s;
+  ASSERT_NO_FATAL_FAILURE(shoot_over_one_singular_arc(p, d, s));
+  const SingularArc& arc = s.singular_arcs.front();
+  EXPECT_EQ(arc.axis, 2);
+  EXPECT_GT(arc.t_entry, 0.0);
+  EXPECT_LT(arc.t_entry, 0.01);
+  EXPECT_NEAR(arc.t_exit, 1.245, 0.005);
+  EXPECT_DOUBLE_EQ(std::abs(s.torque_body.front()[2]), p.torque_max[2]);
+  EXPECT_NEAR(s.final_time / d.final_time, 1.0, 1e-4);
+  const VerificationReport v = verify(p, d, s);
+  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+  EXPECT_GT(v.kelley_condition_min, 0.0);
+  EXPECT_EQ(v.switching_sign_violations, 0);
+}
+
 }  // namespace
 }  // namespace poinsot::optimal
