@@ -499,7 +499,10 @@ IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolu
   // The direct solution starts on a singular arc: shot as a short bang arc of either sign before its entry.
   for (const double sign : {1.0, -1.0}) {
     const ArcStructure entered = read_arc_structure(p, d, shortest_singular_arc, sign);
-    if (!entered.refused.empty()) break;
+    if (!entered.refused.empty()) {  // a structure past the start that the shooting does not handle
+      out.status = "not applied: " + entered.refused;
+      return out;
+    }
     IndirectSolution shot = shoot_from_direct(p, d, o, entered);
     if (shot.converged) return shot;
   }
