@@ -31,6 +31,7 @@ using detail::read_reversals;
 using detail::read_switching_structure;
 using detail::Shooter;
 using detail::SwitchGuess;
+using detail::without_vanishing_end_arcs;
 
 /// The direct solution's state at t (linear in ω, normalised linear in q; t clamped to the samples).
 void direct_state_at(const DirectSolution& d, double t, Mat3& R, Vec3& omega) {
@@ -325,6 +326,54 @@ bool grazes_off_principal(const ReorientationProblem& p, const IndirectSolution&
   return false;
 }
 
+/// Shoots from the direct solution over the switches (bang-bang) or reversals (norm bound) of `sw`: Newton,
+/// with re-seeding for multiple shooting and a polish with a tighter integration near the tolerance; the
+/// solution's status, samples and arcs from the best iterate.
+IndirectSolution shoot_switching_structure(const ReorientationProblem& p, const DirectSolution& d,
+                                           const ShootingOptions& o, const SwitchGuess& sw, bool bang_bang) {
+  IndirectSolution out;
+  out.bang_bang = bang_bang;
+  ShootingSetup setup(p, sw, out.bang_bang);
+  Eigen::VectorXd x, F;
+  double norm = seed_from_direct(d, o, setup, x, F);
+  if (!std::isfinite(norm)) {
+    out.status = "not converged: the direct solution's costates give no admissible initial shot";
+    return out;
+  }
+  const bool multiple = o.shooting_nodes > 1;
+  bool stalled = false;
+  ShootingOptions first = o;
+  if (multiple) first.max_iterations = std::min(o.max_iterations, kNewtonBeforeReseeding);
+  int it = newton(setup.shooter(o), first, x, F, norm, stalled);
+  if (multiple && norm > o.tolerance) it += reseed_until_converged(o, setup, x, F, norm, it, stalled);
+  // The residual's floor is the integration's error: when Newton stalls just above the tolerance, polish
+  // once with a tenfold tighter integration (e.g. the reversal of a sphere's slew: 3.5e-12 at 1e-13).
+  ShootingOptions used = o;
+  if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
+    ShootingOptions tight = o;
+    tight.integration_tolerance = o.integration_tolerance / 10.0;
+    const Shooter polish = setup.shooter(tight);
+    if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
+      F = Fp;
+      norm = Fp.cwiseAbs().maxCoeff();
+      it += newton(polish, tight, x, F, norm, stalled);
+      used = tight;
+    }
+  }
+  // Still stalled within 10× the tolerance with the tighter integration: the residual's round-off floor.
+  const bool floor = norm > o.tolerance && stalled && used.integration_tolerance < o.integration_tolerance &&
+                     norm <= 10.0 * o.tolerance;
+  out.iterations = it;
+  out.residual = norm;
+  out.converged = norm <= o.tolerance || floor;
+  out.status = floor           ? "converged (residual " + format_number(norm, 3) + " at its round-off floor)"
+               : out.converged ? "converged"
+                               : "not converged: shooting residual " + format_number(norm, 3) + " after " +
+                                     std::to_string(it) + " Newton iterations";
+  fill_solution(p, sw, setup.shooter(used), x, out);
+  return out;
+}
+
 }  // namespace
 
 Vec3 minimising_control(const ReorientationProblem& p, const Vec3& costate_omega) {
@@ -389,44 +438,13 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // A torque inside its bound over a stretch: singular arcs (arc_shooting.hpp).
   if (!sw.singular.empty()) return detail::solve_over_arcs(p, d, o);
 
-  ShootingSetup setup(p, sw, out.bang_bang);
-  Eigen::VectorXd x, F;
-  double norm = seed_from_direct(d, o, setup, x, F);
-  if (!std::isfinite(norm)) {
-    out.status = "not converged: the direct solution's costates give no admissible initial shot";
-    return out;
+  out = shoot_switching_structure(p, d, o, sw, out.bang_bang);
+  // A first or last bang arc that the extremal does not have holds Newton at a switch near 0 or T: shot
+  // again without it (switching_structure.hpp, kVanishingEndArc).
+  if (SwitchGuess trimmed; out.bang_bang && !out.converged && without_vanishing_end_arcs(sw, out, trimmed)) {
+    IndirectSolution retry = shoot_switching_structure(p, d, o, trimmed, true);
+    if (retry.converged) out = std::move(retry);
   }
-  const bool multiple = o.shooting_nodes > 1;
-  bool stalled = false;
-  ShootingOptions first = o;
-  if (multiple) first.max_iterations = std::min(o.max_iterations, kNewtonBeforeReseeding);
-  int it = newton(setup.shooter(o), first, x, F, norm, stalled);
-  if (multiple && norm > o.tolerance) it += reseed_until_converged(o, setup, x, F, norm, it, stalled);
-  // The residual's floor is the integration's error: when Newton stalls just above the tolerance, polish
-  // once with a tenfold tighter integration (e.g. the reversal of a sphere's slew: 3.5e-12 at 1e-13).
-  ShootingOptions used = o;
-  if (norm > o.tolerance && norm < 100.0 * o.tolerance) {
-    ShootingOptions tight = o;
-    tight.integration_tolerance = o.integration_tolerance / 10.0;
-    const Shooter polish = setup.shooter(tight);
-    if (Eigen::VectorXd Fp; polish.residual(x, Fp)) {
-      F = Fp;
-      norm = Fp.cwiseAbs().maxCoeff();
-      it += newton(polish, tight, x, F, norm, stalled);
-      used = tight;
-    }
-  }
-  // Still stalled within 10× the tolerance with the tighter integration: the residual's round-off floor.
-  const bool floor = norm > o.tolerance && stalled && used.integration_tolerance < o.integration_tolerance &&
-                     norm <= 10.0 * o.tolerance;
-  out.iterations = it;
-  out.residual = norm;
-  out.converged = norm <= o.tolerance || floor;
-  out.status = floor           ? "converged (residual " + format_number(norm, 3) + " at its round-off floor)"
-               : out.converged ? "converged"
-                               : "not converged: shooting residual " + format_number(norm, 3) + " after " +
-                                     std::to_string(it) + " Newton iterations";
-  fill_solution(p, sw, setup.shooter(used), x, out);
   // A σ_i that grazes 0 along a bang arc, where the extremal's control takes σ_i's sign: the direct control
   // may be inside its bound there over a stretch too short for read_switching_structure to call it a singular
   // arc. Shot over the singular arcs of at least kShortestGrazedSingularArc of T instead, where that

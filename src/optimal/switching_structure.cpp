@@ -1,5 +1,6 @@
 #include "switching_structure.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -62,6 +63,38 @@ double torque_sign_change(const DirectSolution& d, int axis, std::size_t from, s
     if ((a > 0) != (b > 0)) return d.time[k] + (d.time[k + 1] - d.time[k]) * a / (a - b);
   }
   return d.time[from];
+}
+
+bool without_vanishing_end_arcs(const SwitchGuess& sw, const IndirectSolution& shot, SwitchGuess& out) {
+  const double T = shot.final_time;
+  if (!(T > 0.0) || shot.switch_times.size() != sw.times.size()) return false;
+  Eigen::Vector3i at_start = Eigen::Vector3i::Zero(), at_end = Eigen::Vector3i::Zero();
+  for (std::size_t k = 0; k < shot.switch_times.size(); ++k) {
+    const double t = shot.switch_times[k];
+    const auto i = static_cast<Eigen::Index>(shot.switch_axes[k]);
+    if (i < 0) return false;
+    if (t < kVanishingEndArc * T) ++at_start[i];
+    if (t > (1.0 - kVanishingEndArc) * T) ++at_end[i];
+  }
+  if (at_start.sum() + at_end.sum() == 0) return false;
+  SwitchGuess kept = sw;
+  kept.times.clear();
+  kept.axes.clear();
+  for (int i = 0; i < 3; ++i) {
+    std::vector<double> times;  // the switches of axis i in sw, ascending
+    for (std::size_t k = 0; k < sw.times.size(); ++k)
+      if (sw.axes[k] == i) times.push_back(sw.times[k]);
+    std::sort(times.begin(), times.end());
+    const auto first = static_cast<std::size_t>(at_start[i]),
+               end = times.size() - static_cast<std::size_t>(at_end[i]);
+    for (std::size_t k = first; k < end; ++k) {
+      kept.times.push_back(times[k]);
+      kept.axes.push_back(i);
+    }
+    if (at_start[i] % 2 == 1) kept.initial_sign[i] = -kept.initial_sign[i];
+  }
+  out = kept;
+  return true;
 }
 
 SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d) {

@@ -61,6 +61,21 @@ std::vector<double> read_reversals(const ReorientationProblem& p, const DirectSo
 /// zero of its piecewise-linear interpolant; the time of `from` when u_i keeps its sign.
 double torque_sign_change(const DirectSolution& d, int axis, std::size_t from, std::size_t to);
 
+/// The shortest first or last bang arc (fraction of T) of a shot that did not converge, below which
+/// without_vanishing_end_arcs takes it for an arc the extremal does not have. The shooting keeps every switch
+/// inside (0, T), so Newton, driving such an arc's switch towards t = 0 (or T), stalls against that edge.
+/// Problem 15 of seed 5 of the benchmark's nonprincipal family: u1's first arc shrinks with every mesh of the
+/// direct method (0.060 s on the first, 0.0076 s on the tenth; T = 1.087 s), Newton takes its switch to
+/// 1.1e-9 s and stalls at a residual of 9.5e-3; without that arc the shooting converges to an extremal that
+/// verifies.
+constexpr double kVanishingEndArc = 1e-4;
+
+/// `sw` without the switches that the unconverged bang-bang shot `shot` (shot from `sw`) left closer than
+/// kVanishingEndArc of its final time to t = 0 or T: for each axis, as many of its earliest (latest)
+/// switches in `sw`; an axis whose first switch is dropped starts with the opposite sign. False (and `out`
+/// unchanged) when there is none.
+bool without_vanishing_end_arcs(const SwitchGuess& sw, const IndirectSolution& shot, SwitchGuess& out);
+
 /// Per-axis bounds: the sign changes of each u_i between saturated samples (|u_i| > u_max,i / 2), each at the
 /// zero of the piecewise-linear interpolant; `singular` names an axis whose torque stays inside 95 % of its
 /// bound for more than kShortestSingularArc of T.

@@ -8,6 +8,7 @@
 
 #include "optimal_test_problems.hpp"
 #include "poinsot/optimal/interpretation.hpp"
+#include "poinsot/optimal/phased_collocation.hpp"
 #include "poinsot/optimal/verification.hpp"
 #include "poinsot_test.hpp"
 
@@ -193,6 +194,43 @@ TEST(IndirectShooting, RefusesActiveRateBoundsUnderANormBound) {
   EXPECT_FALSE(s.converged);
   EXPECT_NE(s.status.find("rate bound is active"), std::string::npos) << s.status;
   EXPECT_FALSE(verify(p, d, s).passed);
+}
+
+// A first bang arc that the extremal does not have (problem 15 of the nonprincipal family, seed 5): the
+// direct solution starts with u1 = +ū1 for one interval, an arc that shrinks with every mesh, then switches.
+// Newton drives that switch to t → 0, where the shooting's domain (0, T) holds it, and stalls at a residual
+// of about 1e-2; shot again without that arc, u1 = −ū1 from t = 0, it converges. Oracles: the verification
+// (H constant, the control minimising H at every sample, the DOP853 replay) and the final time of the
+// phase-per-arc collocation over the direct switches (which shrinks that arc to nothing, and whose T meets
+// the extremal's to its discretisation error, 32 intervals an arc). The direct T itself is 2.5e-4 above: its
+// first interval spends time on the arc the extremal does not have.
+TEST(IndirectShooting, AFirstArcThatTheExtremalDoesNotHaveIsDropped) {
+  if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release (the direct phase)";
+  ReorientationProblem p;
+  p.inertia_body << 0.17488547918710465, -0.004325312179299989, 0.05018057823940357,  //
+      -0.004325312179299989, 0.46531399808889157, 0.013490986739807177,               //
+      0.05018057823940357, 0.013490986739807177, 0.38850519548750573;
+  p.torque_max = Vec3(1.3623089002288467, 1.0925135270000585, 1.795612496620818);
+  p.attitude_final = Quat(Eigen::AngleAxisd(
+      1.1081211948686986, Vec3(-0.4661448318062666, 0.8774752828421832, 0.11289873241687774).normalized()));
+  CollocationOptions seed;
+  seed.mesh_tolerance = 1e-5;
+  const DirectSolution d = solve_direct(p, seed);
+  ASSERT_TRUE(d.converged) << d.status;
+  ASSERT_GT(d.torque_body.front()[0], 0.0);  // the arc the extremal does not have
+  const IndirectSolution s = solve_indirect(p, d);
+  ASSERT_TRUE(s.converged) << s.status;
+  EXPECT_EQ(s.torque_body.front()[0], -p.torque_max[0]);
+  for (std::size_t k = 0; k < s.switch_times.size(); ++k)
+    EXPECT_GT(s.switch_times[k], 0.2) << "switch of u" << s.switch_axes[k] + 1;
+  PhasedOptions fine;
+  fine.intervals_per_arc = 32;  // Hermite–Simpson's O(h⁴): 2.2e-8 relative with 8 intervals per arc
+  const PhasedSolution phased = solve_direct_phased(p, d, read_switching_structure(p, d), fine);
+  ASSERT_TRUE(phased.converged) << phased.status;
+  EXPECT_NEAR(s.final_time / phased.solution.final_time, 1.0, 1e-9);
+  const VerificationReport v = verify(p, d, s);
+  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+  EXPECT_EQ(v.switching_sign_violations, 0);
 }
 
 }  // namespace
