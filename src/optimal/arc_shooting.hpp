@@ -51,9 +51,11 @@ namespace poinsot::optimal::detail {
 /// once with a tenfold tighter integration, and accepted at a round-off floor within 10×, as
 /// solve_indirect). Fills the solution's samples, its events (switch_times, switch_axes), rate_bound_arcs
 /// and singular_arcs. Single shooting only (options.shooting_nodes is not used: these horizons are short).
-/// A direct solution that starts on a singular arc is shot as a short bang arc before its entry, of sign +1,
-/// then −1 (read_arc_structure's start_bang_sign); the first that converges is returned. A structure
-/// read_arc_structure refuses is returned unsolved, its status "not applied: <reason>".
+/// A direct solution that starts (ends) on a singular arc is shot as a short bang arc before its entry (after
+/// its exit), of sign +1, then −1 (read_arc_structure's start_bang_sign and end_bang_sign); the first that
+/// converges is returned. A converged extremal whose singular torque leaves its bound is shot again over the
+/// structure with_bounded_singular_torque amends. A structure read_arc_structure refuses is returned
+/// unsolved, its status "not applied: <reason>".
 IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
                                  const ShootingOptions& options,
                                  double shortest_singular_arc = kShortestSingularArc);

@@ -107,7 +107,7 @@ std::string order_two_reason(int i) {
 }  // namespace
 
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
-                                double shortest_singular_arc, double start_bang_sign) {
+                                double shortest_singular_arc, double start_bang_sign, double end_bang_sign) {
   ArcStructure s;
   if (p.objective != Objective::minimum_time || p.bound != TorqueBound::per_axis) {
     s.refused = "boundary and singular arcs are handled for minimum time with per-axis torque bounds only";
@@ -141,15 +141,20 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
         s.refused = inside + "about a principal axis: " + order_two_reason(i);
         return s;
       }
-      const bool at_start = a.first == 0 && a.last + 1 < N;
+      const bool at_start = a.first == 0, at_end = a.last + 1 == N;
+      if (at_start && at_end) {
+        s.refused = inside + "a singular arc over the whole manoeuvre";
+        return s;
+      }
       if (at_start) s.singular_at_start = i;
-      if (a.last + 1 == N || (at_start && start_bang_sign == 0.0)) {
-        s.refused =
-            inside + "a singular arc at the " + (a.first == 0 ? "start" : "end") + " of the manoeuvre";
+      if (at_end) s.singular_at_end = i;
+      if ((at_start && start_bang_sign == 0.0) || (at_end && end_bang_sign == 0.0)) {
+        s.refused = inside + "a singular arc at the " + (at_start ? "start" : "end") + " of the manoeuvre";
         return s;
       }
       arcs.push_back(a);
       if (at_start) arcs.back().first = 1;
+      if (at_end) arcs.back().last = N - 2;
     }
     std::sort(arcs.begin(), arcs.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
     for (const SampleArc& a : arcs)
@@ -158,6 +163,20 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
     auto on_arc = [&](std::size_t j) {
       return std::any_of(arcs.begin(), arcs.end(),
                          [j](const SampleArc& a) { return j >= a.first && j <= a.last; });
+    };
+    // The entry and exit of arc `a`, with the sign of u_i after it.
+    auto add_arc = [&](const SampleArc& a, double sign_after) {
+      ArcEvent enter, leave;
+      enter.kind = Kind::entry;
+      leave.kind = Kind::exit;
+      enter.arc = leave.arc = a.arc;
+      enter.axis = leave.axis = i;
+      enter.side = leave.side = a.arc == Arc::singular ? 0.0 : d.omega_body[a.first][i] > 0 ? 1.0 : -1.0;
+      enter.time = d.time[a.first];
+      leave.time = d.time[a.last];
+      leave.sign_after = sign_after;
+      events.push_back(enter);
+      events.push_back(leave);
     };
     // Saturated samples off the arcs: the signs; an arc between two of them takes the place of a switch.
     const double umax = p.torque_max[i];
@@ -171,18 +190,7 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
       // Arcs passed since the last saturated sample.
       bool crossed_arc = false;
       while (next_arc < arcs.size() && arcs[next_arc].last < j) {
-        const SampleArc a = arcs[next_arc++];
-        ArcEvent enter, leave;
-        enter.kind = Kind::entry;
-        leave.kind = Kind::exit;
-        enter.arc = leave.arc = a.arc;
-        enter.axis = leave.axis = i;
-        enter.side = leave.side = a.arc == Arc::singular ? 0.0 : d.omega_body[a.first][i] > 0 ? 1.0 : -1.0;
-        enter.time = d.time[a.first];
-        leave.time = d.time[a.last];
-        leave.sign_after = sign;
-        events.push_back(enter);
-        events.push_back(leave);
+        add_arc(arcs[next_arc++], sign);
         crossed_arc = true;
       }
       if (last < 0) {
@@ -194,6 +202,18 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
         events.push_back(e);
       }
       last = static_cast<int>(j);
+    }
+    // A singular arc read as left at the last sample but one, before a bang arc of sign end_bang_sign (the
+    // last sample, where saturated, has passed it already: its exit takes that sign).
+    if (s.singular_at_end == i) {
+      if (next_arc + 1 == arcs.size() && arcs[next_arc].last + 2 == N) {
+        add_arc(arcs[next_arc++], end_bang_sign);
+      } else {
+        const auto last_exit = std::find_if(events.rbegin(), events.rend(), [i](const ArcEvent& e) {
+          return e.axis == i && e.kind == Kind::exit;
+        });
+        if (last_exit != events.rend()) last_exit->sign_after = end_bang_sign;
+      }
     }
     if (next_arc < arcs.size()) {
       s.refused = "the rate bound of axis " + std::to_string(i + 1) + " is active up to the final time";
@@ -214,6 +234,108 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
   pair_arc_ends(events);
   s.events = events;
   return s;
+}
+
+bool with_bounded_singular_torque(const ReorientationProblem& p, const ArcStructure& s,
+                                  const std::vector<double>& times, const IndirectSolution& shot,
+                                  ArcStructure& out) {
+  std::vector<ArcEvent> events = s.events;
+  for (std::size_t k = 0; k < events.size(); ++k)
+    events[k].time = times[k];
+  // The sign of u_i before each event, from the initial signs (events ascending in time).
+  std::vector<std::size_t> order(events.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    order[k] = k;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return events[a].time < events[b].time; });
+  std::vector<double> sign_before(events.size());
+  Vec3 sign = s.initial_sign;
+  for (const std::size_t k : order) {
+    const ArcEvent& e = events[k];
+    sign_before[k] = sign[e.axis];
+    if (e.kind == Kind::sign_change) sign[e.axis] = -sign[e.axis];
+    if (e.kind == Kind::exit) sign[e.axis] = e.sign_after;
+  }
+  std::vector<ArcEvent> added;
+  bool mended = false;
+  const std::size_t n = events.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    if (events[k].kind != Kind::entry || events[k].arc != Arc::singular || events[k].pair < 0) continue;
+    const auto exit_index = static_cast<std::size_t>(events[k].pair);
+    const int i = events[k].axis;
+    const double t_entry = events[k].time, t_exit = events[exit_index].time;
+    const double ubar = p.torque_max[i];
+    // The samples of the arc, with the excess |ũ_i|/ū_i − 1.
+    std::vector<std::size_t> on_arc;
+    for (std::size_t j = 0; j < shot.time.size(); ++j)
+      if (shot.time[j] >= t_entry && shot.time[j] <= t_exit) on_arc.push_back(j);
+    auto excess = [&](std::size_t j) { return std::abs(shot.torque_body[j][i]) / ubar - 1.0; };
+    auto outside = [&](std::size_t j) { return excess(j) > kSingularTorqueExcess; };
+    // The time between samples j and j+1 (one outside, one not) where |ũ_i| crosses ū_i.
+    auto crossing = [&](std::size_t j) {
+      const double a = excess(j), b = excess(j + 1);
+      return shot.time[j] + (shot.time[j + 1] - shot.time[j]) * a / (a - b);
+    };
+    for (std::size_t q = 0; q < on_arc.size();) {
+      if (!outside(on_arc[q])) {
+        ++q;
+        continue;
+      }
+      std::size_t r = q;
+      while (r + 1 < on_arc.size() && outside(on_arc[r + 1]))
+        ++r;
+      // The samples at t_entry (t_exit) before (after) the arc's own are the bang arc's next to it.
+      const bool from_entry = q == 0 || shot.time[on_arc[q - 1]] <= t_entry;
+      const bool to_exit = r + 1 == on_arc.size() || shot.time[on_arc[r + 1]] >= t_exit;
+      if (from_entry && to_exit) return false;
+      const double u_sign = shot.torque_body[on_arc[q]][i] > 0 ? 1.0 : -1.0;
+      const double a = from_entry ? t_entry : crossing(on_arc[q] - 1);
+      const double b = to_exit ? t_exit : crossing(on_arc[r]);
+      if (from_entry) {
+        if (u_sign != sign_before[k]) {
+          ArcEvent e;
+          e.axis = i;
+          e.time = t_entry;
+          added.push_back(e);
+        }
+        events[k].time = b;
+      } else if (to_exit) {
+        const double after = events[exit_index].sign_after;
+        events[exit_index].time = a;
+        events[exit_index].sign_after = u_sign;
+        if (u_sign != after) {
+          ArcEvent e;
+          e.axis = i;
+          e.time = t_exit;
+          added.push_back(e);
+        }
+      } else {
+        ArcEvent leave, enter;
+        leave.kind = Kind::exit;
+        enter.kind = Kind::entry;
+        leave.arc = enter.arc = Arc::singular;
+        leave.axis = enter.axis = i;
+        leave.side = enter.side = 0.0;
+        leave.time = a;
+        leave.sign_after = u_sign;
+        enter.time = b;
+        added.push_back(leave);
+        added.push_back(enter);
+      }
+      mended = true;
+      q = r + 1;
+    }
+  }
+  if (!mended) return false;
+  events.insert(events.end(), added.begin(), added.end());
+  std::stable_sort(events.begin(), events.end(),
+                   [](const auto& a, const auto& b) { return a.time < b.time; });
+  for (ArcEvent& e : events)
+    e.pair = -1;
+  pair_arc_ends(events);
+  out = s;
+  out.events = events;
+  return true;
 }
 
 }  // namespace poinsot::optimal::detail

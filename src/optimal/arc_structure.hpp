@@ -8,6 +8,7 @@
 
 #include "poinsot/core/types.hpp"
 #include "poinsot/optimal/direct_collocation.hpp"
+#include "poinsot/optimal/indirect_shooting.hpp"
 #include "poinsot/optimal/problem.hpp"
 #include "switching_structure.hpp"
 
@@ -36,6 +37,10 @@ struct ArcStructure {
   /// direct solution's stands for a bang arc too short for its mesh before the entry: read_arc_structure
   /// with `start_bang_sign` ±1 reads it so.
   int singular_at_start = -1;
+  /// The axis of a singular arc that the direct solution ends on (−1: none): for the same count of
+  /// conditions no extremal ends on one, and read_arc_structure with `end_bang_sign` ±1 reads it as left
+  /// before a bang arc too short for the mesh.
+  int singular_at_end = -1;
 };
 
 /// The largest |ω_i| of the direct solution, and whether it reaches the bound (to 1e-4 relative).
@@ -50,10 +55,35 @@ bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, d
 /// the next saturated sample's). `refused` names a problem that is not minimum time with per-axis bounds, a
 /// boundary arc that lasts to the final time, a singular arc of order two (about a principal axis, where u_i
 /// does not enter σ̈_i, and sharing no sample with a singular arc of another axis), or a singular arc that
-/// overlaps a boundary arc or reaches t = 0 or T. With `start_bang_sign` ±1, a singular arc that reaches
-/// t = 0 is read as entered at the direct solution's second sample, after a bang arc of u_i with that sign.
+/// overlaps a boundary arc or reaches t = 0 or T (or both). With `start_bang_sign` ±1, a singular arc that
+/// reaches t = 0 is read as entered at the direct solution's second sample, after a bang arc of u_i with that
+/// sign; with `end_bang_sign` ±1, one that reaches T as left at the last sample but one, before a bang arc of
+/// that sign.
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
                                 double shortest_singular_arc = kShortestSingularArc,
-                                double start_bang_sign = 0.0);
+                                double start_bang_sign = 0.0, double end_bang_sign = 0.0);
+
+/// Where the singular torque of a converged shot over `s` leaves its bound, the structure that keeps it
+/// inside: `shot` is that extremal (its samples and singular_arcs), `times` its event times in the order of
+/// s.events. A singular arc of u_i can only be entered or left where its torque ũ_i from σ̈_i = 0 lies in
+/// [−ū_i, ū_i]; an extremal whose ũ_i is outside over [a, b] (relative excess above kSingularTorqueExcess)
+/// has a bang arc of u_i = sign(ũ_i) ū_i there instead:
+/// - at the arc's entry (a = t_entry), the entry moves to b, after a switch at t_entry where the bang arc
+///   before had the other sign;
+/// - at its exit (b = t_exit), the exit moves to a with that sign after it, and a switch at t_exit returns to
+///   the sign that followed where that differs;
+/// - inside it, an exit at a and a new entry at b.
+/// The crossing times a and b are linearly interpolated between the samples. `out` gets the amended events
+/// with those times as guesses (ascending, paired). False (and `out` unchanged) when every singular torque
+/// lies within its bound, or one lies outside over a whole arc.
+bool with_bounded_singular_torque(const ReorientationProblem& p, const ArcStructure& s,
+                                  const std::vector<double>& times, const IndirectSolution& shot,
+                                  ArcStructure& out);
+
+/// The relative excess of a singular torque over its bound (|ũ_i| / ū_i − 1) that
+/// with_bounded_singular_torque mends: well above the round-off of ũ (the verification's admissibility
+/// tolerance is 1e-9), far below the excess of an extremal entered at the wrong side (problem 12 of seed 6 of
+/// the benchmark's nonprincipal family: ũ1 = −1.48 ū1 at the entry, after a bang arc of +ū1).
+constexpr double kSingularTorqueExcess = 1e-6;
 
 }  // namespace poinsot::optimal::detail
