@@ -52,9 +52,13 @@ struct OptimalScenario {
   optimal::ShootingOptions shooting;        ///< the indirect method's options (shooting_nodes from the file)
   /// The phase-per-arc re-solve after the mesh refinement (minimum time, where the switching structure
   /// allows it): on unless the file says `phased = false`; 64 intervals per arc unless it says otherwise
-  /// (Betts' t* then meets the indirect one to 1e-11, docs/optimal_control_theory.md section 2b).
+  /// (Betts' t* then meets the indirect one to 1e-11, docs/optimal_control_theory.md section 2b), and at
+  /// most 40 Ipopt iterations: from the refined direct solution it converges in 3 to 12 on the benchmark's
+  /// random problems, and one that takes more is degenerate (problem 6 of seed 5 of the per_axis family: two
+  /// switches of different axes merge, Ipopt enters its restoration phase and fails after 357 iterations
+  /// and 400 s of CPU, on an NLP of 512 intervals that it otherwise solves in under a second).
   bool phased = true;
-  optimal::PhasedOptions phased_options{.intervals_per_arc = 64};
+  optimal::PhasedOptions phased_options{.intervals_per_arc = 64, .max_nlp_iterations = 40};
   std::string out_dir;  ///< [output] dir; empty: the default
   /// For drawing (view.html): the body's mass (kg) when the file gives one, and its surface about the centre
   /// of mass (body axes, m) when it gives a shape or a mesh, else null.
