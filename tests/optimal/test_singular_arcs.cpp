@@ -14,19 +14,37 @@
 namespace poinsot::optimal {
 namespace {
 
+/// A rest-to-rest slew: inertia J (kg·m², body axes), per-axis bounds (N·m), the final attitude a rotation by
+/// `angle` (rad) about `axis` (normalised here).
+ReorientationProblem slew(const Mat3& J, const Vec3& torque_max, double angle, const Vec3& axis) {
+  ReorientationProblem p;
+  p.inertia_body = J;
+  p.torque_max = torque_max;
+  p.attitude_final = Quat(Eigen::AngleAxisd(angle, axis.normalized()));
+  return p;
+}
+
+/// The verification of `s` against `d` passes, Kelley's condition holds on its singular arcs, and no sample
+/// has a bang torque of σ_i's sign.
+void expect_verified_with_kelley(const ReorientationProblem& p, const DirectSolution& d,
+                                 const IndirectSolution& s) {
+  const VerificationReport v = verify(p, d, s);
+  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
+  EXPECT_GT(v.kelley_condition_min, 0.0);
+  EXPECT_EQ(v.switching_sign_violations, 0);
+}
+
 /// Problem 2 of the `nonprincipal` family, seed 1, of scripts/optimal_benchmark.py: an inertia tensor off its
 /// principal frame, so that the per-axis bounds act along axes that are not principal. Its direct solution
 /// holds u2 inside its bound from about 1.43 s to 1.82 s, ringing between nodes and midpoints there (the
 /// collocation's signature of a singular arc).
 ReorientationProblem off_principal_slew() {
-  ReorientationProblem p;
-  p.inertia_body << 0.7661020908936944, 0.2317750199883727, 0.02664611207434415,  //
-      0.2317750199883727, 1.2739937300975277, -0.048303527628586515,              //
-      0.02664611207434415, -0.048303527628586515, 1.2016342411917145;
-  p.torque_max = Vec3(0.6547774224880076, 1.9042989833848427, 1.5377034007248718);
-  p.attitude_final = Quat(Eigen::AngleAxisd(
-      1.5535110710552282, Vec3(-0.312436821351391, 0.0800034546525016, 0.9465636164080595).normalized()));
-  return p;
+  return slew((Mat3() << 0.7661020908936944, 0.2317750199883727, 0.02664611207434415,  //
+               0.2317750199883727, 1.2739937300975277, -0.048303527628586515,          //
+               0.02664611207434415, -0.048303527628586515, 1.2016342411917145)
+                  .finished(),
+              Vec3(0.6547774224880076, 1.9042989833848427, 1.5377034007248718), 1.5535110710552282,
+              Vec3(-0.312436821351391, 0.0800034546525016, 0.9465636164080595));
 }
 
 /// The direct solution at mesh tolerance 1e-5, the shooting's seed (the extremal's samples come from the
@@ -78,9 +96,8 @@ TEST(SingularArcs, OffPrincipalSlewHasAVerifiedSingularArcOfU2) {
   // … and the singular torque strictly inside its bound (it reaches 0.78 ū2 at entry, 0.54 ū2 at its least).
   EXPECT_LT(u_on_arc, 0.9);
 
+  expect_verified_with_kelley(p, d, s);
   const VerificationReport v = verify(p, d, s);
-  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
-  EXPECT_GT(v.kelley_condition_min, 0.0);
   EXPECT_LT(v.resimulated_attitude_error, 1e-6);
   EXPECT_LT(v.hamiltonian_deviation, 1e-10);
   EXPECT_LE(v.torque_bound_excess, 1e-12);
@@ -94,13 +111,13 @@ TEST(SingularArcs, OffPrincipalSlewHasAVerifiedSingularArcOfU2) {
 // is 3.0e-8 rad (amplification 3.2): a tenth of the threshold is required.
 TEST(SingularArcs, ALongSingularArcIsSampledFinelyEnoughForItsReplay) {
   if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release (the direct phase)";
-  ReorientationProblem p;
-  p.inertia_body << 5.426910604846328, -1.212217900343878, -0.6331382365698691,  //
-      -1.212217900343878, 3.7946185073650973, 0.8871914835767591,                //
-      -0.6331382365698691, 0.8871914835767591, 4.480105027611481;
-  p.torque_max = Vec3(0.6762920844559588, 1.8969084626895218, 0.5028896379417249);
-  p.attitude_final = Quat(Eigen::AngleAxisd(
-      2.391867325690777, Vec3(0.49268440291890203, 0.1555762221225792, 0.8561881324980571).normalized()));
+  const ReorientationProblem p =
+      slew((Mat3() << 5.426910604846328, -1.212217900343878, -0.6331382365698691,  //
+            -1.212217900343878, 3.7946185073650973, 0.8871914835767591,            //
+            -0.6331382365698691, 0.8871914835767591, 4.480105027611481)
+               .finished(),
+           Vec3(0.6762920844559588, 1.8969084626895218, 0.5028896379417249), 2.391867325690777,
+           Vec3(0.49268440291890203, 0.1555762221225792, 0.8561881324980571));
   DirectSolution d;
   IndirectSolution s;
   ASSERT_NO_FATAL_FAILURE(shoot_over_one_singular_arc(p, d, s));
@@ -121,13 +138,13 @@ TEST(SingularArcs, ALongSingularArcIsSampledFinelyEnoughForItsReplay) {
 // is 5.5e-5 relative above the extremal's; 1.3e-7 at 1e-7, which takes 3.7 s).
 TEST(SingularArcs, AShortSingularArcWhereTheBangBangExtremalFailsIsShotOverInstead) {
   if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release (the direct phase)";
-  ReorientationProblem p;
-  p.inertia_body << 4.865565501190458, -0.737805345318721, 0.29610979824511285,  //
-      -0.737805345318721, 5.188646060485697, -0.6206706805185691,                //
-      0.29610979824511285, -0.6206706805185691, 1.8706052300903644;
-  p.torque_max = Vec3(1.134038940907237, 0.6630050248234012, 1.4763450555218196);
-  p.attitude_final = Quat(Eigen::AngleAxisd(
-      1.5315984042681778, Vec3(0.823492344538879, -0.554710239674226, 0.1189828075245442).normalized()));
+  const ReorientationProblem p =
+      slew((Mat3() << 4.865565501190458, -0.737805345318721, 0.29610979824511285,  //
+            -0.737805345318721, 5.188646060485697, -0.6206706805185691,            //
+            0.29610979824511285, -0.6206706805185691, 1.8706052300903644)
+               .finished(),
+           Vec3(1.134038940907237, 0.6630050248234012, 1.4763450555218196), 1.5315984042681778,
+           Vec3(0.823492344538879, -0.554710239674226, 0.1189828075245442));
   DirectSolution d;
   IndirectSolution s;
   ASSERT_NO_FATAL_FAILURE(shoot_over_one_singular_arc(p, d, s));
@@ -137,10 +154,7 @@ TEST(SingularArcs, AShortSingularArcWhereTheBangBangExtremalFailsIsShotOverInste
   EXPECT_NEAR(arc.t_exit, 1.172, 0.005);
   EXPECT_LT(arc.t_exit - arc.t_entry, 0.02 * s.final_time);
   EXPECT_NEAR(s.final_time / d.final_time, 1.0, 1e-4);
-  const VerificationReport v = verify(p, d, s);
-  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
-  EXPECT_GT(v.kelley_condition_min, 0.0);
-  EXPECT_EQ(v.switching_sign_violations, 0);
+  expect_verified_with_kelley(p, d, s);
 }
 
 // A direct solution that starts on a singular arc (problem 7 of the nonprincipal family, seed 4: u3 inside
@@ -151,13 +165,13 @@ TEST(SingularArcs, AShortSingularArcWhereTheBangBangExtremalFailsIsShotOverInste
 // the direct method's final time, to its mesh error at tolerance 1e-5.
 TEST(SingularArcs, ASingularArcFromTheStartIsEnteredAfterAShortBangArc) {
   if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1.4 s in release (the direct phase)";
-  ReorientationProblem p;
-  p.inertia_body << 4.1070678545966155, -0.3233920515888571, -1.0292724106673279,  //
-      -0.3233920515888571, 3.946972091130114, -1.7467021369242648,                 //
-      -1.0292724106673279, -1.7467021369242648, 3.2840103594322994;
-  p.torque_max = Vec3(1.4011725094924592, 0.9970113243399173, 1.710428615219346);
-  p.attitude_final = Quat(Eigen::AngleAxisd(
-      2.0293415593799256, Vec3(0.7503949589655889, 0.566830887792189, -0.34001492644257697).normalized()));
+  const ReorientationProblem p =
+      slew((Mat3() << 4.1070678545966155, -0.3233920515888571, -1.0292724106673279,  //
+            -0.3233920515888571, 3.946972091130114, -1.7467021369242648,             //
+            -1.0292724106673279, -1.7467021369242648, 3.2840103594322994)
+               .finished(),
+           Vec3(1.4011725094924592, 0.9970113243399173, 1.710428615219346), 2.0293415593799256,
+           Vec3(0.7503949589655889, 0.566830887792189, -0.34001492644257697));
   DirectSolution d;
   IndirectSolution s;
   ASSERT_NO_FATAL_FAILURE(shoot_over_one_singular_arc(p, d, s));
@@ -168,10 +182,7 @@ TEST(SingularArcs, ASingularArcFromTheStartIsEnteredAfterAShortBangArc) {
   EXPECT_NEAR(arc.t_exit, 1.245, 0.005);
   EXPECT_DOUBLE_EQ(std::abs(s.torque_body.front()[2]), p.torque_max[2]);
   EXPECT_NEAR(s.final_time / d.final_time, 1.0, 1e-4);
-  const VerificationReport v = verify(p, d, s);
-  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
-  EXPECT_GT(v.kelley_condition_min, 0.0);
-  EXPECT_EQ(v.switching_sign_violations, 0);
+  expect_verified_with_kelley(p, d, s);
 }
 
 // A direct solution that ends on a singular arc (problem 2 of the nonprincipal family, seed 7: u2 inside its
@@ -180,13 +191,13 @@ TEST(SingularArcs, ASingularArcFromTheStartIsEnteredAfterAShortBangArc) {
 // of u2 of either sign, and converges with the exit about 2.5 ms before T. Oracles as for the start.
 TEST(SingularArcs, ASingularArcToTheEndIsLeftBeforeAShortBangArc) {
   if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release (the direct phase)";
-  ReorientationProblem p;
-  p.inertia_body << 1.3567207362346945, -0.12822070954993542, 0.11107655839753253,  //
-      -0.12822070954993542, 0.5659179360611872, -0.004903753990950905,              //
-      0.11107655839753253, -0.004903753990950905, 1.7804574017671062;
-  p.torque_max = Vec3(1.8802591505489787, 1.9675816812661533, 1.442450019503431);
-  p.attitude_final = Quat(Eigen::AngleAxisd(
-      2.161180093328498, Vec3(0.5020357945587604, 0.30400140849002877, -0.8096562261959287).normalized()));
+  const ReorientationProblem p =
+      slew((Mat3() << 1.3567207362346945, -0.12822070954993542, 0.11107655839753253,  //
+            -0.12822070954993542, 0.5659179360611872, -0.004903753990950905,          //
+            0.11107655839753253, -0.004903753990950905, 1.7804574017671062)
+               .finished(),
+           Vec3(1.8802591505489787, 1.9675816812661533, 1.442450019503431), 2.161180093328498,
+           Vec3(0.5020357945587604, 0.30400140849002877, -0.8096562261959287));
   DirectSolution d;
   IndirectSolution s;
   ASSERT_NO_FATAL_FAILURE(shoot_over_one_singular_arc(p, d, s));
@@ -197,10 +208,7 @@ TEST(SingularArcs, ASingularArcToTheEndIsLeftBeforeAShortBangArc) {
   EXPECT_GT(arc.t_exit, s.final_time - 0.01);
   EXPECT_DOUBLE_EQ(std::abs(s.torque_body.back()[1]), p.torque_max[1]);
   EXPECT_NEAR(s.final_time / d.final_time, 1.0, 1e-4);
-  const VerificationReport v = verify(p, d, s);
-  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
-  EXPECT_GT(v.kelley_condition_min, 0.0);
-  EXPECT_EQ(v.switching_sign_violations, 0);
+  expect_verified_with_kelley(p, d, s);
 }
 
 /// The largest |u_i| / ū_i over the singular arc `arc` of `s`, its ends excluded.
@@ -223,13 +231,13 @@ double largest_singular_torque(const ReorientationProblem& p, const IndirectSolu
 // to its mesh error at tolerance 1e-5.
 TEST(SingularArcs, ASingularTorqueOutsideItsBoundAtTheEntryBecomesABangArc) {
   if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release (the direct phase)";
-  ReorientationProblem p;
-  p.inertia_body << 0.5963594323109789, -0.009856102072636996, -0.032139954774726934,  //
-      -0.009856102072636996, 0.4925821714007848, 0.004531714624290433,                 //
-      -0.032139954774726934, 0.004531714624290433, 0.5370953121383601;
-  p.torque_max = Vec3(1.84810949288525, 1.6852859629223558, 0.6444783042699509);
-  p.attitude_final = Quat(Eigen::AngleAxisd(
-      2.318696196655699, Vec3(0.19822127202072462, -0.8905899569438129, 0.4093383147340392).normalized()));
+  const ReorientationProblem p =
+      slew((Mat3() << 0.5963594323109789, -0.009856102072636996, -0.032139954774726934,  //
+            -0.009856102072636996, 0.4925821714007848, 0.004531714624290433,             //
+            -0.032139954774726934, 0.004531714624290433, 0.5370953121383601)
+               .finished(),
+           Vec3(1.84810949288525, 1.6852859629223558, 0.6444783042699509), 2.318696196655699,
+           Vec3(0.19822127202072462, -0.8905899569438129, 0.4093383147340392));
   DirectSolution d;
   IndirectSolution s;
   ASSERT_NO_FATAL_FAILURE(shoot_over_one_singular_arc(p, d, s));
@@ -248,9 +256,7 @@ TEST(SingularArcs, ASingularTorqueOutsideItsBoundAtTheEntryBecomesABangArc) {
     }
   }
   EXPECT_NEAR(s.final_time / d.final_time, 1.0, 1e-4);
-  const VerificationReport v = verify(p, d, s);
-  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
-  EXPECT_GT(v.kelley_condition_min, 0.0);
+  expect_verified_with_kelley(p, d, s);
 }
 
 // A nearly spherical body (problem 15 of the nonprincipal family, seed 6: J within 8 % of 5.2 kg·m² times
@@ -262,13 +268,13 @@ TEST(SingularArcs, ASingularTorqueOutsideItsBoundAtTheEntryBecomesABangArc) {
 // at tolerance 1e-4 … 1e-6 it stalls). Oracles as above, the direct T to that mesh's error.
 TEST(SingularArcs, ANearlySphericalBodysSingularArcIsShotFromOutsideTheEnvelope) {
   if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 2 s in release (the direct phase)";
-  ReorientationProblem p;
-  p.inertia_body << 5.422851056202352, -0.18782735990087962, 0.041946761496516216,  //
-      -0.18782735990087962, 5.025787494237915, -0.13481119725140356,                //
-      0.041946761496516216, -0.13481119725140356, 5.179403668209591;
-  p.torque_max = Vec3(0.9199376100658945, 1.7861252975056314, 1.4338086587257084);
-  p.attitude_final = Quat(Eigen::AngleAxisd(
-      1.6601168701315339, Vec3(-0.6050835975730825, -0.10677741651005913, 0.7889692156677935).normalized()));
+  const ReorientationProblem p =
+      slew((Mat3() << 5.422851056202352, -0.18782735990087962, 0.041946761496516216,  //
+            -0.18782735990087962, 5.025787494237915, -0.13481119725140356,            //
+            0.041946761496516216, -0.13481119725140356, 5.179403668209591)
+               .finished(),
+           Vec3(0.9199376100658945, 1.7861252975056314, 1.4338086587257084), 1.6601168701315339,
+           Vec3(-0.6050835975730825, -0.10677741651005913, 0.7889692156677935));
   IndirectSolution s;
   DirectSolution seed;
   CollocationOptions o;
@@ -289,9 +295,7 @@ TEST(SingularArcs, ANearlySphericalBodysSingularArcIsShotFromOutsideTheEnvelope)
   EXPECT_NEAR(arc.t_exit, 2.1259, 0.005);
   EXPECT_LE(largest_singular_torque(p, s, arc), 1.0);
   EXPECT_NEAR(s.final_time / seed.final_time, 1.0, seed.max_mesh_error);
-  const VerificationReport v = verify(p, seed, s);
-  EXPECT_TRUE(v.passed) << (v.failures.empty() ? "" : v.failures.front());
-  EXPECT_GT(v.kelley_condition_min, 0.0);
+  expect_verified_with_kelley(p, seed, s);
 }
 
 }  // namespace
