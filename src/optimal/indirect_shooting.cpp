@@ -31,6 +31,7 @@ using detail::read_reversals;
 using detail::read_switching_structure;
 using detail::Shooter;
 using detail::SwitchGuess;
+using detail::without_short_end_arcs;
 using detail::without_vanishing_end_arcs;
 
 /// The direct solution's state at t (linear in ω, normalised linear in q; t clamped to the samples).
@@ -442,6 +443,13 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // A first or last bang arc that the extremal does not have holds Newton at a switch near 0 or T: shot
   // again without it (switching_structure.hpp, kVanishingEndArc).
   if (SwitchGuess trimmed; out.bang_bang && !out.converged && without_vanishing_end_arcs(sw, out, trimmed)) {
+    IndirectSolution retry = shoot_switching_structure(p, d, o, trimmed, true);
+    if (retry.converged) out = std::move(retry);
+  }
+  // Where Newton stalled with such a switch inside (0, T), without the end arcs that the direct solution
+  // shows short (kShortEndArc).
+  if (SwitchGuess trimmed;
+      out.bang_bang && !out.converged && without_short_end_arcs(sw, d.final_time, trimmed)) {
     IndirectSolution retry = shoot_switching_structure(p, d, o, trimmed, true);
     if (retry.converged) out = std::move(retry);
   }

@@ -65,6 +65,40 @@ double torque_sign_change(const DirectSolution& d, int axis, std::size_t from, s
   return d.time[from];
 }
 
+namespace {
+
+/// The switches of axis i in `sw`, ascending.
+std::vector<double> axis_switches(const SwitchGuess& sw, int i) {
+  std::vector<double> times;
+  for (std::size_t k = 0; k < sw.times.size(); ++k)
+    if (sw.axes[k] == i) times.push_back(sw.times[k]);
+  std::sort(times.begin(), times.end());
+  return times;
+}
+
+/// `sw` without the `at_start[i]` earliest and `at_end[i]` latest switches of each axis i; an axis that
+/// loses an odd number of its earliest starts with the opposite sign.
+SwitchGuess without_end_switches(const SwitchGuess& sw, const Eigen::Vector3i& at_start,
+                                 const Eigen::Vector3i& at_end) {
+  SwitchGuess kept = sw;
+  kept.times.clear();
+  kept.axes.clear();
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<double> times = axis_switches(sw, i);
+    const auto first = std::min(static_cast<std::size_t>(at_start[i]), times.size()),
+               end = std::max(first,
+                              times.size() - std::min(static_cast<std::size_t>(at_end[i]), times.size()));
+    for (std::size_t k = first; k < end; ++k) {
+      kept.times.push_back(times[k]);
+      kept.axes.push_back(i);
+    }
+    if (at_start[i] % 2 == 1) kept.initial_sign[i] = -kept.initial_sign[i];
+  }
+  return kept;
+}
+
+}  // namespace
+
 bool without_vanishing_end_arcs(const SwitchGuess& sw, const IndirectSolution& shot, SwitchGuess& out) {
   const double T = shot.final_time;
   if (!(T > 0.0) || shot.switch_times.size() != sw.times.size()) return false;
@@ -77,23 +111,21 @@ bool without_vanishing_end_arcs(const SwitchGuess& sw, const IndirectSolution& s
     if (t > (1.0 - kVanishingEndArc) * T) ++at_end[i];
   }
   if (at_start.sum() + at_end.sum() == 0) return false;
-  SwitchGuess kept = sw;
-  kept.times.clear();
-  kept.axes.clear();
+  out = without_end_switches(sw, at_start, at_end);
+  return true;
+}
+
+bool without_short_end_arcs(const SwitchGuess& sw, double T, SwitchGuess& out) {
+  if (!(T > 0.0)) return false;
+  Eigen::Vector3i at_start = Eigen::Vector3i::Zero(), at_end = Eigen::Vector3i::Zero();
   for (int i = 0; i < 3; ++i) {
-    std::vector<double> times;  // the switches of axis i in sw, ascending
-    for (std::size_t k = 0; k < sw.times.size(); ++k)
-      if (sw.axes[k] == i) times.push_back(sw.times[k]);
-    std::sort(times.begin(), times.end());
-    const auto first = static_cast<std::size_t>(at_start[i]),
-               end = times.size() - static_cast<std::size_t>(at_end[i]);
-    for (std::size_t k = first; k < end; ++k) {
-      kept.times.push_back(times[k]);
-      kept.axes.push_back(i);
-    }
-    if (at_start[i] % 2 == 1) kept.initial_sign[i] = -kept.initial_sign[i];
+    const std::vector<double> times = axis_switches(sw, i);
+    if (times.empty()) continue;
+    at_start[i] = times.front() < kShortEndArc * T ? 1 : 0;
+    at_end[i] = times.back() > (1.0 - kShortEndArc) * T ? 1 : 0;
   }
-  out = kept;
+  if (at_start.sum() + at_end.sum() == 0) return false;
+  out = without_end_switches(sw, at_start, at_end);
   return true;
 }
 

@@ -198,8 +198,9 @@ TEST(IndirectShooting, RefusesActiveRateBoundsUnderANormBound) {
 
 // A first bang arc that the extremal does not have (problem 15 of the nonprincipal family, seed 5): the
 // direct solution starts with u1 = +ū1 for one interval, an arc that shrinks with every mesh, then switches.
-// Newton drives that switch to t → 0, where the shooting's domain (0, T) holds it, and stalls at a residual
-// of about 1e-2; shot again without that arc, u1 = −ū1 from t = 0, it converges. Oracles: the verification
+// Newton stalls at a residual of about 1e-2, with that switch driven to t → 0 (where the shooting's domain
+// (0, T) holds it) or, from this mesh, at 0.040 s, 3.7 % of T; shot again without that arc, u1 = −ū1 from
+// t = 0, it converges (without_vanishing_end_arcs, without_short_end_arcs). Oracles: the verification
 // (H constant, the control minimising H at every sample, the DOP853 replay) and the final time of the
 // phase-per-arc collocation over the direct switches (which shrinks that arc to nothing, and whose T meets
 // the extremal's to its discretisation error, 32 intervals an arc). The direct T itself is 2.5e-4 above: its
