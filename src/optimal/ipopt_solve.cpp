@@ -42,6 +42,15 @@ void* openblas_symbol(const char* name) {
 /// (measurements/optimal_control.md, "Speed").
 constexpr int kMumpsOrderingQamd = 6;
 
+/// MUMPS' column permutation of the KKT matrix before its ordering (Ipopt's mumps_permuting_scaling, MUMPS'
+/// ICNTL(6)): 0, none. Ipopt's default (7) lets MUMPS choose, and on these symmetric indefinite matrices it
+/// computed a maximum weighted matching (`dmumps_mtransw`) at every analysis: 11 % of the CPU of a
+/// rate-bounded slew refined to 1550 intervals (`perf`). Without it the benchmark's per_axis, spin,
+/// nonprincipal and rate families took 0.53 to 0.76 of the CPU and the others 0.92 to 1.04, with every
+/// outcome the same (measurements/optimal_control.md, "Speed"). MUMPS' threshold pivoting keeps the
+/// factorisation stable without the matching; Ipopt's gradient-based NLP scaling stays.
+constexpr int kMumpsNoColumnPermutation = 0;
+
 /// One BLAS thread while Ipopt runs, so that its results are bit-identical from run to run on a machine.
 /// MUMPS calls the BLAS that Debian's alternatives select for libblas.so.3: the reference BLAS, or OpenBLAS
 /// (scripts/setup.sh installs it). A threaded OpenBLAS may split a product's sums between threads, whose
@@ -287,6 +296,7 @@ NlpSolution solve_with_ipopt(const SparseNlp& nlp, const std::vector<double>& st
   if (settings.exact_bounds) app->Options()->SetNumericValue("bound_relax_factor", 0.0);
   app->Options()->SetIntegerValue("mumps_scaling", settings.mumps_scaling);
   app->Options()->SetIntegerValue("mumps_pivot_order", kMumpsOrderingQamd);
+  app->Options()->SetIntegerValue("mumps_permuting_scaling", kMumpsNoColumnPermutation);
   if (app->Initialize() != Ipopt::Solve_Succeeded) throw ComputationFailed("ipopt: initialisation failed");
   Ipopt::SmartPtr<SparseNlpAdapter> adapter = new SparseNlpAdapter(nlp, start, settings);
   const SingleBlasThread one_blas_thread;  // bit-identical results with a threaded OpenBLAS
