@@ -94,17 +94,16 @@ void pair_arc_ends(std::vector<ArcEvent>& events) {
         }
 }
 
-/// An event of axis i at time t: a sign change (`arc_kind` unused), or an end of a boundary arc on side
-/// `side` or of a singular arc (side 0), with the sign of u_i after an exit.
-ArcEvent arc_event(Kind kind, Arc arc_kind, int i, double side, double t, double sign_after = 1.0) {
-  ArcEvent e;
-  e.kind = kind;
-  e.arc = arc_kind;
-  e.axis = i;
-  e.side = side;
-  e.time = t;
-  e.sign_after = sign_after;
-  return e;
+/// A sign change of u_i at time t (s).
+ArcEvent sign_change(int i, double t) {
+  return ArcEvent{.kind = Kind::sign_change, .axis = i, .time = t};
+}
+
+/// An entry or exit (`kind`) of axis i at time t (s): of a boundary arc on side `side`, or of a singular arc
+/// (side 0), with the sign of u_i after an exit.
+ArcEvent arc_end(Kind kind, Arc arc_kind, int i, double side, double t, double sign_after = 1.0) {
+  return ArcEvent{
+      .kind = kind, .arc = arc_kind, .axis = i, .side = side, .time = t, .sign_after = sign_after};
 }
 
 /// The end of a refusal for a singular arc of axis i of order two (u_i first enters the fourth derivative of
@@ -180,8 +179,8 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
     // The entry and exit of arc `a`, with the sign of u_i after it.
     auto add_arc = [&](const SampleArc& a, double sign_after) {
       const double side = a.arc == Arc::singular ? 0.0 : d.omega_body[a.first][i] > 0 ? 1.0 : -1.0;
-      events.push_back(arc_event(Kind::entry, a.arc, i, side, d.time[a.first]));
-      events.push_back(arc_event(Kind::exit, a.arc, i, side, d.time[a.last], sign_after));
+      events.push_back(arc_end(Kind::entry, a.arc, i, side, d.time[a.first]));
+      events.push_back(arc_end(Kind::exit, a.arc, i, side, d.time[a.last], sign_after));
     };
     // Saturated samples off the arcs: the signs; an arc between two of them takes the place of a switch.
     const double umax = p.torque_max[i];
@@ -201,8 +200,7 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
       if (last < 0) {
         s.initial_sign[i] = sign;
       } else if (!crossed_arc && (u > 0) != (d.torque_body[static_cast<std::size_t>(last)][i] > 0)) {
-        events.push_back(arc_event(Kind::sign_change, Arc::boundary, i, 0.0,
-                                   torque_sign_change(d, i, static_cast<std::size_t>(last), j)));
+        events.push_back(sign_change(i, torque_sign_change(d, i, static_cast<std::size_t>(last), j)));
       }
       last = static_cast<int>(j);
     }
@@ -296,7 +294,7 @@ bool with_bounded_singular_torque(const ReorientationProblem& p, const ArcStruct
       const double b = to_exit ? t_exit : crossing(on_arc[r]);
       if (from_entry) {
         if (u_sign != sign_before[k]) {
-          added.push_back(arc_event(Kind::sign_change, Arc::singular, i, 0.0, t_entry));
+          added.push_back(sign_change(i, t_entry));
         }
         events[k].time = b;
       } else if (to_exit) {
@@ -304,11 +302,11 @@ bool with_bounded_singular_torque(const ReorientationProblem& p, const ArcStruct
         events[exit_index].time = a;
         events[exit_index].sign_after = u_sign;
         if (u_sign != after) {
-          added.push_back(arc_event(Kind::sign_change, Arc::singular, i, 0.0, t_exit));
+          added.push_back(sign_change(i, t_exit));
         }
       } else {
-        added.push_back(arc_event(Kind::exit, Arc::singular, i, 0.0, a, u_sign));
-        added.push_back(arc_event(Kind::entry, Arc::singular, i, 0.0, b));
+        added.push_back(arc_end(Kind::exit, Arc::singular, i, 0.0, a, u_sign));
+        added.push_back(arc_end(Kind::entry, Arc::singular, i, 0.0, b));
       }
       mended = true;
       q = r + 1;

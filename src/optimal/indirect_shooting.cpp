@@ -440,19 +440,19 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   if (!sw.singular.empty()) return detail::solve_over_arcs(p, d, o);
 
   out = shoot_switching_structure(p, d, o, sw, out.bang_bang);
+  // The bang-bang structure `trimmed` shot where `out` has not converged; its extremal kept if it converges.
+  const auto shoot_instead = [&](const SwitchGuess& trimmed) {
+    if (IndirectSolution retry = shoot_switching_structure(p, d, o, trimmed, true); retry.converged)
+      out = std::move(retry);
+  };
   // A first or last bang arc that the extremal does not have holds Newton at a switch near 0 or T: shot
-  // again without it (switching_structure.hpp, kVanishingEndArc).
-  if (SwitchGuess trimmed; out.bang_bang && !out.converged && without_vanishing_end_arcs(sw, out, trimmed)) {
-    IndirectSolution retry = shoot_switching_structure(p, d, o, trimmed, true);
-    if (retry.converged) out = std::move(retry);
-  }
-  // Where Newton stalled with such a switch inside (0, T), without the end arcs that the direct solution
-  // shows short (kShortEndArc).
+  // again without it (switching_structure.hpp, kVanishingEndArc). Where Newton stalled with such a switch
+  // inside (0, T), without the end arcs that the direct solution shows short (kShortEndArc).
+  if (SwitchGuess trimmed; out.bang_bang && !out.converged && without_vanishing_end_arcs(sw, out, trimmed))
+    shoot_instead(trimmed);
   if (SwitchGuess trimmed;
-      out.bang_bang && !out.converged && without_short_end_arcs(sw, d.final_time, trimmed)) {
-    IndirectSolution retry = shoot_switching_structure(p, d, o, trimmed, true);
-    if (retry.converged) out = std::move(retry);
-  }
+      out.bang_bang && !out.converged && without_short_end_arcs(sw, d.final_time, trimmed))
+    shoot_instead(trimmed);
   // A σ_i that grazes 0 along a bang arc, where the extremal's control takes σ_i's sign: the direct control
   // may be inside its bound there over a stretch too short for read_switching_structure to call it a singular
   // arc. Shot over the singular arcs of at least kShortestGrazedSingularArc of T instead, where that

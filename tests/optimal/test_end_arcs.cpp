@@ -31,9 +31,13 @@ std::vector<double> switches_of(const SwitchGuess& sw, int i) {
 }
 
 TEST(EndArcs, ShortEndArcsOfTheDirectStructureAreDroppedAxisByAxis) {
+  // Within kShortEndArc T of either end lie u1's switches at 0.2 and 9.9 s and u3's at 0.3 s and 9.6 s; the
+  // others (4 and 5 s) do not.
+  const double edge = kShortEndArc * 10.0;
+  ASSERT_TRUE(edge > 0.3 && edge > 10.0 - 9.6 && edge < 4.0)
+      << "the structure assumes kShortEndArc T = " << edge;
   SwitchGuess out;
   ASSERT_TRUE(without_short_end_arcs(three_axes(), 10.0, out));
-  // Under kShortEndArc T = 0.5 s from either end: u1's switches at 0.2 and 9.9 s, u3's at 0.3 s and 9.6 s.
   EXPECT_EQ(switches_of(out, 0), std::vector<double>{4.0});
   EXPECT_EQ(switches_of(out, 1), std::vector<double>{5.0});
   EXPECT_TRUE(switches_of(out, 2).empty());
