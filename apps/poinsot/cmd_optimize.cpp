@@ -47,9 +47,11 @@ class OptimizeProgress {
     std::string what;
     if (p.phase == "direct")
       what = fmt::format(
-          "direct method: mesh {} ({} intervals){}, Ipopt iteration {}, cost {:.6g}, "
+          "direct method: mesh {} ({} intervals){}{}, Ipopt iteration {}, cost {:.6g}, "
           "infeasibility {:.1e}",
           p.direct.mesh_iteration, p.direct.intervals,
+          p.direct.starts > 1 ? fmt::format(", start {} of {}", p.direct.start + 1, p.direct.starts)
+                              : std::string(),
           p.direct.restart > 0 ? fmt::format(", restart {}", p.direct.restart) : std::string(),
           p.direct.nlp_iteration, p.direct.objective, p.direct.infeasibility);
     else if (p.phase == "phased")

@@ -58,11 +58,19 @@ void torque_free_motion(const CollocationNlp& nlp, double T, std::vector<Mat3>& 
   }
 }
 
-/// The eigenaxis guess: q(t) = q_0 ⊗ exp(s Θ n / 2), ω = Θ n / T (body frame) plus a transverse bump,
-/// u = 0, ν = 0. From a spinning start (ω_0 ≠ 0, fixed final attitude) the same about the torque-free
-/// motion R_free(t), ω_free(t): R = R_free exp(s r), r = log(R_free(T)ᵀ R_f), ω = ω_free + s(ω_f − ω_free(T))
-/// + r/T — the guess follows the spin over every turn instead of taking the shortest rotation to R_f.
-std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
+/// An initial guess of the NLP's variables, and whether it has an eigenaxis that its transverse bump can be
+/// turned about (CollocationOptions::starts).
+struct Guess {
+  std::vector<double> z;
+  bool has_eigenaxis = false;
+};
+
+/// The eigenaxis guess: q(t) = q_0 ⊗ exp(s Θ n / 2), ω = Θ n / T (body frame) plus a transverse bump turned
+/// by `turn` (rad) about n, u = 0, ν = 0. From a spinning start (ω_0 ≠ 0, fixed final attitude) the same
+/// about the torque-free motion R_free(t), ω_free(t): R = R_free exp(s r), r = log(R_free(T)ᵀ R_f),
+/// ω = ω_free + s(ω_f − ω_free(T)) + r/T — the guess follows the spin over every turn instead of taking the
+/// shortest rotation to R_f.
+Guess initial_guess(const CollocationNlp& nlp, double T, double turn) {
   const auto& p = nlp.problem();
   const Mat3 R0 = p.attitude_initial.toRotationMatrix(), Rf = p.attitude_final.toRotationMatrix();
   std::vector<Mat3> spin_R;
@@ -78,6 +86,8 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
   Vec3 transverse = Vec3(0.36, 0.48, 0.8);
   if (rotvec.norm() > 0.0) transverse -= transverse.dot(rotvec) / rotvec.squaredNorm() * rotvec;
   if (transverse.norm() > 1e-3) transverse.normalize();
+  if (rotvec.norm() > 0.0)
+    transverse = std::cos(turn) * transverse + std::sin(turn) * rotvec.normalized().cross(transverse);
   std::vector<double> z(nlp.num_variables(), 0.0);
   // With a free final attitude (detumbling to rest) the guess is the motion under the momentum-dumping torque
   // u = −(‖L_0‖/T) Jω/‖Jω‖, which takes ‖L‖ linearly to 0 at T; R and ω are advanced by 16 midpoint sub-steps
@@ -134,7 +144,7 @@ std::vector<double> initial_guess(const CollocationNlp& nlp, double T) {
       z[kP * pt + 4 + i] = w[i];
   }
   if (nlp.free_time()) z[nlp.time_index()] = T;
-  return z;
+  return {std::move(z), rotvec.norm() > 0.0};
 }
 
 /// The previous solution's interpolants evaluated at the points of `next` (τ is shared: same T).
@@ -186,6 +196,13 @@ void validate(const CollocationOptions& options) {
   if (!(options.nlp_tolerance > 0.0) || !std::isfinite(options.nlp_tolerance))
     throw InvalidInput("collocation.nlp_tolerance: " + format_number(options.nlp_tolerance) +
                        "; expected a finite positive tolerance");
+  if (options.starts < 1 || options.starts > kMaxStarts)
+    throw InvalidInput("collocation.starts: " + std::to_string(options.starts) + "; expected 1 … " +
+                       std::to_string(kMaxStarts));
+}
+
+double first_mesh_turn(int start, int starts) {
+  return 2.0 * std::numbers::pi * static_cast<double>(start) / static_cast<double>(starts);
 }
 
 namespace {
@@ -270,10 +287,12 @@ struct PathMargins {
 
 /// The mesh refinement from `nlp` and its start `z`, an NLP of the problem tightened by `margins`, which
 /// each mesh's solution records (also for CollocationOptions::accept_mesh); the counts of `before` (a
-/// previous solve) are added to.
+/// previous solve) are added to. `first_run`, when given, is Ipopt's run on `nlp` already made (from `z`),
+/// which the first mesh takes instead of solving it again.
 DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<CollocationNlp> nlp,
                            std::vector<double> z, const CollocationOptions& options,
-                           const DirectSolution& before, const PathMargins& margins) {
+                           const DirectSolution& before, const PathMargins& margins,
+                           std::optional<detail::RestartedSolution> first_run = std::nullopt) {
   std::vector<double> y;
   DirectSolution best, previous;  // previous: the last mesh Ipopt solved
   bool have_previous = false;
@@ -284,7 +303,12 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
     detail::RestartProgress progress;
     if (options.progress) {
       progress = [&](int attempt, int i, double f, double inf) {
-        options.progress(DirectProgress{mesh, nlp->intervals(), attempt, i, f, inf});
+        options.progress(DirectProgress{.mesh_iteration = mesh,
+                                        .intervals = nlp->intervals(),
+                                        .restart = attempt,
+                                        .nlp_iteration = i,
+                                        .objective = f,
+                                        .infeasibility = inf});
       };
     }
     const auto stays_near_previous = [&](const detail::NlpSolution& s) {
@@ -297,14 +321,14 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
                                          ? refined_mesh_settings(options)
                                          : first_settings(options);
     if (start_is_optimum) settings.first_attempt_max_iterations = kFirstIterationsFromAnOptimum;
-    detail::RestartedSolution run = detail::solve_with_restarts(
-        *nlp, z, settings,
-        [&](const detail::NlpSolution& s) {
-          const bool solved = s.solved || s.acceptable, near = stays_near_previous(s);
-          refused.record(s, solved && !near);
-          return solved && near;
-        },
-        progress);
+    const auto accept = [&](const detail::NlpSolution& s) {
+      const bool solved = s.solved || s.acceptable, near = stays_near_previous(s);
+      refused.record(s, solved && !near);
+      return solved && near;
+    };
+    detail::RestartedSolution run = it == 0 && first_run
+                                        ? std::move(*first_run)
+                                        : detail::solve_with_restarts(*nlp, z, settings, accept, progress);
     nlp_iterations += run.iterations;
     restarts += run.restarts;
     if (run.stalled) ++stalled;
@@ -448,6 +472,67 @@ DirectSolution meet_path_constraints_between_points(const ReorientationProblem& 
   return solution;
 }
 
+/// The first mesh solved from the guesses of CollocationOptions::starts, and the start the refinement
+/// continues from.
+struct FirstMeshFromStarts {
+  std::vector<FirstMeshStart> starts;  ///< empty where the one guess is left to refine_mesh to solve
+  int chosen = 0;
+  std::vector<double> guess;                     ///< the chosen start's guess
+  std::optional<detail::RestartedSolution> run;  ///< its Ipopt run; empty: not solved yet
+  DirectSolution others;                         ///< the Ipopt counts of the starts not chosen
+};
+
+/// Solves `nlp`, the first mesh, from each start's guess (initial_guess turned by first_mesh_turn) with the
+/// first settings and their restarts; the chosen start is the earliest whose optimum is lower than those of
+/// the starts before it by more than kDistinctFirstMeshOptima (relative), else the first. With one start,
+/// or a guess without an eigenaxis to turn its bump about, the first guess only, unsolved.
+FirstMeshFromStarts solve_first_mesh_from_starts(const CollocationNlp& nlp, double T0,
+                                                 const CollocationOptions& options) {
+  FirstMeshFromStarts out;
+  for (int k = 0; k < options.starts; ++k) {
+    const double turn = first_mesh_turn(k, options.starts);
+    Guess guess = initial_guess(nlp, T0, turn);
+    if (k == 0 && (options.starts == 1 || !guess.has_eigenaxis)) {
+      out.guess = std::move(guess.z);
+      return out;
+    }
+    detail::RestartProgress progress;
+    if (options.progress) {
+      progress = [&](int attempt, int i, double f, double inf) {
+        options.progress(DirectProgress{.mesh_iteration = 1,
+                                        .intervals = nlp.intervals(),
+                                        .restart = attempt,
+                                        .nlp_iteration = i,
+                                        .objective = f,
+                                        .infeasibility = inf,
+                                        .start = k,
+                                        .starts = options.starts});
+      };
+    }
+    detail::RestartedSolution run = detail::solve_with_restarts(
+        nlp, guess.z, first_settings(options),
+        [](const detail::NlpSolution& s) { return s.solved || s.acceptable; }, progress);
+    out.starts.push_back({turn, run.accepted, run.solution.objective, run.iterations});
+    const auto lower = [&] {
+      const double best = out.run->solution.objective;
+      return !out.run->accepted || run.solution.objective < best - kDistinctFirstMeshOptima * std::abs(best);
+    };
+    const bool chosen = k == 0 || (run.accepted && lower());
+    detail::RestartedSolution& dropped = chosen && out.run ? *out.run : run;
+    if (k > 0) {
+      out.others.nlp_iterations += dropped.iterations;
+      out.others.nlp_restarts += dropped.restarts;
+      if (dropped.stalled) ++out.others.nlp_stalled;
+    }
+    if (chosen) {
+      out.chosen = k;
+      out.run = std::move(run);
+      out.guess = std::move(guess.z);
+    }
+  }
+  return out;
+}
+
 }  // namespace
 
 DirectSolution solve_direct(const ReorientationProblem& problem, const CollocationOptions& options) {
@@ -467,18 +552,26 @@ DirectSolution solve_direct(const ReorientationProblem& problem, const Collocati
   const double T0 = !problem.free_final_time() ? problem.final_time
                     : dumping_is_optimal       ? minimum_duration_bound(problem)
                                                : 2.0 * minimum_duration_bound(problem);
-  std::vector<double> z = initial_guess(*nlp, T0);
-  return meet_path_constraints_between_points(
-      problem, refine_mesh(problem, std::move(nlp), std::move(z), options, DirectSolution{}, PathMargins{}),
+  FirstMeshFromStarts first = solve_first_mesh_from_starts(*nlp, T0, options);
+  DirectSolution solution = meet_path_constraints_between_points(
+      problem,
+      refine_mesh(problem, std::move(nlp), std::move(first.guess), options, first.others, PathMargins{},
+                  std::move(first.run)),
       options);
+  solution.first_mesh_starts = std::move(first.starts);
+  solution.chosen_start = first.chosen;
+  return solution;
 }
 
 DirectSolution continue_direct(const ReorientationProblem& problem, const DirectSolution& previous,
                                const CollocationOptions& options) {
   validate(problem);
   validate(options);
-  return meet_path_constraints_between_points(
+  DirectSolution solution = meet_path_constraints_between_points(
       problem, continue_widened(problem, previous, options, margins_of(previous)), options);
+  solution.first_mesh_starts = previous.first_mesh_starts;
+  solution.chosen_start = previous.chosen_start;
+  return solution;
 }
 
 namespace {

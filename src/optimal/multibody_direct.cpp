@@ -96,7 +96,12 @@ MultibodyOptimum solve_model(const MultibodyProblem& problem, const CollocationM
   detail::RestartProgress progress;
   if (options.progress) {
     progress = [&](int attempt, int iteration, double objective, double infeasibility) {
-      options.progress(DirectProgress{1, problem.intervals, attempt, iteration, objective, infeasibility});
+      options.progress(DirectProgress{.mesh_iteration = 1,
+                                      .intervals = problem.intervals,
+                                      .restart = attempt,
+                                      .nlp_iteration = iteration,
+                                      .objective = objective,
+                                      .infeasibility = infeasibility});
     };
   }
   const detail::RestartedSolution run = detail::solve_with_restarts(

@@ -159,6 +159,7 @@ TEST(DirectCollocation, RestartsIpoptWhereItFails) {
   p.objective = Objective::minimum_time;
   CollocationOptions opt;
   opt.mesh_tolerance = 1e-6;
+  opt.starts = 1;  // the restarts of one guess's path (each start has its own)
   const DirectSolution reference = solve_direct(p, opt);
   ASSERT_TRUE(reference.converged) << reference.status;
   EXPECT_EQ(reference.nlp_restarts, 0);
@@ -223,6 +224,7 @@ TEST(DirectCollocation, ARefinedOrWidenedMeshKeepsTheOptimumItStartsFrom) {
     std::vector<double> costs, rises;  // of every mesh above the tolerance, the widened ones included
     std::vector<double> widenings;
     CollocationOptions opt;
+    opt.starts = 1;  // the first guess: from the fourth, the second slew ends lower, clear of the cone
     opt.accept_mesh = [&](const DirectSolution& d) -> std::optional<std::string> {
       costs.push_back(d.cost);
       rises.push_back(detail::allowed_cost_rise(d));
@@ -257,6 +259,7 @@ TEST(DirectCollocation, ARiseThatEveryAttemptAgreesOnIsTheRefinedMeshs) {
                     {0.18239022600083757, -0.9626900975149899, 0.19990393094169673}, 0.34000530671141277);
   std::vector<DirectSolution> meshes;
   CollocationOptions opt;
+  opt.starts = 1;  // the path from the first guess, whose refined mesh rises
   opt.accept_mesh = [&](const DirectSolution& d) -> std::optional<std::string> {
     meshes.push_back(d);
     return std::nullopt;

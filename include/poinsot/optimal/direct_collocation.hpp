@@ -38,6 +38,14 @@ struct CollocationOptions {
   double nlp_tolerance = 1e-10;  ///< Ipopt's tol (scaled KKT error)
   int max_nlp_iterations = 1000;
   int print_level = 0;  ///< Ipopt's print_level (0 = silent)
+  /// How many initial guesses the first mesh is solved from where the guess has an eigenaxis (a final
+  /// attitude to reach, other than the start's): the eigenaxis guess with its transverse bump turned about
+  /// the eigenaxis by 360°/starts from one to the next (first_mesh_turn). The refinement continues from the
+  /// start whose first-mesh optimum is lowest by more than kDistinctFirstMeshOptima (relative) than the
+  /// earlier ones, so that starts that reach the same optimum keep the first. A direct method is local: from
+  /// a spinning start the first guess can lie in the basin of an optimum several per cent above another one
+  /// (measurements/optimal_control.md, "Several starts"). 1: the first guess only.
+  int starts = 4;
   /// Called after every Ipopt iteration (a terminal progress line); empty: not called. Not part of the
   /// result.
   std::function<void(const DirectProgress&)> progress;
@@ -58,6 +66,28 @@ struct CollocationOptions {
 /// 100 keeps a KKT error of 1e-8 for the default 1e-10, far below any mesh error that the direct solutions
 /// are refined to; what the direct solution seeds (the shooting, the verification) does not rest on it.
 inline constexpr double nlp_stall_tolerance_factor = 100.0;
+
+/// The most starts of CollocationOptions::starts.
+inline constexpr int kMaxStarts = 64;
+
+/// How much lower (relative) a first-mesh optimum must be than those of the earlier starts for the
+/// refinement to continue from it (CollocationOptions::starts): starts that reach the same optimum agree to
+/// about Ipopt's tolerance (1e-10 on the scaled KKT error; 1e-8 relative in the cost on Betts' first mesh,
+/// whose starts end on either side of a flat optimum), while the distinct local optima measured differ by
+/// 0.7 % to 11 % (measurements/optimal_control.md, "Several starts").
+inline constexpr double kDistinctFirstMeshOptima = 1e-6;
+
+/// The turn (rad) of the transverse bump about the eigenaxis in the guess of start `start` of `starts`
+/// (CollocationOptions::starts): 2π start/starts.
+double first_mesh_turn(int start, int starts);
+
+/// One first-mesh solve of CollocationOptions::starts.
+struct FirstMeshStart {
+  double turn = 0.0;    ///< rad: the guess's transverse bump turned about the eigenaxis (first_mesh_turn)
+  bool solved = false;  ///< Ipopt solved the first mesh from this guess
+  double cost = 0.0;    ///< the first mesh's optimum (its last iterate's cost when not solved)
+  int nlp_iterations = 0;
+};
 
 /// A collocated trajectory: samples at the nodes and midpoints (times ascending), costates at the interval
 /// centres.
@@ -103,14 +133,24 @@ struct DirectSolution {
   /// Meshes whose NLP solution is the first iterate within nlp_stall_tolerance_factor times nlp_tolerance of
   /// an Ipopt run that stalled above it (see solve_direct).
   int nlp_stalled = 0;
+  /// The first mesh's solves from the starts' guesses (CollocationOptions::starts), in order; empty where
+  /// only the first guess was tried (starts = 1, or a guess without an eigenaxis). Their Ipopt iterations
+  /// are in nlp_iterations.
+  std::vector<FirstMeshStart> first_mesh_starts;
+  int chosen_start = 0;  ///< the index in first_mesh_starts that the refinement continued from
 };
 
 /// Throws InvalidInput (one line naming the field) unless 2 ≤ initial_intervals ≤ max_intervals,
-/// max_mesh_iterations ≥ 1, max_nlp_iterations ≥ 1 and both tolerances are finite and positive.
+/// max_mesh_iterations ≥ 1, max_nlp_iterations ≥ 1, 1 ≤ starts ≤ kMaxStarts and both tolerances are finite
+/// and positive.
 void validate(const CollocationOptions& options);
 
 /// Solves `problem` by collocation. Throws InvalidInput for an invalid problem or options; a solver failure
 /// is reported in `converged`/`status` with the best iterate kept.
+///
+/// The first mesh is solved from CollocationOptions::starts guesses (each with the restarts below), and the
+/// refinement continues from the lowest optimum among them (first_mesh_starts, chosen_start); where none
+/// was solved, from the first start's last iterate, as with one guess.
 ///
 /// Where Ipopt fails on a mesh it is restarted from the same start (the guess, or the previous mesh's
 /// solution interpolated) with other settings before the method gives up: first the monotone barrier from

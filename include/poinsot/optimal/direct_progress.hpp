@@ -15,6 +15,9 @@ struct DirectProgress {
   int nlp_iteration = 0;
   double objective = 0.0;
   double infeasibility = 0.0;  ///< Ipopt's constraint violation
+  /// On the first mesh, the start being solved (0 … starts − 1) of CollocationOptions::starts; 0 later.
+  int start = 0;
+  int starts = 1;  ///< the starts of the first mesh (1 on later meshes)
 };
 
 }  // namespace poinsot::optimal

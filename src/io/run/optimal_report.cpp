@@ -3,8 +3,10 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "optimal_pointing_output.hpp"
 #include "optimal_wheel_output.hpp"
@@ -87,6 +89,18 @@ std::string report_direct(const OptimalRun& r) {
                     : std::string())
           : std::string(),
       format_number(r.direct.final_time, 12), format_number(r.direct.cost, 12));
+  if (const auto& starts = r.direct.first_mesh_starts; !starts.empty()) {
+    std::vector<std::string> turns, costs;
+    for (const optimal::FirstMeshStart& s : starts) {
+      turns.push_back(fmt::format("{}°", format_number(s.turn * 180.0 / std::numbers::pi, 4)));
+      costs.push_back(s.solved ? format_number(s.cost, 10) : std::string("not solved"));
+    }
+    o << fmt::format(
+        "  first mesh from {} starts (the guess's transverse bump turned by {} about the eigenaxis): costs "
+        "{}; "
+        "refined from the start at {}\n",
+        starts.size(), fmt::join(turns, ", "), fmt::join(costs, ", "), turns[r.direct.chosen_start]);
+  }
   if (r.optimal && !r.direct.converged)
     o << "  the mesh tolerance was not met; the indirect solution is verified on its own\n";
   if (r.phased_applied) {

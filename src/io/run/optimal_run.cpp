@@ -419,6 +419,14 @@ std::string optimal_summary_json(const OptimalRun& r) {
                  {"nlp_restarts", r.direct.nlp_restarts},
                  {"nlp_stalled", r.direct.nlp_stalled},
                  {"optimum_from", direct_optimum_source(r)}};
+  nlohmann::ordered_json starts = nlohmann::ordered_json::array();
+  for (const optimal::FirstMeshStart& s : r.direct.first_mesh_starts)
+    starts.push_back({{"turn_deg", s.turn * 180.0 / std::numbers::pi},
+                      {"solved", s.solved},
+                      {"cost", s.cost},
+                      {"nlp_iterations", s.nlp_iterations}});
+  j["direct"]["first_mesh_starts"] = std::move(starts);
+  j["direct"]["chosen_start"] = r.direct.chosen_start;
   const auto finite_or_null = [](double x) {
     return std::isfinite(x) ? nlohmann::ordered_json(x) : nlohmann::ordered_json();
   };

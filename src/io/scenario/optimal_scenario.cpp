@@ -119,11 +119,12 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   sc.body_mass = body.mass;
   sc.body_surface = body.surface;
 
-  const Section oc(src, root["optimal_control"].as_table(), "optimal_control",
-                   {"objective", "torque_bound", "torque_max", "rate_max", "final_time", "energy_weight",
-                    "mesh_tolerance", "initial_intervals", "max_mesh_iterations", "shooting_nodes", "phased",
-                    "phased_intervals_per_arc", "initial", "final", "keep_out", "keep_in", "reaction_wheels"},
-                   root.get("optimal_control"));
+  const Section oc(
+      src, root["optimal_control"].as_table(), "optimal_control",
+      {"objective", "torque_bound", "torque_max", "rate_max", "final_time", "energy_weight", "mesh_tolerance",
+       "initial_intervals", "max_mesh_iterations", "starts", "shooting_nodes", "phased",
+       "phased_intervals_per_arc", "initial", "final", "keep_out", "keep_in", "reaction_wheels"},
+      root.get("optimal_control"));
   auto& p = sc.problem;
   if (const auto o = oc.string("objective"))
     p.objective =
@@ -148,6 +149,7 @@ OptimalScenario parse_optimal_scenario(std::string_view text, std::string_view s
   if (const auto m = oc.number("mesh_tolerance")) sc.collocation.mesh_tolerance = *m;
   if (const auto n = oc.integer("initial_intervals", 2, 4000)) sc.collocation.initial_intervals = *n;
   if (const auto n = oc.integer("max_mesh_iterations", 1, 100)) sc.collocation.max_mesh_iterations = *n;
+  if (const auto n = oc.integer("starts", 1, optimal::kMaxStarts)) sc.collocation.starts = *n;
   if (const auto n = oc.integer("shooting_nodes", 1, 1000)) sc.shooting.shooting_nodes = *n;
   sc.phased = oc.boolean("phased").value_or(true);
   if (const auto n = oc.integer("phased_intervals_per_arc", 1, 2000))

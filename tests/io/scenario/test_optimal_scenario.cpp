@@ -46,6 +46,12 @@ TEST(OptimalScenario, ReadsTheProblem) {
       "betts.toml", ".");
   EXPECT_FALSE(off.phased);
   EXPECT_EQ(off.phased_options.intervals_per_arc, 16);
+  // The first mesh is solved from four guesses unless the file says otherwise.
+  EXPECT_EQ(sc.collocation.starts, 4);
+  EXPECT_EQ(parse_optimal_scenario(std::string(t).replace(t.find("rate_max = 0.5"), 14, "starts = 1"),
+                                   "betts.toml", ".")
+                .collocation.starts,
+            1);
 }
 
 // Each message is one line that locates the key and says what was expected.
@@ -69,6 +75,8 @@ TEST(OptimalScenario, LocatedErrors) {
   expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "shooting_nodes = 0"),
                "shooting_nodes");
   expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "phased = 1"), "phased");
+  expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "starts = 0"), "starts");
+  expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "starts = 65"), "starts");
   expect_error(std::string(kBetts).replace(t.find("rate_max = 0.5"), 14, "phased_intervals_per_arc = 2001"),
                "phased_intervals_per_arc");
   expect_error("[body]\nprincipal_moments = [1.0, 1.0, 1.0]\n", "optimal_control");

@@ -15,6 +15,8 @@
 ///     mesh_tolerance = 1e-5          # direct method, optional
 ///     initial_intervals = 10         # direct method, optional (2 … 4000)
 ///     max_mesh_iterations = 10       # direct method, optional (1 … 100)
+///     starts = 4                     # direct method, optional (1 … 64): guesses the first mesh is
+///                                    # solved from (CollocationOptions::starts)
 ///     shooting_nodes = 1             # indirect method, optional (1 … 1000): segments of multiple shooting
 ///     phased = true                  # optional: the phase-per-arc re-solve of a minimum-time direct
 ///                                    # solution where it applies (phased_collocation.hpp); false: off
