@@ -27,7 +27,10 @@ principle not verified), 1 failed (reaching a limit counts as failed; 2, bad inp
 the child's user + system time (resource.getrusage). Output: one row per problem (with --verbose), then per
 family the shares and the median and 95th percentile of the CPU time. `--expect-verified FAMILY,...` makes
 the script exit 1 unless every problem of those families is verified optimal (the CI's smoke run,
-tests/cli/test_optimal_benchmark.py).
+tests/cli/test_optimal_benchmark.py). `--starts N` writes `starts = N` into every single-body file (the first mesh's
+guesses: docs/optimal_control.md, "Several starts"), so that two settings can be compared on the same problems;
+`--json` records each answer's cost (the indirect solution's where it is the answer, else the direct one's) and
+the start the refinement continued from.
 """
 from __future__ import annotations
 
@@ -207,6 +210,13 @@ def scenario(family: str, seed: int, index: int, source_dir: Path) -> str:
 OUTCOMES = {0: "verified", 3: "converged_direct", 1: "failed"}
 
 
+def answer_cost(summary: dict):
+    """The cost of the answer in a summary.json of `poinsot optimize`: the indirect solution's where it is
+    the answer, else the direct one's; None where the summary has neither (a multibody run's)."""
+    part = summary.get("indirect") if summary.get("solution_from") == "indirect" else summary.get("direct")
+    return part.get("cost") if isinstance(part, dict) else None
+
+
 def run_one(poinsot: str, path: Path, out: Path, timeout: float, cpu_limit: float) -> dict:
     """Runs `poinsot optimize` on one file: its outcome, CPU and wall time, and its status line. The child's
     CPU time is limited to `cpu_limit` s (RLIMIT_CPU: a loaded machine does not turn slow runs into
@@ -220,10 +230,14 @@ def run_one(poinsot: str, path: Path, out: Path, timeout: float, cpu_limit: floa
     try:
         r = subprocess.run([poinsot, "optimize", str(path), "--out", str(out), "--json", "--quiet"],
                            capture_output=True, text=True, timeout=timeout, preexec_fn=limit_cpu)
-        code, status = r.returncode, ""
+        code, status, cost, chosen_start = r.returncode, "", None, None
         if code in OUTCOMES:
             try:
-                status = json.loads(r.stdout)["status"]
+                summary = json.loads(r.stdout)
+                status = summary["status"]
+                direct = summary.get("direct")
+                cost = answer_cost(summary)
+                chosen_start = direct.get("chosen_start") if isinstance(direct, dict) else None
             except (ValueError, KeyError):
                 status = r.stdout.strip().splitlines()[0] if r.stdout.strip() else ""
         elif code in (-24, -9):  # SIGXCPU, SIGKILL: the CPU limit
@@ -232,12 +246,12 @@ def run_one(poinsot: str, path: Path, out: Path, timeout: float, cpu_limit: floa
             status = (r.stderr.strip() or r.stdout.strip()).splitlines()[-1:] or [""]
             status = status[0]
     except subprocess.TimeoutExpired:
-        code, status = None, f"timeout after {timeout:g} s"
+        code, status, cost, chosen_start = None, f"timeout after {timeout:g} s", None, None
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     outcome = OUTCOMES.get(code, "failed") if code != 2 else "bad_input"
     return {"outcome": outcome, "exit": code, "cpu_s": cpu, "wall_s": time.monotonic() - start,
-            "status": status}
+            "status": status, "cost": cost, "chosen_start": chosen_start}
 
 
 def percentile(values: list[float], q: float) -> float:
@@ -286,6 +300,9 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--keep", metavar="DIR", help="keep the scenario files and the outputs in DIR")
     ap.add_argument("--json", metavar="FILE", help="write every problem's result to FILE")
     ap.add_argument("--verbose", action="store_true", help="one line per problem as it ends")
+    ap.add_argument("--starts", type=int, metavar="N",
+                    help="write `starts = N` into every single-body problem's [optimal_control] (the first "
+                         "mesh's guesses; default: the file's default)")
     ap.add_argument("--expect-verified", default="", metavar="FAMILIES",
                     help="exit 1 unless every problem of these comma-separated families is verified optimal")
     a = ap.parse_args(argv)
@@ -296,11 +313,18 @@ def main(argv: list[str] | None = None) -> int:
     if a.n < 1:
         ap.error(f"--n: {a.n}; expected at least 1")
     problems = [(f, i) for f in families for i in range(a.first, a.first + a.n)]
+
+    def text_of(f: str, i: int) -> str:
+        text = scenario(f, a.seed, i, source_dir)
+        if a.starts is None or f == "arm":
+            return text
+        return text.replace("[optimal_control]\n", f"[optimal_control]\nstarts = {a.starts}\n", 1)
+
     if a.emit:
         out = Path(a.emit)
         out.mkdir(parents=True, exist_ok=True)
         for f, i in problems:
-            (out / f"{f}_{a.seed}_{i}.toml").write_text(scenario(f, a.seed, i, source_dir))
+            (out / f"{f}_{a.seed}_{i}.toml").write_text(text_of(f, i))
         print(f"{len(problems)} scenario files in {out}")
         return 0
     work = Path(a.keep) if a.keep else Path(tempfile.mkdtemp(prefix="poinsot-bench-"))
@@ -309,7 +333,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         for f, i in problems:
             path = work / f"{f}_{a.seed}_{i}.toml"
-            path.write_text(scenario(f, a.seed, i, source_dir))
+            path.write_text(text_of(f, i))
             r = {"family": f, "seed": a.seed, "index": i,
                  **run_one(a.poinsot, path, work / f"{f}_{a.seed}_{i}-out", a.timeout, a.cpu_limit)}
             results.append(r)

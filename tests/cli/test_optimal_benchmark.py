@@ -56,6 +56,13 @@ def test_generator_is_deterministic_per_family_seed_and_index(source_dir, tmp_pa
     assert (tmp_path / "d" / "rate_7_1.toml").read_text() == (a / "rate_7_1.toml").read_text()
 
 
+def test_starts_are_written_into_the_single_body_files_only(source_dir, tmp_path):
+    r = bench(source_dir, "--emit", tmp_path, "--family", "spin,arm", "--n", 1, "--starts", 2)
+    assert r.returncode == 0, r.stderr
+    assert "[optimal_control]\nstarts = 2\n" in (tmp_path / "spin_1_0.toml").read_text()
+    assert "starts" not in (tmp_path / "arm_1_0.toml").read_text()  # a multibody file has no such key
+
+
 def test_bad_arguments_are_refused(source_dir, tmp_path):
     r = bench(source_dir, "--emit", tmp_path, "--family", "cube")
     assert r.returncode == 2 and "--family" in r.stderr
@@ -79,6 +86,9 @@ def test_fixed_seed_run_is_valid_and_verifies_the_tuned_families(source_dir, tmp
     lines = r.stdout.splitlines()
     assert lines[0].startswith("| family | problems | verified | converged (direct) | failed |")
     assert [line.split("|")[1].strip() for line in lines[2:]] == families
+    # Every result records the answer's cost and the start the refinement continued from.
+    for result in json.loads((tmp_path / "r.json").read_text()):
+        assert result["cost"] > 0.0 and isinstance(result["chosen_start"], int), result
     # The rate-bounded problem: the refinement stopped at the first mesh from which the shooting over its
     # boundary arcs verified, above the mesh tolerance (docs/optimal_control.md, "Rate-bounded problems stop
     # refining once verified"), the arcs and the multipliers' sign in summary.json.
