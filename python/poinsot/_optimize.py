@@ -229,7 +229,7 @@ _SOLVERS: list[tuple[Callable[[Any], Any], Callable[[Any, str], Any]]] = [
 
 def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tolerance: float | None = None,
              initial_intervals: int | None = None, max_mesh_iterations: int | None = None,
-             plot: bool = False, warn: bool = True, stabilisation_step: float | None = None,
+             starts: int | None = None, plot: bool = False, warn: bool = True, stabilisation_step: float | None = None,
              warm_start: list[int] | None = None,
              no_twist: list[dict] | None = None) -> OptimalSolution | MultibodyOptimalSolution:
     """Solves an optimal reorientation as ``poinsot optimize`` does and returns the solution as NumPy arrays.
@@ -237,8 +237,8 @@ def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tol
     ``problem``: the path of a scenario file with an ``[optimal_control]`` section (docs/optimal_control.md), a
     dict with the same layout (``{"body": {...}, "optimal_control": {..., "initial": {...}, "final":
     {...}}}``), a ``poinsot.optimal.OptimalScenario``, or a ``poinsot.optimal.ReorientationProblem``.
-    ``mesh_tolerance``, ``initial_intervals``, ``max_mesh_iterations`` replace the direct method's options
-    (None: the scenario's, else the defaults). ``problem`` may also be a multibody scenario file (a
+    ``mesh_tolerance``, ``initial_intervals``, ``max_mesh_iterations`` and ``starts`` (the guesses the first mesh
+    is solved from, 1 … 64) replace the direct method's options (None: the scenario's, else the defaults). ``problem`` may also be a multibody scenario file (a
     ``[[bodies]]`` array and an ``[optimal_control]`` section, docs/optimal_control.md) or a
     ``poinsot.optimal.MultibodyProblem`` built around a ``poinsot.multibody.System``: the result is then a
     ``MultibodyOptimalSolution`` (``initial_intervals`` sets its equal intervals; the mesh options and
@@ -267,7 +267,7 @@ def optimize(problem: Any, *, out_dir: str | os.PathLike | None = None, mesh_tol
     if plot and not folder:
         raise ValueError("plot: the figures are drawn from the solution's files; expected an out_dir")
     options = dict(mesh_tolerance=mesh_tolerance, initial_intervals=initial_intervals,
-                   max_mesh_iterations=max_mesh_iterations)
+                   max_mesh_iterations=max_mesh_iterations, starts=starts)
     multibody = dict(stabilisation_step=stabilisation_step, warm_start=warm_start, no_twist=no_twist)
     for name, value in multibody.items():
         if value is not None and not isinstance(prepared, MultibodyPrepared):

@@ -71,15 +71,16 @@ class MultibodyOptimalSolution:
 class _Prepared:
     """A MultibodyProblem with the option names of ``poinsot.optimize``: ``initial_intervals`` sets the
     (equal) intervals, ``stabilisation_step``, ``warm_start`` (the mesh sequence) and ``no_twist`` replace the
-    problem's (MultibodyProblem.with_options); the single body's mesh-refinement options are refused (a
-    multibody mesh is refined only where the re-simulation misses the target)."""
+    problem's (MultibodyProblem.with_options); the single body's mesh-refinement options and starts are refused
+    (a multibody mesh is refined only where the re-simulation misses the target, from its own warm start)."""
 
     scenario: Any
     plots: bool = False
 
-    def with_options(self, mesh_tolerance=None, initial_intervals=None, max_mesh_iterations=None,
+    def with_options(self, mesh_tolerance=None, initial_intervals=None, max_mesh_iterations=None, starts=None,
                      stabilisation_step=None, warm_start=None, no_twist=None) -> "_Prepared":
-        for name, value in (("mesh_tolerance", mesh_tolerance), ("max_mesh_iterations", max_mesh_iterations)):
+        for name, value in (("mesh_tolerance", mesh_tolerance), ("max_mesh_iterations", max_mesh_iterations),
+                            ("starts", starts)):
             if value is not None:
                 raise ValueError(f"{name}: multibody problems take no mesh-refinement options; expected None (set "
                                  "initial_intervals, or intervals in the file)")

@@ -70,8 +70,10 @@ class OptimalScenario:
     @property
     def source(self) -> str: ...
     @property
+    def starts(self) -> int: ...
+    @property
     def title(self) -> str: ...
-    def with_options(self, *, mesh_tolerance: object = ..., initial_intervals: object = ..., max_mesh_iterations: object = ..., out_dir: object = ...) -> OptimalScenario:
+    def with_options(self, *, mesh_tolerance: object = ..., initial_intervals: object = ..., max_mesh_iterations: object = ..., starts: object = ..., out_dir: object = ...) -> OptimalScenario:
         """A copy with the direct method's options replaced (None: kept)."""
 
 class ReorientationProblem:

@@ -414,25 +414,31 @@ void bind_optimal_scenario(py::module_& m) {
                              [](const io::OptimalScenario& s) { return s.collocation.initial_intervals; })
       .def_property_readonly("max_mesh_iterations",
                              [](const io::OptimalScenario& s) { return s.collocation.max_mesh_iterations; })
+      .def_property_readonly(
+          "starts", [](const io::OptimalScenario& s) { return s.collocation.starts; },
+          POINSOT_DOC(optimal_CollocationOptions_starts))
       .def(
           "with_options",
           [](const io::OptimalScenario& s, const py::object& mesh_tolerance,
              const py::object& initial_intervals, const py::object& max_mesh_iterations,
-             const py::object& out_dir) {
+             const py::object& starts, const py::object& out_dir) {
             io::OptimalScenario copy = s;
             if (!mesh_tolerance.is_none()) copy.collocation.mesh_tolerance = mesh_tolerance.cast<double>();
             if (!initial_intervals.is_none())
               copy.collocation.initial_intervals = initial_intervals.cast<int>();
             if (!max_mesh_iterations.is_none())
               copy.collocation.max_mesh_iterations = max_mesh_iterations.cast<int>();
+            if (!starts.is_none()) copy.collocation.starts = starts.cast<int>();
             if (!out_dir.is_none()) copy.out_dir = out_dir.cast<std::string>();
             opt::validate(copy.collocation);
             return copy;
           },
           py::kw_only(), py::arg("mesh_tolerance") = py::none(), py::arg("initial_intervals") = py::none(),
-          py::arg("max_mesh_iterations") = py::none(), py::arg("out_dir") = py::none(),
+          py::arg("max_mesh_iterations") = py::none(), py::arg("starts") = py::none(),
+          py::arg("out_dir") = py::none(),
           "A copy with the direct method's options replaced (None: kept). Raises ValueError for "
-          "initial_intervals < 2, max_mesh_iterations < 1 or a tolerance that is not finite and positive.")
+          "initial_intervals < 2, max_mesh_iterations < 1, starts outside 1 … 64 or a tolerance that is not "
+          "finite and positive.")
       .def("__repr__", [](const io::OptimalScenario& s) {
         return "OptimalScenario(source=" + s.source +
                ", objective=" + std::string(opt::objective_name(s.problem.objective)) + ")";

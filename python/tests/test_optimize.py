@@ -176,6 +176,22 @@ def test_scenario_objects_and_options():
         sc.with_options(mesh_tolerance=-1.0)
     with pytest.raises(ValueError, match="max_mesh_iterations"):
         poinsot.optimize(sc, max_mesh_iterations=0)
+    assert sc.starts == 4 and sc.with_options(starts=1).starts == 1
+    with pytest.raises(ValueError, match="collocation.starts: 0"):
+        sc.with_options(starts=0)
+
+
+def test_starts_are_reported_and_one_start_solves_the_first_guess_only(betts):
+    # Betts' slew: four first-mesh optima that agree (docs/optimal_control.md, "Several starts"), the first kept;
+    # with starts=1 the first mesh is solved once, from the first guess, to the same answer.
+    four = betts
+    one = poinsot.optimize(EXAMPLES / "betts.toml", starts=1)
+    starts = four.summary["direct"]["first_mesh_starts"]
+    assert [s["turn_deg"] for s in starts] == [0.0, 90.0, 180.0, 270.0]
+    assert all(s["solved"] for s in starts) and four.summary["direct"]["chosen_start"] == 0
+    assert max(s["cost"] for s in starts) <= min(s["cost"] for s in starts) * (1 + 1e-6)
+    assert one.summary["direct"]["first_mesh_starts"] == []
+    assert one.optimal and four.optimal and one.final_time == four.final_time
 
 
 RATE_BOUNDED = {

@@ -139,6 +139,8 @@ def test_bad_input_raises_value_error():
         p.with_options(intervals=1)
     with pytest.raises(ValueError, match="mesh_tolerance"):
         poinsot.optimize(p, mesh_tolerance=1e-6)
+    with pytest.raises(ValueError, match="starts: multibody problems take no"):
+        poinsot.optimize(p, starts=2)
     with pytest.raises(ValueError, match="single-body problems only"):
         poinsot.optimize(p, out_dir="unused", plot=True)
     with pytest.raises(ValueError, match="final state"):
