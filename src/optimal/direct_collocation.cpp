@@ -483,9 +483,10 @@ struct FirstMeshFromStarts {
 };
 
 /// Solves `nlp`, the first mesh, from each start's guess (initial_guess turned by first_mesh_turn) with the
-/// first settings and their restarts; the chosen start is the earliest whose optimum is lower than those of
-/// the starts before it by more than kDistinctFirstMeshOptima (relative), else the first. With one start,
-/// or a guess without an eigenaxis to turn its bump about, the first guess only, unsolved.
+/// first settings and their restarts. The first start is chosen, and a later one replaces the choice when
+/// Ipopt solved it and its optimum is lower than the chosen one's by more than kDistinctFirstMeshOptima
+/// (relative), or the chosen one was not solved. With one start, or a guess without an eigenaxis to turn its
+/// bump about, the first guess only, unsolved.
 FirstMeshFromStarts solve_first_mesh_from_starts(const CollocationNlp& nlp, double T0,
                                                  const CollocationOptions& options) {
   FirstMeshFromStarts out;

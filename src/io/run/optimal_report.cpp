@@ -96,10 +96,10 @@ std::string report_direct(const OptimalRun& r) {
       costs.push_back(s.solved ? format_number(s.cost, 10) : std::string("not solved"));
     }
     o << fmt::format(
-        "  first mesh from {} starts (the guess's transverse bump turned by {} about the eigenaxis): costs "
-        "{}; "
-        "refined from the start at {}\n",
-        starts.size(), fmt::join(turns, ", "), fmt::join(costs, ", "), turns[r.direct.chosen_start]);
+             "  first mesh from {} starts (the guess's transverse bump turned by {} about the eigenaxis): ",
+             starts.size(), fmt::join(turns, ", "))
+      << fmt::format("costs {}; refined from the start at {}\n", fmt::join(costs, ", "),
+                     turns[r.direct.chosen_start]);
   }
   if (r.optimal && !r.direct.converged)
     o << "  the mesh tolerance was not met; the indirect solution is verified on its own\n";
