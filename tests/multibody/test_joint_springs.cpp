@@ -21,9 +21,9 @@
 namespace poinsot::multibody {
 namespace {
 
-using test::damped_oscillator;
-using test::expect_has;
-using test::message_of;
+using ::poinsot::test::damped_oscillator;
+using ::poinsot::test::expect_has;
+using ::poinsot::test::message_of;
 
 /// The largest |E − E₀| over `steps` RATTLE steps of `h` from `s` (advanced to the last), E₀ its energy at
 /// the start.
