@@ -166,13 +166,29 @@ struct PathMargins {
   double momentum = 0.0;  ///< ε (relative)
 };
 
+/// The solves a mesh refinement continues: their counts, which its solution adds to, and whether its start is
+/// an optimum Ipopt solved on the same mesh.
+struct SolvesBefore {
+  int mesh_iterations = 0;
+  int nlp_iterations = 0;
+  int nlp_restarts = 0;
+  int nlp_stalled = 0;
+  bool start_is_optimum = false;
+};
+
+/// The counts of `previous`, whose optimum is the start of a solve on its own mesh (continue_widened).
+SolvesBefore solves_of(const DirectSolution& previous) {
+  return {previous.mesh_iterations, previous.nlp_iterations, previous.nlp_restarts, previous.nlp_stalled,
+          previous.nlp_solved};
+}
+
 /// The mesh refinement from `nlp` and its start `z`, an NLP of the problem tightened by `margins`, which
-/// each mesh's solution records (also for CollocationOptions::accept_mesh); the counts of `before` (a
-/// previous solve) are added to. `first_run`, when given, is Ipopt's run on `nlp` already made (from `z`),
-/// which the first mesh takes instead of solving it again.
+/// each mesh's solution records (also for CollocationOptions::accept_mesh); the counts of `before` are added
+/// to. `first_run`, when given, is Ipopt's run on `nlp` already made (from `z`), which the first mesh takes
+/// instead of solving it again.
 DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<CollocationNlp> nlp,
                            std::vector<double> z, const CollocationOptions& options,
-                           const DirectSolution& before, const PathMargins& margins,
+                           const SolvesBefore& before, const PathMargins& margins,
                            std::optional<detail::RestartedSolution> first_run = std::nullopt) {
   std::vector<double> y;
   DirectSolution best, previous;  // previous: the last mesh Ipopt solved
@@ -196,7 +212,7 @@ DirectSolution refine_mesh(const ReorientationProblem& problem, std::unique_ptr<
       return !have_previous || s.objective <= previous.cost * (1.0 + detail::allowed_cost_rise(previous));
     };
     // The start is an optimum: the previous mesh's, or (it = 0) that of `before` on the same mesh.
-    const bool start_is_optimum = have_previous || (it == 0 && before.nlp_solved);
+    const bool start_is_optimum = have_previous || (it == 0 && before.start_is_optimum);
     RefusedRises refused;
     detail::IpoptSettings settings = start_is_optimum && !problem.pointing.empty()
                                          ? refined_mesh_settings(options)
@@ -360,7 +376,7 @@ struct FirstMeshFromStarts {
   int chosen = 0;
   std::vector<double> guess;                     ///< the chosen start's guess
   std::optional<detail::RestartedSolution> run;  ///< its Ipopt run; empty: not solved yet
-  DirectSolution others;                         ///< the Ipopt counts of the starts not chosen
+  SolvesBefore others;                           ///< the Ipopt counts of the starts not chosen
 };
 
 /// Solves `nlp`, the first mesh, from each start's guess (initial_guess turned by first_mesh_turn) with the
@@ -489,7 +505,7 @@ DirectSolution continue_widened(const ReorientationProblem& original, const Dire
     std::copy(v, v + 10, z.begin() + static_cast<std::ptrdiff_t>(kP * pt));  // ν = 0
   }
   if (nlp->free_time()) z[nlp->time_index()] = previous.final_time;
-  return refine_mesh(problem, std::move(nlp), std::move(z), options, previous, margins);
+  return refine_mesh(problem, std::move(nlp), std::move(z), options, solves_of(previous), margins);
 }
 
 /// The margin (rad) below which a pointing constraint counts as active on a direct solution, beyond the
