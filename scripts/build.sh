@@ -6,7 +6,7 @@ preset="${1:-release}"
 shift || true
 cmake --preset "$preset" >/dev/null
 # One compile job a core: Ninja's default (cores + 2) was 15-20 % slower on two cores, where each job needs
-# 1-1.5 GB (docs/measurements/ci_time.md, "Compile jobs").
+# 1-1.5 GB (docs/measurements/ci_time.md, "One compile job a core").
 jobs="$(nproc)"
 if [ $# -gt 0 ]; then
   cmake --build --preset "$preset" --parallel "$jobs" --target "$@"
