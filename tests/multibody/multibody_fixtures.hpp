@@ -18,17 +18,17 @@ int slowdown();
 /// prefix + index (avoids GCC 12's false -Wrestrict on "literal" + std::to_string).
 std::string indexed(const char* prefix, int index);
 
+inline constexpr double kG = 9.81;  ///< m/s², the gravity of the fixtures below
+
 /// K about the centre of mass of a solid cylinder (mass m, length l along body x, radius r): ∫ρ X⊗X.
 Mat3 rod_poinsot(double m, double l, double r);
 
 /// A chain of n rods (length l, mass m, radius r) along +x from the origin, the first hung from the world at
-/// the origin by a ball joint, the others joined end to end; gravity −9.81 ẑ. At rest, horizontal.
-System rod_chain(int n, double m = 1.0, double l = 1.0, double r = 0.01, const Vec3& g = Vec3(0, 0, -9.81));
+/// the origin by a ball joint, the others joined end to end; gravity −kG ẑ. At rest, horizontal.
+System rod_chain(int n, double m = 1.0, double l = 1.0, double r = 0.01, const Vec3& g = Vec3(0, 0, -kG));
 
 /// The rest state of rod_chain(n, ·, l): the rods' centres at ((i + ½) l, 0, 0), unrotated.
 State rod_chain_state(int n, double l = 1.0);
-
-inline constexpr double kG = 9.81;  ///< m/s², the gravity of the fixtures below
 
 /// A tree that is not a chain: three rods hung from the world (rod_chain(3)) and a fourth, the "arm", on a
 /// hinge about y from link 1's point (0, 0.1, 0); at rest, horizontal. Solved by Baraff's tree order.
