@@ -1,9 +1,13 @@
 // Fuzz harness: the mesh reader (inertia/mesh_io.hpp) and what follows it for `poinsot inertia mesh` —
-// diagnostics, solid and shell mass properties. Built once per format: POINSOT_FUZZ_MESH_EXT is the file
-// extension (".stl", ".obj", ".ply", ".off") that selects assimp's importer.
+// diagnostics, solid and shell mass properties. Compiled once and linked once per format with the definition
+// of poinsot_fuzz_mesh_extension() below (fuzz/CMakeLists.txt generates it).
 #include "fuzz_support.hpp"
 #include "poinsot/inertia/mesh.hpp"
 #include "poinsot/inertia/mesh_io.hpp"
+
+/// The file extension of the format this harness reads (".stl", ".obj", ".ply" or ".off"), which selects
+/// assimp's importer.
+extern "C" const char* poinsot_fuzz_mesh_extension();
 
 // assimp allocates a few objects once, on its first import (its importer registry): done here, before the
 // leak checks of the inputs.
@@ -18,7 +22,7 @@ extern "C" int LLVMFuzzerInitialize(int* /*argc*/, char*** /*argv*/) {
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path = poinsot::fuzz::input_file(data, size, POINSOT_FUZZ_MESH_EXT);
+  const std::string path = poinsot::fuzz::input_file(data, size, poinsot_fuzz_mesh_extension());
   poinsot::fuzz::expect_clean([&] {
     using namespace poinsot::inertia;  // NOLINT: harness
     MeshLimits limits;
