@@ -539,8 +539,8 @@ IndirectSolution shoot_with_bounded_singular_torque(const ReorientationProblem& 
 }  // namespace
 
 IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
-                                 const ShootingOptions& o, double shortest_singular_arc) {
-  const ArcStructure s = read_arc_structure(p, d, shortest_singular_arc);
+                                 const ShootingOptions& o, double shortest_singular_arc, bool dips) {
+  const ArcStructure s = read_arc_structure(p, d, shortest_singular_arc, 0.0, 0.0, dips);
   if (s.refused.empty()) return shoot_with_bounded_singular_torque(p, d, o, s);
   IndirectSolution out;
   out.status = "not applied: " + s.refused;
@@ -550,7 +550,7 @@ IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolu
   const std::vector<double> either{1.0, -1.0}, none{0.0};
   for (const double start : s.singular_at_start >= 0 ? either : none)
     for (const double end : s.singular_at_end >= 0 ? either : none) {
-      const ArcStructure entered = read_arc_structure(p, d, shortest_singular_arc, start, end);
+      const ArcStructure entered = read_arc_structure(p, d, shortest_singular_arc, start, end, dips);
       if (!entered.refused.empty()) {  // a structure past the ends that the shooting does not handle
         out.status = "not applied: " + entered.refused;
         return out;

@@ -55,9 +55,10 @@ namespace poinsot::optimal::detail {
 /// its exit), of sign +1, then −1 (read_arc_structure's start_bang_sign and end_bang_sign); the first that
 /// converges is returned. A converged extremal whose singular torque leaves its bound is shot again over the
 /// structure with_bounded_singular_torque amends. A structure read_arc_structure refuses is returned
-/// unsolved, its status "not applied: <reason>".
+/// unsolved, its status "not applied: <reason>". With `dips`, the structure includes the short dips of
+/// read_arc_structure.
 IndirectSolution solve_over_arcs(const ReorientationProblem& p, const DirectSolution& d,
                                  const ShootingOptions& options,
-                                 double shortest_singular_arc = kShortestSingularArc);
+                                 double shortest_singular_arc = kShortestSingularArc, bool dips = false);
 
 }  // namespace poinsot::optimal::detail

@@ -49,17 +49,27 @@ std::vector<SampleArc> boundary_arcs(const ReorientationProblem& p, const Direct
   return arcs;
 }
 
-/// The singular arcs of axis i off its boundary arcs: stretches longer than kShortestSingularArc of T of
-/// samples with |u_i| < 0.95 u_max,i, bridging gaps of up to three samples (read_arc_structure).
+/// The singular arcs of axis i off its boundary arcs: stretches longer than `shortest` of T of samples with
+/// |u_i| < 0.95 u_max,i, bridging gaps of up to three samples; with `dips`, also the shorter stretches
+/// along which u_i keeps one sign from the sample before to the sample after (read_arc_structure).
 std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const DirectSolution& d, int i,
-                                     const std::vector<SampleArc>& boundary, double shortest) {
+                                     const std::vector<SampleArc>& boundary, double shortest, bool dips) {
   auto on_boundary = [&](std::size_t j) {
     return std::any_of(boundary.begin(), boundary.end(),
                        [j](const SampleArc& a) { return j >= a.first && j <= a.last; });
   };
   auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < 0.95 * p.torque_max[i]; };
-  std::vector<SampleArc> arcs;
   const std::size_t N = d.time.size();
+  // A stretch [first, last] between two samples, one sign throughout: u_i leaves its bound and comes back
+  // without a switch.
+  auto is_dip = [&](std::size_t first, std::size_t last) {
+    if (first == 0 || last + 1 >= N) return false;
+    const bool positive = d.torque_body[first - 1][i] > 0;
+    for (std::size_t k = first; k <= last + 1; ++k)
+      if ((d.torque_body[k][i] > 0) != positive) return false;
+    return true;
+  };
+  std::vector<SampleArc> arcs;
   for (std::size_t j = 0; j < N;) {
     if (on_boundary(j) || !inside(j)) {
       ++j;
@@ -75,7 +85,8 @@ std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const Direct
         break;
       }
     }
-    if (d.time[last] - d.time[j] > shortest * d.final_time) arcs.push_back({j, last, Arc::singular});
+    if (d.time[last] - d.time[j] > shortest * d.final_time || (dips && is_dip(j, last)))
+      arcs.push_back({j, last, Arc::singular});
     j = last + 1;
   }
   return arcs;
@@ -119,7 +130,8 @@ std::string order_two_reason(int i) {
 }  // namespace
 
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
-                                double shortest_singular_arc, double start_bang_sign, double end_bang_sign) {
+                                double shortest_singular_arc, double start_bang_sign, double end_bang_sign,
+                                bool dips) {
   ArcStructure s;
   if (p.objective != Objective::minimum_time || p.bound != TorqueBound::per_axis) {
     s.refused = "boundary and singular arcs are handled for minimum time with per-axis torque bounds only";
@@ -131,7 +143,7 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
   for (int i = 0; i < 3; ++i) {
     const auto k = static_cast<std::size_t>(i);
     boundary[k] = boundary_arcs(p, d, i);
-    singular[k] = singular_arcs(p, d, i, boundary[k], shortest_singular_arc);
+    singular[k] = singular_arcs(p, d, i, boundary[k], shortest_singular_arc, dips);
   }
   // Whether a singular arc of another axis shares a sample with `a` (axis i): C_SS of the pair may then be
   // regular though C_ii = 0.
@@ -176,11 +188,16 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
       return std::any_of(arcs.begin(), arcs.end(),
                          [j](const SampleArc& a) { return j >= a.first && j <= a.last; });
     };
-    // The entry and exit of arc `a`, with the sign of u_i after it.
+    // The entry and exit of arc `a`, with the sign of u_i after it; a dip of one sample from the midpoint
+    // before it to the midpoint after it.
     auto add_arc = [&](const SampleArc& a, double sign_after) {
       const double side = a.arc == Arc::singular ? 0.0 : d.omega_body[a.first][i] > 0 ? 1.0 : -1.0;
-      events.push_back(arc_end(Kind::entry, a.arc, i, side, d.time[a.first]));
-      events.push_back(arc_end(Kind::exit, a.arc, i, side, d.time[a.last], sign_after));
+      const bool one_sample = a.first == a.last;
+      events.push_back(arc_end(Kind::entry, a.arc, i, side,
+                               one_sample ? 0.5 * (d.time[a.first - 1] + d.time[a.first]) : d.time[a.first]));
+      events.push_back(arc_end(Kind::exit, a.arc, i, side,
+                               one_sample ? 0.5 * (d.time[a.last] + d.time[a.last + 1]) : d.time[a.last],
+                               sign_after));
     };
     // Saturated samples off the arcs: the signs; an arc between two of them takes the place of a switch.
     const double umax = p.torque_max[i];

@@ -58,10 +58,13 @@ bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, d
 /// overlaps a boundary arc or reaches t = 0 or T (or both). With `start_bang_sign` ±1, a singular arc that
 /// reaches t = 0 is read as entered at the direct solution's second sample, after a bang arc of u_i with that
 /// sign; with `end_bang_sign` ±1, one that reaches T as left at the last sample but one, before a bang arc of
-/// that sign.
+/// that sign. With `dips`, a shorter stretch inside the bound (one sample or more) is a singular arc too
+/// where u_k keeps its sign from the sample before it to the sample after it (a dip towards 0 that returns
+/// to the same bound: the collocation's stand-in for a singular arc shorter than its intervals); a dip of
+/// one sample is read from the midpoint before it to the midpoint after it.
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
                                 double shortest_singular_arc = kShortestSingularArc,
-                                double start_bang_sign = 0.0, double end_bang_sign = 0.0);
+                                double start_bang_sign = 0.0, double end_bang_sign = 0.0, bool dips = false);
 
 /// Where the singular torque of a converged shot over `s` leaves its bound, the structure that keeps it
 /// inside: `shot` is that extremal (its samples and singular_arcs), `times` its event times in the order of

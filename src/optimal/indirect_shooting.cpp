@@ -318,6 +318,16 @@ void fill_solution(const ReorientationProblem& p, const SwitchGuess& sw, const S
   }
 }
 
+/// Whether the direct solution has a dip (read_arc_structure's `dips`) in a structure the shooting over arcs
+/// handles.
+bool has_dips(const ReorientationProblem& p, const DirectSolution& d) {
+  const detail::ArcStructure s =
+      detail::read_arc_structure(p, d, detail::kShortestSingularArc, 0.0, 0.0, true);
+  return s.refused.empty() && std::any_of(s.events.begin(), s.events.end(), [](const detail::ArcEvent& e) {
+           return e.kind == detail::ArcEvent::Kind::entry && e.arc == detail::ArcEvent::Arc::singular;
+         });
+}
+
 /// Whether a bang-bang extremal's control has σ_i's sign at a sample on an axis i that is not principal.
 bool grazes_off_principal(const ReorientationProblem& p, const IndirectSolution& s) {
   const Eigen::Vector3i violations = detail::switching_sign_violations(s);
@@ -453,6 +463,13 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   if (SwitchGuess trimmed;
       out.bang_bang && !out.converged && without_short_end_arcs(sw, d.final_time, trimmed))
     shoot_instead(trimmed);
+  // A u_i that dips towards 0 and returns to the same bound over a few samples: a singular arc shorter than
+  // the mesh resolves, where σ_i touches 0 without crossing it (read_arc_structure's `dips`). Shot over those
+  // arcs where no bang-bang structure converged.
+  if (out.bang_bang && !out.converged && has_dips(p, d)) {
+    IndirectSolution over_dips = detail::solve_over_arcs(p, d, o, detail::kShortestSingularArc, true);
+    if (over_dips.converged) return over_dips;
+  }
   // A σ_i that grazes 0 along a bang arc, where the extremal's control takes σ_i's sign: the direct control
   // may be inside its bound there over a stretch too short for read_switching_structure to call it a singular
   // arc. Shot over the singular arcs of at least kShortestGrazedSingularArc of T instead, where that

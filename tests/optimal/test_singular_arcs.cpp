@@ -157,6 +157,35 @@ TEST(SingularArcs, AShortSingularArcWhereTheBangBangExtremalFailsIsShotOverInste
   expect_verified_with_kelley(p, d, s);
 }
 
+// A singular arc shorter than the mesh resolves (problem 6 of the nonprincipal family, seed 11): the direct
+// control of u3 leaves its bound for a few samples about 12 ms before T and comes back to the same bound
+// without a switch, and the multipliers estimated from it give σ3 falling to about 2e-8 and rising again.
+// The bang-bang shooting over the four switches stalls (residual 9e-4 from one segment; 1.4e-4 from eight):
+// σ3 only touches 0 there. The shooting over a singular arc of u3 read from that dip (read_arc_structure's
+// `dips`) converges, with the arc about 1 ms long. Oracles: the verification (H constant, the control
+// minimising H, Kelley's condition on the arc, the DOP853 replay) and the direct method's final time, to its
+// mesh error at tolerance 1e-5.
+TEST(SingularArcs, AnArcShorterThanTheMeshIsReadFromTheDipOfItsTorque) {
+  if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 1 s in release (the direct phase)";
+  const ReorientationProblem p =
+      slew((Mat3() << 0.29179982379213715, -0.01892892264840647, -0.011914259674411119,  //
+            -0.01892892264840647, 0.23120377035624107, -0.05732501514101301,             //
+            -0.011914259674411119, -0.05732501514101301, 0.18070969764809947)
+               .finished(),
+           Vec3(0.8745127423891594, 1.2017569487494777, 0.7392267754300919), 2.7415179854152325,
+           Vec3(-0.9635405954891999, 0.08940892028981437, 0.25218161276533996));
+  DirectSolution d;
+  IndirectSolution s;
+  ASSERT_NO_FATAL_FAILURE(shoot_over_one_singular_arc(p, d, s));
+  const SingularArc& arc = s.singular_arcs.front();
+  EXPECT_EQ(arc.axis, 2);
+  EXPECT_NEAR(arc.t_entry, 1.4849, 0.002);
+  EXPECT_NEAR(arc.t_exit, 1.4859, 0.002);
+  EXPECT_LT(arc.t_exit - arc.t_entry, 0.002 * s.final_time);
+  EXPECT_NEAR(s.final_time / d.final_time, 1.0, 1e-4);
+  expect_verified_with_kelley(p, d, s);
+}
+
 // A direct solution that starts on a singular arc (problem 7 of the nonprincipal family, seed 4: u3 inside
 // its bound from t = 0 to 1.245 s, σ3 ≈ 0 there). No extremal starts on one: σ3(0) = σ̇3(0) = 0 would be two
 // conditions for the one unknown of its exit time. The shooting reads it as a bang arc of u3 too short for
