@@ -192,7 +192,7 @@ ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolut
     // before it to the midpoint after it.
     auto add_arc = [&](const SampleArc& a, double sign_after) {
       const double side = a.arc == Arc::singular ? 0.0 : d.omega_body[a.first][i] > 0 ? 1.0 : -1.0;
-      const bool one_sample = a.first == a.last;
+      const bool one_sample = a.first == a.last && a.first > 0 && a.last + 1 < N;
       events.push_back(arc_end(Kind::entry, a.arc, i, side,
                                one_sample ? 0.5 * (d.time[a.first - 1] + d.time[a.first]) : d.time[a.first]));
       events.push_back(arc_end(Kind::exit, a.arc, i, side,
