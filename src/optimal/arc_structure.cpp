@@ -50,8 +50,8 @@ std::vector<SampleArc> boundary_arcs(const ReorientationProblem& p, const Direct
 }
 
 /// The singular arcs of axis i off its boundary arcs: stretches longer than `shortest` of T of samples with
-/// |u_i| < 0.95 u_max,i, bridging gaps of up to three samples; with `dips`, also the shorter stretches
-/// along which u_i keeps one sign from the sample before to the sample after (read_arc_structure).
+/// |u_i| < 0.95 u_max,i, bridging gaps of up to three samples; with `dips`, also the shorter stretches that
+/// are dips (is_torque_dip; read_arc_structure).
 std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const DirectSolution& d, int i,
                                      const std::vector<SampleArc>& boundary, double shortest, bool dips) {
   auto on_boundary = [&](std::size_t j) {
@@ -60,15 +60,6 @@ std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const Direct
   };
   auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < 0.95 * p.torque_max[i]; };
   const std::size_t N = d.time.size();
-  // A stretch [first, last] between two samples, one sign throughout: u_i leaves its bound and comes back
-  // without a switch.
-  auto is_dip = [&](std::size_t first, std::size_t last) {
-    if (first == 0 || last + 1 >= N) return false;
-    const bool positive = d.torque_body[first - 1][i] > 0;
-    for (std::size_t k = first; k <= last + 1; ++k)
-      if ((d.torque_body[k][i] > 0) != positive) return false;
-    return true;
-  };
   std::vector<SampleArc> arcs;
   for (std::size_t j = 0; j < N;) {
     if (on_boundary(j) || !inside(j)) {
@@ -85,7 +76,7 @@ std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const Direct
         break;
       }
     }
-    if (d.time[last] - d.time[j] > shortest * d.final_time || (dips && is_dip(j, last)))
+    if (d.time[last] - d.time[j] > shortest * d.final_time || (dips && is_torque_dip(d, i, j, last)))
       arcs.push_back({j, last, Arc::singular});
     j = last + 1;
   }

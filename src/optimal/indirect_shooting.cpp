@@ -31,6 +31,7 @@ using detail::read_reversals;
 using detail::read_switching_structure;
 using detail::Shooter;
 using detail::SwitchGuess;
+using detail::with_switch_pairs_at_dips;
 using detail::without_short_end_arcs;
 using detail::without_vanishing_end_arcs;
 
@@ -463,12 +464,19 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   if (SwitchGuess trimmed;
       out.bang_bang && !out.converged && without_short_end_arcs(sw, d.final_time, trimmed))
     shoot_instead(trimmed);
-  // A u_i that dips towards 0 and returns to the same bound over a few samples: a singular arc shorter than
-  // the mesh resolves, where σ_i touches 0 without crossing it (read_arc_structure's `dips`). Shot over those
-  // arcs where no bang-bang structure converged.
+  // A u_i that dips towards 0 and returns to the same bound over a few samples (is_torque_dip) where no
+  // bang-bang structure converged: a singular arc shorter than the mesh resolves, where σ_i touches 0 (shot
+  // over those arcs: read_arc_structure's `dips`), or else a pulse of the other sign, where σ_i crosses 0
+  // twice in quick succession (a pair of switches at each dip: with_switch_pairs_at_dips). The pulse's
+  // extremal is kept only without samples of u_i of σ_i's sign: where the optimum holds a singular arc the
+  // pair converges too, with σ_i of the wrong sign between its switches.
   if (out.bang_bang && !out.converged && has_dips(p, d)) {
     IndirectSolution over_dips = detail::solve_over_arcs(p, d, o, detail::kShortestSingularArc, true);
     if (over_dips.converged) return over_dips;
+  }
+  if (SwitchGuess paired; out.bang_bang && !out.converged && with_switch_pairs_at_dips(p, d, sw, paired)) {
+    IndirectSolution pulse = shoot_switching_structure(p, d, o, paired, true);
+    if (pulse.converged && detail::switching_sign_violations(pulse).sum() == 0) return pulse;
   }
   // A σ_i that grazes 0 along a bang arc, where the extremal's control takes σ_i's sign: the direct control
   // may be inside its bound there over a stretch too short for read_switching_structure to call it a singular

@@ -129,6 +129,56 @@ bool without_short_end_arcs(const SwitchGuess& sw, double T, SwitchGuess& out) {
   return true;
 }
 
+bool is_torque_dip(const DirectSolution& d, int axis, std::size_t first, std::size_t last) {
+  const std::size_t N = d.time.size();
+  if (first == 0 || last < first || last + 1 >= N) return false;
+  const bool positive = d.torque_body[first - 1][axis] > 0;
+  for (std::size_t k = first; k <= last + 1; ++k)
+    if ((d.torque_body[k][axis] > 0) != positive) return false;
+  return true;
+}
+
+bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSolution& d, const SwitchGuess& sw,
+                               SwitchGuess& out) {
+  const std::size_t N = d.time.size();
+  SwitchGuess paired = sw;
+  bool any = false;
+  for (int i = 0; i < 3; ++i) {
+    const double ubar = p.torque_max[i];
+    auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < 0.95 * ubar; };
+    for (std::size_t j = 0; j < N;) {
+      if (!inside(j)) {
+        ++j;
+        continue;
+      }
+      std::size_t last = j;
+      while (last + 1 < N && inside(last + 1))
+        ++last;
+      if (d.time[last] - d.time[j] < kShortestSingularArc * d.final_time && is_torque_dip(d, i, j, last)) {
+        double deficit = 0.0, moment = 0.0;  // ∫ (ū − |u|) dt and ∫ t (ū − |u|) dt, trapezoidal
+        for (std::size_t k = j - 1; k <= last; ++k) {
+          const double h = d.time[k + 1] - d.time[k];
+          const double f0 = ubar - std::abs(d.torque_body[k][i]),
+                       f1 = ubar - std::abs(d.torque_body[k + 1][i]);
+          deficit += 0.5 * h * (f0 + f1);
+          moment += 0.5 * h * (f0 * d.time[k] + f1 * d.time[k + 1]);
+        }
+        if (deficit > 0.0) {
+          const double centre = moment / deficit, width = deficit / (2.0 * ubar);
+          for (const double t : {centre - 0.5 * width, centre + 0.5 * width}) {
+            paired.times.push_back(t);
+            paired.axes.push_back(i);
+          }
+          any = true;
+        }
+      }
+      j = last + 1;
+    }
+  }
+  if (any) out = paired;
+  return any;
+}
+
 SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d) {
   SwitchGuess g;
   const double T = d.final_time;

@@ -90,6 +90,21 @@ constexpr double kShortEndArc = 0.05;
 /// with the opposite sign. False (and `out` unchanged) when there is none.
 bool without_short_end_arcs(const SwitchGuess& sw, double T, SwitchGuess& out);
 
+/// Whether samples first … last of u_axis in the direct solution are a dip: inside 95 % of u_max,axis (the
+/// caller's test), neither at t = 0 nor at T (0 < first ≤ last < N − 1), and of one sign from the sample
+/// before them to the sample after them: u_axis leaves its bound towards 0 and returns to the same bound
+/// without a switch. On an optimum that is a singular arc, or a pulse of the other sign, shorter than the
+/// mesh resolves.
+bool is_torque_dip(const DirectSolution& d, int axis, std::size_t first, std::size_t last);
+
+/// `sw` with a pair of switches of its axis at each dip of the direct torque (each run of consecutive samples
+/// inside 95 % of the bound that is_torque_dip accepts and that lasts less than kShortestSingularArc of T):
+/// at c ± w/2, where c is the time weighted by the deficit ū_i − |u_i| over [t_first−1, t_last+1] and w =
+/// ∫ (ū_i − |u_i|) dt / (2 ū_i) there, the width of the pulse of the other sign that makes up the impulse the
+/// dip lacks. False (and `out` unchanged) when there is no dip.
+bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSolution& d, const SwitchGuess& sw,
+                               SwitchGuess& out);
+
 /// Per-axis bounds: the sign changes of each u_i between saturated samples (|u_i| > u_max,i / 2), each at the
 /// zero of the piecewise-linear interpolant; `singular` names an axis whose torque stays inside 95 % of its
 /// bound for more than kShortestSingularArc of T.
