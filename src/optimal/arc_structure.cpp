@@ -50,15 +50,15 @@ std::vector<SampleArc> boundary_arcs(const ReorientationProblem& p, const Direct
 }
 
 /// The singular arcs of axis i off its boundary arcs: stretches longer than `shortest` of T of samples with
-/// |u_i| < 0.95 u_max,i, bridging gaps of up to three samples; with `dips`, also the shorter stretches that
-/// are dips (is_torque_dip; read_arc_structure).
+/// |u_i| < kInsideBound u_max,i, bridging gaps of up to three samples; with `dips`, also the shorter
+/// stretches that are dips (is_torque_dip; read_arc_structure).
 std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const DirectSolution& d, int i,
                                      const std::vector<SampleArc>& boundary, double shortest, bool dips) {
   auto on_boundary = [&](std::size_t j) {
     return std::any_of(boundary.begin(), boundary.end(),
                        [j](const SampleArc& a) { return j >= a.first && j <= a.last; });
   };
-  auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < 0.95 * p.torque_max[i]; };
+  auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < kInsideBound * p.torque_max[i]; };
   const std::size_t N = d.time.size();
   std::vector<SampleArc> arcs;
   for (std::size_t j = 0; j < N;) {

@@ -145,7 +145,7 @@ bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSoluti
   bool any = false;
   for (int i = 0; i < 3; ++i) {
     const double ubar = p.torque_max[i];
-    auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < 0.95 * ubar; };
+    auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < kInsideBound * ubar; };
     for (std::size_t j = 0; j < N;) {
       if (!inside(j)) {
         ++j;
@@ -189,7 +189,7 @@ SwitchGuess read_switching_structure(const ReorientationProblem& p, const Direct
     for (std::size_t j = 0; j < d.time.size(); ++j) {
       const double u = d.torque_body[j][i];
       const bool saturated = std::abs(u) > 0.5 * umax;
-      if (std::abs(u) < 0.95 * umax) {
+      if (std::abs(u) < kInsideBound * umax) {
         if (inside_since < 0.0) inside_since = d.time[j];
         if (d.time[j] - inside_since > kShortestSingularArc * T && g.singular.empty())
           g.singular = inside_bound_message(i, inside_since, d.time[j]) + " (a singular arc?)";

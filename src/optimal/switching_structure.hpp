@@ -14,6 +14,10 @@
 
 namespace poinsot::optimal::detail {
 
+/// The fraction of u_max,i below which a direct sample of u_i lies inside its bound: a sample of a singular
+/// arc or of a dip, not of a bang arc (the structure readers below and read_arc_structure).
+constexpr double kInsideBound = 0.95;
+
 /// The shortest singular arc the structure readers take, as a fraction of T: a stretch at least this long of
 /// direct samples with |u_i| < 0.95 u_max,i is a singular arc, a shorter one the collocation's passage
 /// through a switch. On problem 4 of seed 2 of the benchmark's nonprincipal family a singular arc of u2
