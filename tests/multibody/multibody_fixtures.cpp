@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "poinsot/so3/exp_log.hpp"
 #include "poinsot/so3/hat.hpp"
 #include "poinsot_test.hpp"
 
@@ -67,8 +68,12 @@ std::pair<System, State> four_bar_loop() {
   State st;
   st.bodies.resize(3);
   for (std::size_t i = 0; i < 3; ++i) {
+    // The bar's axis x_body along e: the rotation about x × e by the angle between them (no end is
+    // antiparallel to x here).
     const Vec3 e = (ends[i + 1] - ends[i]).normalized();
-    st.bodies[i].R_space_body = Eigen::Quaterniond::FromTwoVectors(Vec3::UnitX(), e).toRotationMatrix();
+    const Vec3 normal = Vec3::UnitX().cross(e);
+    st.bodies[i].R_space_body = so3::exp(std::atan2(normal.norm(), e.x()) *
+                                         (normal.norm() > 0 ? normal.normalized() : Vec3::UnitZ()));
     st.bodies[i].x_space = 0.5 * (ends[i] + ends[i + 1]);
   }
   return {s, st};
