@@ -28,7 +28,7 @@ constexpr int kNewtonPerReseeding = 3;
 
 using detail::PmpState;
 using detail::read_reversals;
-using detail::read_switching_structure;
+using detail::read_switch_guess;
 using detail::Shooter;
 using detail::SwitchGuess;
 using detail::with_switch_pairs_at_dips;
@@ -444,7 +444,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
                  " rad/s); state-constrained arcs are handled for minimum time with per-axis bounds only";
     return out;
   }
-  SwitchGuess sw = out.bang_bang ? read_switching_structure(p, d) : SwitchGuess{};
+  SwitchGuess sw = out.bang_bang ? read_switch_guess(p, d) : SwitchGuess{};
   if (p.objective == Objective::minimum_time && p.bound == TorqueBound::norm)
     sw.reversals = read_reversals(p, d);
   // A torque inside its bound over a stretch: singular arcs (arc_shooting.hpp).
@@ -479,7 +479,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
     if (pulse.converged && detail::switching_sign_violations(pulse).sum() == 0) return pulse;
   }
   // A σ_i that grazes 0 along a bang arc, where the extremal's control takes σ_i's sign: the direct control
-  // may be inside its bound there over a stretch too short for read_switching_structure to call it a singular
+  // may be inside its bound there over a stretch too short for read_switch_guess to call it a singular
   // arc. Shot over the singular arcs of at least kShortestGrazedSingularArc of T instead, where that
   // converges and the axis is not principal (about a principal axis a singular arc is of order two, and the
   // grazing is the extremal's finite stand-in for the chattering into it: optimal_control_arcs.md).

@@ -95,7 +95,7 @@ SwitchingStructure read_switching_structure(const ReorientationProblem& p, const
                        " samples; expected a solve_direct result");
   if (p.bound == TorqueBound::norm)
     return norm_structure(p, detail::read_reversals(p, d), d.final_time, d.time, d.torque_body);
-  const detail::SwitchGuess g = detail::read_switching_structure(p, d);
+  const detail::SwitchGuess g = detail::read_switch_guess(p, d);
   if (!g.singular.empty())
     throw InvalidInput("phased collocation: " + g.singular + "; expected bang arcs only");
   std::vector<std::size_t> order(g.times.size());

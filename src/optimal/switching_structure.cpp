@@ -179,7 +179,7 @@ bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSoluti
   return any;
 }
 
-SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d) {
+SwitchGuess read_switch_guess(const ReorientationProblem& p, const DirectSolution& d) {
   SwitchGuess g;
   const double T = d.final_time;
   for (int i = 0; i < 3; ++i) {

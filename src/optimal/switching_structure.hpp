@@ -112,6 +112,6 @@ bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSoluti
 /// Per-axis bounds: the sign changes of each u_i between saturated samples (|u_i| > u_max,i / 2), each at the
 /// zero of the piecewise-linear interpolant; `singular` names an axis whose torque stays inside 95 % of its
 /// bound for more than kShortestSingularArc of T.
-SwitchGuess read_switching_structure(const ReorientationProblem& p, const DirectSolution& d);
+SwitchGuess read_switch_guess(const ReorientationProblem& p, const DirectSolution& d);
 
 }  // namespace poinsot::optimal::detail

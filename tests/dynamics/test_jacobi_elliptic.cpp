@@ -84,19 +84,19 @@ TEST(JacobiElliptic, SeparatrixLimit) {
 // |δdn| ≤ 8ε(|dn| + |u·∂dn/∂u|), ∂dn/∂u = −k² sn cn (u is exact; K is known to an ulp, whence the u·∂
 // term). A transformation accurate only to ulps of 1 misses it by k'·K/ε-scale factors (10¹⁰ at k'² = 1e-20).
 TEST(JacobiElliptic, RelativePrecisionNearTheQuarterPeriod) {
-  using Real = boost::multiprecision::cpp_bin_float_50;
+  using Real50 = boost::multiprecision::cpp_bin_float_50;
   constexpr double eps = std::numeric_limits<double>::epsilon();
   for (double kc2 : {0.9, 0.3, 1e-6, 1e-12, 1e-20}) {
     const JacobiElliptic je(1.0 - kc2, kc2);
     const double K = je.complete();
-    const Real k = sqrt(Real(1) - Real(kc2));
+    const Real50 k = sqrt(Real50(1) - Real50(kc2));
     for (double v : {0.0, 1e-9, 1e-3, 0.2, 1.0}) {
       for (double sign : {1.0, -1.0}) {
         const double u = sign * (K - v * K / 2);
         double sn, cn, dn;
         je.evaluate(u, sn, cn, dn);
-        Real rcn, rdn;
-        const Real rsn = boost::math::jacobi_elliptic(k, Real(u), &rcn, &rdn);
+        Real50 rcn, rdn;
+        const Real50 rsn = boost::math::jacobi_elliptic(k, Real50(u), &rcn, &rdn);
         const double s = static_cast<double>(rsn), c = static_cast<double>(rcn), d = static_cast<double>(rdn);
         const double k2 = 1.0 - kc2;
         EXPECT_NEAR(sn, s, 8 * eps * (std::abs(s) + std::abs(u * c * d))) << kc2 << " " << u;

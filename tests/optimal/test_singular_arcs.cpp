@@ -147,7 +147,7 @@ TEST(SingularArcs, ALongSingularArcIsSampledFinelyEnoughForItsReplay) {
 }
 
 // A singular arc too short for the bang-bang reading (problem 5 of the nonprincipal family, seed 3): the
-// direct control of u3 is inside its bound for under 1 % of T, which read_switching_structure takes for the
+// direct control of u3 is inside its bound for under 1 % of T, which read_switch_guess takes for the
 // passage through a switch (kShortestSingularArc is 2 %). The bang-bang extremal over the direct switches
 // converges, but σ3 grazes 0 after its switch and u3 has σ3's sign there, which the minimum principle
 // forbids; the shooting then reads the singular arcs of at least kShortestGrazedSingularArc of T and shoots

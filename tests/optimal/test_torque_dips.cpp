@@ -134,7 +134,7 @@ std::vector<double> switches_of_u2(const SwitchGuess& sw) {
 TEST(TorqueDips, ADipGetsAPairOfSwitchesAsWideAsTheImpulseItLacks) {
   const ReorientationProblem p = off_principal_slew();
   const DirectSolution d = direct_with_u2({{100, 0.5}});
-  const SwitchGuess sw = read_switching_structure(p, d);
+  const SwitchGuess sw = read_switch_guess(p, d);
   ASSERT_TRUE(switches_of_u2(sw).empty());
   SwitchGuess paired;
   ASSERT_TRUE(with_switch_pairs_at_dips(p, d, sw, paired));
@@ -152,7 +152,7 @@ TEST(TorqueDips, AWiderDipIsCentredOnItsDeficit) {
   const ReorientationProblem p = off_principal_slew();
   const DirectSolution d = direct_with_u2({{100, 0.6}, {101, 0.3}, {102, 0.7}});
   SwitchGuess paired;
-  ASSERT_TRUE(with_switch_pairs_at_dips(p, d, read_switching_structure(p, d), paired));
+  ASSERT_TRUE(with_switch_pairs_at_dips(p, d, read_switch_guess(p, d), paired));
   const std::vector<double> t = switches_of_u2(paired);
   ASSERT_EQ(t.size(), 2u);
   const double f[5] = {0.0, 0.4, 0.7, 0.3, 0.0};  // ū − |u| at 0.99 … 1.03 s
@@ -174,12 +174,12 @@ TEST(TorqueDips, NoPairWithoutADip) {
     through_a_switch[k] = -1.0;
   const DirectSolution d = direct_with_u2(through_a_switch);
   SwitchGuess paired;
-  EXPECT_FALSE(with_switch_pairs_at_dips(p, d, read_switching_structure(p, d), paired));
+  EXPECT_FALSE(with_switch_pairs_at_dips(p, d, read_switch_guess(p, d), paired));
   std::map<int, double> long_stretch;  // 50 ms inside the bound: a singular arc, read as one elsewhere
   for (int k = 100; k <= 105; ++k)
     long_stretch[k] = 0.5;
   const DirectSolution e = direct_with_u2(long_stretch);
-  EXPECT_FALSE(with_switch_pairs_at_dips(p, e, read_switching_structure(p, e), paired));
+  EXPECT_FALSE(with_switch_pairs_at_dips(p, e, read_switch_guess(p, e), paired));
 }
 
 // Problem 6 of the benchmark's nonprincipal family, seed 9 (T = 4.938 s): the direct u2 leaves its bound at
