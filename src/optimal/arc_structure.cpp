@@ -58,28 +58,10 @@ std::vector<SampleArc> singular_arcs(const ReorientationProblem& p, const Direct
     return std::any_of(boundary.begin(), boundary.end(),
                        [j](const SampleArc& a) { return j >= a.first && j <= a.last; });
   };
-  auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < kInsideBound * p.torque_max[i]; };
-  const std::size_t N = d.time.size();
   std::vector<SampleArc> arcs;
-  for (std::size_t j = 0; j < N;) {
-    if (on_boundary(j) || !inside(j)) {
-      ++j;
-      continue;
-    }
-    std::size_t last = j;
-    int gap = 0;
-    for (std::size_t k = j + 1; k < N && !on_boundary(k); ++k) {
-      if (inside(k)) {
-        last = k;
-        gap = 0;
-      } else if (++gap > 3) {
-        break;
-      }
-    }
-    if (d.time[last] - d.time[j] > shortest * d.final_time || (dips && is_torque_dip(d, i, j, last)))
-      arcs.push_back({j, last, Arc::singular});
-    j = last + 1;
-  }
+  for (const auto [first, last] : inside_bound_stretches(p, d, i, 3, on_boundary))
+    if (d.time[last] - d.time[first] > shortest * d.final_time || (dips && is_torque_dip(d, i, first, last)))
+      arcs.push_back({first, last, Arc::singular});
   return arcs;
 }
 

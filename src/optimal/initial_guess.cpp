@@ -17,8 +17,21 @@ double first_mesh_turn(int start, int starts) {
 namespace detail {
 namespace {
 
-/// The torque-free motion from the problem's initial state at the collocation points of `nlp` over [0, T]:
-/// 16 midpoint sub-steps between points, R advanced by exact exponentials.
+/// Advances (R, ω) over dt by 16 explicit midpoint steps of ω̇ = wdot(ω) (rad/s²), R by the exact exponential
+/// of the midpoint rate: R ← R exp(h ω_mid). `wdot` may read R (it is called before and after each update).
+template <class AngularAcceleration>
+void midpoint_substeps(double dt, const AngularAcceleration& wdot, Mat3& R, Vec3& omega) {
+  constexpr int kSubsteps = 16;
+  const double h = dt / kSubsteps;
+  for (int i = 0; i < kSubsteps; ++i) {
+    const Vec3 w_mid = omega + 0.5 * h * wdot(omega);
+    R = R * so3::exp(h * w_mid);
+    omega += h * wdot(w_mid);
+  }
+}
+
+/// The torque-free motion from the problem's initial state at the collocation points of `nlp` over [0, T]
+/// (midpoint_substeps between points).
 void torque_free_motion(const CollocationNlp& nlp, double T, std::vector<Mat3>& R, std::vector<Vec3>& omega) {
   const auto& p = nlp.problem();
   const Mat3 J_inv = p.inertia_body.inverse();
@@ -32,12 +45,7 @@ void torque_free_motion(const CollocationNlp& nlp, double T, std::vector<Mat3>& 
   double tau_prev = 0.0;
   for (int pt = 0; pt < nlp.points(); ++pt) {
     const double tau = nlp.mesh().point_fraction(pt);
-    for (int i = 0; i < 16; ++i) {
-      const double h = (tau - tau_prev) * T / 16.0;
-      const Vec3 w_mid = wk + 0.5 * h * wdot(wk);
-      Rk = Rk * so3::exp(h * w_mid);
-      wk += h * wdot(w_mid);
-    }
+    midpoint_substeps((tau - tau_prev) * T, wdot, Rk, wk);
     tau_prev = tau;
     R.push_back(Rk);
     omega.push_back(wk);
@@ -71,8 +79,8 @@ Guess initial_guess(const CollocationNlp& nlp, double T, double turn) {
     transverse = std::cos(turn) * transverse + std::sin(turn) * rotvec.normalized().cross(transverse);
   std::vector<double> z(nlp.num_variables(), 0.0);
   // With a free final attitude (detumbling to rest) the guess is the motion under the momentum-dumping torque
-  // u = −(‖L_0‖/T) Jω/‖Jω‖, which takes ‖L‖ linearly to 0 at T; R and ω are advanced by 16 midpoint sub-steps
-  // (exact exponentials for R) between points.
+  // u = −(‖L_0‖/T) Jω/‖Jω‖, which takes ‖L‖ linearly to 0 at T; R and ω are advanced by midpoint_substeps
+  // between points (towards a final rate, R turns at the guess's rate held over the interval).
   const bool dumping = p.free_final_attitude && p.omega_final.isZero(0.0);
   const double dump_rate = (p.inertia_body * p.omega_initial).norm() / T;
   const Mat3 J_inv = p.inertia_body.inverse();
@@ -89,15 +97,15 @@ Guess initial_guess(const CollocationNlp& nlp, double T, double turn) {
     Vec3 w = (spinning ? Vec3(spin_omega[pt] + tau * (p.omega_final - spin_omega_end))
                        : Vec3((1.0 - tau) * p.omega_initial + tau * p.omega_final)) +
              rotvec / T + std::sin(std::numbers::pi * tau) * (0.3 * rotvec.norm() / T) * transverse;
-    for (int i = 0; i < 16 && p.free_final_attitude; ++i) {
-      const double h = (tau - tau_prev) * T / 16.0;
+    if (dumping) {
       const auto wdot = [&](const Vec3& v) {
-        const Vec3 u = dumping ? dumping_torque(v) : Vec3::Zero();
-        return Vec3(J_inv * (u - v.cross(p.inertia_body * v)));
+        return Vec3(J_inv * (dumping_torque(v) - v.cross(p.inertia_body * v)));
       };
-      const Vec3 w_mid = dumping ? Vec3(w_free + 0.5 * h * wdot(w_free)) : w;
-      R_free = R_free * so3::exp(h * w_mid);
-      if (dumping) w_free += h * wdot(w_mid);
+      midpoint_substeps((tau - tau_prev) * T, wdot, R_free, w_free);
+    } else if (p.free_final_attitude) {
+      Vec3 w_held = w;
+      midpoint_substeps((tau - tau_prev) * T, [](const Vec3&) { return Vec3::Zero().eval(); }, R_free,
+                        w_held);
     }
     tau_prev = tau;
     if (dumping) {

@@ -140,20 +140,11 @@ bool is_torque_dip(const DirectSolution& d, int axis, std::size_t first, std::si
 
 bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSolution& d, const SwitchGuess& sw,
                                SwitchGuess& out) {
-  const std::size_t N = d.time.size();
   SwitchGuess paired = sw;
   bool any = false;
   for (int i = 0; i < 3; ++i) {
     const double ubar = p.torque_max[i];
-    auto inside = [&](std::size_t j) { return std::abs(d.torque_body[j][i]) < kInsideBound * ubar; };
-    for (std::size_t j = 0; j < N;) {
-      if (!inside(j)) {
-        ++j;
-        continue;
-      }
-      std::size_t last = j;
-      while (last + 1 < N && inside(last + 1))
-        ++last;
+    for (const auto [j, last] : inside_bound_stretches(p, d, i, 0, [](std::size_t) { return false; })) {
       if (d.time[last] - d.time[j] < kShortestSingularArc * d.final_time && is_torque_dip(d, i, j, last)) {
         double deficit = 0.0, moment = 0.0;  // ∫ (ū − |u|) dt and ∫ t (ū − |u|) dt, trapezoidal
         for (std::size_t k = j - 1; k <= last; ++k) {
@@ -172,7 +163,6 @@ bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSoluti
           any = true;
         }
       }
-      j = last + 1;
     }
   }
   if (any) out = paired;

@@ -4,6 +4,8 @@
 /// bounds the initial sign of each u_i and the times and axes of its sign changes (bang-bang), for a norm
 /// bound the reversals of u = −ū σ/‖σ‖ where σ passes through 0. Used to seed the shooting method and the
 /// phase-per-arc collocation.
+#include <cmath>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -93,6 +95,43 @@ constexpr double kShortEndArc = 0.05;
 /// (1 − kShortEndArc) T (T: the direct solution's final time); an axis whose first switch is dropped starts
 /// with the opposite sign. False (and `out` unchanged) when there is none.
 bool without_short_end_arcs(const SwitchGuess& sw, double T, SwitchGuess& out);
+
+/// Samples first … last (inclusive) of the direct solution.
+struct SampleRange {
+  std::size_t first = 0, last = 0;
+};
+
+/// The maximal stretches of samples of u_axis inside its bound (|u_axis| < kInsideBound u_max,axis), each
+/// from an inside sample to an inside sample, joined across runs of at most `max_gap` samples outside the
+/// band and never across a sample for which `excluded(j)` is true (a boundary arc's). In time order.
+template <class Excluded>
+std::vector<SampleRange> inside_bound_stretches(const ReorientationProblem& p, const DirectSolution& d,
+                                                int axis, int max_gap, const Excluded& excluded) {
+  auto inside = [&](std::size_t j) {
+    return std::abs(d.torque_body[j][axis]) < kInsideBound * p.torque_max[axis];
+  };
+  const std::size_t N = d.time.size();
+  std::vector<SampleRange> stretches;
+  for (std::size_t j = 0; j < N;) {
+    if (excluded(j) || !inside(j)) {
+      ++j;
+      continue;
+    }
+    std::size_t last = j;
+    int gap = 0;
+    for (std::size_t k = j + 1; k < N && !excluded(k); ++k) {
+      if (inside(k)) {
+        last = k;
+        gap = 0;
+      } else if (++gap > max_gap) {
+        break;
+      }
+    }
+    stretches.push_back({j, last});
+    j = last + 1;
+  }
+  return stretches;
+}
 
 /// Whether samples first … last of u_axis in the direct solution are a dip: inside 95 % of u_max,axis (the
 /// caller's test), neither at t = 0 nor at T (0 < first ≤ last < N − 1), and of one sign from the sample
