@@ -48,20 +48,20 @@ bool rate_bound_active(const ReorientationProblem& p, const DirectSolution& d, d
 
 /// Reads the structure from the direct solution: a boundary arc of axis k is a stretch of at least two
 /// samples with |ω_k| ≥ (1 − 1e-3) r (none where the rate bound is not active); a singular arc of axis k is a
-/// stretch off its boundary arcs, longer than kShortestSingularArc of T, of samples with |u_k| < 0.95 u_max,k
-/// (gaps of up to three samples closer to the bound, the collocation's ringing on such arcs, are bridged);
-/// the sign changes of u_k between samples outside its arcs where |u_k| > u_max,k / 2 are switches, except
-/// one whose bracket contains an arc of the same axis (the arc takes its place: the sign after the exit is
-/// the next saturated sample's). `refused` names a problem that is not minimum time with per-axis bounds, a
-/// boundary arc that lasts to the final time, a singular arc of order two (about a principal axis, where u_i
-/// does not enter σ̈_i, and sharing no sample with a singular arc of another axis), or a singular arc that
-/// overlaps a boundary arc or reaches t = 0 or T (or both). With `start_bang_sign` ±1, a singular arc that
-/// reaches t = 0 is read as entered at the direct solution's second sample, after a bang arc of u_i with that
-/// sign; with `end_bang_sign` ±1, one that reaches T as left at the last sample but one, before a bang arc of
-/// that sign. With `dips`, a shorter stretch inside the bound (one sample or more) is a singular arc too
-/// where u_k keeps its sign from the sample before it to the sample after it (a dip towards 0 that returns
-/// to the same bound: the collocation's stand-in for a singular arc shorter than its intervals); a dip of
-/// one sample is read from the midpoint before it to the midpoint after it.
+/// stretch off its boundary arcs, longer than kShortestSingularArc of T, of samples with |u_k| < kInsideBound
+/// u_max,k (gaps of up to three samples closer to the bound, the collocation's ringing on such arcs, are
+/// bridged); the sign changes of u_k between samples outside its arcs where |u_k| > u_max,k / 2 are switches,
+/// except one whose bracket contains an arc of the same axis (the arc takes its place: the sign after the
+/// exit is the next saturated sample's). `refused` names a problem that is not minimum time with per-axis
+/// bounds, a boundary arc that lasts to the final time, a singular arc of order two (about a principal axis,
+/// where u_i does not enter σ̈_i, and sharing no sample with a singular arc of another axis), or a singular
+/// arc that overlaps a boundary arc or reaches t = 0 or T (or both). With `start_bang_sign` ±1, a singular
+/// arc that reaches t = 0 is read as entered at the direct solution's second sample, after a bang arc of u_i
+/// with that sign; with `end_bang_sign` ±1, one that reaches T as left at the last sample but one, before a
+/// bang arc of that sign. With `dips`, a shorter stretch inside the bound (one sample or more) is a singular
+/// arc too where u_k keeps its sign from the sample before it to the sample after it (a dip towards 0 that
+/// returns to the same bound: the collocation's stand-in for a singular arc shorter than its intervals); a
+/// dip of one sample is read from the midpoint before it to the midpoint after it.
 ArcStructure read_arc_structure(const ReorientationProblem& p, const DirectSolution& d,
                                 double shortest_singular_arc = kShortestSingularArc,
                                 double start_bang_sign = 0.0, double end_bang_sign = 0.0, bool dips = false);

@@ -21,10 +21,10 @@ namespace poinsot::optimal::detail {
 constexpr double kInsideBound = 0.95;
 
 /// The shortest singular arc the structure readers take, as a fraction of T: a stretch at least this long of
-/// direct samples with |u_i| < 0.95 u_max,i is a singular arc, a shorter one the collocation's passage
-/// through a switch. On problem 4 of seed 2 of the benchmark's nonprincipal family a singular arc of u2
-/// lasts 4.1 % of T; read as part of a bang arc, it gave an extremal 1.2e-4 slower than the direct optimum,
-/// which the verification rejected.
+/// direct samples with |u_i| < kInsideBound u_max,i is a singular arc, a shorter one the collocation's
+/// passage through a switch. On problem 4 of seed 2 of the benchmark's nonprincipal family a singular arc of
+/// u2 lasts 4.1 % of T; read as part of a bang arc, it gave an extremal 1.2e-4 slower than the direct
+/// optimum, which the verification rejected.
 constexpr double kShortestSingularArc = 0.02;
 
 /// The shortest stretch (fraction of T) of direct samples inside the bound that the shooting takes for a
@@ -133,24 +133,24 @@ std::vector<SampleRange> inside_bound_stretches(const ReorientationProblem& p, c
   return stretches;
 }
 
-/// Whether samples first … last of u_axis in the direct solution are a dip: inside 95 % of u_max,axis (the
-/// caller's test), neither at t = 0 nor at T (0 < first ≤ last < N − 1), and of one sign from the sample
+/// Whether samples first … last of u_axis in the direct solution are a dip: inside kInsideBound of u_max,axis
+/// (the caller's test), neither at t = 0 nor at T (0 < first ≤ last < N − 1), and of one sign from the sample
 /// before them to the sample after them: u_axis leaves its bound towards 0 and returns to the same bound
 /// without a switch. On an optimum that is a singular arc, or a pulse of the other sign, shorter than the
 /// mesh resolves.
 bool is_torque_dip(const DirectSolution& d, int axis, std::size_t first, std::size_t last);
 
 /// `sw` with a pair of switches of its axis at each dip of the direct torque (each run of consecutive samples
-/// inside 95 % of the bound that is_torque_dip accepts and that lasts less than kShortestSingularArc of T):
-/// at c ± w/2, where c is the time weighted by the deficit ū_i − |u_i| over [t_first−1, t_last+1] and w =
-/// ∫ (ū_i − |u_i|) dt / (2 ū_i) there, the width of the pulse of the other sign that makes up the impulse the
-/// dip lacks. False (and `out` unchanged) when there is no dip.
+/// inside kInsideBound of the bound that is_torque_dip accepts and that lasts less than kShortestSingularArc
+/// of T): at c ± w/2, where c is the time weighted by the deficit ū_i − |u_i| over [t_first−1, t_last+1] and
+/// w = ∫ (ū_i − |u_i|) dt / (2 ū_i) there, the width of the pulse of the other sign that makes up the impulse
+/// the dip lacks. False (and `out` unchanged) when there is no dip.
 bool with_switch_pairs_at_dips(const ReorientationProblem& p, const DirectSolution& d, const SwitchGuess& sw,
                                SwitchGuess& out);
 
 /// Per-axis bounds: the sign changes of each u_i between saturated samples (|u_i| > u_max,i / 2), each at the
-/// zero of the piecewise-linear interpolant; `singular` names an axis whose torque stays inside 95 % of its
-/// bound for more than kShortestSingularArc of T.
+/// zero of the piecewise-linear interpolant; `singular` names an axis whose torque stays inside kInsideBound
+/// of its bound for more than kShortestSingularArc of T.
 SwitchGuess read_switch_guess(const ReorientationProblem& p, const DirectSolution& d);
 
 }  // namespace poinsot::optimal::detail

@@ -71,9 +71,10 @@ std::pair<System, State> four_bar_loop() {
     // The bar's axis x_body along e: the rotation about x × e by the angle between them (no end is
     // antiparallel to x here).
     const Vec3 e = (ends[i + 1] - ends[i]).normalized();
-    const Vec3 normal = Vec3::UnitX().cross(e);
-    st.bodies[i].R_space_body = so3::exp(std::atan2(normal.norm(), e.x()) *
-                                         (normal.norm() > 0 ? normal.normalized() : Vec3::UnitZ()));
+    const Vec3 normal = Vec3::UnitX().cross(e);  // |x × e| = sin of the angle
+    const double sine = normal.norm();
+    st.bodies[i].R_space_body =
+        so3::exp(std::atan2(sine, e.x()) * (sine > 0 ? Vec3(normal / sine) : Vec3::UnitZ()));
     st.bodies[i].x_space = 0.5 * (ends[i] + ends[i + 1]);
   }
   return {s, st};
