@@ -329,6 +329,14 @@ bool has_dips(const ReorientationProblem& p, const DirectSolution& d) {
          });
 }
 
+/// Whether an extremal shot over arcs ends with none (every singular arc amended into bang arcs where its
+/// torque left the bound: with_bounded_singular_torque) and its control has σ_i's sign at a sample: a
+/// bang-bang extremal that does not minimise H, which the shooting over the switches may still mend.
+bool bang_bang_against_sigma(const IndirectSolution& s) {
+  return s.singular_arcs.empty() && s.rate_bound_arcs.empty() &&
+         detail::switching_sign_violations(s).sum() > 0;
+}
+
 /// Whether a bang-bang extremal's control has σ_i's sign at a sample on an axis i that is not principal.
 bool grazes_off_principal(const ReorientationProblem& p, const IndirectSolution& s) {
   const Eigen::Vector3i violations = detail::switching_sign_violations(s);
@@ -465,16 +473,18 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
       out.bang_bang && !out.converged && without_short_end_arcs(sw, d.final_time, trimmed))
     shoot_instead(trimmed);
   // A u_i that dips towards 0 and returns to the same bound over a few samples (is_torque_dip) where no
-  // bang-bang structure converged: a singular arc shorter than the mesh resolves, where σ_i touches 0 (shot
-  // over those arcs: read_arc_structure's `dips`), or else a pulse of the other sign, where σ_i crosses 0
-  // twice in quick succession (a pair of switches at each dip: with_switch_pairs_at_dips). The pulse's
-  // extremal is kept only without samples of u_i of σ_i's sign: where the optimum holds a singular arc the
-  // pair converges too, with σ_i of the wrong sign between its switches.
-  if (out.bang_bang && !out.converged && has_dips(p, d)) {
+  // bang-bang structure converged, or the one that did has σ's sign somewhere: a singular arc shorter than
+  // the mesh resolves, where σ_i touches 0 (shot over those arcs: read_arc_structure's `dips`), or else a
+  // pulse of the other sign, where σ_i crosses 0 twice in quick succession (a pair of switches at each dip:
+  // with_switch_pairs_at_dips). Either extremal is kept only without samples of a bang torque of σ_i's sign:
+  // where the optimum holds a singular arc the pair converges too, with σ_i of the wrong sign between its
+  // switches, and the arcs of the dips can all be amended away (bang_bang_against_sigma).
+  const bool unmet = out.bang_bang && (!out.converged || detail::switching_sign_violations(out).sum() > 0);
+  if (unmet && has_dips(p, d)) {
     IndirectSolution over_dips = detail::solve_over_arcs(p, d, o, detail::kShortestSingularArc, true);
-    if (over_dips.converged) return over_dips;
+    if (over_dips.converged && !bang_bang_against_sigma(over_dips)) return over_dips;
   }
-  if (SwitchGuess paired; out.bang_bang && !out.converged && with_switch_pairs_at_dips(p, d, sw, paired)) {
+  if (SwitchGuess paired; unmet && with_switch_pairs_at_dips(p, d, sw, paired)) {
     IndirectSolution pulse = shoot_switching_structure(p, d, o, paired, true);
     if (pulse.converged && detail::switching_sign_violations(pulse).sum() == 0) return pulse;
   }
@@ -485,7 +495,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // grazing is the extremal's finite stand-in for the chattering into it: optimal_control_arcs.md).
   if (out.bang_bang && out.converged && grazes_off_principal(p, out)) {
     IndirectSolution over_arcs = detail::solve_over_arcs(p, d, o, detail::kShortestGrazedSingularArc);
-    if (over_arcs.converged) return over_arcs;
+    if (over_arcs.converged && !bang_bang_against_sigma(over_arcs)) return over_arcs;
   }
   return out;
 }

@@ -23,9 +23,6 @@ namespace odeint = boost::numeric::odeint;
 /// The largest turn (rad) of a norm-bound torque between two output samples: the replay's local cubic then
 /// errs by about ū (0.02)⁴/4! ≈ 7e-9 ū in the fastest turn.
 constexpr double kMaxSampleTurn = 0.02;
-/// The largest second difference ‖u_a − 2u_m + u_b‖/ū of a norm-bound torque over an output sample interval
-/// (a, m its midpoint, b).
-constexpr double kMaxSampleCurvature = 1e-4;
 /// The largest turn (rad) of a norm-bound torque over one piece of the shooting residual's integration.
 constexpr double kMaxPieceTurn = 0.5;
 
@@ -127,8 +124,10 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
   end.knot_sigma.clear();
   // Output samples of a norm-bound torque, which turns fast where σ passes near 0 (by π within about
   // ‖σ‖_min/‖σ̇‖): an interval over which the torque turns by more than kMaxSampleTurn, or whose second
-  // difference exceeds kMaxSampleCurvature, is halved, so that the replay's local cubics resolve the turn
-  // (with 64 uniform samples a random slew with ‖σ‖_min 2e-4 of its largest was replayed 2.2e-2 rad off).
+  // difference exceeds kMaxSmoothSampleCurvature of ū, is halved, so that the replay's local cubics resolve
+  // the turn and its approach (with 64 uniform samples a random slew with ‖σ‖_min 2e-4 of its largest was
+  // replayed 2.2e-2 rad off; with second differences up to 1e-4 ū, one whose ‖σ‖_min is 1.1e-3 of its
+  // largest, 1.1e-6 rad/s off in rate).
   // The residual's own integration is cut likewise where the torque turns by more than kMaxPieceTurn: over a
   // long piece RKF78's stages can straddle a fast turn and its error estimate miss it (a random slew then
   // converged with H(T) = 0 while H(0) = −2.7e-8, the samples' refined integration showing the gap).
@@ -176,10 +175,7 @@ void Shooter::integrate_segment(const Eigen::VectorXd& x, int m, const std::vect
         step(ta, ts);
       }
       const Vec3 u_b = control(y);
-      const bool curved =
-          refine_smooth
-              ? smooth_rule.curves(u_a, u_m, u_b)
-              : refine && observe && (u_a - 2.0 * u_m + u_b).norm() > kMaxSampleCurvature * u_a.norm();
+      const bool curved = by_curvature && smooth_rule.curves(u_a, u_m, u_b);
       const bool turned = refine && std::atan2(u_a.cross(u_b).norm(), u_a.dot(u_b)) > max_turn;
       if ((refine || refine_smooth) && depth < kMaxSampleHalvings && (curved || turned)) {
         y = y_a;

@@ -186,6 +186,23 @@ TEST(SingularArcs, AnArcShorterThanTheMeshIsReadFromTheDipOfItsTorque) {
   expect_one_short_singular_arc(p, 2, 1.4849, 1.4859, 0.002, 0.002);
 }
 
+// A dip under an extremal that converged (problem 14 of the nonprincipal family, seed 14): the direct u3
+// leaves its bound for a few samples about 4.27 s into the 4.656-s manoeuvre and returns to −ū3. The
+// bang-bang shooting over the five switches read converges, but its σ3 is of u3's sign from 4.13 to 4.41 s
+// (8e-4 of max |σ| at its largest): it does not minimise H. Shot over a singular arc of u3 read from the dip,
+// the extremal converges with the arc about 9 ms long, 3.5 µs faster. Oracles as above.
+TEST(SingularArcs, ADipUnderAConvergedExtremalOfTheWrongSignIsAShortSingularArc) {
+  if (::poinsot::test::sanitized()) GTEST_SKIP() << "about 0.6 s in release (the direct phase)";
+  const ReorientationProblem p =
+      slew((Mat3() << 23.89709358181713, 2.5981895948434923, 4.762973552994019,  //
+            2.5981895948434923, 13.434663017872476, -6.290495442667456,          //
+            4.762973552994019, -6.290495442667456, 17.514114746592995)
+               .finished(),
+           Vec3(1.2083772434846156, 1.8324467339265815, 1.5850728148241071), 0.3805219437312454,
+           Vec3(-0.8816138166351982, -0.38536507953294663, 0.2724900618270045));
+  expect_one_short_singular_arc(p, 2, 4.2699, 4.2790, 0.002, 0.005);
+}
+
 // A direct solution that starts on a singular arc (problem 7 of the nonprincipal family, seed 4: u3 inside
 // its bound from t = 0 to 1.245 s, σ3 ≈ 0 there). No extremal starts on one: σ3(0) = σ̇3(0) = 0 would be two
 // conditions for the one unknown of its exit time. The shooting reads it as a bang arc of u3 too short for
