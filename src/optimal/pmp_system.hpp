@@ -97,12 +97,13 @@ inline void pmp_rhs(const ReorientationProblem& p, const Mat3& J_inv, const PmpS
   dy[24] = running_cost(p, u);
 }
 
-/// How finely an extremal's output samples resolve a smooth torque (minimum energy, regularised, or held on a
-/// boundary arc or singular arc; constant on bang arcs) for the replay (control_replay.hpp: the cubic through
-/// four samples, which errs by up to 3h⁴‖u⁽⁴⁾‖/128 between the middle two). An output interval (a, b) whose
-/// second difference ‖u_a − 2u_m + u_b‖ (m its midpoint; about h²‖ü‖/4) exceeds this fraction of the largest
-/// ‖u‖ sampled so far is halved and integrated again, at most kMaxSampleHalvings times. 1e-4 left a singular
-/// arc of 2.9 s replayed 2.6e-7 rad off (a quarter of the threshold), 1e-5 3e-8 rad.
+/// How finely an extremal's output samples resolve a smooth torque (minimum energy, regularised, norm-bound
+/// minimum time beside its turn rule, or held on a boundary arc or singular arc; constant on bang arcs) for
+/// the replay (control_replay.hpp: the cubic through four samples, which errs by up to 3h⁴‖u⁽⁴⁾‖/128
+/// between the middle two). An output interval (a, b) whose second difference ‖u_a − 2u_m + u_b‖ (m its
+/// midpoint; about h²‖ü‖/4) exceeds this fraction of the largest ‖u‖ sampled so far is halved and integrated
+/// again, at most kMaxSampleHalvings times. 1e-4 left a singular arc of 2.9 s replayed 2.6e-7 rad off (a
+/// quarter of the threshold), 1e-5 3e-8 rad.
 inline constexpr double kMaxSmoothSampleCurvature = 1e-5;
 inline constexpr int kMaxSampleHalvings = 30;
 
