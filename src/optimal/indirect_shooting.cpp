@@ -337,9 +337,9 @@ bool bang_bang_against_sigma(const IndirectSolution& s) {
          detail::switching_sign_violations(s).sum() > 0;
 }
 
-/// Whether a bang-bang extremal's control has σ_i's sign at a sample on an axis i that is not principal.
-bool grazes_off_principal(const ReorientationProblem& p, const IndirectSolution& s) {
-  const Eigen::Vector3i violations = detail::switching_sign_violations(s);
+/// Whether a bang-bang extremal's control has σ_i's sign at a sample on an axis i that is not principal;
+/// `violations` are its switching_sign_violations.
+bool grazes_off_principal(const ReorientationProblem& p, const Eigen::Vector3i& violations) {
   const Mat3 J_inv = p.inertia_body.inverse();
   for (int i = 0; i < 3; ++i)
     if (violations[i] > 0 && !detail::principal_axis(J_inv, i)) return true;
@@ -479,7 +479,10 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // with_switch_pairs_at_dips). Either extremal is kept only without samples of a bang torque of σ_i's sign:
   // where the optimum holds a singular arc the pair converges too, with σ_i of the wrong sign between its
   // switches, and the arcs of the dips can all be amended away (bang_bang_against_sigma).
-  const bool unmet = out.bang_bang && (!out.converged || detail::switching_sign_violations(out).sum() > 0);
+  const Eigen::Vector3i against_sigma = out.bang_bang && out.converged
+                                            ? detail::switching_sign_violations(out)
+                                            : Eigen::Vector3i::Zero().eval();
+  const bool unmet = out.bang_bang && (!out.converged || against_sigma.sum() > 0);
   if (unmet && has_dips(p, d)) {
     IndirectSolution over_dips = detail::solve_over_arcs(p, d, o, detail::kShortestSingularArc, true);
     if (over_dips.converged && !bang_bang_against_sigma(over_dips)) return over_dips;
@@ -493,7 +496,7 @@ IndirectSolution solve_indirect(const ReorientationProblem& p, const DirectSolut
   // arc. Shot over the singular arcs of at least kShortestGrazedSingularArc of T instead, where that
   // converges and the axis is not principal (about a principal axis a singular arc is of order two, and the
   // grazing is the extremal's finite stand-in for the chattering into it: optimal_control_arcs.md).
-  if (out.bang_bang && out.converged && grazes_off_principal(p, out)) {
+  if (out.bang_bang && out.converged && grazes_off_principal(p, against_sigma)) {
     IndirectSolution over_arcs = detail::solve_over_arcs(p, d, o, detail::kShortestGrazedSingularArc);
     if (over_arcs.converged && !bang_bang_against_sigma(over_arcs)) return over_arcs;
   }
